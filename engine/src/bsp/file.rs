@@ -1,0 +1,66 @@
+//! The compiled map file: a magic header, a format version, then the map's
+//! source form and its BSP in postcard (a compact serde binary format).
+//!
+//! Loading never rebuilds the tree, but it does re-validate the map and check
+//! the tree's structure, so a corrupt or hostile file is an error, not a panic.
+
+use serde::{Deserialize, Serialize};
+
+use super::check::check_structure;
+use super::{Bsp, BuildStats, CompiledMap};
+use crate::map::source::MapSource;
+use crate::map::validate::validate;
+
+/// First bytes of every compiled map.
+pub const MAGIC: &[u8] = b"SIGHTLINE-BSP\n";
+/// Bumped whenever the layout below changes; older files are refused.
+pub const VERSION: u8 = 1;
+
+#[derive(Serialize, Deserialize)]
+struct Contents {
+    source: MapSource,
+    bsp: Bsp,
+    stats: BuildStats,
+}
+
+pub fn is_compiled(bytes: &[u8]) -> bool {
+    bytes.starts_with(MAGIC)
+}
+
+pub fn to_bytes(compiled: &CompiledMap) -> Vec<u8> {
+    let contents = Contents {
+        source: compiled.map.to_source(),
+        bsp: compiled.bsp.clone(),
+        stats: compiled.stats.clone(),
+    };
+    let mut bytes = MAGIC.to_vec();
+    bytes.push(VERSION);
+    // Serializing plain in-memory data into a Vec cannot fail.
+    bytes.extend(postcard::to_stdvec(&contents).unwrap_or_default());
+    bytes
+}
+
+/// Decodes a compiled map; the error says what is wrong with it.
+pub fn from_bytes(bytes: &[u8]) -> Result<CompiledMap, String> {
+    let rest = bytes
+        .strip_prefix(MAGIC)
+        .ok_or("not a compiled map (bad header)")?;
+    let (&version, payload) = rest.split_first().ok_or("truncated after the header")?;
+    if version != VERSION {
+        return Err(format!(
+            "format version {version}, this build reads version {VERSION}; recompile the map"
+        ));
+    }
+    let contents: Contents =
+        postcard::from_bytes(payload).map_err(|e| format!("corrupt or truncated: {e}"))?;
+    let map = validate(&contents.source).map_err(|problems| {
+        let first = problems.first().map(|p| p.to_string()).unwrap_or_default();
+        format!("its map is invalid: {first}")
+    })?;
+    check_structure(&map, &contents.bsp)?;
+    Ok(CompiledMap {
+        map,
+        bsp: contents.bsp,
+        stats: contents.stats,
+    })
+}

@@ -1,0 +1,25 @@
+//! Sightline's engine: everything from a RON level file to a finished frame, with
+//! no windowing dependency.
+//!
+//! The data flow, one module per stage:
+//!
+//! ```text
+//! RON text --map::load--> MapSource --map::validate--> Map
+//!     --bsp::build--> CompiledMap (Map + wall-segment BSP) --bsp::file--> .slbsp
+//!     --render::render_frame(View)--> Framebuffer --framebuffer::write_png--> PNG
+//! ```
+//!
+//! `level` ties the first steps together: it opens either a source or a compiled
+//! map and hands back a [`CompiledMap`](bsp::CompiledMap) ready to render.
+
+pub mod bsp;
+pub mod framebuffer;
+pub mod geom;
+pub mod level;
+pub mod map;
+pub mod render;
+
+pub use bsp::CompiledMap;
+pub use framebuffer::Framebuffer;
+pub use map::Map;
+pub use render::{render_frame, Frame, RenderOptions, Renderer, Shade, View};

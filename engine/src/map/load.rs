@@ -1,0 +1,283 @@
+//! Reading a map file: bytes -> text -> [`MapSource`] -> validated [`Map`], with
+//! every failure an error value naming the file and, where there is one, the RON
+//! position or the map element.
+
+use std::fmt;
+use std::path::Path;
+
+use glam::DVec2;
+
+use super::source::MapSource;
+use super::{validate, Map};
+
+/// Why a map file could not be turned into a [`Map`].
+#[derive(Debug, thiserror::Error)]
+pub enum MapError {
+    #[error("{path}: cannot read: {source}")]
+    Io {
+        path: String,
+        source: std::io::Error,
+    },
+    #[error("{path}: the file is empty")]
+    Empty { path: String },
+    #[error("{path}: not a text map: byte {offset} is binary data")]
+    Binary { path: String, offset: usize },
+    #[error("{path}:{line}:{col}: {message}")]
+    Syntax {
+        path: String,
+        line: usize,
+        col: usize,
+        message: String,
+    },
+    #[error("{path}: {}", list_problems(problems))]
+    Invalid {
+        path: String,
+        problems: Vec<Problem>,
+    },
+}
+
+impl MapError {
+    /// The validation problems, if that is what went wrong.
+    pub fn problems(&self) -> &[Problem] {
+        match self {
+            MapError::Invalid { problems, .. } => problems,
+            _ => &[],
+        }
+    }
+}
+
+fn list_problems(problems: &[Problem]) -> String {
+    const SHOWN: usize = 12;
+    let mut text = match problems.len() {
+        1 => String::new(),
+        n => format!("{n} problems:"),
+    };
+    for p in problems.iter().take(SHOWN) {
+        if problems.len() > 1 {
+            text.push_str("\n  ");
+        }
+        text.push_str(&p.to_string());
+    }
+    if problems.len() > SHOWN {
+        text.push_str(&format!("\n  ... and {} more", problems.len() - SHOWN));
+    }
+    text
+}
+
+/// One thing wrong with a map, naming the element it concerns.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Problem {
+    Missing {
+        what: &'static str,
+    },
+    BadVertex {
+        vertex: usize,
+        x: f64,
+        y: f64,
+    },
+    SharedPosition {
+        vertex: usize,
+        first: usize,
+    },
+    BadHeight {
+        sector: usize,
+        which: &'static str,
+        value: f64,
+    },
+    FloorAboveCeiling {
+        sector: usize,
+        floor: f64,
+        ceiling: f64,
+    },
+    BadLight {
+        sector: usize,
+        light: i64,
+    },
+    DanglingVertex {
+        line: usize,
+        end: &'static str,
+        vertex: i64,
+        count: usize,
+    },
+    DanglingSector {
+        line: usize,
+        side: &'static str,
+        sector: i64,
+        count: usize,
+    },
+    BadOffset {
+        line: usize,
+        side: &'static str,
+    },
+    ZeroLength {
+        line: usize,
+    },
+    DuplicateLine {
+        line: usize,
+        first: usize,
+    },
+    Crossing {
+        line: usize,
+        other: usize,
+        at: DVec2,
+    },
+    Touching {
+        line: usize,
+        other: usize,
+        at: DVec2,
+    },
+    Overlap {
+        line: usize,
+        other: usize,
+    },
+    Unclosed {
+        sector: usize,
+        vertex: usize,
+        into: usize,
+        out_of: usize,
+    },
+    InsideOut {
+        sector: usize,
+    },
+    NoLines {
+        sector: usize,
+    },
+    BadThing {
+        thing: usize,
+    },
+    NoPlayerStart,
+    StartOutside {
+        thing: usize,
+        x: f64,
+        y: f64,
+    },
+}
+
+impl fmt::Display for Problem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let max = crate::geom::MAX_COORD;
+        match self {
+            Problem::Missing { what } => write!(f, "the map has no {what}"),
+            Problem::BadVertex { vertex, x, y } => write!(
+                f,
+                "vertex {vertex}: ({x}, {y}) is not a finite coordinate within the supported range -{max}..={max}"
+            ),
+            Problem::SharedPosition { vertex, first } => {
+                write!(f, "vertex {vertex}: same position as vertex {first}; use one vertex")
+            }
+            Problem::BadHeight { sector, which, value } => write!(
+                f,
+                "sector {sector}: {which} height {value} is not finite within the supported range -{max}..={max}"
+            ),
+            Problem::FloorAboveCeiling { sector, floor, ceiling } => {
+                write!(f, "sector {sector}: floor {floor} is above ceiling {ceiling}")
+            }
+            Problem::BadLight { sector, light } => {
+                write!(f, "sector {sector}: light {light} is outside 0..=255")
+            }
+            Problem::DanglingVertex { line, end, vertex, count } => write!(
+                f,
+                "line {line}: `{end}` refers to vertex {vertex}, but the vertices are numbered 0..{count}"
+            ),
+            Problem::DanglingSector { line, side, sector, count } => write!(
+                f,
+                "line {line}: {side} side refers to sector {sector}, but the sectors are numbered 0..{count}"
+            ),
+            Problem::BadOffset { line, side } => {
+                write!(f, "line {line}: {side} side has a texture offset that is not finite")
+            }
+            Problem::ZeroLength { line } => write!(f, "line {line}: has zero length"),
+            Problem::DuplicateLine { line, first } => {
+                write!(f, "line {line}: duplicates line {first} (same two end points)")
+            }
+            Problem::Crossing { line, other, at } => {
+                write!(f, "line {line}: crosses line {other} at ({}, {})", at.x, at.y)
+            }
+            Problem::Touching { line, other, at } => write!(
+                f,
+                "line {line}: meets line {other} at ({}, {}), inside one of them; split the line there",
+                at.x, at.y
+            ),
+            Problem::Overlap { line, other } => write!(f, "line {line}: overlaps line {other}"),
+            Problem::Unclosed { sector, vertex, into, out_of } => write!(
+                f,
+                "sector {sector}: its lines do not close at vertex {vertex} \
+                 ({into} of its boundary edges arrive there, {out_of} leave; they must match)"
+            ),
+            Problem::InsideOut { sector } => write!(
+                f,
+                "sector {sector}: its sides face away from it (the front of a line is its right-hand side)"
+            ),
+            Problem::NoLines { sector } => write!(f, "sector {sector}: no line side refers to it"),
+            Problem::BadThing { thing } => {
+                write!(f, "thing {thing}: position or angle is not finite or out of range")
+            }
+            Problem::NoPlayerStart => {
+                write!(f, "the map has no thing of kind \"{}\"", super::PLAYER_START)
+            }
+            Problem::StartOutside { thing, x, y } => {
+                write!(f, "thing {thing}: the player start ({x}, {y}) is not inside any sector")
+            }
+        }
+    }
+}
+
+/// Reads, parses and validates a sector map file.
+pub fn load_map(path: &Path) -> Result<Map, MapError> {
+    let label = path.display().to_string();
+    let bytes = std::fs::read(path).map_err(|source| MapError::Io {
+        path: label.clone(),
+        source,
+    })?;
+    parse_map_bytes(&bytes, &label)
+}
+
+/// Parses and validates map text; `label` names the source in errors.
+pub fn parse_map(text: &str, label: &str) -> Result<Map, MapError> {
+    parse_map_bytes(text.as_bytes(), label)
+}
+
+pub(crate) fn parse_map_bytes(bytes: &[u8], label: &str) -> Result<Map, MapError> {
+    let source = parse_source(bytes, label)?;
+    validate::validate(&source).map_err(|problems| MapError::Invalid {
+        path: label.to_string(),
+        problems,
+    })
+}
+
+/// Checks that `bytes` are non-empty text and returns them as `&str`.
+pub(crate) fn as_text<'a>(bytes: &'a [u8], label: &str) -> Result<&'a str, MapError> {
+    if let Some(offset) = bytes.iter().position(|&b| b == 0) {
+        return Err(MapError::Binary {
+            path: label.to_string(),
+            offset,
+        });
+    }
+    let text = std::str::from_utf8(bytes).map_err(|e| MapError::Binary {
+        path: label.to_string(),
+        offset: e.valid_up_to(),
+    })?;
+    if text.trim().is_empty() {
+        return Err(MapError::Empty {
+            path: label.to_string(),
+        });
+    }
+    Ok(text)
+}
+
+/// Parses the RON source form without validating it.
+pub fn parse_source(bytes: &[u8], label: &str) -> Result<MapSource, MapError> {
+    let text = as_text(bytes, label)?;
+    // IMPLICIT_SOME lets optional fields be written bare (`middle: "BRICK"`)
+    // while `back: Some(Side(...))` keeps working.
+    let options =
+        ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
+    options
+        .from_str::<MapSource>(text)
+        .map_err(|e| MapError::Syntax {
+            path: label.to_string(),
+            line: e.span.start.line,
+            col: e.span.start.col,
+            message: e.code.to_string(),
+        })
+}

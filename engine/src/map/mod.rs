@@ -1,0 +1,180 @@
+//! The map model: the source form read from RON ([`source`]), the checks that
+//! turn it into a [`Map`] ([`validate`]), and the loader with its errors ([`load`]).
+//!
+//! A [`Map`] is the validated level: indices are in range, geometry is finite and
+//! closed, and every sector is enclosed. The BSP compiler takes it from here.
+
+pub mod load;
+pub mod source;
+pub mod validate;
+
+use glam::DVec2;
+use serde::{Deserialize, Serialize};
+
+pub use load::{load_map, parse_map, MapError, Problem};
+
+/// A validated sector map. Built only by [`validate::validate`].
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Map {
+    pub name: String,
+    pub vertices: Vec<DVec2>,
+    pub sectors: Vec<Sector>,
+    pub lines: Vec<Line>,
+    pub things: Vec<Thing>,
+    /// Index into `things` of the (first) player start.
+    pub player_start: usize,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Sector {
+    pub floor: f64,
+    pub ceiling: f64,
+    pub light: u8,
+    pub floor_texture: Option<String>,
+    pub ceiling_texture: Option<String>,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Line {
+    pub from: usize,
+    pub to: usize,
+    /// The right-hand side walking `from -> to`.
+    pub front: Side,
+    /// `None` for a solid one-sided wall.
+    pub back: Option<Side>,
+    pub flags: LineFlags,
+}
+
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub struct LineFlags {
+    pub upper_unpegged: bool,
+    pub lower_unpegged: bool,
+    pub impassable: bool,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Side {
+    pub sector: usize,
+    pub upper: Option<String>,
+    pub middle: Option<String>,
+    pub lower: Option<String>,
+    pub x_offset: f64,
+    pub y_offset: f64,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Thing {
+    pub kind: String,
+    pub pos: DVec2,
+    /// Degrees, counter-clockwise from +x.
+    pub angle: f64,
+}
+
+/// Thing kind that marks where the player begins.
+pub const PLAYER_START: &str = "player_start";
+
+impl Map {
+    pub fn line_points(&self, line: &Line) -> (DVec2, DVec2) {
+        (self.vertices[line.from], self.vertices[line.to])
+    }
+
+    pub fn player_start(&self) -> &Thing {
+        &self.things[self.player_start]
+    }
+
+    /// The sector containing `p`, by the crossing-number test over each sector's
+    /// lines; `None` outside every sector or exactly on a line.
+    ///
+    /// This is deliberately independent of the BSP: it is how the reference
+    /// renderer, pose checks and tests find a point's sector.
+    pub fn sector_at(&self, p: DVec2) -> Option<usize> {
+        let mut crossings = vec![0u32; self.sectors.len()];
+        for line in &self.lines {
+            let (a, b) = self.line_points(line);
+            if crate::geom::exact_side(a, b, p) == crate::geom::Side::On && on_segment(a, b, p) {
+                return None;
+            }
+            // Half-open rule on y so a ray through a vertex counts once.
+            if (a.y > p.y) != (b.y > p.y) {
+                let x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);
+                if x > p.x {
+                    crossings[line.front.sector] += 1;
+                    if let Some(back) = &line.back {
+                        crossings[back.sector] += 1;
+                    }
+                }
+            }
+        }
+        crossings.iter().position(|c| c % 2 == 1)
+    }
+
+    /// Distance from `p` to the nearest line.
+    pub fn distance_to_nearest_line(&self, p: DVec2) -> f64 {
+        self.lines
+            .iter()
+            .map(|line| {
+                let (a, b) = self.line_points(line);
+                let d = b - a;
+                let t = ((p - a).dot(d) / d.length_squared()).clamp(0.0, 1.0);
+                (a + d * t).distance(p)
+            })
+            .fold(f64::INFINITY, f64::min)
+    }
+}
+
+fn on_segment(a: DVec2, b: DVec2, p: DVec2) -> bool {
+    p.x >= a.x.min(b.x) && p.x <= a.x.max(b.x) && p.y >= a.y.min(b.y) && p.y <= a.y.max(b.y)
+}
+
+impl Map {
+    /// The RON source form of this map (what the compiled file stores).
+    pub fn to_source(&self) -> source::MapSource {
+        use source::{LineSource, MapSource, SectorSource, SideSource, ThingSource};
+        let side = |s: &Side| SideSource {
+            sector: s.sector as i64,
+            upper: s.upper.clone(),
+            middle: s.middle.clone(),
+            lower: s.lower.clone(),
+            x_offset: s.x_offset,
+            y_offset: s.y_offset,
+        };
+        MapSource {
+            name: self.name.clone(),
+            vertices: self.vertices.iter().map(|v| (v.x, v.y)).collect(),
+            sectors: self
+                .sectors
+                .iter()
+                .map(|s| SectorSource {
+                    floor: s.floor,
+                    ceiling: s.ceiling,
+                    light: i64::from(s.light),
+                    floor_texture: s.floor_texture.clone(),
+                    ceiling_texture: s.ceiling_texture.clone(),
+                })
+                .collect(),
+            lines: self
+                .lines
+                .iter()
+                .map(|l| LineSource {
+                    from: l.from as i64,
+                    to: l.to as i64,
+                    front: side(&l.front),
+                    back: l.back.as_ref().map(side),
+                    upper_unpegged: l.flags.upper_unpegged,
+                    lower_unpegged: l.flags.lower_unpegged,
+                    impassable: l.flags.impassable,
+                })
+                .collect(),
+            things: self
+                .things
+                .iter()
+                .map(|t| ThingSource {
+                    kind: t.kind.clone(),
+                    x: t.pos.x,
+                    y: t.pos.y,
+                    angle: t.angle,
+                })
+                .collect(),
+        }
+    }
+}

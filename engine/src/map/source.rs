@@ -1,0 +1,93 @@
+//! The RON source form of a sector map, exactly as a person writes it.
+//!
+//! Types here are deliberately loose (indices as `i64`, light as `i64`) so that
+//! a bad value reaches validation and gets an error naming the element, instead
+//! of a bare type error from the parser. Struct names match the RON keywords
+//! (`Map(...)`, `Sector(...)`), which RON checks.
+
+use serde::{Deserialize, Serialize};
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(rename = "Map")]
+pub struct MapSource {
+    pub name: String,
+    pub vertices: Vec<(f64, f64)>,
+    pub sectors: Vec<SectorSource>,
+    pub lines: Vec<LineSource>,
+    #[serde(default)]
+    pub things: Vec<ThingSource>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(rename = "Sector")]
+pub struct SectorSource {
+    pub floor: f64,
+    pub ceiling: f64,
+    pub light: i64,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub floor_texture: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ceiling_texture: Option<String>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(rename = "Line")]
+pub struct LineSource {
+    pub from: i64,
+    pub to: i64,
+    pub front: SideSource,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub back: Option<SideSource>,
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub upper_unpegged: bool,
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub lower_unpegged: bool,
+    /// Blocks movement even when two-sided (a fence, a window).
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub impassable: bool,
+}
+
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
+#[serde(rename = "Side")]
+pub struct SideSource {
+    pub sector: i64,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub upper: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub middle: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub lower: Option<String>,
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub x_offset: f64,
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub y_offset: f64,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(rename = "Thing")]
+pub struct ThingSource {
+    pub kind: String,
+    pub x: f64,
+    pub y: f64,
+    #[serde(default)]
+    pub angle: f64,
+}
+
+fn is_false(b: &bool) -> bool {
+    !*b
+}
+
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
+}
+
+impl MapSource {
+    /// Pretty RON text that [`crate::map::parse_map`] reads back.
+    pub fn to_ron(&self) -> String {
+        let config = ron::ser::PrettyConfig::new()
+            .struct_names(true)
+            .depth_limit(3);
+        // Serializing plain data to a String cannot fail.
+        ron::ser::to_string_pretty(self, config).unwrap_or_default()
+    }
+}

@@ -1,0 +1,335 @@
+//! Validation: every check that turns a [`MapSource`] into a [`Map`].
+//!
+//! Checks run in three phases, each only when the one before passed, so that a
+//! later check can rely on what an earlier one established: (1) each element on
+//! its own (indices in range, finite numbers); (2) geometry (zero length,
+//! duplicates, crossings, closure, orientation); (3) things and the player start.
+
+use std::collections::HashMap;
+
+use glam::DVec2;
+
+use super::load::Problem;
+use super::source::{MapSource, SideSource};
+use super::{Line, LineFlags, Map, Sector, Side, Thing, PLAYER_START};
+use crate::geom::{cross, segment_contact, Contact, MAX_COORD};
+
+/// At most this many crossing problems are listed; a map with more is a mess
+/// the first few already describe.
+const MAX_CROSSINGS_REPORTED: usize = 20;
+
+pub fn validate(src: &MapSource) -> Result<Map, Vec<Problem>> {
+    let map = check_elements(src)?;
+    let mut problems = check_geometry(&map);
+    if !problems.is_empty() {
+        return Err(problems);
+    }
+    match find_player_start(&map) {
+        Ok(start) => Ok(Map {
+            player_start: start,
+            ..map
+        }),
+        Err(p) => {
+            problems.push(p);
+            Err(problems)
+        }
+    }
+}
+
+fn in_range(x: f64) -> bool {
+    x.is_finite() && x.abs() <= MAX_COORD
+}
+
+/// Phase 1: every element on its own. Returns a [`Map`] whose indices are safe.
+fn check_elements(src: &MapSource) -> Result<Map, Vec<Problem>> {
+    let mut problems = Vec::new();
+    for (what, empty) in [
+        ("vertices", src.vertices.is_empty()),
+        ("sectors", src.sectors.is_empty()),
+        ("lines", src.lines.is_empty()),
+    ] {
+        if empty {
+            problems.push(Problem::Missing { what });
+        }
+    }
+    let vertices: Vec<DVec2> = src
+        .vertices
+        .iter()
+        .map(|&(x, y)| DVec2::new(x, y))
+        .collect();
+    for (i, v) in vertices.iter().enumerate() {
+        if !in_range(v.x) || !in_range(v.y) {
+            problems.push(Problem::BadVertex {
+                vertex: i,
+                x: v.x,
+                y: v.y,
+            });
+        }
+    }
+    let sectors = src.sectors.iter().enumerate().map(|(i, s)| {
+        for (which, value) in [("floor", s.floor), ("ceiling", s.ceiling)] {
+            if !in_range(value) {
+                problems.push(Problem::BadHeight {
+                    sector: i,
+                    which,
+                    value,
+                });
+            }
+        }
+        if s.floor > s.ceiling {
+            problems.push(Problem::FloorAboveCeiling {
+                sector: i,
+                floor: s.floor,
+                ceiling: s.ceiling,
+            });
+        }
+        if !(0..=255).contains(&s.light) {
+            problems.push(Problem::BadLight {
+                sector: i,
+                light: s.light,
+            });
+        }
+        Sector {
+            floor: s.floor,
+            ceiling: s.ceiling,
+            light: s.light.clamp(0, 255) as u8,
+            floor_texture: s.floor_texture.clone(),
+            ceiling_texture: s.ceiling_texture.clone(),
+        }
+    });
+    let sectors: Vec<Sector> = sectors.collect();
+    let mut lines = Vec::with_capacity(src.lines.len());
+    for (i, l) in src.lines.iter().enumerate() {
+        let vertex = |end: &'static str, v: i64, problems: &mut Vec<Problem>| {
+            let ok = usize::try_from(v).ok().filter(|&v| v < vertices.len());
+            if ok.is_none() {
+                problems.push(Problem::DanglingVertex {
+                    line: i,
+                    end,
+                    vertex: v,
+                    count: vertices.len(),
+                });
+            }
+            ok.unwrap_or(0)
+        };
+        let from = vertex("from", l.from, &mut problems);
+        let to = vertex("to", l.to, &mut problems);
+        let front = check_side(i, "front", &l.front, sectors.len(), &mut problems);
+        let back = l
+            .back
+            .as_ref()
+            .map(|b| check_side(i, "back", b, sectors.len(), &mut problems));
+        let flags = LineFlags {
+            upper_unpegged: l.upper_unpegged,
+            lower_unpegged: l.lower_unpegged,
+            impassable: l.impassable,
+        };
+        lines.push(Line {
+            from,
+            to,
+            front,
+            back,
+            flags,
+        });
+    }
+    let things = src
+        .things
+        .iter()
+        .map(|t| Thing {
+            kind: t.kind.clone(),
+            pos: DVec2::new(t.x, t.y),
+            angle: t.angle,
+        })
+        .collect();
+    if !problems.is_empty() {
+        return Err(problems);
+    }
+    Ok(Map {
+        name: src.name.clone(),
+        vertices,
+        sectors,
+        lines,
+        things,
+        player_start: 0,
+    })
+}
+
+fn check_side(
+    line: usize,
+    side: &'static str,
+    s: &SideSource,
+    sectors: usize,
+    problems: &mut Vec<Problem>,
+) -> Side {
+    let sector = usize::try_from(s.sector).ok().filter(|&v| v < sectors);
+    if sector.is_none() {
+        problems.push(Problem::DanglingSector {
+            line,
+            side,
+            sector: s.sector,
+            count: sectors,
+        });
+    }
+    if !s.x_offset.is_finite() || !s.y_offset.is_finite() {
+        problems.push(Problem::BadOffset { line, side });
+    }
+    Side {
+        sector: sector.unwrap_or(0),
+        upper: s.upper.clone(),
+        middle: s.middle.clone(),
+        lower: s.lower.clone(),
+        x_offset: s.x_offset,
+        y_offset: s.y_offset,
+    }
+}
+
+/// Phase 2: shapes. Indices are known to be in range here.
+fn check_geometry(map: &Map) -> Vec<Problem> {
+    let mut problems = Vec::new();
+    let mut seen_pos: HashMap<(u64, u64), usize> = HashMap::new();
+    for (i, v) in map.vertices.iter().enumerate() {
+        // +0.0 folds -0.0 into 0.0 so the two zeros count as one position.
+        let key = ((v.x + 0.0).to_bits(), (v.y + 0.0).to_bits());
+        if let Some(&first) = seen_pos.get(&key) {
+            problems.push(Problem::SharedPosition { vertex: i, first });
+        } else {
+            seen_pos.insert(key, i);
+        }
+    }
+    let mut seen_pair: HashMap<(usize, usize), usize> = HashMap::new();
+    for (i, l) in map.lines.iter().enumerate() {
+        if map.vertices[l.from] == map.vertices[l.to] {
+            problems.push(Problem::ZeroLength { line: i });
+        }
+        let key = (l.from.min(l.to), l.from.max(l.to));
+        if let Some(&first) = seen_pair.get(&key) {
+            problems.push(Problem::DuplicateLine { line: i, first });
+        } else {
+            seen_pair.insert(key, i);
+        }
+    }
+    if !problems.is_empty() {
+        return problems;
+    }
+    problems.extend(check_crossings(map));
+    if problems.is_empty() {
+        problems.extend(check_sectors(map));
+    }
+    problems
+}
+
+/// Every pair of lines whose bounding boxes overlap, tested exactly. A sweep
+/// over x keeps this near-linear for real maps.
+fn check_crossings(map: &Map) -> Vec<Problem> {
+    let mut order: Vec<usize> = (0..map.lines.len()).collect();
+    let min_x = |i: usize| {
+        let (a, b) = map.line_points(&map.lines[i]);
+        a.x.min(b.x)
+    };
+    order.sort_by(|&a, &b| min_x(a).total_cmp(&min_x(b)));
+    let mut problems = Vec::new();
+    for (k, &i) in order.iter().enumerate() {
+        let (p0, p1) = map.line_points(&map.lines[i]);
+        let (max_x, lo_y, hi_y) = (p0.x.max(p1.x), p0.y.min(p1.y), p0.y.max(p1.y));
+        for &j in &order[k + 1..] {
+            let (q0, q1) = map.line_points(&map.lines[j]);
+            if q0.x.min(q1.x) > max_x {
+                break;
+            }
+            if q0.y.max(q1.y) < lo_y || q0.y.min(q1.y) > hi_y {
+                continue;
+            }
+            let (line, other) = (i.min(j), i.max(j));
+            let problem = match segment_contact(p0, p1, q0, q1) {
+                Contact::None => continue,
+                Contact::Cross(at) => Problem::Crossing { line, other, at },
+                Contact::Touch(at) => Problem::Touching { line, other, at },
+                Contact::Overlap => Problem::Overlap { line, other },
+            };
+            problems.push(problem);
+            if problems.len() >= MAX_CROSSINGS_REPORTED {
+                return problems;
+            }
+        }
+    }
+    problems.sort_by_key(|p| match p {
+        Problem::Crossing { line, .. }
+        | Problem::Touching { line, .. }
+        | Problem::Overlap { line, .. } => *line,
+        _ => usize::MAX,
+    });
+    problems
+}
+
+/// Each side, as a directed edge with its sector on the right.
+fn sector_edges(map: &Map) -> impl Iterator<Item = (usize, usize, usize)> + '_ {
+    map.lines.iter().flat_map(|l| {
+        let front = Some((l.front.sector, l.from, l.to));
+        let back = l.back.as_ref().map(|b| (b.sector, l.to, l.from));
+        front.into_iter().chain(back)
+    })
+}
+
+/// Closure (at every vertex as many of a sector's edges arrive as leave) and
+/// orientation (the edges wind clockwise, so the sector is on their right).
+fn check_sectors(map: &Map) -> Vec<Problem> {
+    let n = map.sectors.len();
+    let mut degree: HashMap<(usize, usize), (usize, usize)> = HashMap::new();
+    let mut area = vec![0.0f64; n];
+    let mut used = vec![false; n];
+    // Measure areas relative to one vertex: at a million units, absolute
+    // coordinates would cancel away the small rooms' areas.
+    let origin = map.vertices[0];
+    for (sector, from, to) in sector_edges(map) {
+        used[sector] = true;
+        degree.entry((sector, from)).or_default().1 += 1;
+        degree.entry((sector, to)).or_default().0 += 1;
+        area[sector] += cross(map.vertices[from] - origin, map.vertices[to] - origin);
+    }
+    let mut problems = Vec::new();
+    let mut unclosed: Vec<_> = degree.iter().filter(|(_, (i, o))| i != o).collect();
+    unclosed.sort();
+    let mut reported = vec![false; n];
+    for (&(sector, vertex), &(into, out_of)) in unclosed {
+        if !reported[sector] {
+            reported[sector] = true;
+            problems.push(Problem::Unclosed {
+                sector,
+                vertex,
+                into,
+                out_of,
+            });
+        }
+    }
+    for sector in 0..n {
+        if !used[sector] {
+            problems.push(Problem::NoLines { sector });
+        } else if !reported[sector] && area[sector] >= 0.0 {
+            problems.push(Problem::InsideOut { sector });
+        }
+    }
+    problems
+}
+
+/// Phase 3: things. The first player start is the one used.
+fn find_player_start(map: &Map) -> Result<usize, Problem> {
+    for (i, t) in map.things.iter().enumerate() {
+        if !in_range(t.pos.x) || !in_range(t.pos.y) || !t.angle.is_finite() {
+            return Err(Problem::BadThing { thing: i });
+        }
+    }
+    let start = map
+        .things
+        .iter()
+        .position(|t| t.kind == PLAYER_START)
+        .ok_or(Problem::NoPlayerStart)?;
+    let p = map.things[start].pos;
+    match map.sector_at(p) {
+        Some(_) => Ok(start),
+        None => Err(Problem::StartOutside {
+            thing: start,
+            x: p.x,
+            y: p.y,
+        }),
+    }
+}

@@ -1,0 +1,127 @@
+//! The front-to-back walk of the compiled BSP. Near subtrees are drawn before
+//! far ones; a subtree whose bounding box projects only onto closed columns is
+//! skipped; the walk stops as soon as every column has closed. Leaves hand
+//! their segs to [`super::walls`].
+
+use super::columns::ColumnWriter;
+use super::frame::Frame;
+use super::shade::{Shade, Surface, VOID};
+use super::view::Camera;
+use super::walls::draw_seg;
+use crate::bsp::{Child, CompiledMap};
+use crate::geom::{front_distance, Aabb};
+
+pub fn render(
+    level: &CompiledMap,
+    cam: &Camera,
+    frame: &mut Frame,
+    out: &mut ColumnWriter,
+    shade: Shade,
+) {
+    let bsp = &level.bsp;
+    frame.stack.push((bsp.root, None));
+    while let Some((child, bbox)) = frame.stack.pop() {
+        if frame.occlusion.all_closed() {
+            break;
+        }
+        if let Some(bbox) = bbox {
+            if !box_visible(cam, &bbox, frame) {
+                frame.stats.subtrees_culled += 1;
+                continue;
+            }
+        }
+        match child {
+            Child::Node(i) => {
+                frame.stats.nodes_visited += 1;
+                let node = &bsp.nodes[i];
+                // On the line itself either order is right: no ray crosses it.
+                let near = (front_distance(node.a, node.b, cam.eye) < 0.0) as usize;
+                frame
+                    .stack
+                    .push((node.children[1 - near], Some(node.bbox[1 - near])));
+                frame
+                    .stack
+                    .push((node.children[near], Some(node.bbox[near])));
+            }
+            Child::Leaf(i) => {
+                frame.stats.leaves_visited += 1;
+                let leaf = &bsp.leaves[i];
+                for seg in bsp.leaf_segs(leaf) {
+                    draw_seg(&level.map, cam, seg, frame, out, shade);
+                    if frame.occlusion.all_closed() {
+                        break;
+                    }
+                }
+            }
+        }
+    }
+    fill_void(frame, out, shade);
+}
+
+/// Columns still open after the walk look out of the map: paint them void, so
+/// that every pixel is still written exactly once.
+fn fill_void(frame: &mut Frame, out: &mut ColumnWriter, shade: Shade) {
+    let colour = if shade == Shade::Ids {
+        super::shade::ids_colour(Surface::Void)
+    } else {
+        VOID
+    };
+    let width = frame.occlusion.width();
+    let mut x = 0;
+    while let Some(start) = frame.occlusion.next_open(x, width) {
+        let stop = frame.occlusion.next_closed(start, width);
+        for col in start..stop {
+            out.fill(col, frame.clip_top[col], frame.clip_bottom[col], colour);
+        }
+        x = stop;
+    }
+}
+
+/// Could anything inside `bbox` still show? Projects the box's silhouette (the
+/// two corners that bound it as seen from the eye, as Doom's R_CheckBBox picks
+/// them) and asks the occlusion array about the columns between.
+fn box_visible(cam: &Camera, bbox: &Aabb, frame: &Frame) -> bool {
+    // Within a unit of the box, call it visible: the silhouette argument below
+    // needs the eye clear of the box by much more than NEAR.
+    let grown = Aabb {
+        min: bbox.min - 1.0,
+        max: bbox.max + 1.0,
+    };
+    if grown.contains(cam.eye) {
+        return true;
+    }
+    let (e, lo, hi) = (cam.eye, bbox.min, bbox.max);
+    let region = |v: f64, lo: f64, hi: f64| {
+        if v < lo {
+            0
+        } else if v <= hi {
+            1
+        } else {
+            2
+        }
+    };
+    // Corners counter-clockwise from bottom-left.
+    let c = [
+        lo,
+        glam::DVec2::new(hi.x, lo.y),
+        hi,
+        glam::DVec2::new(lo.x, hi.y),
+    ];
+    // The visible chain of box edges runs counter-clockwise from `a` to `b`, so
+    // the eye is on the right of a -> b and `a` projects left of `b`.
+    let (a, b) = match (region(e.x, lo.x, hi.x), region(e.y, lo.y, hi.y)) {
+        (0, 0) => (c[3], c[1]),
+        (1, 0) => (c[0], c[1]),
+        (2, 0) => (c[0], c[2]),
+        (0, 1) => (c[3], c[0]),
+        (2, 1) => (c[1], c[2]),
+        (0, 2) => (c[2], c[0]),
+        (1, 2) => (c[2], c[3]),
+        (2, 2) => (c[1], c[3]),
+        _ => return true,
+    };
+    match cam.project_span(cam.to_camera(a), cam.to_camera(b)) {
+        Some((x0, x1)) => frame.occlusion.any_open(x0, x1),
+        None => false,
+    }
+}

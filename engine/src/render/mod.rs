@@ -1,0 +1,75 @@
+//! Rendering a frame: a [`View`] of a compiled map into a [`Framebuffer`].
+//!
+//! [`render_frame`] is the recipe: bind the view to the screen, reset the
+//! per-frame state, run the chosen visibility pass, which writes every pixel
+//! exactly once through the shared [`columns::ColumnWriter`].
+
+pub mod bsp;
+pub mod columns;
+pub mod frame;
+pub mod occlusion;
+pub mod reference;
+pub mod shade;
+pub mod view;
+pub mod walls;
+
+pub use frame::{Frame, FrameStats};
+pub use shade::Shade;
+pub use view::{Camera, View};
+
+use crate::bsp::CompiledMap;
+use crate::framebuffer::Framebuffer;
+
+/// The visibility algorithms `--renderer` selects.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Renderer {
+    /// Front-to-back BSP walk with the column occlusion array.
+    #[default]
+    Bsp,
+    /// Brute-force f64 ray per column against every line: the oracle.
+    Reference,
+}
+
+impl Renderer {
+    pub const ALL: [Renderer; 2] = [Renderer::Bsp, Renderer::Reference];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Renderer::Bsp => "bsp",
+            Renderer::Reference => "reference",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Renderer> {
+        Self::ALL.into_iter().find(|r| r.name() == name)
+    }
+}
+
+#[derive(Clone, Copy, Debug, Default)]
+pub struct RenderOptions {
+    pub renderer: Renderer,
+    pub shade: Shade,
+    /// Keep a per-pixel write count (see [`Frame::write_counts`]).
+    pub count_writes: bool,
+}
+
+/// Renders one frame and returns what it cost.
+pub fn render_frame(
+    level: &CompiledMap,
+    view: &View,
+    options: &RenderOptions,
+    frame: &mut Frame,
+    fb: &mut Framebuffer,
+) -> FrameStats {
+    let cam = Camera::new(view, fb.width, fb.height);
+    frame.begin(&cam, options.count_writes);
+    let mut counts = std::mem::take(&mut frame.counts);
+    let mut out = columns::ColumnWriter::new(fb, options.count_writes.then_some(&mut counts));
+    match options.renderer {
+        Renderer::Bsp => bsp::render(level, &cam, frame, &mut out, options.shade),
+        Renderer::Reference => reference::render(&level.map, &cam, frame, &mut out, options.shade),
+    }
+    frame.stats.pixels_written = out.written;
+    frame.counts = counts;
+    frame.stats
+}

@@ -1,0 +1,99 @@
+//! What colour a surface gets: `ids` (a colour derived only from the element's
+//! index, for comparing renderers pixel by pixel) or `flat` (sector light on
+//! per-line and per-sector colours, for looking at).
+
+use crate::framebuffer::rgb;
+
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Shade {
+    Ids,
+    #[default]
+    Flat,
+}
+
+impl Shade {
+    pub fn name(self) -> &'static str {
+        match self {
+            Shade::Ids => "ids",
+            Shade::Flat => "flat",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Shade> {
+        [Shade::Ids, Shade::Flat]
+            .into_iter()
+            .find(|s| s.name() == name)
+    }
+}
+
+/// What a pixel shows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Surface {
+    Wall { line: usize },
+    Floor { sector: usize },
+    Ceiling { sector: usize },
+    Void,
+}
+
+/// Colour of the void: black, which no `ids` surface colour can be.
+pub const VOID: u32 = rgb(0, 0, 0);
+
+/// SplitMix64's finalizer: spreads consecutive indices over the colour space.
+fn mix(mut z: u64) -> u64 {
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
+/// An `ids` colour: bright hashed channels, with the low two bits of blue
+/// tagging the kind (1 wall, 2 floor, 3 ceiling) so kinds never collide and
+/// nothing is black.
+fn id_colour(index: usize, kind: u8) -> u32 {
+    let h = mix(index as u64 ^ (u64::from(kind) << 56));
+    let [r, g, b] = [h as u8, (h >> 8) as u8, (h >> 16) as u8].map(|c| 48 + c % 200);
+    rgb(r, g, (b & !3) | kind)
+}
+
+pub fn ids_colour(surface: Surface) -> u32 {
+    match surface {
+        Surface::Wall { line } => id_colour(line, 1),
+        Surface::Floor { sector } => id_colour(sector, 2),
+        Surface::Ceiling { sector } => id_colour(sector, 3),
+        Surface::Void => VOID,
+    }
+}
+
+/// Colour of a surface in `shade`, lit by `light` (the sector the viewer sees
+/// it from). `facing` scales walls by their angle to the light (Doom's fake
+/// contrast: walls running east-west a little darker than north-south).
+pub fn colour(shade: Shade, surface: Surface, light: u8, facing: f64) -> u32 {
+    let (base, scale) = match (shade, surface) {
+        (Shade::Ids, _) => return ids_colour(surface),
+        (_, Surface::Void) => return VOID,
+        (Shade::Flat, Surface::Wall { line }) => {
+            const PALETTE: [[u8; 3]; 4] = [
+                [170, 120, 90],
+                [150, 150, 160],
+                [120, 140, 110],
+                [175, 160, 120],
+            ];
+            (PALETTE[line % PALETTE.len()], facing)
+        }
+        (Shade::Flat, Surface::Floor { .. }) => ([110, 100, 90], 0.85),
+        (Shade::Flat, Surface::Ceiling { .. }) => ([140, 140, 150], 0.7),
+    };
+    let k = f64::from(light) / 255.0 * scale;
+    let [r, g, b] = base.map(|c| (f64::from(c) * k).clamp(0.0, 255.0) as u8);
+    rgb(r, g, b)
+}
+
+/// Fake-contrast factor for a wall running along `d`: 1 for north-south,
+/// 0.8 for east-west, in between for diagonals.
+pub fn wall_facing(d: glam::DVec2) -> f64 {
+    let len = d.length();
+    if len > 0.0 {
+        0.8 + 0.2 * (d.y.abs() / len)
+    } else {
+        1.0
+    }
+}

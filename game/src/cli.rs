@@ -1,0 +1,159 @@
+//! Command-line arguments and the parsers for their small formats (sizes, poses).
+
+use std::path::PathBuf;
+
+use clap::{Args, Parser, Subcommand};
+use sightline::bsp::SplitterKind;
+use sightline::render::{Renderer, Shade};
+
+#[derive(Parser)]
+#[command(
+    name = "sightline",
+    version,
+    about = "A Doom-style 2.5D engine: compile maps, capture frames"
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Option<Command>,
+}
+
+#[derive(Subcommand)]
+pub enum Command {
+    /// Compile a RON map into a BSP map file.
+    Compile(CompileArgs),
+    /// Render one frame headless to a PNG.
+    Capture(CaptureArgs),
+}
+
+#[derive(Args)]
+pub struct CompileArgs {
+    /// The RON map to compile.
+    pub map: PathBuf,
+    /// Where to write the compiled map.
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// Partition heuristic: random (randomized autopartition) or cost (splits and balance).
+    #[arg(long, default_value = "cost", value_parser = parse_splitter)]
+    pub splitter: SplitterKind,
+    /// Seed of the random splitter.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Print the compile figures as one JSON object on the last line.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Args)]
+pub struct CaptureArgs {
+    /// A RON map or a compiled map.
+    pub map: PathBuf,
+    /// X,Y,ANGLE[,Z]: where the eye is and where it looks (degrees,
+    /// counter-clockwise from east). Default: the player start.
+    #[arg(long, value_parser = parse_pose, allow_hyphen_values = true)]
+    pub pose: Option<Pose>,
+    /// Frame size, WxH.
+    #[arg(long, default_value = "640x400", value_parser = parse_size)]
+    pub size: (usize, usize),
+    #[arg(long, default_value = "bsp", value_parser = parse_renderer)]
+    pub renderer: Renderer,
+    /// ids: each wall, floor and ceiling in a colour from its index; flat: lit colours.
+    #[arg(long, default_value = "flat", value_parser = parse_shade)]
+    pub shade: Shade,
+    /// The PNG to write.
+    #[arg(short, long)]
+    pub output: PathBuf,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Pose {
+    pub x: f64,
+    pub y: f64,
+    pub angle: f64,
+    pub z: Option<f64>,
+}
+
+/// Largest frame side we accept, and largest pixel count (a 16K square).
+const MAX_SIDE: usize = 16_384;
+const MAX_PIXELS: usize = 16_384 * 16_384;
+
+pub fn parse_size(s: &str) -> Result<(usize, usize), String> {
+    let (w, h) = s
+        .split_once(['x', 'X'])
+        .ok_or_else(|| format!("size `{s}` is not WxH, e.g. 640x400"))?;
+    let side = |v: &str| {
+        v.trim()
+            .parse::<usize>()
+            .ok()
+            .filter(|n| (1..=MAX_SIDE).contains(n))
+            .ok_or_else(|| {
+                format!("size `{s}`: `{v}` is not a whole number of pixels in 1..={MAX_SIDE}")
+            })
+    };
+    let (w, h) = (side(w)?, side(h)?);
+    if w * h > MAX_PIXELS {
+        return Err(format!("size `{s}` has more than {MAX_PIXELS} pixels"));
+    }
+    Ok((w, h))
+}
+
+pub fn parse_pose(s: &str) -> Result<Pose, String> {
+    let parts: Vec<&str> = s.split(',').collect();
+    if !(3..=4).contains(&parts.len()) {
+        return Err(format!("pose `{s}` is not X,Y,ANGLE or X,Y,ANGLE,Z"));
+    }
+    let mut values = Vec::with_capacity(4);
+    for p in &parts {
+        let v: f64 = p
+            .trim()
+            .parse()
+            .map_err(|_| format!("pose `{s}`: `{p}` is not a number"))?;
+        if !v.is_finite() {
+            return Err(format!("pose `{s}`: `{p}` is not finite"));
+        }
+        values.push(v);
+    }
+    Ok(Pose {
+        x: values[0],
+        y: values[1],
+        angle: values[2],
+        z: values.get(3).copied(),
+    })
+}
+
+fn parse_splitter(s: &str) -> Result<SplitterKind, String> {
+    SplitterKind::from_name(s).ok_or_else(|| {
+        let names: Vec<_> = SplitterKind::ALL.iter().map(|k| k.name()).collect();
+        format!("unknown splitter `{s}`; choose one of {}", names.join(", "))
+    })
+}
+
+fn parse_renderer(s: &str) -> Result<Renderer, String> {
+    Renderer::from_name(s).ok_or_else(|| {
+        let names: Vec<_> = Renderer::ALL.iter().map(|r| r.name()).collect();
+        format!("unknown renderer `{s}`; choose one of {}", names.join(", "))
+    })
+}
+
+fn parse_shade(s: &str) -> Result<Shade, String> {
+    Shade::from_name(s).ok_or_else(|| format!("unknown shade `{s}`; choose ids or flat"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sizes_and_poses() {
+        assert_eq!(parse_size("320x200"), Ok((320, 200)));
+        assert!(parse_size("0x200").is_err());
+        assert!(parse_size("320").is_err());
+        assert!(parse_size("99999x2").is_err());
+        assert_eq!(parse_pose("1,2,90").map(|p| p.z), Ok(None));
+        assert_eq!(
+            parse_pose("1,-2,90,50").map(|p| (p.y, p.z)),
+            Ok((-2.0, Some(50.0)))
+        );
+        assert!(parse_pose("1,2").is_err());
+        assert!(parse_pose("1,2,nan").is_err());
+    }
+}

@@ -1,0 +1,42 @@
+//! `sightline compile`: RON map in, compiled BSP map out (atomically).
+
+use anyhow::Result;
+use sightline::bsp::{build, file, BuildOptions};
+use sightline::level::{check_not_input, write_atomic, LevelError};
+use sightline::map::load_map;
+
+use crate::cli::CompileArgs;
+
+pub fn run(args: &CompileArgs) -> Result<()> {
+    check_not_input(&args.map, &args.output)?;
+    let map = load_map(&args.map)?;
+    let options = BuildOptions {
+        splitter: args.splitter,
+        seed: args.seed,
+    };
+    let compiled = build(&map, &options).map_err(|source| LevelError::Compile {
+        path: args.map.display().to_string(),
+        source,
+    })?;
+    write_atomic(&args.output, &file::to_bytes(&compiled))?;
+    let s = &compiled.stats;
+    if args.json {
+        println!("{}", serde_json::to_string(s)?);
+    } else {
+        println!(
+            "{}: {} lines, {} sides -> {} segs ({} splits), {} nodes, {} leaves, depth {}, {:.1} ms ({} splitter) -> {}",
+            args.map.display(),
+            s.lines_in,
+            s.sides_in,
+            s.sides_out,
+            s.splits,
+            s.nodes,
+            s.leaves,
+            s.depth,
+            s.build_ms,
+            s.splitter,
+            args.output.display()
+        );
+    }
+    Ok(())
+}

@@ -1,0 +1,204 @@
+"""Tiny helper for writing Sightline sector maps from region polygons (stdlib only).
+
+Describe each sector as regions: an outer polygon plus optional hole polygons.
+Orientation is fixed up automatically (outer boundaries clockwise, holes
+counter-clockwise, y up) so the sector is always on the right of its edges.
+Then `build()` turns the regions into lines:
+
+* every polygon edge is split at any other map vertex lying strictly inside it
+  (so neighbouring regions never form T-junctions);
+* an edge used by one region side only becomes a one-sided wall;
+* an edge used by two regions in opposite directions becomes a two-sided line
+  (front = the sector with the higher floor, as in two_rooms.ron);
+* anything else (the same edge used twice in one direction, or three times)
+  means overlapping regions and raises an error.
+
+Coordinates are kept as Python floats and must be exact binary fractions;
+vertices are deduplicated by exact coordinates.
+"""
+
+from fractions import Fraction
+
+
+def fmt(v):
+    """Format a float the way the map format wants it: always a decimal point."""
+    v = float(v)
+    s = repr(v)
+    if "e" in s or "E" in s or "inf" in s or "nan" in s:
+        raise ValueError(f"cannot write {v!r} without an exponent")
+    if "." not in s:
+        s += ".0"
+    return s
+
+
+def signed_area2(pts):
+    s = 0.0
+    for i in range(len(pts)):
+        x1, y1 = pts[i]
+        x2, y2 = pts[(i + 1) % len(pts)]
+        s += Fraction(x1) * Fraction(y2) - Fraction(x2) * Fraction(y1)
+    return s
+
+
+def clockwise(pts):
+    pts = [(float(x), float(y)) for x, y in pts]
+    return pts if signed_area2(pts) < 0 else pts[::-1]
+
+
+def counter_clockwise(pts):
+    pts = [(float(x), float(y)) for x, y in pts]
+    return pts if signed_area2(pts) > 0 else pts[::-1]
+
+
+class SectorMap:
+    def __init__(self, name, header_comment=""):
+        self.name = name
+        self.header = header_comment
+        self.sectors = []  # dicts
+        self.loops = []  # (sector, [points], label) with the sector on the right
+        self.things = []
+
+    def sector(self, floor, ceiling, light, floor_texture=None, ceiling_texture=None,
+               wall="BRICK", label=""):
+        self.sectors.append(dict(floor=float(floor), ceiling=float(ceiling), light=int(light),
+                                 floor_texture=floor_texture, ceiling_texture=ceiling_texture,
+                                 wall=wall, label=label))
+        return len(self.sectors) - 1
+
+    def region(self, sector, outer, holes=(), label=""):
+        """A piece of `sector`: outer boundary plus holes (pillars, platforms...)."""
+        self.loops.append((sector, clockwise(outer), label or "outline"))
+        for h in holes:
+            self.loops.append((sector, counter_clockwise(h), "hole"))
+
+    def hole(self, sector, pts, label="pillar"):
+        self.loops.append((sector, counter_clockwise(pts), label))
+
+    def thing(self, kind, x, y, angle=0.0):
+        self.things.append((kind, float(x), float(y), float(angle)))
+
+    # ------------------------------------------------------------------ build
+    def build(self):
+        # Vertex table in order of first appearance.
+        vindex, verts = {}, []
+
+        def vid(p):
+            if p not in vindex:
+                vindex[p] = len(verts)
+                verts.append(p)
+            return vindex[p]
+
+        for _, pts, _ in self.loops:
+            for p in pts:
+                vid(p)
+        exact = [(Fraction(x), Fraction(y)) for x, y in verts]
+
+        def split(a, b):
+            """Vertex ids strictly inside segment a-b, ordered from a to b."""
+            (ax, ay), (bx, by) = exact[a], exact[b]
+            inner = []
+            for k, (px, py) in enumerate(exact):
+                if k in (a, b):
+                    continue
+                if (bx - ax) * (py - ay) - (by - ay) * (px - ax) != 0:
+                    continue
+                if min(ax, bx) <= px <= max(ax, bx) and min(ay, by) <= py <= max(ay, by):
+                    t = (px - ax) * (bx - ax) + (py - ay) * (by - ay)
+                    inner.append((t, k))
+            return [k for _, k in sorted(inner)]
+
+        # Directed edges with their sector, in loop order.
+        uses = {}  # frozenset(u, v) -> list of (sector, u, v)
+        order = []  # (key, label) in first-use order
+        for sector, pts, label in self.loops:
+            ids = [vid(p) for p in pts]
+            for i in range(len(ids)):
+                a, b = ids[i], ids[(i + 1) % len(ids)]
+                chain = [a] + split(a, b) + [b]
+                for u, v in zip(chain, chain[1:]):
+                    key = frozenset((u, v))
+                    if key not in uses:
+                        uses[key] = []
+                        order.append((key, self.sectors[sector]["label"], label))
+                    uses[key].append((sector, u, v))
+
+        lines = []
+        for key, slabel, label in order:
+            us = uses[key]
+            if len(us) == 1:
+                s, u, v = us[0]
+                lines.append(dict(a=u, b=v, front=dict(sector=s, middle=self.sectors[s]["wall"]),
+                                  back=None, group=f"{slabel} {label}"))
+            elif len(us) == 2:
+                (s1, u1, v1), (s2, u2, v2) = us
+                if (u1, v1) != (v2, u2) or s1 == s2:
+                    raise ValueError(f"overlapping regions at edge {verts[u1]}-{verts[v1]} "
+                                     f"(sectors {s1}, {s2})")
+                f1, f2 = self.sectors[s1], self.sectors[s2]
+                # Front = higher floor (ties: lower ceiling, then lower index).
+                if (f2["floor"], -f2["ceiling"], -s2) > (f1["floor"], -f1["ceiling"], -s1):
+                    (s1, u1, v1), (s2, u2, v2) = (s2, u2, v2), (s1, u1, v1)
+                    f1, f2 = f2, f1
+                front, back = dict(sector=s1), dict(sector=s2)
+                for side, me, other in ((front, f1, f2), (back, f2, f1)):
+                    if me["floor"] != other["floor"]:
+                        side["lower"] = "STEP"
+                    if me["ceiling"] != other["ceiling"] and not (
+                            me["ceiling_texture"] == "SKY" and other["ceiling_texture"] == "SKY"):
+                        side["upper"] = me["wall"]
+                lines.append(dict(a=u1, b=v1, front=front, back=back,
+                                  group=f"{self.sectors[s1]['label']} / {self.sectors[s2]['label']} opening"))
+            else:
+                raise ValueError(f"edge {verts[min(key)]}-{verts[max(key)]} used {len(us)} times")
+        return verts, lines
+
+    # ------------------------------------------------------------------ write
+    def render(self, vertex_comments=True, per_row=1):
+        verts, lines = self.build()
+        out = []
+        for c in self.header.strip("\n").splitlines():
+            out.append(f"// {c}".rstrip())
+        out.append("Map(")
+        out.append(f"    name: \"{self.name}\",")
+        out.append("    vertices: [")
+        if vertex_comments:
+            for k, (x, y) in enumerate(verts):
+                out.append(f"        ({fmt(x)}, {fmt(y)}), // {k}")
+        else:
+            for i in range(0, len(verts), per_row):
+                out.append("        " + " ".join(f"({fmt(x)}, {fmt(y)})," for x, y in verts[i:i + per_row]))
+        out.append("    ],")
+        out.append("    sectors: [")
+        for k, s in enumerate(self.sectors):
+            extra = ""
+            if s["floor_texture"]:
+                extra += f", floor_texture: \"{s['floor_texture']}\""
+            if s["ceiling_texture"]:
+                extra += f", ceiling_texture: \"{s['ceiling_texture']}\""
+            label = f" // {k}: {s['label']}" if s["label"] else f" // {k}"
+            out.append(f"        Sector(floor: {fmt(s['floor'])}, ceiling: {fmt(s['ceiling'])}, "
+                       f"light: {s['light']}{extra}),{label}")
+        out.append("    ],")
+        out.append("    lines: [")
+        last_group = None
+        for ln in lines:
+            if ln["group"] != last_group:
+                out.append(f"        // {ln['group']}")
+                last_group = ln["group"]
+            out.append(f"        Line(from: {ln['a']}, to: {ln['b']}, front: {side_text(ln['front'])}"
+                       + (f", back: Some({side_text(ln['back'])})" if ln["back"] else "") + "),")
+        out.append("    ],")
+        out.append("    things: [")
+        for kind, x, y, a in self.things:
+            out.append(f"        Thing(kind: \"{kind}\", x: {fmt(x)}, y: {fmt(y)}, angle: {fmt(a)}),")
+        out.append("    ],")
+        out.append(")")
+        return "\n".join(out) + "\n", len(verts), len(lines)
+
+
+def side_text(side):
+    parts = [f"sector: {side['sector']}"]
+    for key in ("upper", "middle", "lower"):
+        if side.get(key):
+            parts.append(f"{key}: \"{side[key]}\"")
+    return "Side(" + ", ".join(parts) + ")"

@@ -1,0 +1,142 @@
+//! Shared support for the workspace tests: the shipped maps, rendering a pose
+//! through both renderers, and comparing frames.
+
+use std::path::{Path, PathBuf};
+
+use glam::DVec2;
+use sightline::bsp::{BuildOptions, CompiledMap};
+use sightline::level::open_level;
+use sightline::render::{render_frame, Frame, RenderOptions, Renderer, Shade, View};
+use sightline::Framebuffer;
+
+/// The repository root.
+pub fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
+}
+
+/// Every shipped sector map. Panics (fails the test) if the maps are missing.
+pub fn shipped_maps() -> Vec<PathBuf> {
+    let dir = root().join("maps");
+    let mut maps: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "ron"))
+        .collect();
+    maps.sort();
+    assert!(
+        maps.len() >= 5,
+        "expected the shipped maps in {}, found {maps:?}",
+        dir.display()
+    );
+    maps
+}
+
+pub fn map_path(name: &str) -> PathBuf {
+    let p = root().join("maps").join(name);
+    assert!(p.exists(), "missing fixture {}", p.display());
+    p
+}
+
+pub fn load(path: &Path) -> CompiledMap {
+    open_level(path, &BuildOptions::default()).unwrap_or_else(|e| panic!("{e}"))
+}
+
+pub fn render(
+    level: &CompiledMap,
+    view: &View,
+    size: (usize, usize),
+    renderer: Renderer,
+    shade: Shade,
+) -> Framebuffer {
+    let mut fb = Framebuffer::new(size.0, size.1);
+    let options = RenderOptions {
+        renderer,
+        shade,
+        count_writes: false,
+    };
+    render_frame(level, view, &options, &mut Frame::new(), &mut fb);
+    fb
+}
+
+/// How two frames differ.
+#[derive(Debug)]
+pub struct Difference {
+    pub pixels: usize,
+    pub total: usize,
+    /// Widest run of adjacent columns that contain a differing pixel.
+    pub widest_column_run: usize,
+}
+
+impl Difference {
+    pub fn equal_share(&self) -> f64 {
+        1.0 - self.pixels as f64 / self.total as f64
+    }
+}
+
+pub fn difference(a: &Framebuffer, b: &Framebuffer) -> Difference {
+    assert_eq!((a.width, a.height), (b.width, b.height));
+    let mut pixels = 0;
+    let mut column_differs = vec![false; a.width];
+    for (i, (p, q)) in a.pixels.iter().zip(&b.pixels).enumerate() {
+        if p != q {
+            pixels += 1;
+            column_differs[i % a.width] = true;
+        }
+    }
+    let mut widest = 0;
+    let mut run = 0;
+    for d in column_differs {
+        run = if d { run + 1 } else { 0 };
+        widest = widest.max(run);
+    }
+    Difference {
+        pixels,
+        total: a.pixels.len(),
+        widest_column_run: widest,
+    }
+}
+
+/// Renders `view` with both renderers in `ids` shading and returns how they differ.
+pub fn bsp_vs_reference(
+    level: &CompiledMap,
+    view: &View,
+    size: (usize, usize),
+) -> (Difference, Framebuffer, Framebuffer) {
+    let bsp = render(level, view, size, Renderer::Bsp, Shade::Ids);
+    let reference = render(level, view, size, Renderer::Reference, Shade::Ids);
+    (difference(&bsp, &reference), bsp, reference)
+}
+
+/// Asserts the exactness criterion: at least 99.9% of pixels equal, differences
+/// only in isolated columns (wall edges). Saves both frames on failure.
+pub fn assert_agree(level: &CompiledMap, view: &View, size: (usize, usize), what: &str) {
+    let (diff, bsp, reference) = bsp_vs_reference(level, view, size);
+    let ok = diff.equal_share() >= 0.999 && diff.widest_column_run <= 1;
+    if !ok {
+        let dir = std::env::temp_dir().join("sightline-failures");
+        let _ = std::fs::create_dir_all(&dir);
+        let stem = what.replace(|c: char| !c.is_ascii_alphanumeric(), "_");
+        let _ = std::fs::write(dir.join(format!("{stem}-bsp.png")), bsp.to_png());
+        let _ = std::fs::write(
+            dir.join(format!("{stem}-reference.png")),
+            reference.to_png(),
+        );
+        panic!(
+            "{what}: bsp and reference differ in {} of {} pixels ({:.4}% equal), widest run of differing columns {} \
+             (frames saved in {})",
+            diff.pixels,
+            diff.total,
+            diff.equal_share() * 100.0,
+            diff.widest_column_run,
+            dir.display()
+        );
+    }
+}
+
+pub fn view(level: &CompiledMap, x: f64, y: f64, angle: f64) -> View {
+    View::at_pose(&level.map, x, y, angle, None).unwrap_or_else(|e| panic!("pose ({x}, {y}): {e}"))
+}
+
+pub fn v(x: f64, y: f64) -> DVec2 {
+    DVec2::new(x, y)
+}
