@@ -18,6 +18,7 @@ pub mod geom;
 pub mod level;
 pub mod map;
 pub mod render;
+pub mod tour;
 
 pub use bsp::CompiledMap;
 pub use framebuffer::Framebuffer;

@@ -30,9 +30,9 @@ pub fn check_structure(map: &Map, bsp: &Bsp) -> Result<(), String> {
     let mut referenced_nodes = vec![false; bsp.nodes.len()];
     let mut referenced_leaves = vec![false; bsp.leaves.len()];
     let mut mark = |child: Child, what: &str| -> Result<(), String> {
-        let (seen, i) = match child {
-            Child::Node(i) => (referenced_nodes.get_mut(i), i),
-            Child::Leaf(i) => (referenced_leaves.get_mut(i), i),
+        let seen = match child {
+            Child::Node(i) => referenced_nodes.get_mut(i),
+            Child::Leaf(i) => referenced_leaves.get_mut(i),
         };
         match seen {
             None => Err(format!("{what} refers to {child:?}, which does not exist")),
@@ -41,7 +41,6 @@ pub fn check_structure(map: &Map, bsp: &Bsp) -> Result<(), String> {
             )),
             Some(seen) => {
                 *seen = true;
-                let _ = i;
                 Ok(())
             }
         }
@@ -62,14 +61,21 @@ pub fn check_structure(map: &Map, bsp: &Bsp) -> Result<(), String> {
     {
         return Err("some nodes or leaves are not reachable from the root".into());
     }
+    // The leaves' seg ranges must partition `segs`: each seg in exactly one leaf.
+    let mut owned = vec![false; bsp.segs.len()];
     for (i, leaf) in bsp.leaves.iter().enumerate() {
-        let end = leaf
-            .first
-            .checked_add(leaf.count)
-            .filter(|&e| e <= bsp.segs.len());
-        if end.is_none() || leaf.count == 0 || leaf.sector >= map.sectors.len() {
+        let end = leaf.first.checked_add(leaf.count).filter(|&e| e <= bsp.segs.len());
+        let Some(end) = end.filter(|_| leaf.count > 0 && leaf.sector < map.sectors.len()) else {
             return Err(format!("leaf {i} has a bad seg range or sector"));
+        };
+        for seen in &mut owned[leaf.first..end] {
+            if std::mem::replace(seen, true) {
+                return Err(format!("leaf {i} shares segs with another leaf"));
+            }
         }
+    }
+    if owned.iter().any(|seen| !seen) {
+        return Err("some segs belong to no leaf".into());
     }
     Ok(())
 }

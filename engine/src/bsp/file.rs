@@ -1,5 +1,5 @@
-//! The compiled map file: a magic header, a format version, then the map's
-//! source form and its BSP in postcard (a compact serde binary format).
+//! The compiled map file: a magic header, a format version, then the
+//! validated map and its BSP in postcard (a compact serde binary format).
 //!
 //! Loading never rebuilds the tree, but it does re-validate the map and check
 //! the tree's structure, so a corrupt or hostile file is an error, not a panic.
@@ -8,7 +8,7 @@ use serde::{Deserialize, Serialize};
 
 use super::check::check_structure;
 use super::{Bsp, BuildStats, CompiledMap};
-use crate::map::source::MapSource;
+use crate::map::Map;
 use crate::map::validate::validate;
 
 /// First bytes of every compiled map.
@@ -16,9 +16,11 @@ pub const MAGIC: &[u8] = b"SIGHTLINE-BSP\n";
 /// Bumped whenever the layout below changes; older files are refused.
 pub const VERSION: u8 = 1;
 
+/// What the file holds. The map goes in its validated form: postcard is not
+/// self-describing, so it cannot carry the source form's skipped defaults.
 #[derive(Serialize, Deserialize)]
 struct Contents {
-    source: MapSource,
+    map: Map,
     bsp: Bsp,
     stats: BuildStats,
 }
@@ -29,7 +31,7 @@ pub fn is_compiled(bytes: &[u8]) -> bool {
 
 pub fn to_bytes(compiled: &CompiledMap) -> Vec<u8> {
     let contents = Contents {
-        source: compiled.map.to_source(),
+        map: compiled.map.clone(),
         bsp: compiled.bsp.clone(),
         stats: compiled.stats.clone(),
     };
@@ -53,7 +55,8 @@ pub fn from_bytes(bytes: &[u8]) -> Result<CompiledMap, String> {
     }
     let contents: Contents =
         postcard::from_bytes(payload).map_err(|e| format!("corrupt or truncated: {e}"))?;
-    let map = validate(&contents.source).map_err(|problems| {
+    // Validate again, as if from source: the bytes may have been tampered with.
+    let map = validate(&contents.map.to_source()).map_err(|problems| {
         let first = problems.first().map(|p| p.to_string()).unwrap_or_default();
         format!("its map is invalid: {first}")
     })?;

@@ -48,7 +48,9 @@ pub struct Frame {
     pub(crate) slopes: Vec<f64>,
     pub(crate) stack: Vec<(Child, Option<Aabb>)>,
     pub(crate) hits: Vec<Hit>,
-    /// Writes per pixel, kept only when counting was asked for.
+    /// The frame being drawn, column-major (see [`super::columns`]).
+    pub(crate) canvas: Vec<u32>,
+    /// Writes per pixel (column-major), kept only when counting was asked for.
     pub(crate) counts: Vec<u16>,
     pub stats: FrameStats,
 }
@@ -70,6 +72,7 @@ impl Frame {
         self.slopes.extend((0..w).map(|x| cam.column_slope(x)));
         self.stack.clear();
         self.hits.clear();
+        self.canvas.resize(w * h, 0);
         self.counts.clear();
         if count_writes {
             self.counts.resize(w * h, 0);
@@ -77,7 +80,8 @@ impl Frame {
         self.stats = FrameStats::default();
     }
 
-    /// Writes per pixel of the last frame rendered with counting on (row-major).
+    /// Writes per pixel of the last frame rendered with counting on
+    /// (column-major: pixel (x, y) at `x * height + y`).
     pub fn write_counts(&self) -> &[u16] {
         &self.counts
     }

@@ -63,13 +63,18 @@ pub fn render_frame(
 ) -> FrameStats {
     let cam = Camera::new(view, fb.width, fb.height);
     frame.begin(&cam, options.count_writes);
+    // The writer borrows the canvas and counts while the pass borrows the rest.
+    let mut canvas = std::mem::take(&mut frame.canvas);
     let mut counts = std::mem::take(&mut frame.counts);
-    let mut out = columns::ColumnWriter::new(fb, options.count_writes.then_some(&mut counts));
+    let counting = options.count_writes.then_some(counts.as_mut_slice());
+    let mut out = columns::ColumnWriter::new(&mut canvas, fb.height, counting);
     match options.renderer {
         Renderer::Bsp => bsp::render(level, &cam, frame, &mut out, options.shade),
         Renderer::Reference => reference::render(&level.map, &cam, frame, &mut out, options.shade),
     }
     frame.stats.pixels_written = out.written;
+    columns::present(&canvas, fb);
+    frame.canvas = canvas;
     frame.counts = counts;
     frame.stats
 }
