@@ -1,1 +1,61 @@
-// placeholder
+//! Golden frames: fixed poses of each shipped map, compared exactly against
+//! PNGs checked in under `tests/images/`. After an intended change to how
+//! frames look, regenerate them with `SIGHTLINE_BLESS=1 cargo test -p
+//! sightline-tests --test golden`, look at every changed image, and commit.
+
+use sightline::render::{Renderer, Shade};
+use sightline::tour::tour;
+use sightline::Framebuffer;
+use sightline_tests::{difference, load, render, root, shipped_maps};
+
+const SIZE: (usize, usize) = (320, 200);
+/// Poses per map: the player start, then tour poses.
+const POSES: usize = 3;
+
+#[test]
+fn frames_match_golden_images() {
+    let bless = std::env::var_os("SIGHTLINE_BLESS").is_some();
+    let dir = root().join("tests/images");
+    let mut failures = Vec::new();
+    for path in shipped_maps() {
+        let level = load(&path);
+        let stem = path.file_stem().unwrap().to_string_lossy().to_string();
+        let views = tour(&level.map, 8, 11);
+        // The start facing its own angle, then two seeded poses from the tour.
+        for (i, view) in [views[0], views[8], views[9]]
+            .iter()
+            .take(POSES)
+            .enumerate()
+        {
+            for shade in [Shade::Flat, Shade::Ids] {
+                let frame = render(&level, view, SIZE, Renderer::Bsp, shade);
+                let file = dir.join(format!("{stem}-{i}-{}.png", shade.name()));
+                if bless {
+                    std::fs::create_dir_all(&dir).unwrap();
+                    std::fs::write(&file, frame.to_png()).unwrap();
+                    continue;
+                }
+                let golden = Framebuffer::read_png(&file).unwrap_or_else(|e| {
+                    panic!("missing golden image ({e}); create it with SIGHTLINE_BLESS=1 and look at it")
+                });
+                let diff = difference(&frame, &golden);
+                if diff.pixels != 0 {
+                    let out = std::env::temp_dir()
+                        .join(format!("golden-{stem}-{i}-{}.png", shade.name()));
+                    std::fs::write(&out, frame.to_png()).unwrap();
+                    failures.push(format!(
+                        "{}: {} pixels differ (got {})",
+                        file.display(),
+                        diff.pixels,
+                        out.display()
+                    ));
+                }
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "golden frames changed:\n{}",
+        failures.join("\n")
+    );
+}

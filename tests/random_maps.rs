@@ -173,16 +173,18 @@ pub fn map_spec() -> impl Strategy<Value = MapSpec> {
         placement(),
         any::<u64>(),
     )
-        .prop_map(|(kind, vertices, room_seed, pillars, placement, seed)| MapSpec {
-            room: RoomSpec {
-                kind,
-                vertices,
-                seed: room_seed,
+        .prop_map(
+            |(kind, vertices, room_seed, pillars, placement, seed)| MapSpec {
+                room: RoomSpec {
+                    kind,
+                    vertices,
+                    seed: room_seed,
+                },
+                pillars,
+                placement,
+                seed,
             },
-            pillars,
-            placement,
-            seed,
-        })
+        )
 }
 
 /// A generated map and what the poses need to know about it.
@@ -222,9 +224,9 @@ fn room_ring(spec: &RoomSpec) -> Vec<DVec2> {
             break gaps;
         }
     };
-    let big = r.random_range(40.0..=2000.0);
-    let low = if spec.kind == RoomKind::Star {
-        r.random_range(0.05..0.95)
+    let big: f64 = r.random_range(40.0..=2000.0);
+    let low: f64 = if spec.kind == RoomKind::Star {
+        r.random_range(0.05f64..0.95)
     } else {
         1.0
     };
@@ -375,10 +377,7 @@ pub fn generate(spec: &MapSpec) -> Generated {
         let mut spot = None;
         'search: for _ in 0..4 {
             for _ in 0..48 {
-                let c = DVec2::new(
-                    pr.random_range(lo.x..=hi.x),
-                    pr.random_range(lo.y..=hi.y),
-                );
+                let c = DVec2::new(pr.random_range(lo.x..=hi.x), pr.random_range(lo.y..=hi.y));
                 if inside(&room, c)
                     && ring_distance(&room, c) >= radius + margin
                     && pillars
@@ -431,14 +430,20 @@ pub fn generate(spec: &MapSpec) -> Generated {
     let snap = |v: f64| (v * 16.0).round() / 16.0;
     let (unit, place): (f64, Box<dyn Fn(DVec2) -> DVec2>) = match spec.placement {
         Placement::Raw => (1.0, Box::new(|p| p)),
-        Placement::Grid => (1.0, Box::new(move |p: DVec2| DVec2::new(snap(p.x), snap(p.y)))),
+        Placement::Grid => (
+            1.0,
+            Box::new(move |p: DVec2| DVec2::new(snap(p.x), snap(p.y))),
+        ),
         Placement::Offset(x, y) => (
             1.0,
             Box::new(move |p: DVec2| DVec2::new(snap(p.x) + x, snap(p.y) + y)),
         ),
         Placement::Scale(k) => {
             let s = 2f64.powi(k);
-            (s, Box::new(move |p: DVec2| DVec2::new(snap(p.x) * s, snap(p.y) * s)))
+            (
+                s,
+                Box::new(move |p: DVec2| DVec2::new(snap(p.x) * s, snap(p.y) * s)),
+            )
         }
     };
 
@@ -510,7 +515,12 @@ pub fn usable(map: &Map, p: DVec2) -> bool {
     map.sector_at(p).is_some() && map.distance_to_nearest_line(p) > 1e-3
 }
 
-const AXES: [(f64, f64, f64); 4] = [(1.0, 0.0, 0.0), (0.0, 1.0, 90.0), (-1.0, 0.0, 180.0), (0.0, -1.0, 270.0)];
+const AXES: [(f64, f64, f64); 4] = [
+    (1.0, 0.0, 0.0),
+    (0.0, 1.0, 90.0),
+    (-1.0, 0.0, 180.0),
+    (0.0, -1.0, 270.0),
+];
 
 /// `count` random poses in `g`'s map, described for failure messages:
 /// uniform points, points on a vertex's axis lines looking at it, points on
@@ -566,8 +576,12 @@ pub fn random_poses(g: &Generated, count: usize, seed: u64) -> Vec<(String, View
                 };
                 let d = b - a;
                 let along = d.y.atan2(d.x).to_degrees();
-                let angle = [along, along + 90.0, along + 180.0, r.random_range(0.0..360.0)]
-                    [r.random_range(0..4)];
+                let angle = [
+                    along,
+                    along + 90.0,
+                    along + 180.0,
+                    r.random_range(0.0..360.0),
+                ][r.random_range(0..4)];
                 ("wall extension", a + d * t, angle)
             }
             _ => {
@@ -590,7 +604,11 @@ pub fn random_poses(g: &Generated, count: usize, seed: u64) -> Vec<(String, View
             0 | 1 => None,
             2 => {
                 let s = &map.sectors[r.random_range(0..map.sectors.len())];
-                Some(if r.random_bool(0.5) { s.floor } else { s.ceiling })
+                Some(if r.random_bool(0.5) {
+                    s.floor
+                } else {
+                    s.ceiling
+                })
             }
             _ => Some(r.random_range(-80.0..300.0)),
         };

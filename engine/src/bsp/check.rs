@@ -64,7 +64,10 @@ pub fn check_structure(map: &Map, bsp: &Bsp) -> Result<(), String> {
     // The leaves' seg ranges must partition `segs`: each seg in exactly one leaf.
     let mut owned = vec![false; bsp.segs.len()];
     for (i, leaf) in bsp.leaves.iter().enumerate() {
-        let end = leaf.first.checked_add(leaf.count).filter(|&e| e <= bsp.segs.len());
+        let end = leaf
+            .first
+            .checked_add(leaf.count)
+            .filter(|&e| e <= bsp.segs.len());
         let Some(end) = end.filter(|_| leaf.count > 0 && leaf.sector < map.sectors.len()) else {
             return Err(format!("leaf {i} has a bad seg range or sector"));
         };

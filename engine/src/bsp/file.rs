@@ -8,8 +8,8 @@ use serde::{Deserialize, Serialize};
 
 use super::check::check_structure;
 use super::{Bsp, BuildStats, CompiledMap};
-use crate::map::Map;
 use crate::map::validate::validate;
+use crate::map::Map;
 
 /// First bytes of every compiled map.
 pub const MAGIC: &[u8] = b"SIGHTLINE-BSP\n";

@@ -22,7 +22,12 @@ pub struct ColumnWriter<'a> {
 
 impl<'a> ColumnWriter<'a> {
     pub fn new(canvas: &'a mut [u32], height: usize, counts: Option<&'a mut [u16]>) -> Self {
-        ColumnWriter { canvas, height, counts, written: 0 }
+        ColumnWriter {
+            canvas,
+            height,
+            counts,
+            written: 0,
+        }
     }
 
     /// Fills rows `[y0, y1)` of column `x`. Empty and inverted runs write nothing;

@@ -16,7 +16,7 @@ impl Occlusion {
         self.words.clear();
         self.words.resize(n, 0);
         // Bits past the last column stay set, so scans never report them open.
-        if width % 64 != 0 {
+        if !width.is_multiple_of(64) {
             self.words[n - 1] = !0u64 << (width % 64);
         }
         self.width = width;

@@ -77,7 +77,8 @@ fn collect_hits(cam: &Camera, ends: &[(DVec2, DVec2, bool)], x: usize, hits: &mu
         }
         // Solve depth * ray = a + w * d.
         let depth = c / den;
-        if !(depth >= NEAR) || !depth.is_finite() {
+        // NaN fails both tests; so does a depth behind or at infinity.
+        if !depth.is_finite() || depth < NEAR {
             continue;
         }
         // Camera space mirrors the map, so the eye is on the line's front
