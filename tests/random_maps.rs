@@ -515,6 +515,36 @@ pub fn usable(map: &Map, p: DVec2) -> bool {
     map.sector_at(p).is_some() && map.distance_to_nearest_line(p) > 1e-3
 }
 
+/// Is `p` on the infinite line of some wall, up to rounding (1e-12 of the
+/// coordinates' magnitude)? From there a column's ray can run exactly along
+/// the wall's line, which is where the renderers' known bugs live (see
+/// `properties.rs`).
+pub fn on_wall_line(map: &Map, p: DVec2) -> bool {
+    map.lines.iter().any(|line| {
+        let (a, b) = map.line_points(line);
+        let d = b - a;
+        let scale = p
+            .abs()
+            .max_element()
+            .max(a.abs().max_element())
+            .max(b.abs().max_element());
+        let distance = sightline::geom::cross(p - a, d).abs() / d.length();
+        distance <= 1e-12 * scale.max(1.0)
+    })
+}
+
+/// Which poses [`random_poses`] returns.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum WallLines {
+    /// Any pose.
+    Any,
+    /// Only poses off every wall's line ([`on_wall_line`] false).
+    Avoid,
+    /// Only poses on some wall's line; there may be none (a convex room with
+    /// no pillars has no wall line through its inside), so fewer may return.
+    Only,
+}
+
 const AXES: [(f64, f64, f64); 4] = [
     (1.0, 0.0, 0.0),
     (0.0, 1.0, 90.0),
@@ -522,12 +552,18 @@ const AXES: [(f64, f64, f64); 4] = [
     (0.0, -1.0, 270.0),
 ];
 
-/// `count` random poses in `g`'s map, described for failure messages:
-/// uniform points, points on a vertex's axis lines looking at it, points on
-/// wall extensions (partition lines), points very near walls; angles
+/// Up to `count` random poses in `g`'s map (exactly `count` unless `lines`
+/// is [`WallLines::Only`]), described for failure messages: uniform points,
+/// points on a vertex's axis lines looking at it, points on wall extensions
+/// (partition lines) looking along them, points very near walls; angles
 /// sometimes exactly axis-aligned; eye heights sometimes exactly a sector's
 /// floor or ceiling.
-pub fn random_poses(g: &Generated, count: usize, seed: u64) -> Vec<(String, View)> {
+pub fn random_poses(
+    g: &Generated,
+    count: usize,
+    seed: u64,
+    lines: WallLines,
+) -> Vec<(String, View)> {
     let map = &g.map;
     let mut r = rng(seed, 6);
     let (lo, hi) = bbox(&map.vertices);
@@ -536,13 +572,21 @@ pub fn random_poses(g: &Generated, count: usize, seed: u64) -> Vec<(String, View
     let mut attempts = 0;
     while poses.len() < count {
         attempts += 1;
-        assert!(
-            attempts < 100_000,
-            "generator bug: cannot find poses in\n{}",
-            g.source.to_ron()
-        );
+        if attempts >= 20_000 {
+            assert!(
+                lines == WallLines::Only,
+                "generator bug: cannot find poses in\n{}",
+                g.source.to_ron()
+            );
+            break;
+        }
         let axis_angle = |r: &mut ChaCha8Rng| AXES[r.random_range(0..4)].2;
-        let (what, p, angle) = match r.random_range(0..10) {
+        let kind = if lines == WallLines::Only {
+            7
+        } else {
+            r.random_range(0..10)
+        };
+        let (what, p, angle) = match kind {
             0..=3 => {
                 let p = DVec2::new(r.random_range(lo.x..=hi.x), r.random_range(lo.y..=hi.y));
                 let angle = if r.random_bool(0.3) {
@@ -566,7 +610,8 @@ pub fn random_poses(g: &Generated, count: usize, seed: u64) -> Vec<(String, View
                 ("vertex axis", p, angle)
             }
             7..=8 => {
-                // On the extension of a wall: on a partition line.
+                // On the extension of a wall (a partition line), mostly
+                // looking along it.
                 let line = &map.lines[r.random_range(0..map.lines.len())];
                 let (a, b) = map.line_points(line);
                 let t = if r.random_bool(0.5) {
@@ -578,11 +623,23 @@ pub fn random_poses(g: &Generated, count: usize, seed: u64) -> Vec<(String, View
                 let along = d.y.atan2(d.x).to_degrees();
                 let angle = [
                     along,
-                    along + 90.0,
                     along + 180.0,
+                    along,
+                    along + 180.0,
+                    along + 90.0,
                     r.random_range(0.0..360.0),
-                ][r.random_range(0..4)];
-                ("wall extension", a + d * t, angle)
+                ][r.random_range(0..6)];
+                let p = a + d * t;
+                if lines == WallLines::Avoid {
+                    // Just off the line instead: a hair to either side.
+                    let normal = DVec2::new(d.y, -d.x) / d.length();
+                    let scale = p.abs().max_element().max(1.0);
+                    let gap = [1e-10, 1e-9, 1e-6, 1e-3][r.random_range(0..4)] * scale;
+                    let side = if r.random_bool(0.5) { 1.0 } else { -1.0 };
+                    ("beside wall extension", p + normal * gap * side, angle)
+                } else {
+                    ("wall extension", p, angle)
+                }
             }
             _ => {
                 // Just in front of a wall's midpoint.
@@ -598,6 +655,12 @@ pub fn random_poses(g: &Generated, count: usize, seed: u64) -> Vec<(String, View
         };
         if !usable(map, p) {
             continue;
+        }
+        let on_line = on_wall_line(map, p);
+        match lines {
+            WallLines::Avoid if on_line => continue,
+            WallLines::Only if !on_line => continue,
+            _ => {}
         }
         let sector = map.sector_at(p).unwrap_or(0);
         let z = match r.random_range(0..4) {
@@ -616,8 +679,11 @@ pub fn random_poses(g: &Generated, count: usize, seed: u64) -> Vec<(String, View
             .unwrap_or_else(|e| panic!("pose ({}, {}) rejected: {e}", p.x, p.y));
         poses.push((
             format!(
-                "{what} pose ({:?}, {:?}) angle {angle:?} z {:?} in sector {sector}",
-                p.x, p.y, view.z
+                "{what} pose{} ({:?}, {:?}) angle {angle:?} z {:?} in sector {sector}",
+                if on_line { " on a wall line" } else { "" },
+                p.x,
+                p.y,
+                view.z
             ),
             view,
         ));

@@ -10,15 +10,12 @@ use crate::map::{load::parse_map_bytes, MapError};
 pub enum LevelError {
     #[error(transparent)]
     Map(#[from] MapError),
-    #[error("{path}: cannot compile: {source}")]
-    Compile { path: String, source: CompileError },
+    #[error("{path}: cannot compile: {error}")]
+    Compile { path: String, error: CompileError },
     #[error("{path}: {message}")]
     Compiled { path: String, message: String },
-    #[error("{path}: cannot write: {source}")]
-    Write {
-        path: String,
-        source: std::io::Error,
-    },
+    #[error("{path}: cannot write: {error}")]
+    Write { path: String, error: std::io::Error },
     #[error("{path}: refusing to overwrite the input map")]
     OverwriteInput { path: String },
 }
@@ -26,9 +23,9 @@ pub enum LevelError {
 /// Reads `path` and returns a compiled map, compiling a source map with `options`.
 pub fn open_level(path: &Path, options: &BuildOptions) -> Result<CompiledMap, LevelError> {
     let label = path.display().to_string();
-    let bytes = std::fs::read(path).map_err(|source| MapError::Io {
+    let bytes = std::fs::read(path).map_err(|error| MapError::Io {
         path: label.clone(),
-        source,
+        error,
     })?;
     level_from_bytes(&bytes, &label, options)
 }
@@ -45,9 +42,9 @@ pub fn level_from_bytes(
         });
     }
     let map = parse_map_bytes(bytes, label)?;
-    build(&map, options).map_err(|source| LevelError::Compile {
+    build(&map, options).map_err(|error| LevelError::Compile {
         path: label.to_string(),
-        source,
+        error,
     })
 }
 
@@ -55,9 +52,9 @@ pub fn level_from_bytes(
 /// rename. A failure leaves any existing file at `path` untouched.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), LevelError> {
     use std::io::Write;
-    let err = |source| LevelError::Write {
+    let err = |error| LevelError::Write {
         path: path.display().to_string(),
-        source,
+        error,
     };
     let dir = path
         .parent()

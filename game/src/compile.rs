@@ -14,9 +14,9 @@ pub fn run(args: &CompileArgs) -> Result<()> {
         splitter: args.splitter,
         seed: args.seed,
     };
-    let compiled = build(&map, &options).map_err(|source| LevelError::Compile {
+    let compiled = build(&map, &options).map_err(|error| LevelError::Compile {
         path: args.map.display().to_string(),
-        source,
+        error,
     })?;
     write_atomic(&args.output, &file::to_bytes(&compiled))?;
     let s = &compiled.stats;

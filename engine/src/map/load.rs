@@ -13,11 +13,8 @@ use super::{validate, Map};
 /// Why a map file could not be turned into a [`Map`].
 #[derive(Debug, thiserror::Error)]
 pub enum MapError {
-    #[error("{path}: cannot read: {source}")]
-    Io {
-        path: String,
-        source: std::io::Error,
-    },
+    #[error("{path}: cannot read: {error}")]
+    Io { path: String, error: std::io::Error },
     #[error("{path}: the file is empty")]
     Empty { path: String },
     #[error("{path}: not a text map: byte {offset} is binary data")]
@@ -139,6 +136,12 @@ pub enum Problem {
     InsideOut {
         sector: usize,
     },
+    SideMismatch {
+        line: usize,
+        side: &'static str,
+        expected: Option<usize>,
+        found: Vec<usize>,
+    },
     NoLines {
         sector: usize,
     },
@@ -208,6 +211,24 @@ impl fmt::Display for Problem {
                 f,
                 "sector {sector}: its sides face away from it (the front of a line is its right-hand side)"
             ),
+            Problem::SideMismatch { line, side, expected, found } => {
+                let name = |s: &[usize]| match s {
+                    [] => "no sector".to_string(),
+                    [one] => format!("sector {one}"),
+                    many => format!("sectors {many:?} at once"),
+                };
+                write!(
+                    f,
+                    "line {line}: just off its {side} side lies {}, but the line says {}; \
+                     check the winding of its loop (rooms clockwise, holes counter-clockwise) \
+                     and its sector numbers",
+                    name(found),
+                    match expected {
+                        Some(s) => format!("sector {s}"),
+                        None => "nothing (a solid one-sided wall)".to_string(),
+                    }
+                )
+            }
             Problem::NoLines { sector } => write!(f, "sector {sector}: no line side refers to it"),
             Problem::BadThing { thing } => {
                 write!(f, "thing {thing}: position or angle is not finite or out of range")
@@ -225,9 +246,9 @@ impl fmt::Display for Problem {
 /// Reads, parses and validates a sector map file.
 pub fn load_map(path: &Path) -> Result<Map, MapError> {
     let label = path.display().to_string();
-    let bytes = std::fs::read(path).map_err(|source| MapError::Io {
+    let bytes = std::fs::read(path).map_err(|error| MapError::Io {
         path: label.clone(),
-        source,
+        error,
     })?;
     parse_map_bytes(&bytes, &label)
 }

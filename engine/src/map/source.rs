@@ -3,12 +3,13 @@
 //! Types here are deliberately loose (indices as `i64`, light as `i64`) so that
 //! a bad value reaches validation and gets an error naming the element, instead
 //! of a bare type error from the parser. Struct names match the RON keywords
-//! (`Map(...)`, `Sector(...)`), which RON checks.
+//! (`Map(...)`, `Sector(...)`), which RON checks. Unknown fields are errors,
+//! so a misspelt optional field (`impasable`) is reported, not ignored.
 
 use serde::{Deserialize, Serialize};
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
-#[serde(rename = "Map")]
+#[serde(rename = "Map", deny_unknown_fields)]
 pub struct MapSource {
     pub name: String,
     pub vertices: Vec<(f64, f64)>,
@@ -19,7 +20,7 @@ pub struct MapSource {
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
-#[serde(rename = "Sector")]
+#[serde(rename = "Sector", deny_unknown_fields)]
 pub struct SectorSource {
     pub floor: f64,
     pub ceiling: f64,
@@ -31,7 +32,7 @@ pub struct SectorSource {
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
-#[serde(rename = "Line")]
+#[serde(rename = "Line", deny_unknown_fields)]
 pub struct LineSource {
     pub from: i64,
     pub to: i64,
@@ -48,7 +49,7 @@ pub struct LineSource {
 }
 
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]
-#[serde(rename = "Side")]
+#[serde(rename = "Side", deny_unknown_fields)]
 pub struct SideSource {
     pub sector: i64,
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -64,7 +65,7 @@ pub struct SideSource {
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
-#[serde(rename = "Thing")]
+#[serde(rename = "Thing", deny_unknown_fields)]
 pub struct ThingSource {
     pub kind: String,
     pub x: f64,

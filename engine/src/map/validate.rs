@@ -215,6 +215,9 @@ fn check_geometry(map: &Map) -> Vec<Problem> {
     if problems.is_empty() {
         problems.extend(check_sectors(map));
     }
+    if problems.is_empty() {
+        problems.extend(check_sides_face_their_sectors(map));
+    }
     problems
 }
 
@@ -311,6 +314,62 @@ fn check_sectors(map: &Map) -> Vec<Problem> {
     problems
 }
 
+/// Just off the middle of each line, on its front lies its front sector and
+/// only that; on its back, its back sector, or no sector behind a solid wall.
+/// This catches what closure and total winding cannot: a pillar wound the
+/// wrong way, or a sector nested inside another with no two-sided line
+/// between them (either would render as see-through walls).
+fn check_sides_face_their_sectors(map: &Map) -> Vec<Problem> {
+    let mut problems = Vec::new();
+    for (i, line) in map.lines.iter().enumerate() {
+        let (a, b) = map.line_points(line);
+        let d = b - a;
+        let normal = DVec2::new(d.y, -d.x) / d.length();
+        // Far enough off the line to be decided robustly, near enough that no
+        // other line (they do not cross) comes between.
+        let offset = (d.length() * 1e-3).min(1e-2);
+        let mid = a + d * 0.5;
+        let back = line.back.as_ref().map(|s| s.sector);
+        for (side, probe, expected) in [
+            ("front", mid + normal * offset, Some(line.front.sector)),
+            ("back", mid - normal * offset, back),
+        ] {
+            let found = sectors_containing(map, probe);
+            if found.as_slice() != expected.as_slice() {
+                problems.push(Problem::SideMismatch {
+                    line: i,
+                    side,
+                    expected,
+                    found,
+                });
+                if problems.len() >= MAX_CROSSINGS_REPORTED {
+                    return problems;
+                }
+            }
+        }
+    }
+    problems
+}
+
+/// Every sector whose boundary encloses `p` (crossing number, half-open in y).
+fn sectors_containing(map: &Map, p: DVec2) -> Vec<usize> {
+    let mut odd = vec![false; map.sectors.len()];
+    for line in &map.lines {
+        let (a, b) = map.line_points(line);
+        if (a.y > p.y) != (b.y > p.y) && a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x) > p.x {
+            odd[line.front.sector] ^= true;
+            if let Some(back) = &line.back {
+                odd[back.sector] ^= true;
+            }
+        }
+    }
+    odd.iter()
+        .enumerate()
+        .filter(|(_, &o)| o)
+        .map(|(s, _)| s)
+        .collect()
+}
+
 /// Phase 3: things. The first player start is the one used.
 fn find_player_start(map: &Map) -> Result<usize, Problem> {
     for (i, t) in map.things.iter().enumerate() {
@@ -331,5 +390,103 @@ fn find_player_start(map: &Map) -> Result<usize, Problem> {
             x: p.x,
             y: p.y,
         }),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::map::parse_map;
+
+    /// A 256-unit room (clockwise) with a square loop inside it, given as
+    /// vertex order and the loop's line sides.
+    fn room_with_inner_loop(inner: &str, inner_sector: &str, extra_sectors: &str) -> String {
+        format!(
+            r#"Map(name: "t",
+            vertices: [(0.0, 0.0), (0.0, 256.0), (256.0, 256.0), (256.0, 0.0),
+                       (100.0, 100.0), (100.0, 150.0), (150.0, 150.0), (150.0, 100.0)],
+            sectors: [Sector(floor: 0.0, ceiling: 128.0, light: 160), {extra_sectors}],
+            lines: [
+                Line(from: 0, to: 1, front: Side(sector: 0)), Line(from: 1, to: 2, front: Side(sector: 0)),
+                Line(from: 2, to: 3, front: Side(sector: 0)), Line(from: 3, to: 0, front: Side(sector: 0)),
+                {inner}
+            ],
+            things: [Thing(kind: "player_start", x: 50.0, y: 50.0, angle: 0.0)])"#
+        )
+        .replace("SECTOR", inner_sector)
+    }
+
+    fn loop_lines(order: [usize; 4], side: &str) -> String {
+        (0..4)
+            .map(|k| {
+                format!(
+                    "Line(from: {}, to: {}, front: {side}),",
+                    order[k],
+                    order[(k + 1) % 4]
+                )
+            })
+            .collect()
+    }
+
+    fn problems(text: &str) -> Vec<Problem> {
+        parse_map(text, "t.ron")
+            .err()
+            .map(|e| e.problems().to_vec())
+            .unwrap_or_default()
+    }
+
+    #[test]
+    fn pillar_wound_either_way() {
+        // Counter-clockwise (room on the right of each pillar edge): valid.
+        let good = room_with_inner_loop(&loop_lines([4, 7, 6, 5], "Side(sector: 0)"), "", "");
+        assert_eq!(problems(&good), vec![]);
+        // Clockwise: closure and the sector's total winding both still pass.
+        let bad = room_with_inner_loop(&loop_lines([4, 5, 6, 7], "Side(sector: 0)"), "", "");
+        let p = problems(&bad);
+        assert!(
+            matches!(p[0], Problem::SideMismatch { line: 4.., .. }),
+            "{p:?}"
+        );
+        assert!(p[0].to_string().contains("winding"), "{}", p[0]);
+    }
+
+    #[test]
+    fn nested_sector_needs_a_two_sided_boundary() {
+        // A closed sector 1 inside sector 0 whose walls face only into itself.
+        let nested = room_with_inner_loop(
+            &loop_lines([4, 5, 6, 7], "Side(sector: 1)"),
+            "",
+            "Sector(floor: 0.0, ceiling: 128.0, light: 160)",
+        );
+        let p = problems(&nested);
+        assert!(
+            p.iter().any(|p| matches!(
+                p,
+                Problem::SideMismatch {
+                    side: "back",
+                    expected: None,
+                    ..
+                }
+            )),
+            "{p:?}"
+        );
+        // The same loop as two-sided lines between the sectors is valid.
+        let portal = room_with_inner_loop(
+            &loop_lines([4, 5, 6, 7], "Side(sector: 1), back: Some(Side(sector: 0))"),
+            "",
+            "Sector(floor: 16.0, ceiling: 128.0, light: 160)",
+        );
+        assert_eq!(problems(&portal), vec![]);
+    }
+
+    #[test]
+    fn misspelt_field_is_an_error() {
+        let text = room_with_inner_loop("", "", "")
+            .replace("light: 160)", "light: 160, flor_texture: \"X\")");
+        let err = parse_map(&text, "t.ron").unwrap_err().to_string();
+        assert!(
+            err.contains("flor_texture") && err.starts_with("t.ron:"),
+            "{err}"
+        );
     }
 }

@@ -54,8 +54,9 @@ impl Occlusion {
         self.scan(x, end, true)
     }
 
-    /// First closed column in `[x, end)`, or `end`.
+    /// First closed column in `[x, end)`, or `end` (at most the width).
     pub fn next_closed(&self, x: usize, end: usize) -> usize {
+        let end = end.min(self.width);
         self.scan(x, end, false).unwrap_or(end)
     }
 

@@ -1,0 +1,564 @@
+//! Bad input through the binary: every bad argument or file makes `sightline`
+//! exit non-zero with a message naming the argument or file, never a panic, and
+//! leaves the files it was pointed at exactly as they were.
+//!
+//! Each failure row runs in a fresh directory holding a set of fixture files
+//! (see [`Scene`]); the whole directory is snapshotted before and compared
+//! after, so "output not created", "existing output byte-identical", "input
+//! untouched" and "no temporary file left behind" are one check.
+
+use std::collections::BTreeMap;
+use std::ffi::OsStr;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use sightline::bsp::{build, file, BuildOptions};
+use sightline::map::parse_map;
+
+/// Bytes of the existing output file every failing command must leave alone.
+const PRECIOUS: &[u8] = b"precious bytes: not a PNG, not a map\n";
+
+fn shipped_map(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("..")
+        .join("maps")
+        .join(name)
+}
+
+fn two_rooms() -> String {
+    std::fs::read_to_string(shipped_map("two_rooms.ron")).expect("shipped map")
+}
+
+fn edit(text: &str, from: &str, to: &str) -> String {
+    assert_eq!(text.matches(from).count(), 1, "edit target `{from}`");
+    text.replacen(from, to, 1)
+}
+
+/// A compiled two_rooms, made through the library.
+fn compiled_two_rooms() -> Vec<u8> {
+    let map = parse_map(&two_rooms(), "two_rooms.ron").expect("valid");
+    file::to_bytes(&build(&map, &BuildOptions::default()).expect("compiles"))
+}
+
+/// A temporary working directory with fixtures:
+/// - `map.ron`: two_rooms; `bad.ron`: a missing comma on line 5, column 34;
+///   `invalid.ron`: line 3 refers to vertex 99; `empty.ron`; `binary.ron`;
+/// - `compiled.slbsp`: two_rooms compiled; `half.slbsp`: its first half;
+/// - `dir.ron/`: a directory; `sub/`: an empty directory;
+/// - `out.png` and `out.slbsp`: existing outputs holding [`PRECIOUS`].
+struct Scene {
+    dir: tempfile::TempDir,
+}
+
+impl Scene {
+    fn new() -> Scene {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let text = two_rooms();
+        let compiled = compiled_two_rooms();
+        let files: [(&str, Vec<u8>); 9] = [
+            ("map.ron", text.clone().into()),
+            (
+                "bad.ron",
+                edit(&text, "(0.0, 256.0), (256.0", "(0.0, 256.0) (256.0").into(),
+            ),
+            (
+                "invalid.ron",
+                edit(&text, "from: 3, to: 4", "from: 99, to: 4").into(),
+            ),
+            ("empty.ron", Vec::new()),
+            ("binary.ron", b"\x89PNG\r\n\x1a\n\0\0\0\rIHDR".to_vec()),
+            ("half.slbsp", compiled[..compiled.len() / 2].to_vec()),
+            ("compiled.slbsp", compiled),
+            ("out.png", PRECIOUS.to_vec()),
+            ("out.slbsp", PRECIOUS.to_vec()),
+        ];
+        for (name, bytes) in files {
+            std::fs::write(dir.path().join(name), bytes).expect("fixture");
+        }
+        for sub in ["dir.ron", "sub"] {
+            std::fs::create_dir(dir.path().join(sub)).expect("fixture dir");
+        }
+        Scene { dir }
+    }
+
+    fn path(&self, name: &str) -> PathBuf {
+        self.dir.path().join(name)
+    }
+
+    /// Every entry under the directory: path -> contents (None for a directory).
+    fn snapshot(&self) -> BTreeMap<PathBuf, Option<Vec<u8>>> {
+        fn walk(dir: &Path, root: &Path, out: &mut BTreeMap<PathBuf, Option<Vec<u8>>>) {
+            for entry in std::fs::read_dir(dir).expect("read_dir") {
+                let path = entry.expect("entry").path();
+                let key = path.strip_prefix(root).unwrap().to_path_buf();
+                if path.is_dir() {
+                    out.insert(key, None);
+                    walk(&path, root, out);
+                } else {
+                    out.insert(key, Some(std::fs::read(&path).expect("read")));
+                }
+            }
+        }
+        let mut out = BTreeMap::new();
+        walk(self.dir.path(), self.dir.path(), &mut out);
+        out
+    }
+
+    /// Runs `sightline args...` in the directory.
+    fn run<S: AsRef<OsStr>>(&self, args: &[S]) -> Run {
+        let out = Command::new(env!("CARGO_BIN_EXE_sightline"))
+            .args(args)
+            .current_dir(self.dir.path())
+            .env("RUST_BACKTRACE", "0")
+            .output()
+            .expect("the binary runs");
+        Run {
+            success: out.status.success(),
+            code: out.status.code(),
+            stdout: String::from_utf8_lossy(&out.stdout).into_owned(),
+            stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
+        }
+    }
+}
+
+struct Run {
+    success: bool,
+    code: Option<i32>,
+    stdout: String,
+    stderr: String,
+}
+
+impl Run {
+    fn ok(&self, what: &str) -> &Run {
+        assert!(
+            self.success,
+            "{what}: exit {:?}\nstdout: {}\nstderr: {}",
+            self.code, self.stdout, self.stderr
+        );
+        self
+    }
+}
+
+/// Runs `args` in a fresh scene and checks that it fails cleanly: non-zero
+/// exit (1 or clap's 2, not a signal or panic's 101), every one of `mentions`
+/// in stderr, no panic, and not a byte changed on disk. Returns what is wrong.
+fn check_refused(args: &[&str], mentions: &[&str]) -> Result<(), String> {
+    let scene = Scene::new();
+    let before = scene.snapshot();
+    let run = scene.run(args);
+    let mut wrong = Vec::new();
+    if !matches!(run.code, Some(1 | 2)) {
+        wrong.push(format!("exit code {:?}", run.code));
+    }
+    if run.stderr.contains("panicked") {
+        wrong.push("panicked".to_string());
+    }
+    for m in mentions.iter().filter(|m| !run.stderr.contains(*m)) {
+        wrong.push(format!("stderr lacks `{m}`"));
+    }
+    let after = scene.snapshot();
+    if after != before {
+        let changed: Vec<_> = after
+            .iter()
+            .filter(|(k, v)| before.get(*k) != Some(v))
+            .map(|(k, _)| k.display().to_string())
+            .chain(
+                before
+                    .keys()
+                    .filter(|k| !after.contains_key(*k))
+                    .map(|k| k.display().to_string()),
+            )
+            .collect();
+        wrong.push(format!("files changed: {changed:?}"));
+    }
+    if wrong.is_empty() {
+        Ok(())
+    } else {
+        Err(format!(
+            "{}\n    stderr: {}",
+            wrong.join("; "),
+            run.stderr.trim_end()
+        ))
+    }
+}
+
+/// Checks every row, reporting all failures at once.
+fn check_all_refused(rows: &[(&[&str], &[&str])]) {
+    let failures: Vec<String> = rows
+        .iter()
+        .filter_map(|(args, mentions)| {
+            check_refused(args, mentions)
+                .err()
+                .map(|e| format!("sightline {}: {e}", args.join(" ")))
+        })
+        .collect();
+    assert!(
+        failures.is_empty(),
+        "{} of {} rows failed:\n{}",
+        failures.len(),
+        rows.len(),
+        failures.join("\n")
+    );
+}
+
+/// The PNG signature and the IHDR size of `bytes`.
+fn png_size(bytes: &[u8]) -> (u32, u32) {
+    assert!(
+        bytes.len() > 24,
+        "too short for a PNG: {} bytes",
+        bytes.len()
+    );
+    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n", "PNG signature");
+    assert_eq!(&bytes[12..16], b"IHDR", "first chunk is IHDR");
+    let be = |i: usize| u32::from_be_bytes(bytes[i..i + 4].try_into().unwrap());
+    (be(16), be(20))
+}
+
+// ---------------------------------------------------------------------------
+// capture
+
+/// `capture map.ron -o out.png` with extra arguments.
+macro_rules! capture {
+    ($($arg:expr),* $(,)?) => {
+        &["capture", "map.ron", "-o", "out.png", $($arg),*][..]
+    };
+}
+
+#[test]
+fn capture_refuses_bad_sizes() {
+    check_all_refused(&[
+        (
+            capture!("--size", "0x10"),
+            &["--size", "0x10", "`0`", "1..=16384"],
+        ),
+        (capture!("--size", "64x0"), &["--size", "64x0", "`0`"]),
+        (capture!("--size", "10"), &["--size", "`10`", "WxH"]),
+        (capture!("--size", "100000x100000"), &["--size", "`100000`"]),
+        (capture!("--size", "axb"), &["--size", "axb", "`a`"]),
+        (capture!("--size", "-5x10"), &["--size", "-5x10"]),
+        (capture!("--size", ""), &["--size"]),
+    ]);
+}
+
+#[test]
+fn capture_refuses_bad_poses() {
+    check_all_refused(&[
+        (capture!("--pose", "1,2"), &["--pose", "`1,2`", "X,Y,ANGLE"]),
+        (capture!("--pose", "1,2,3,4,5"), &["--pose", "X,Y,ANGLE"]),
+        (
+            capture!("--pose", "1,2,nan"),
+            &["--pose", "`nan`", "not finite"],
+        ),
+        (
+            capture!("--pose", "64,128,0,inf"),
+            &["--pose", "`inf`", "not finite"],
+        ),
+        (
+            capture!("--pose", "a,b,c"),
+            &["--pose", "`a` is not a number"],
+        ),
+        (capture!("--pose", "1e999,128,0"), &["--pose", "not finite"]),
+        // Outside every sector, and exactly on a wall: the map names itself.
+        (
+            capture!("--pose", "-5,128,0"),
+            &["map.ron", "bad pose", "(-5, 128)", "not inside any sector"],
+        ),
+        (
+            capture!("--pose", "1000,1000,90"),
+            &["map.ron", "(1000, 1000)"],
+        ),
+        (capture!("--pose", "256,128,0"), &["map.ron", "(256, 128)"]),
+    ]);
+}
+
+#[test]
+fn capture_refuses_bad_choices() {
+    check_all_refused(&[
+        (
+            capture!("--renderer", "raytrace"),
+            &["--renderer", "raytrace", "bsp", "reference"],
+        ),
+        (
+            capture!("--shade", "neon"),
+            &["--shade", "neon", "ids", "flat"],
+        ),
+        (capture!("--frobnicate"), &["--frobnicate"]),
+        (&["capture", "map.ron"], &["--output"]),
+        (&["capture", "-o", "out.png"], &["<MAP>"]),
+    ]);
+}
+
+#[test]
+fn capture_refuses_bad_map_files() {
+    let capture = |map: &'static str| -> &'static [&'static str] {
+        Box::leak(vec!["capture", map, "-o", "out.png"].into_boxed_slice())
+    };
+    check_all_refused(&[
+        (capture("missing.ron"), &["missing.ron", "cannot read"]),
+        (capture("dir.ron"), &["dir.ron", "cannot read"]),
+        (capture("bad.ron"), &["bad.ron:5:34", "comma"]),
+        (
+            capture("invalid.ron"),
+            &["invalid.ron", "line 3", "vertex 99"],
+        ),
+        (capture("empty.ron"), &["empty.ron", "empty"]),
+        (capture("binary.ron"), &["binary.ron", "binary", "byte 8"]),
+        (
+            capture("half.slbsp"),
+            &["half.slbsp", "corrupt or truncated"],
+        ),
+    ]);
+}
+
+#[test]
+fn capture_refuses_bad_outputs() {
+    check_all_refused(&[
+        (
+            &["capture", "map.ron", "-o", "map.ron"],
+            &["map.ron", "refusing to overwrite"],
+        ),
+        (
+            &["capture", "map.ron", "-o", "sub/../map.ron"],
+            &["sub/../map.ron", "refusing to overwrite"],
+        ),
+        (
+            &["capture", "map.ron", "-o", "nodir/out.png"],
+            &["nodir/out.png", "cannot write"],
+        ),
+        (
+            &["capture", "map.ron", "-o", "sub"],
+            &["sub", "cannot write"],
+        ),
+    ]);
+}
+
+#[test]
+fn capture_writes_a_png() {
+    let scene = Scene::new();
+    let run = scene.run(&[
+        "capture", "map.ron", "--shade", "ids", "--size", "64x40", "-o", "new.png",
+    ]);
+    run.ok("capture");
+    assert!(!run.stderr.contains("panicked"), "{}", run.stderr);
+    let png = std::fs::read(scene.path("new.png")).expect("the PNG was written");
+    assert_eq!(png_size(&png), (64, 40));
+}
+
+/// An existing output is replaced whole, through a temporary file that is gone
+/// afterwards; the reference renderer and an explicit pose work too.
+#[test]
+fn capture_replaces_an_existing_output() {
+    let scene = Scene::new();
+    let before = scene.snapshot();
+    scene
+        .run(&[
+            "capture",
+            "map.ron",
+            "--renderer",
+            "reference",
+            "--pose",
+            "64,128,45,60",
+            "--size",
+            "33x17",
+            "-o",
+            "out.png",
+        ])
+        .ok("capture over out.png");
+    let png = std::fs::read(scene.path("out.png")).unwrap();
+    assert_eq!(png_size(&png), (33, 17));
+    let after = scene.snapshot();
+    let changed: Vec<_> = after
+        .keys()
+        .filter(|k| before.get(*k) != after.get(*k))
+        .collect();
+    assert_eq!(changed, [Path::new("out.png")], "only out.png changes");
+}
+
+// ---------------------------------------------------------------------------
+// compile
+
+#[test]
+fn compile_refuses_to_overwrite_its_input() {
+    check_all_refused(&[
+        (
+            &["compile", "map.ron", "-o", "map.ron"],
+            &["map.ron", "refusing to overwrite the input map"],
+        ),
+        (
+            &["compile", "map.ron", "-o", "./sub/../map.ron"],
+            &["./sub/../map.ron", "refusing"],
+        ),
+    ]);
+}
+
+/// A map that cannot be compiled leaves the existing output as it was.
+#[test]
+fn compile_of_a_bad_map_leaves_the_output_alone() {
+    let compile = |map: &'static str| -> &'static [&'static str] {
+        Box::leak(vec!["compile", map, "-o", "out.slbsp"].into_boxed_slice())
+    };
+    check_all_refused(&[
+        (compile("bad.ron"), &["bad.ron:5:34", "comma"]),
+        (
+            compile("invalid.ron"),
+            &["invalid.ron", "line 3", "`from` refers to vertex 99"],
+        ),
+        (compile("empty.ron"), &["empty.ron", "empty"]),
+        (compile("binary.ron"), &["binary.ron", "byte 8"]),
+        (compile("missing.ron"), &["missing.ron", "cannot read"]),
+        (compile("dir.ron"), &["dir.ron", "cannot read"]),
+        (
+            compile("compiled.slbsp"),
+            &["compiled.slbsp", "not a text map"],
+        ),
+    ]);
+}
+
+#[test]
+fn compile_refuses_bad_arguments() {
+    check_all_refused(&[
+        (
+            &[
+                "compile",
+                "map.ron",
+                "-o",
+                "out.slbsp",
+                "--splitter",
+                "nonsense",
+            ],
+            &[
+                "--splitter",
+                "unknown splitter `nonsense`",
+                "random",
+                "cost",
+            ],
+        ),
+        (
+            &["compile", "map.ron", "-o", "out.slbsp", "--seed", "abc"],
+            &["--seed", "abc"],
+        ),
+        (
+            &["compile", "map.ron", "-o", "out.slbsp", "--seed", "-1"],
+            &["--seed"],
+        ),
+        (&["compile", "map.ron"], &["--output"]),
+        (
+            &["compile", "map.ron", "-o", "nodir/out.slbsp"],
+            &["nodir/out.slbsp", "cannot write"],
+        ),
+        (
+            &["compile", "map.ron", "-o", "sub"],
+            &["sub", "cannot write"],
+        ),
+        (&["frobnicate"], &["frobnicate"]),
+    ]);
+}
+
+#[test]
+fn compile_json_is_one_object_on_the_last_line_and_the_file_loads() {
+    let scene = Scene::new();
+    for splitter in ["cost", "random"] {
+        let out = format!("two_rooms.{splitter}.slbsp");
+        let run = scene.run(&[
+            "compile",
+            "map.ron",
+            "-o",
+            &out,
+            "--json",
+            "--splitter",
+            splitter,
+            "--seed",
+            "3",
+        ]);
+        run.ok("compile --json");
+        let last = run.stdout.lines().last().expect("some stdout");
+        let stats: serde_json::Value = serde_json::from_str(last)
+            .unwrap_or_else(|e| panic!("last stdout line is not JSON ({e}): {last}"));
+        let obj = stats.as_object().expect("a JSON object");
+        for key in [
+            "lines_in",
+            "sides_in",
+            "sides_out",
+            "splits",
+            "nodes",
+            "leaves",
+            "depth",
+        ] {
+            assert!(
+                obj.get(key).is_some_and(|v| v.is_u64()),
+                "`{key}` missing or not a count: {last}"
+            );
+        }
+        assert!(
+            obj.get("build_ms")
+                .is_some_and(|v| v.as_f64().is_some_and(|ms| ms >= 0.0)),
+            "{last}"
+        );
+        assert_eq!(obj["lines_in"], 7, "{last}");
+        assert_eq!(obj["sides_in"], 8, "{last}");
+        assert!(
+            obj["sides_out"].as_u64() >= obj["sides_in"].as_u64(),
+            "{last}"
+        );
+        assert_eq!(
+            obj["leaves"].as_u64(),
+            obj["nodes"].as_u64().map(|n| n + 1),
+            "a binary tree: {last}"
+        );
+
+        let compiled = std::fs::read(scene.path(&out)).expect("compiled file written");
+        assert!(compiled.starts_with(file::MAGIC), "compiled file header");
+        let png = format!("{out}.png");
+        scene
+            .run(&[
+                "capture", &out, "--shade", "ids", "--size", "64x40", "-o", &png,
+            ])
+            .ok("capture of the compiled file");
+        assert_eq!(
+            png_size(&std::fs::read(scene.path(&png)).unwrap()),
+            (64, 40)
+        );
+    }
+}
+
+/// The compiled file renders exactly as its source does.
+#[test]
+fn a_compiled_map_captures_like_its_source() {
+    let scene = Scene::new();
+    scene
+        .run(&["compile", "map.ron", "-o", "map.slbsp"])
+        .ok("compile");
+    for (input, png) in [("map.ron", "a.png"), ("map.slbsp", "b.png")] {
+        scene
+            .run(&[
+                "capture",
+                input,
+                "--size",
+                "80x50",
+                "--pose",
+                "100,100,30",
+                "-o",
+                png,
+            ])
+            .ok("capture");
+    }
+    let (a, b) = (
+        std::fs::read(scene.path("a.png")).unwrap(),
+        std::fs::read(scene.path("b.png")).unwrap(),
+    );
+    assert!(
+        a == b,
+        "capture of the compiled map differs from the source's"
+    );
+}
+
+#[test]
+fn compile_without_json_prints_a_summary() {
+    let scene = Scene::new();
+    let run = scene.run(&["compile", "map.ron", "-o", "out.slbsp"]);
+    run.ok("compile");
+    let line = run.stdout.trim_end();
+    for part in ["map.ron", "7 lines", "8 sides", "-> out.slbsp"] {
+        assert!(line.contains(part), "summary lacks `{part}`: {line}");
+    }
+}
