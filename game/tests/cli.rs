@@ -183,7 +183,7 @@ fn check_refused(args: &[&str], mentions: &[&str]) -> Result<(), String> {
 }
 
 /// Checks every row, reporting all failures at once.
-fn check_all_refused(rows: &[(&[&str], &[&str])]) {
+fn check_all_refused(rows: &[(Vec<&str>, &[&str])]) {
     let failures: Vec<String> = rows
         .iter()
         .filter_map(|(args, mentions)| {
@@ -220,7 +220,7 @@ fn png_size(bytes: &[u8]) -> (u32, u32) {
 /// `capture map.ron -o out.png` with extra arguments.
 macro_rules! capture {
     ($($arg:expr),* $(,)?) => {
-        &["capture", "map.ron", "-o", "out.png", $($arg),*][..]
+        vec!["capture", "map.ron", "-o", "out.png", $($arg),*]
     };
 }
 
@@ -235,7 +235,9 @@ fn capture_refuses_bad_sizes() {
         (capture!("--size", "10"), &["--size", "`10`", "WxH"]),
         (capture!("--size", "100000x100000"), &["--size", "`100000`"]),
         (capture!("--size", "axb"), &["--size", "axb", "`a`"]),
-        (capture!("--size", "-5x10"), &["--size", "-5x10"]),
+        // A leading minus is taken for an option unless attached with `=`.
+        (capture!("--size", "-5x10"), &["unexpected argument '-5'"]),
+        (capture!("--size=-5x10"), &["--size", "`-5`"]),
         (capture!("--size", ""), &["--size"]),
     ]);
 }
@@ -283,16 +285,14 @@ fn capture_refuses_bad_choices() {
             &["--shade", "neon", "ids", "flat"],
         ),
         (capture!("--frobnicate"), &["--frobnicate"]),
-        (&["capture", "map.ron"], &["--output"]),
-        (&["capture", "-o", "out.png"], &["<MAP>"]),
+        (vec!["capture", "map.ron"], &["--output"]),
+        (vec!["capture", "-o", "out.png"], &["<MAP>"]),
     ]);
 }
 
 #[test]
 fn capture_refuses_bad_map_files() {
-    let capture = |map: &'static str| -> &'static [&'static str] {
-        Box::leak(vec!["capture", map, "-o", "out.png"].into_boxed_slice())
-    };
+    let capture = |map| vec!["capture", map, "-o", "out.png"];
     check_all_refused(&[
         (capture("missing.ron"), &["missing.ron", "cannot read"]),
         (capture("dir.ron"), &["dir.ron", "cannot read"]),
@@ -394,9 +394,7 @@ fn compile_refuses_to_overwrite_its_input() {
 /// A map that cannot be compiled leaves the existing output as it was.
 #[test]
 fn compile_of_a_bad_map_leaves_the_output_alone() {
-    let compile = |map: &'static str| -> &'static [&'static str] {
-        Box::leak(vec!["compile", map, "-o", "out.slbsp"].into_boxed_slice())
-    };
+    let compile = |map| vec!["compile", map, "-o", "out.slbsp"];
     check_all_refused(&[
         (compile("bad.ron"), &["bad.ron:5:34", "comma"]),
         (
@@ -441,7 +439,7 @@ fn compile_refuses_bad_arguments() {
             &["compile", "map.ron", "-o", "out.slbsp", "--seed", "-1"],
             &["--seed"],
         ),
-        (&["compile", "map.ron"], &["--output"]),
+        (vec!["compile", "map.ron"], &["--output"]),
         (
             &["compile", "map.ron", "-o", "nodir/out.slbsp"],
             &["nodir/out.slbsp", "cannot write"],
@@ -450,7 +448,7 @@ fn compile_refuses_bad_arguments() {
             &["compile", "map.ron", "-o", "sub"],
             &["sub", "cannot write"],
         ),
-        (&["frobnicate"], &["frobnicate"]),
+        (vec!["frobnicate"], &["frobnicate"]),
     ]);
 }
 
