@@ -314,19 +314,19 @@ fn capture_refuses_bad_map_files() {
 fn capture_refuses_bad_outputs() {
     check_all_refused(&[
         (
-            &["capture", "map.ron", "-o", "map.ron"],
+            vec!["capture", "map.ron", "-o", "map.ron"],
             &["map.ron", "refusing to overwrite"],
         ),
         (
-            &["capture", "map.ron", "-o", "sub/../map.ron"],
+            vec!["capture", "map.ron", "-o", "sub/../map.ron"],
             &["sub/../map.ron", "refusing to overwrite"],
         ),
         (
-            &["capture", "map.ron", "-o", "nodir/out.png"],
+            vec!["capture", "map.ron", "-o", "nodir/out.png"],
             &["nodir/out.png", "cannot write"],
         ),
         (
-            &["capture", "map.ron", "-o", "sub"],
+            vec!["capture", "map.ron", "-o", "sub"],
             &["sub", "cannot write"],
         ),
     ]);
@@ -381,11 +381,11 @@ fn capture_replaces_an_existing_output() {
 fn compile_refuses_to_overwrite_its_input() {
     check_all_refused(&[
         (
-            &["compile", "map.ron", "-o", "map.ron"],
+            vec!["compile", "map.ron", "-o", "map.ron"],
             &["map.ron", "refusing to overwrite the input map"],
         ),
         (
-            &["compile", "map.ron", "-o", "./sub/../map.ron"],
+            vec!["compile", "map.ron", "-o", "./sub/../map.ron"],
             &["./sub/../map.ron", "refusing"],
         ),
     ]);
@@ -432,20 +432,20 @@ fn compile_refuses_bad_arguments() {
             ],
         ),
         (
-            &["compile", "map.ron", "-o", "out.slbsp", "--seed", "abc"],
+            vec!["compile", "map.ron", "-o", "out.slbsp", "--seed", "abc"],
             &["--seed", "abc"],
         ),
         (
-            &["compile", "map.ron", "-o", "out.slbsp", "--seed", "-1"],
+            vec!["compile", "map.ron", "-o", "out.slbsp", "--seed", "-1"],
             &["--seed"],
         ),
         (vec!["compile", "map.ron"], &["--output"]),
         (
-            &["compile", "map.ron", "-o", "nodir/out.slbsp"],
+            vec!["compile", "map.ron", "-o", "nodir/out.slbsp"],
             &["nodir/out.slbsp", "cannot write"],
         ),
         (
-            &["compile", "map.ron", "-o", "sub"],
+            vec!["compile", "map.ron", "-o", "sub"],
             &["sub", "cannot write"],
         ),
         (vec!["frobnicate"], &["frobnicate"]),
