@@ -45,15 +45,68 @@ fn tr(from: &str, to: &str) -> String {
     edit(&two_rooms(), from, to)
 }
 
-/// two_rooms with extra vertices (numbered from 6) and one extra line (line 7).
+/// two_rooms with extra vertices (numbered from 6) and extra lines (from 7).
 fn tr_plus(vertices: &str, line: &str) -> String {
+    tr_plus_lines(vertices, &[line])
+}
+
+fn tr_plus_lines(vertices: &str, lines: &[impl AsRef<str>]) -> String {
     let text = tr("(256.0, 0.0),\n", &format!("(256.0, 0.0), {vertices}\n"));
+    let lines: String = lines
+        .iter()
+        .map(|l| format!("        {},\n", l.as_ref()))
+        .collect();
     edit(
         &text,
         "    ],\n    things",
-        &format!("        {line},\n    ],\n    things"),
+        &format!("{lines}    ],\n    things"),
     )
 }
+
+/// A square loop of lines through vertices 6, 7, 8, 9, clockwise when
+/// `clockwise`, each with the given sides.
+fn square_loop(clockwise: bool, sides: &str) -> Vec<String> {
+    let order = if clockwise {
+        [6, 7, 8, 9]
+    } else {
+        [6, 9, 8, 7]
+    };
+    (0..4)
+        .map(|k| {
+            format!(
+                "Line(from: {}, to: {}, {sides})",
+                order[k],
+                order[(k + 1) % 4]
+            )
+        })
+        .collect()
+}
+
+/// The problems of a one-sided square loop (lines 7 to 10) inside sector 0
+/// whose front says `front` but finds `found`: each side of each line.
+fn square_mismatches(front: usize, found: &[usize]) -> Vec<Problem> {
+    (7..=10)
+        .flat_map(|line| {
+            [
+                Problem::SideMismatch {
+                    line,
+                    side: "front",
+                    expected: Some(front),
+                    found: found.to_vec(),
+                },
+                Problem::SideMismatch {
+                    line,
+                    side: "back",
+                    expected: None,
+                    found: vec![0],
+                },
+            ]
+        })
+        .collect()
+}
+
+/// Corners of a 64-unit square inside sector 0, south-west first, clockwise.
+const SQUARE: &str = "(96.0, 96.0), (96.0, 160.0), (160.0, 160.0), (160.0, 96.0),";
 
 /// A source map with every line reversed: each sector ends up on the left.
 fn reversed(text: &str) -> String {
@@ -152,7 +205,15 @@ fn same_problems(got: &[Problem], want: &[Problem]) -> bool {
 
 /// Runs one case through every door; returns what is wrong, if anything.
 fn check(case: &Case) -> Result<(), String> {
-    let path = scratch("maps").join(format!("{}.ron", case.name.replace([' ', '/'], "_")));
+    // Named by content too, so that rows of tests running in parallel never share a file.
+    let hash = {
+        use std::hash::{Hash, Hasher};
+        let mut h = std::collections::hash_map::DefaultHasher::new();
+        case.bytes.hash(&mut h);
+        h.finish()
+    };
+    let name = case.name.replace(|c: char| !c.is_ascii_alphanumeric(), "_");
+    let path = scratch("maps").join(format!("{name}-{hash:016x}.ron"));
     std::fs::write(&path, &case.bytes).map_err(|e| e.to_string())?;
     let label = path.display().to_string();
     let options = BuildOptions::default();
@@ -323,8 +384,9 @@ fn malformed_ron_is_a_syntax_error_at_the_right_line_and_column() {
         syntax(
             "float for an index",
             tr("from: 3, to: 4", "from: 3.5, to: 4"),
+            // ron reads the integer 3, then wants a comma where `.5` starts.
             ".5, to: 4",
-            "",
+            "comma",
         ),
         syntax(
             "integer too large for i64",
@@ -362,6 +424,24 @@ fn malformed_ron_is_a_syntax_error_at_the_right_line_and_column() {
             "[1, 2, 3]\n".to_string(),
             "[1, 2, 3]",
             "Map",
+        ),
+        syntax(
+            "unknown sector field",
+            tr("light: 160,", "light: 160, brightness: 3,"),
+            "brightness",
+            "brightness",
+        ),
+        syntax(
+            "misspelt optional field",
+            tr("ceiling_texture: \"SKY\"", "ceiling_textur: \"SKY\""),
+            "ceiling_textur",
+            "ceiling_textur",
+        ),
+        syntax(
+            "misspelt back side",
+            tr("back: Some(Side(sector: 0))", "bakc: Some(Side(sector: 0))"),
+            "bakc",
+            "bakc",
         ),
         syntax(
             "CRLF line endings",
@@ -440,13 +520,10 @@ fn binary_files_are_binary() {
     let first_nul = random.iter().position(|&b| b == 0).unwrap();
     let mut map_with_nul = two_rooms().into_bytes();
     map_with_nul[200] = 0;
-    let latin1 = tr("\"Two rooms\"", "\"Zwei R\u{e4}ume\"")
-        .replace('\u{e4}', "\u{1}")
-        .into_bytes()
-        .into_iter()
-        .map(|b| if b == 1 { 0xe4 } else { b }) // a Latin-1 ä: not UTF-8
-        .collect::<Vec<u8>>();
-    let latin1_at = latin1.iter().position(|&b| b == 0xe4).unwrap();
+    // "Zwei Räume" saved as Latin-1: a lone 0xe4 is not UTF-8.
+    let mut latin1 = tr("\"Two rooms\"", "\"Zwei R?ume\"").into_bytes();
+    let latin1_at = latin1.iter().position(|&b| b == b'?').unwrap();
+    latin1[latin1_at] = 0xe4;
     check_all(&[
         case("random bytes", random, Want::Binary { offset: first_nul }),
         case(
@@ -588,7 +665,7 @@ fn bad_numbers_name_the_vertex_or_sector() {
                 floor: 200.0,
                 ceiling: 128.0,
             }],
-            &["sector 1", "floor 200 is above ceiling 128"],
+            &["sector 1", "floor 200.0 is above ceiling 128.0"],
         ),
         invalid(
             "light 256",
@@ -678,7 +755,7 @@ fn bad_geometry_names_the_lines_and_vertices() {
                 other: 7,
                 at: glam::DVec2::new(256.0, 128.0),
             }],
-            &["line 6", "crosses line 7", "(256, 128)"],
+            &["line 6", "crosses line 7", "(256.0, 128.0)"],
         ),
         invalid(
             "T-junction",
@@ -691,7 +768,7 @@ fn bad_geometry_names_the_lines_and_vertices() {
                 other: 7,
                 at: glam::DVec2::new(128.0, 0.0),
             }],
-            &["line 5", "line 7", "(128, 0)", "split the line"],
+            &["line 5", "line 7", "(128.0, 0.0)", "split the line"],
         ),
         invalid(
             "collinear overlap",
@@ -728,6 +805,23 @@ fn bad_geometry_names_the_lines_and_vertices() {
                 Problem::InsideOut { sector: 1 },
             ],
             &["2 problems", "sector 0", "sector 1", "face away"],
+        ),
+        invalid(
+            "nested sector without a portal",
+            edit(
+                &tr_plus_lines(SQUARE, &square_loop(true, "front: Side(sector: 2)")),
+                "    ],\n    lines",
+                "        Sector(floor: 0.0, ceiling: 64.0, light: 0),\n    ],\n    lines",
+            ),
+            square_mismatches(2, &[0, 2]),
+            &["line 7: just off its front side lies sectors [0, 2] at once, but the line says sector 2",
+              "line 7: just off its back side lies sector 0, but the line says nothing"],
+        ),
+        invalid(
+            "pillar wound the wrong way",
+            tr_plus_lines(SQUARE, &square_loop(true, "front: Side(sector: 0)")),
+            square_mismatches(0, &[]),
+            &["line 10: just off its front side lies no sector", "winding"],
         ),
         invalid(
             "a sector no line uses",
@@ -771,7 +865,7 @@ fn player_start_problems_name_the_thing() {
                 x: 1000.0,
                 y: 128.0,
             }],
-            &["thing 0", "(1000, 128)", "not inside any sector"],
+            &["thing 0", "(1000.0, 128.0)", "not inside any sector"],
         ),
         invalid(
             "start exactly on a line",
@@ -781,7 +875,7 @@ fn player_start_problems_name_the_thing() {
                 x: 256.0,
                 y: 128.0,
             }],
-            &["thing 0", "(256, 128)"],
+            &["thing 0", "(256.0, 128.0)"],
         ),
         invalid(
             "second thing is the start, outside",
@@ -795,9 +889,26 @@ fn player_start_problems_name_the_thing() {
                 x: -5.0,
                 y: 128.0,
             }],
-            &["thing 1", "(-5, 128)"],
+            &["thing 1", "(-5.0, 128.0)"],
         ),
     ]);
+}
+
+/// The edit helpers make valid maps when asked to: a pillar wound
+/// counter-clockwise, and a nested sector behind two-sided lines.
+#[test]
+fn the_edit_helpers_make_valid_maps_too() {
+    let pillar = tr_plus_lines(SQUARE, &square_loop(false, "front: Side(sector: 0)"));
+    parse_map(&pillar, "pillar.ron").unwrap_or_else(|e| panic!("{e}"));
+    let nested = edit(
+        &tr_plus_lines(
+            SQUARE,
+            &square_loop(true, "front: Side(sector: 2), back: Some(Side(sector: 0))"),
+        ),
+        "    ],\n    lines",
+        "        Sector(floor: 8.0, ceiling: 64.0, light: 0),\n    ],\n    lines",
+    );
+    parse_map(&nested, "nested.ron").unwrap_or_else(|e| panic!("{e}"));
 }
 
 /// Many problems are listed with a count, the first twelve shown.
@@ -892,14 +1003,26 @@ fn compiled_headers_and_versions_are_refused() {
         (
             "magic and version",
             [magic, &[file::VERSION]].concat(),
-            "corrupt or truncated".into(),
+            "truncated".into(),
         ),
         (
             "version 0",
             with_version(0),
-            "format version 0, this build reads version 1".into(),
+            format!(
+                "format version 0, this build reads version {}",
+                file::VERSION
+            ),
         ),
-        ("version 2", with_version(2), "format version 2".into()),
+        (
+            "the previous version",
+            with_version(file::VERSION - 1),
+            format!("format version {}", file::VERSION - 1),
+        ),
+        (
+            "the next version",
+            with_version(file::VERSION + 1),
+            format!("format version {}", file::VERSION + 1),
+        ),
         ("version 255", with_version(255), "recompile the map".into()),
         (
             "garbage after the header",
@@ -972,10 +1095,9 @@ fn flipped_bytes_in_a_compiled_map_never_panic() {
         }
     }
     eprintln!("{refused} flips refused, {loaded} loaded");
-    assert!(
-        refused > 0 && loaded > 0,
-        "{refused} refused, {loaded} loaded"
-    );
+    // The checksum refuses every flip (see the test below); this one only
+    // insists that nothing panics on the way.
+    assert!(refused > 0, "{refused} refused, {loaded} loaded");
 }
 
 /// A valid header followed by noise, of many lengths and seeds.
@@ -1026,39 +1148,14 @@ fn a_corrupt_compiled_file_names_its_path() {
 // Known bugs, reported; each passes once fixed.
 
 #[test]
-#[ignore = "bug: unknown field names in a map are silently ignored (no deny_unknown_fields on the source structs)"]
-fn bug_unknown_fields_are_syntax_errors() {
-    check_all(&[
-        syntax(
-            "unknown sector field",
-            tr("light: 160,", "light: 160, brightness: 3,"),
-            "brightness",
-            "brightness",
-        ),
-        syntax(
-            "misspelt optional field",
-            tr("ceiling_texture: \"SKY\"", "ceiling_textur: \"SKY\""),
-            "ceiling_textur",
-            "ceiling_textur",
-        ),
-        syntax(
-            "misspelt back side",
-            tr("back: Some(Side(sector: 0))", "bakc: Some(Side(sector: 0))"),
-            "bakc",
-            "bakc",
-        ),
-    ]);
-}
 
-#[test]
-#[ignore = "bug: a map saved with a UTF-8 byte-order mark fails with `1:1: Expected opening ( for struct Map`"]
 fn bug_a_byte_order_mark_is_accepted() {
     let text = format!("\u{feff}{}", two_rooms());
     parse_map(&text, "bom.ron").unwrap_or_else(|e| panic!("{e}"));
 }
 
 #[test]
-#[ignore = "bug: numbers in problem messages are printed with `{}`, so 1e300 becomes 301 digits"]
+
 fn bug_huge_and_tiny_numbers_print_compactly() {
     let cases = [
         tr("(512.0, 0.0)", "(1e300, 0.0)"),
@@ -1089,7 +1186,7 @@ fn loading_flips(bytes: &[u8]) -> Vec<(usize, u8, CompiledMap)> {
 }
 
 #[test]
-#[ignore = "bug: a compiled map whose BSP no longer fits its map loads without error (from_bytes runs check_structure, not check_invariants)"]
+
 fn bug_a_compiled_tree_that_disagrees_with_its_map_is_refused() {
     let (_, bytes) = compiled("two_rooms.ron");
     let broken: Vec<String> = loading_flips(&bytes)
@@ -1108,7 +1205,7 @@ fn bug_a_compiled_tree_that_disagrees_with_its_map_is_refused() {
 }
 
 #[test]
-#[ignore = "bug: a compiled map with corrupted bytes loads without error (the file has no checksum)"]
+
 fn bug_every_flipped_byte_in_a_compiled_map_is_refused() {
     let (original, bytes) = compiled("two_rooms.ron");
     let loaded: Vec<String> = loading_flips(&bytes)

@@ -7,9 +7,10 @@
 //!
 //! - The room's vertices sit at strictly increasing angles around the origin,
 //!   every angular gap in `[MIN_GAP, 0.9 pi]`, so the polygon is star-shaped
-//!   about the origin and therefore simple. Radii are at least 40 units, so
-//!   snapping to the 1/16 grid turns a vertex by at most ~0.0011 rad, far less
-//!   than `MIN_GAP`: the snapped polygon is still simple.
+//!   about the origin and therefore simple; an x-stretch (0.3..1) is affine
+//!   and keeps that. Radii are at least 40 units (12 stretched), so snapping
+//!   to the 1/16 grid turns a vertex by at most ~0.004 rad, well under the
+//!   smallest (stretched) gap: the snapped polygon is still simple.
 //! - A pillar is a regular-ish polygon (jittered angles and radii) inside its
 //!   circumscribed circle; the circle keeps `margin >= 0.25` units away from
 //!   every room edge and every other pillar's circle, which grid snapping
@@ -18,7 +19,10 @@
 //!   counter-clockwise with the room in front and, for a pillar sector, the
 //!   pillar's sector behind.
 //! - Large translations are by integers and scalings by powers of two, so on
-//!   the 1/16 grid they are exact and preserve validity exactly.
+//!   the 1/16 grid they are exact and preserve validity exactly. Scaling by
+//!   down to 2^-5 deliberately goes below the documented smallest features
+//!   (0.5-unit segments, 1-unit pillars): a 1/32-unit pillar, a 0.4-unit room.
+//!   `Raw` placement keeps unsnapped f64 coordinates.
 //!
 //! Everything is driven by a [`MapSpec`] whose parts have their own seeds, so
 //! that shrinking (fewer room vertices, fewer pillars, a plainer placement)

@@ -72,9 +72,10 @@ pub struct Pose {
     pub z: Option<f64>,
 }
 
-/// Largest frame side we accept, and largest pixel count (a 16K square).
+/// Largest frame side we accept, and largest pixel count: 64 Mpx, which with
+/// the canvas and the PNG rows stays well under a gigabyte.
 const MAX_SIDE: usize = 16_384;
-const MAX_PIXELS: usize = 16_384 * 16_384;
+const MAX_PIXELS: usize = 8_192 * 8_192;
 
 pub fn parse_size(s: &str) -> Result<(usize, usize), String> {
     let (w, h) = s

@@ -9,6 +9,12 @@ use crate::cli::CompileArgs;
 
 pub fn run(args: &CompileArgs) -> Result<()> {
     check_not_input(&args.map, &args.output)?;
+    if is_compiled_file(&args.map) {
+        anyhow::bail!(
+            "{}: is already a compiled map; compile its .ron source",
+            args.map.display()
+        );
+    }
     let map = load_map(&args.map)?;
     let options = BuildOptions {
         splitter: args.splitter,
@@ -39,4 +45,15 @@ pub fn run(args: &CompileArgs) -> Result<()> {
         );
     }
     Ok(())
+}
+
+/// Does `path` start with the compiled-map header? (Unreadable files are left
+/// to the loader, which reports them properly.)
+fn is_compiled_file(path: &std::path::Path) -> bool {
+    use std::io::Read;
+    let mut head = [0u8; 32];
+    let n = std::fs::File::open(path)
+        .and_then(|mut f| f.read(&mut head))
+        .unwrap_or(0);
+    file::is_compiled(&head[..n])
 }

@@ -1,12 +1,13 @@
-//! The compiled map file: a magic header, a format version, then the
-//! validated map and its BSP in postcard (a compact serde binary format).
+//! The compiled map file: a magic header, a format version, a CRC-32 of the
+//! payload, then the validated map and its BSP in postcard (a compact serde binary format).
 //!
-//! Loading never rebuilds the tree, but it does re-validate the map and check
-//! the tree's structure, so a corrupt or hostile file is an error, not a panic.
+//! Loading never rebuilds the tree, but it checks the checksum, re-validates
+//! the map and holds the tree to the compiler's invariants, so a corrupt or
+//! hostile file is an error, not a panic and not a wrong picture.
 
 use serde::{Deserialize, Serialize};
 
-use super::check::check_structure;
+use super::check::check_invariants;
 use super::{Bsp, BuildStats, CompiledMap};
 use crate::map::validate::validate;
 use crate::map::Map;
@@ -14,7 +15,7 @@ use crate::map::Map;
 /// First bytes of every compiled map.
 pub const MAGIC: &[u8] = b"SIGHTLINE-BSP\n";
 /// Bumped whenever the layout below changes; older files are refused.
-pub const VERSION: u8 = 2;
+pub const VERSION: u8 = 3;
 
 /// What the file holds. The map goes in its validated form: postcard is not
 /// self-describing, so it cannot carry the source form's skipped defaults.
@@ -35,10 +36,12 @@ pub fn to_bytes(compiled: &CompiledMap) -> Vec<u8> {
         bsp: compiled.bsp.clone(),
         stats: compiled.stats.clone(),
     };
+    // Serializing plain in-memory data into a Vec cannot fail.
+    let payload = postcard::to_stdvec(&contents).unwrap_or_default();
     let mut bytes = MAGIC.to_vec();
     bytes.push(VERSION);
-    // Serializing plain in-memory data into a Vec cannot fail.
-    bytes.extend(postcard::to_stdvec(&contents).unwrap_or_default());
+    bytes.extend(crc32fast::hash(&payload).to_le_bytes());
+    bytes.extend(payload);
     bytes
 }
 
@@ -53,6 +56,12 @@ pub fn from_bytes(bytes: &[u8]) -> Result<CompiledMap, String> {
             "format version {version}, this build reads version {VERSION}; recompile the map"
         ));
     }
+    let (checksum, payload) = payload
+        .split_first_chunk::<4>()
+        .ok_or("truncated after the header")?;
+    if crc32fast::hash(payload) != u32::from_le_bytes(*checksum) {
+        return Err("corrupt or truncated: checksum mismatch".into());
+    }
     let contents: Contents =
         postcard::from_bytes(payload).map_err(|e| format!("corrupt or truncated: {e}"))?;
     // Validate again, as if from source: the bytes may have been tampered with.
@@ -60,7 +69,9 @@ pub fn from_bytes(bytes: &[u8]) -> Result<CompiledMap, String> {
         let first = problems.first().map(|p| p.to_string()).unwrap_or_default();
         format!("its map is invalid: {first}")
     })?;
-    check_structure(&map, &contents.bsp)?;
+    // A file can be well-formed and checksummed yet hand-made: hold its tree to
+    // every promise the compiler makes (a few ms even for large maps).
+    check_invariants(&map, &contents.bsp)?;
     Ok(CompiledMap {
         map,
         bsp: contents.bsp,

@@ -156,6 +156,7 @@ pub enum Problem {
     },
 }
 
+/// Numbers print with `{:?}`, which is exact and short (`1e300`, not 301 digits).
 impl fmt::Display for Problem {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let max = crate::geom::MAX_COORD;
@@ -163,17 +164,17 @@ impl fmt::Display for Problem {
             Problem::Missing { what } => write!(f, "the map has no {what}"),
             Problem::BadVertex { vertex, x, y } => write!(
                 f,
-                "vertex {vertex}: ({x}, {y}) is not a finite coordinate within the supported range -{max}..={max}"
+                "vertex {vertex}: ({x:?}, {y:?}) is not a finite coordinate within the supported range -{max}..={max}"
             ),
             Problem::SharedPosition { vertex, first } => {
                 write!(f, "vertex {vertex}: same position as vertex {first}; use one vertex")
             }
             Problem::BadHeight { sector, which, value } => write!(
                 f,
-                "sector {sector}: {which} height {value} is not finite within the supported range -{max}..={max}"
+                "sector {sector}: {which} height {value:?} is not finite within the supported range -{max}..={max}"
             ),
             Problem::FloorAboveCeiling { sector, floor, ceiling } => {
-                write!(f, "sector {sector}: floor {floor} is above ceiling {ceiling}")
+                write!(f, "sector {sector}: floor {floor:?} is above ceiling {ceiling:?}")
             }
             Problem::BadLight { sector, light } => {
                 write!(f, "sector {sector}: light {light} is outside 0..=255")
@@ -194,11 +195,11 @@ impl fmt::Display for Problem {
                 write!(f, "line {line}: duplicates line {first} (same two end points)")
             }
             Problem::Crossing { line, other, at } => {
-                write!(f, "line {line}: crosses line {other} at ({}, {})", at.x, at.y)
+                write!(f, "line {line}: crosses line {other} at ({:?}, {:?})", at.x, at.y)
             }
             Problem::Touching { line, other, at } => write!(
                 f,
-                "line {line}: meets line {other} at ({}, {}), inside one of them; split the line there",
+                "line {line}: meets line {other} at ({:?}, {:?}), inside one of them; split the line there",
                 at.x, at.y
             ),
             Problem::Overlap { line, other } => write!(f, "line {line}: overlaps line {other}"),
@@ -237,7 +238,7 @@ impl fmt::Display for Problem {
                 write!(f, "the map has no thing of kind \"{}\"", super::PLAYER_START)
             }
             Problem::StartOutside { thing, x, y } => {
-                write!(f, "thing {thing}: the player start ({x}, {y}) is not inside any sector")
+                write!(f, "thing {thing}: the player start ({x:?}, {y:?}) is not inside any sector")
             }
         }
     }
@@ -278,6 +279,8 @@ pub(crate) fn as_text<'a>(bytes: &'a [u8], label: &str) -> Result<&'a str, MapEr
         path: label.to_string(),
         offset: e.valid_up_to(),
     })?;
+    // Editors on Windows may start UTF-8 files with a byte-order mark.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     if text.trim().is_empty() {
         return Err(MapError::Empty {
             path: label.to_string(),
