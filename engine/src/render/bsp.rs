@@ -8,7 +8,7 @@ use super::frame::Frame;
 use super::shade::{Shade, Surface, VOID};
 use super::view::Camera;
 use super::walls::draw_seg;
-use crate::bsp::{Child, CompiledMap};
+use crate::bsp::{Child, CompiledMap, Node};
 use crate::geom::{front_distance, Aabb};
 
 pub fn render(
@@ -34,8 +34,7 @@ pub fn render(
             Child::Node(i) => {
                 frame.stats.nodes_visited += 1;
                 let node = &bsp.nodes[i];
-                // On the line itself either order is right: no ray crosses it.
-                let near = (front_distance(node.a, node.b, cam.eye) < 0.0) as usize;
+                let near = near_side(node, cam) as usize;
                 frame
                     .stack
                     .push((node.children[1 - near], Some(node.bbox[1 - near])));
@@ -56,6 +55,23 @@ pub fn render(
         }
     }
     fill_void(frame, out, shade);
+}
+
+/// Which child of `node` is nearer the eye: `false` for the front, `true` for the back.
+///
+/// Off the partition line it is the eye's side, as computed: near-ties are
+/// left to the same rounding the column predicates see. Exactly on it, every
+/// ray but one meets only one side, so order matters only for the column whose
+/// ray runs along the line. The screen's half-open rule gives that column to
+/// what starts at the ray, as if the ray were an infinitesimal step to its
+/// right: the front side when the ray runs `a -> b`, the back when `b -> a`.
+fn near_side(node: &Node, cam: &Camera) -> bool {
+    let d = front_distance(node.a, node.b, cam.eye);
+    if d == 0.0 {
+        (node.b - node.a).dot(cam.forward) < 0.0
+    } else {
+        d < 0.0
+    }
 }
 
 /// Columns still open after the walk look out of the map: paint them void, so

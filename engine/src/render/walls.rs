@@ -12,7 +12,7 @@ use super::shade::{colour, wall_facing, Shade, Surface};
 use super::view::{Camera, NEAR};
 use glam::DVec2;
 
-use crate::bsp::Seg;
+use crate::bsp::{LineSide, Seg};
 use crate::geom::cross;
 use crate::map::Map;
 
@@ -41,22 +41,24 @@ pub fn draw_seg(
     shade: Shade,
 ) {
     frame.stats.walls_considered += 1;
-    // Only the front (right-hand) side faces the viewer; on the line it is edge-on.
-    if cross(seg.v1 - cam.eye, seg.v2 - seg.v1) >= 0.0 {
+    // Facing and depth come from the whole map line in camera space, in the
+    // line's own direction: the same numbers for every piece and both sides,
+    // and the same the reference computes, so edge cases resolve alike.
+    // (Camera space mirrors the map, so the eye is in front when this is > 0.)
+    let (from, to) = map.line_points(&map.lines[seg.line]);
+    let (from, dir) = (cam.to_camera(from), cam.to_camera(to) - cam.to_camera(from));
+    let cross_from = cross(from, dir);
+    let facing = match seg.side {
+        LineSide::Front => cross_from > 0.0,
+        LineSide::Back => cross_from < 0.0,
+    };
+    // Zero is edge-on; NaN fails both comparisons.
+    if !facing || !cross_from.is_finite() {
         return;
     }
     let Some((x0, x1)) = cam.project_span(cam.to_camera(seg.v1), cam.to_camera(seg.v2)) else {
         return;
     };
-    // Depth comes from the whole map line, not the seg piece, in the line's own
-    // direction: the same numbers for every piece and both sides, and the
-    // same the reference computes, so ties on an edge resolve alike.
-    let (from, to) = map.line_points(&map.lines[seg.line]);
-    let (from, dir) = (cam.to_camera(from), cam.to_camera(to) - cam.to_camera(from));
-    let cross_from = cross(from, dir);
-    if cross_from == 0.0 || !cross_from.is_finite() {
-        return;
-    }
     let front = &map.sectors[seg.front_sector];
     let back = seg.back_sector.map(|b| &map.sectors[b]);
     let light = front.light;
