@@ -149,6 +149,9 @@ pub enum Problem {
         thing: usize,
     },
     NoPlayerStart,
+    BadFog {
+        distance: f64,
+    },
     StartOutside {
         thing: usize,
         x: f64,
@@ -233,6 +236,9 @@ impl fmt::Display for Problem {
             Problem::NoLines { sector } => write!(f, "sector {sector}: no line side refers to it"),
             Problem::BadThing { thing } => {
                 write!(f, "thing {thing}: position or angle is not finite or out of range")
+            }
+            Problem::BadFog { distance } => {
+                write!(f, "fog: distance {distance:?} must be a finite number above 0")
             }
             Problem::NoPlayerStart => {
                 write!(f, "the map has no thing of kind \"{}\"", super::PLAYER_START)

@@ -23,6 +23,15 @@ pub struct Map {
     pub things: Vec<Thing>,
     /// Index into `things` of the (first) player start.
     pub player_start: usize,
+    pub diminishing_light: bool,
+    pub fog: Option<Fog>,
+}
+
+/// Distance fog: full `colour` at `distance` map units, fading in linearly.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Fog {
+    pub colour: [u8; 3],
+    pub distance: f64,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -175,6 +184,11 @@ impl Map {
                     angle: t.angle,
                 })
                 .collect(),
+            diminishing_light: self.diminishing_light,
+            fog: self.fog.map(|f| source::FogSource {
+                colour: (f.colour[0], f.colour[1], f.colour[2]),
+                distance: f.distance,
+            }),
         }
     }
 }

@@ -17,6 +17,21 @@ pub struct MapSource {
     pub lines: Vec<LineSource>,
     #[serde(default)]
     pub things: Vec<ThingSource>,
+    /// Darken with distance, as Doom's colormaps do (default on).
+    #[serde(default = "yes", skip_serializing_if = "is_true")]
+    pub diminishing_light: bool,
+    /// Fade to a colour with distance (default none).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fog: Option<FogSource>,
+}
+
+/// `fog: Some(Fog(colour: (r, g, b), distance: D))`: at distance D map units
+/// a surface shows only the fog colour; nearer, it fades linearly.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(rename = "Fog", deny_unknown_fields)]
+pub struct FogSource {
+    pub colour: (u8, u8, u8),
+    pub distance: f64,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -72,6 +87,14 @@ pub struct ThingSource {
     pub y: f64,
     #[serde(default)]
     pub angle: f64,
+}
+
+fn yes() -> bool {
+    true
+}
+
+fn is_true(b: &bool) -> bool {
+    *b
 }
 
 fn is_false(b: &bool) -> bool {

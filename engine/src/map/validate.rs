@@ -11,7 +11,7 @@ use glam::DVec2;
 
 use super::load::Problem;
 use super::source::{MapSource, SideSource};
-use super::{Line, LineFlags, Map, Sector, Side, Thing, PLAYER_START};
+use super::{Fog, Line, LineFlags, Map, Sector, Side, Thing, PLAYER_START};
 use crate::geom::{cross, segment_contact, Contact, MAX_COORD};
 
 /// At most this many crossing problems are listed; a map with more is a mess
@@ -144,6 +144,20 @@ fn check_elements(src: &MapSource) -> Result<Map, Vec<Problem>> {
     if !problems.is_empty() {
         return Err(problems);
     }
+    let fog = src.fog.as_ref().map(|f| Fog {
+        colour: [f.colour.0, f.colour.1, f.colour.2],
+        distance: f.distance,
+    });
+    if let Some(f) = fog {
+        if !(f.distance.is_finite() && f.distance > 0.0) {
+            problems.push(Problem::BadFog {
+                distance: f.distance,
+            });
+        }
+    }
+    if !problems.is_empty() {
+        return Err(problems);
+    }
     Ok(Map {
         name: src.name.clone(),
         vertices,
@@ -151,6 +165,8 @@ fn check_elements(src: &MapSource) -> Result<Map, Vec<Problem>> {
         lines,
         things,
         player_start: 0,
+        diminishing_light: src.diminishing_light,
+        fog,
     })
 }
 
