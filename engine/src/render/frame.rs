@@ -48,9 +48,9 @@ pub struct Frame {
     pub(crate) slopes: Vec<f64>,
     pub(crate) stack: Vec<(Child, Option<Aabb>)>,
     pub(crate) hits: Vec<Hit>,
-    /// The frame being drawn, column-major (see [`super::columns`]).
+    /// Column-major canvas of the strip being drawn (see [`super::columns`]).
     pub(crate) canvas: Vec<u32>,
-    /// Writes per pixel (column-major), kept only when counting was asked for.
+    /// Writes per pixel (row-major), kept only when counting was asked for.
     pub(crate) counts: Vec<u16>,
     pub stats: FrameStats,
 }
@@ -72,7 +72,6 @@ impl Frame {
         self.slopes.extend((0..w).map(|x| cam.column_slope(x)));
         self.stack.clear();
         self.hits.clear();
-        self.canvas.resize(w * h, 0);
         self.counts.clear();
         if count_writes {
             self.counts.resize(w * h, 0);
@@ -80,8 +79,14 @@ impl Frame {
         self.stats = FrameStats::default();
     }
 
-    /// Writes per pixel of the last frame rendered with counting on
-    /// (column-major: pixel (x, y) at `x * height + y`).
+    /// Restricts the next pass to columns `[x0, x1)`; clip bounds there are
+    /// already reset by [`Frame::begin`] and untouched by other strips.
+    pub(crate) fn begin_strip(&mut self, x0: usize, x1: usize) {
+        self.occlusion.reset_to_strip(self.clip_top.len(), x0, x1);
+        self.stack.clear();
+    }
+
+    /// Writes per pixel of the last frame rendered with counting on (row-major).
     pub fn write_counts(&self) -> &[u16] {
         &self.counts
     }

@@ -10,6 +10,7 @@ pub mod frame;
 pub mod occlusion;
 pub mod reference;
 pub mod shade;
+pub mod strips;
 pub mod view;
 pub mod walls;
 
@@ -66,14 +67,21 @@ pub fn render_frame(
     // The writer borrows the canvas and counts while the pass borrows the rest.
     let mut canvas = std::mem::take(&mut frame.canvas);
     let mut counts = std::mem::take(&mut frame.counts);
-    let counting = options.count_writes.then_some(counts.as_mut_slice());
-    let mut out = columns::ColumnWriter::new(&mut canvas, fb.height, counting);
-    match options.renderer {
-        Renderer::Bsp => bsp::render(level, &cam, frame, &mut out, options.shade),
-        Renderer::Reference => reference::render(&level.map, &cam, frame, &mut out, options.shade),
+    let (w, h) = (cam.width, cam.height);
+    for (x0, x1) in strips::strips(w, h) {
+        canvas.resize((x1 - x0) * h, 0);
+        let counting = options.count_writes.then_some(counts.as_mut_slice());
+        let mut out = columns::ColumnWriter::new(&mut canvas, x0, w, h, counting);
+        frame.begin_strip(x0, x1);
+        match options.renderer {
+            Renderer::Bsp => bsp::render(level, &cam, frame, &mut out, options.shade),
+            Renderer::Reference => {
+                reference::render(&level.map, &cam, x0..x1, frame, &mut out, options.shade)
+            }
+        }
+        frame.stats.pixels_written += out.written;
+        columns::present_strip(&canvas, x0, x1, fb);
     }
-    frame.stats.pixels_written = out.written;
-    columns::present(&canvas, fb);
     frame.canvas = canvas;
     frame.counts = counts;
     frame.stats

@@ -23,6 +23,22 @@ impl Occlusion {
         self.open = width;
     }
 
+    /// Opens only columns `[x0, x1)` of `width`: the rest count as closed, so
+    /// a walk confined to a strip culls everything outside it for free.
+    pub fn reset_to_strip(&mut self, width: usize, x0: usize, x1: usize) {
+        self.reset(width);
+        let (x0, x1) = (x0.min(width), x1.min(width).max(x0.min(width)));
+        for (w, word) in self.words.iter_mut().enumerate() {
+            let (lo, hi) = (w * 64, w * 64 + 64);
+            // Bits of this word inside the strip stay open; all others close.
+            let open_lo = x0.clamp(lo, hi) - lo;
+            let open_hi = x1.clamp(lo, hi) - lo;
+            let open_bits = ones(open_hi) & !ones(open_lo);
+            *word |= !open_bits;
+        }
+        self.open = x1 - x0;
+    }
+
     pub fn width(&self) -> usize {
         self.width
     }
@@ -91,6 +107,15 @@ impl Occlusion {
     }
 }
 
+/// The low `n` bits set (`n <= 64`).
+fn ones(n: usize) -> u64 {
+    if n >= 64 {
+        !0
+    } else {
+        (1u64 << n) - 1
+    }
+}
+
 pub struct OpenRuns<'a> {
     mask: &'a Occlusion,
     x: usize,
@@ -131,6 +156,16 @@ mod tests {
         }
         assert!(m.all_closed());
         assert_eq!(m.next_open(0, 200), None);
+    }
+
+    #[test]
+    fn strips_open_only_their_columns() {
+        let mut m = Occlusion::default();
+        for (x0, x1) in [(0, 64), (64, 128), (10, 130), (190, 200), (0, 200)] {
+            m.reset_to_strip(200, x0, x1);
+            assert_eq!(m.open_runs(0, 200).collect::<Vec<_>>(), vec![(x0, x1)]);
+            assert_eq!(m.open_count(), x1 - x0);
+        }
     }
 
     #[test]

@@ -20,7 +20,15 @@ use super::view::{Camera, NEAR};
 use crate::geom::cross;
 use crate::map::Map;
 
-pub fn render(map: &Map, cam: &Camera, frame: &mut Frame, out: &mut ColumnWriter, shade: Shade) {
+/// Renders `columns` (one strip) of the frame.
+pub fn render(
+    map: &Map,
+    cam: &Camera,
+    columns: std::ops::Range<usize>,
+    frame: &mut Frame,
+    out: &mut ColumnWriter,
+    shade: Shade,
+) {
     // Line ends in camera space (depth, sideways) and whether the line is
     // two-sided, once per frame.
     let ends: Vec<(DVec2, DVec2, bool)> = map
@@ -32,7 +40,7 @@ pub fn render(map: &Map, cam: &Camera, frame: &mut Frame, out: &mut ColumnWriter
         })
         .collect();
     let eye_sector = map.sector_at(cam.eye);
-    for x in 0..cam.width {
+    for x in columns {
         collect_hits(cam, &ends, x, &mut frame.hits);
         order_ties(map, eye_sector, &mut frame.hits);
         frame.stats.walls_considered += ends.len() as u64;
