@@ -317,6 +317,8 @@ fn one_sector_map(rings: &[&[(f64, f64)]]) -> sightline::Map {
             y: 0.0,
             angle: 0.0,
         }],
+        diminishing_light: true,
+        fog: None,
     };
     for ring in rings {
         let first = source.vertices.len();

@@ -499,6 +499,8 @@ pub fn generate(spec: &MapSpec) -> Generated {
             y: start.y,
             angle: start_angle,
         }],
+        diminishing_light: true,
+        fog: None,
     };
     let map = validate(&source).unwrap_or_else(|problems| {
         panic!(
