@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Independent checker for Sightline sector maps (RON), stdlib only.
 
-Usage:  python3 maps/generators/check.py [MAP.ron ...]
+Usage:  python3 maps/generators/check.py [--textures] [MAP.ron ...]
         (no arguments: every maps/*.ron next to this script's parent folder)
 
 It parses the RON subset used by the map format (structs, tuples, lists,
@@ -31,9 +31,21 @@ All geometry is exact: every coordinate is a binary float, so all of them are
 scaled by one common power of two into Python integers.  A uniform grid keeps
 the pairwise tests fast enough for maps with many thousands of lines.
 
+  R7  (only with --textures) texturing follows the Doom conventions: every
+      sector has a floor and a ceiling texture; every one-sided line has a
+      middle texture; on a two-sided line, a side whose neighbour has a higher
+      floor has a lower texture and a side whose neighbour has a lower ceiling
+      has an upper texture (unless both ceilings are SKY); a middle texture on a
+      two-sided line is a masked one (GRATE, FENCE).
+
+Also parsed and checked: the optional Map fields `diminishing_light` (true or
+false) and `fog: Some(Fog(colour: (r, g, b), distance: D))` (channels
+0..=255, D finite and > 0); the Line flags `upper_unpegged`,
+`lower_unpegged`, `impassable`; the Side offsets `x_offset`, `y_offset`.
+
 Warnings (not failures): coordinates not exactly representable as f32,
 unused vertices, sectors unreachable from the player start, two-sided lines
-with no vertical opening.
+with no vertical opening, `impassable` on a one-sided line.
 """
 
 import math
@@ -44,8 +56,10 @@ import sys
 from fractions import Fraction
 
 LIMIT = 16777216
-TEXTURES = {"BRICK", "STONE", "WOOD", "METAL", "TILE", "FLOOR", "STEP", "SKY"}
-THING_KINDS = {"player_start", "lamp", "barrel", "column"}
+TEXTURES = {"BRICK", "STONE", "WOOD", "METAL", "TILE", "FLOOR", "STEP", "SKY",
+            "DOOR", "SUPPORT", "GRATE", "FENCE", "GRASS", "WATER", "CEIL", "DIRT"}
+MASKED_TEXTURES = {"GRATE", "FENCE"}
+THING_KINDS = {"player_start", "lamp", "barrel", "column", "torch", "crate", "plant", "statue"}
 
 
 # ---------------------------------------------------------------- RON parsing
@@ -211,7 +225,7 @@ def load_map(path, errors, warnings):
         return None
     f = root.fields
     for key in f:
-        if key not in ("name", "vertices", "sectors", "lines", "things"):
+        if key not in ("name", "vertices", "sectors", "lines", "things", "diminishing_light", "fog"):
             warnings.append(f"unknown Map field {key!r}")
     for key in ("name", "vertices", "sectors", "lines", "things"):
         if key not in f:
@@ -233,6 +247,11 @@ def load_map(path, errors, warnings):
             raise RonError(f"{what}: not finite")
         return x
 
+    def boolean(v, what):
+        if not (isinstance(v, Ident) and v.name in ("true", "false")):
+            raise RonError(f"{what}: expected true or false, found {v!r}")
+        return v.name == "true"
+
     def tex(side_or_sector, key, what):
         v = side_or_sector.get(key)
         if v is None:
@@ -248,6 +267,38 @@ def load_map(path, errors, warnings):
     try:
         if not isinstance(m.name, str):
             raise RonError("name: expected a string")
+        m.diminishing_light = boolean(f["diminishing_light"], "diminishing_light") \
+            if "diminishing_light" in f else True
+        m.fog = None
+        fog = f.get("fog")
+        if isinstance(fog, Struct) and fog.name == "Some" and isinstance(fog.fields, list) \
+                and len(fog.fields) == 1:
+            fog = fog.fields[0]
+        if fog is None or (isinstance(fog, Ident) and fog.name == "None"):
+            pass
+        elif isinstance(fog, Struct) and fog.name in ("Fog", None) and isinstance(fog.fields, dict):
+            for key in fog.fields:
+                if key not in ("colour", "distance"):
+                    raise RonError(f"fog: unknown field {key!r}")
+            for key in ("colour", "distance"):
+                if key not in fog.fields:
+                    raise RonError(f"fog: missing {key!r}")
+            col = fog.fields["colour"]
+            if not (isinstance(col, Struct) and col.name is None and isinstance(col.fields, list)
+                    and len(col.fields) == 3):
+                raise RonError("fog.colour: expected (r, g, b)")
+            rgb = tuple(num(c, "fog.colour", False) for c in col.fields)
+            if not all(0 <= c <= 255 for c in rgb):
+                raise RonError(f"fog.colour: {rgb} has a channel outside 0..=255")
+            d = fog.fields["distance"]
+            if not isinstance(d, Num):
+                raise RonError("fog.distance: expected a number")
+            dist = float(d)
+            if not (math.isfinite(dist) and dist > 0):
+                raise RonError(f"fog.distance: {d.text} must be finite and above 0")
+            m.fog = (rgb, dist)
+        else:
+            raise RonError("fog: expected Some(Fog(colour: (r, g, b), distance: D)) or None")
         m.verts = []
         for k, v in enumerate(f["vertices"]):
             if not isinstance(v, Struct) or v.name is not None or not isinstance(v.fields, list) or len(v.fields) != 2:
@@ -276,8 +327,13 @@ def load_map(path, errors, warnings):
             if not isinstance(v, Struct) or v.name != "Side" or not isinstance(v.fields, dict):
                 raise RonError(f"{what}: expected Side(...)")
             for key in v.fields:
-                if key not in ("sector", "upper", "middle", "lower"):
+                if key not in ("sector", "upper", "middle", "lower", "x_offset", "y_offset"):
                     raise RonError(f"{what}: unknown field {key!r}")
+            for key in ("x_offset", "y_offset"):
+                if key in v.fields:
+                    o = v.fields[key]
+                    if not isinstance(o, Num) or not math.isfinite(float(o)):
+                        raise RonError(f"{what}.{key}: expected a finite number")
             if "sector" not in v.fields:
                 raise RonError(f"{what}: missing sector")
             d = {"sector": num(v.fields["sector"], f"{what} sector", False)}
@@ -291,7 +347,8 @@ def load_map(path, errors, warnings):
                 raise RonError(f"line {k}: expected Line(...)")
             lf = ln.fields
             for key in lf:
-                if key not in ("from", "to", "front", "back"):
+                if key not in ("from", "to", "front", "back", "upper_unpegged", "lower_unpegged",
+                               "impassable"):
                     raise RonError(f"line {k}: unknown field {key!r}")
             for key in ("from", "to", "front"):
                 if key not in lf:
@@ -309,6 +366,8 @@ def load_map(path, errors, warnings):
                 b=num(lf["to"], f"line {k} to", False),
                 front=side(lf["front"], f"line {k} front"),
                 back=back,
+                **{key: boolean(lf[key], f"line {k} {key}") if key in lf else False
+                   for key in ("upper_unpegged", "lower_unpegged", "impassable")},
             ))
         m.things = []
         for k, t in enumerate(f["things"]):
@@ -444,7 +503,7 @@ def f32_exact(v):
 
 
 # ---------------------------------------------------------------- the checks
-def check_map(path):
+def check_map(path, textures=False):
     errors, warnings = [], []
     m = load_map(path, errors, warnings)
     if m is None:
@@ -695,6 +754,32 @@ def check_map(path):
                     f"direction (line {li}, {facing} side) has {what(other)}: inconsistent "
                     f"orientation / overlapping or leaking sectors")
 
+    # R7 texturing (opt-in) ------------------------------------------------------------
+    if textures:
+        for k, s in enumerate(m.sectors):
+            for key in ("floor_texture", "ceiling_texture"):
+                if s[key] is None:
+                    err(f"R7 sector {k} has no {key}")
+        for k, ln in enumerate(m.lines):
+            if ln["back"] is None:
+                if ln["front"]["middle"] is None:
+                    err(f"R7 line {k}: one-sided wall without a middle texture")
+                continue
+            for sd, od in (("front", "back"), ("back", "front")):
+                me, other = m.sectors[ln[sd]["sector"]], m.sectors[ln[od]["sector"]]
+                if other["floor"] > me["floor"] and ln[sd]["lower"] is None:
+                    err(f"R7 line {k} {sd}: the neighbour's floor is higher, but no lower texture")
+                if other["ceiling"] < me["ceiling"] and ln[sd]["upper"] is None and not (
+                        me["ceiling_texture"] == "SKY" and other["ceiling_texture"] == "SKY"):
+                    err(f"R7 line {k} {sd}: the neighbour's ceiling is lower, but no upper texture")
+                mid = ln[sd]["middle"]
+                if mid is not None and mid not in MASKED_TEXTURES:
+                    err(f"R7 line {k} {sd}: middle {mid!r} on a two-sided line is not masked "
+                        f"({', '.join(sorted(MASKED_TEXTURES))})")
+    for k, ln in enumerate(m.lines):
+        if ln["impassable"] and ln["back"] is None:
+            warnings.append(f"line {k}: impassable on a one-sided line (it is solid anyway)")
+
     # Two-sided lines with no opening.
     for k, ln in enumerate(m.lines):
         if ln["back"] is not None:
@@ -780,6 +865,8 @@ def check_map(path):
 
 
 def main(argv):
+    textures = "--textures" in argv[1:]
+    argv = [a for a in argv if a != "--textures"]
     if len(argv) > 1:
         paths = argv[1:]
     else:
@@ -788,7 +875,7 @@ def main(argv):
         paths = sorted(os.path.join(mdir, f) for f in os.listdir(mdir) if f.endswith(".ron"))
     failed = 0
     for path in paths:
-        errors, warnings, stats = check_map(path)
+        errors, warnings, stats = check_map(path, textures)
         name = os.path.relpath(path)
         if errors:
             failed += 1

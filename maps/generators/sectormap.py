@@ -15,6 +15,22 @@ Then `build()` turns the regions into lines:
 
 Coordinates are kept as Python floats and must be exact binary fractions;
 vertices are deduplicated by exact coordinates.
+
+Texturing (defaults keep the output of older scripts unchanged):
+
+* a one-sided wall gets `middle` = its sector's `wall` (or the `wall` given to
+  the region/hole that drew it);
+* on a two-sided line whose floors differ, both sides get `lower` = the
+  `riser` of the sector with the higher floor (the step owns its riser), or
+  "STEP" when that sector has no `riser`;
+* where the ceilings differ (and not both are "SKY"), both sides get `upper`
+  = the `lintel` of the sector with the lower ceiling, or, when it has none,
+  each side its own sector's `wall`;
+* `edge(p, q, ...)` then overrides textures and line flags of every line
+  lying on the segment p-q (e.g. a GRATE middle and `impassable` on a window).
+
+Map options: `diminishing_light` (None: not written, the engine's default
+true) and `fog=((r, g, b), distance)`.
 """
 
 from fractions import Fraction
@@ -51,28 +67,56 @@ def counter_clockwise(pts):
 
 
 class SectorMap:
-    def __init__(self, name, header_comment=""):
+    def __init__(self, name, header_comment="", diminishing_light=None, fog=None):
         self.name = name
         self.header = header_comment
+        self.diminishing_light = diminishing_light  # None: leave the field out
+        self.fog = fog  # None or ((r, g, b), distance)
         self.sectors = []  # dicts
         self.loops = []  # (sector, [points], label) with the sector on the right
+        self.loop_walls = {}  # loop index -> one-sided wall texture for that loop
+        self.edges = []  # edge() overrides, applied in order
         self.things = []
 
     def sector(self, floor, ceiling, light, floor_texture=None, ceiling_texture=None,
-               wall="BRICK", label=""):
+               wall="BRICK", label="", riser=None, lintel=None):
         self.sectors.append(dict(floor=float(floor), ceiling=float(ceiling), light=int(light),
                                  floor_texture=floor_texture, ceiling_texture=ceiling_texture,
-                                 wall=wall, label=label))
+                                 wall=wall, label=label, riser=riser, lintel=lintel))
         return len(self.sectors) - 1
 
-    def region(self, sector, outer, holes=(), label=""):
-        """A piece of `sector`: outer boundary plus holes (pillars, platforms...)."""
-        self.loops.append((sector, clockwise(outer), label or "outline"))
-        for h in holes:
-            self.loops.append((sector, counter_clockwise(h), "hole"))
+    def region(self, sector, outer, holes=(), label="", wall=None):
+        """A piece of `sector`: outer boundary plus holes (pillars, platforms...).
 
-    def hole(self, sector, pts, label="pillar"):
-        self.loops.append((sector, counter_clockwise(pts), label))
+        `wall` overrides the sector's wall texture on this region's one-sided walls."""
+        self._loop(sector, clockwise(outer), label or "outline", wall)
+        for h in holes:
+            self._loop(sector, counter_clockwise(h), "hole", wall)
+
+    def hole(self, sector, pts, label="pillar", wall=None):
+        self._loop(sector, counter_clockwise(pts), label, wall)
+
+    def _loop(self, sector, pts, label, wall):
+        if wall is not None:
+            self.loop_walls[len(self.loops)] = wall
+        self.loops.append((sector, pts, label))
+
+    def edge(self, p, q, sector=None, wall=None, upper=None, middle=None, lower=None,
+             x_offset=None, y_offset=None, impassable=None, upper_unpegged=None,
+             lower_unpegged=None):
+        """Override every line lying on the segment p-q (end points included).
+
+        Side textures (`upper`, `middle`, `lower`, offsets) go to the side facing
+        `sector`, or to both sides when `sector` is None; `wall` sets the middle of
+        one-sided lines only.  Flags (`impassable`, `*_unpegged`) go to the line.
+        Matching no line at all is an error."""
+        side = {k: v for k, v in (("upper", upper), ("middle", middle), ("lower", lower),
+                                  ("x_offset", x_offset), ("y_offset", y_offset))
+                if v is not None}
+        flags = {k: v for k, v in (("impassable", impassable), ("upper_unpegged", upper_unpegged),
+                                   ("lower_unpegged", lower_unpegged)) if v is not None}
+        self.edges.append(((float(p[0]), float(p[1])), (float(q[0]), float(q[1])),
+                           sector, wall, side, flags))
 
     def thing(self, kind, x, y, angle=0.0):
         self.things.append((kind, float(x), float(y), float(angle)))
@@ -110,7 +154,7 @@ class SectorMap:
         # Directed edges with their sector, in loop order.
         uses = {}  # frozenset(u, v) -> list of (sector, u, v)
         order = []  # (key, label) in first-use order
-        for sector, pts, label in self.loops:
+        for li, (sector, pts, label) in enumerate(self.loops):
             ids = [vid(p) for p in pts]
             for i in range(len(ids)):
                 a, b = ids[i], ids[(i + 1) % len(ids)]
@@ -120,17 +164,18 @@ class SectorMap:
                     if key not in uses:
                         uses[key] = []
                         order.append((key, self.sectors[sector]["label"], label))
-                    uses[key].append((sector, u, v))
+                    uses[key].append((sector, u, v, li))
 
         lines = []
         for key, slabel, label in order:
             us = uses[key]
             if len(us) == 1:
-                s, u, v = us[0]
-                lines.append(dict(a=u, b=v, front=dict(sector=s, middle=self.sectors[s]["wall"]),
+                s, u, v, li = us[0]
+                wall = self.loop_walls.get(li, self.sectors[s]["wall"])
+                lines.append(dict(a=u, b=v, front=dict(sector=s, middle=wall),
                                   back=None, group=f"{slabel} {label}"))
             elif len(us) == 2:
-                (s1, u1, v1), (s2, u2, v2) = us
+                (s1, u1, v1, _), (s2, u2, v2, _) = us
                 if (u1, v1) != (v2, u2) or s1 == s2:
                     raise ValueError(f"overlapping regions at edge {verts[u1]}-{verts[v1]} "
                                      f"(sectors {s1}, {s2})")
@@ -140,17 +185,42 @@ class SectorMap:
                     (s1, u1, v1), (s2, u2, v2) = (s2, u2, v2), (s1, u1, v1)
                     f1, f2 = f2, f1
                 front, back = dict(sector=s1), dict(sector=s2)
+                higher = f1 if f1["floor"] > f2["floor"] else f2
+                lower_ceiling = f1 if f1["ceiling"] < f2["ceiling"] else f2
                 for side, me, other in ((front, f1, f2), (back, f2, f1)):
                     if me["floor"] != other["floor"]:
-                        side["lower"] = "STEP"
+                        side["lower"] = higher["riser"] or "STEP"
                     if me["ceiling"] != other["ceiling"] and not (
                             me["ceiling_texture"] == "SKY" and other["ceiling_texture"] == "SKY"):
-                        side["upper"] = me["wall"]
+                        side["upper"] = lower_ceiling["lintel"] or me["wall"]
                 lines.append(dict(a=u1, b=v1, front=front, back=back,
                                   group=f"{self.sectors[s1]['label']} / {self.sectors[s2]['label']} opening"))
             else:
                 raise ValueError(f"edge {verts[min(key)]}-{verts[max(key)]} used {len(us)} times")
+        self._apply_edges(verts, lines)
         return verts, lines
+
+    def _apply_edges(self, verts, lines):
+        def on(p, a, b):
+            (px, py), (ax, ay), (bx, by) = [(Fraction(x), Fraction(y)) for x, y in (p, a, b)]
+            if (bx - ax) * (py - ay) - (by - ay) * (px - ax) != 0:
+                return False
+            return min(ax, bx) <= px <= max(ax, bx) and min(ay, by) <= py <= max(ay, by)
+
+        for p, q, sector, wall, side, flags in self.edges:
+            hit = 0
+            for ln in lines:
+                if not (on(verts[ln["a"]], p, q) and on(verts[ln["b"]], p, q)):
+                    continue
+                hit += 1
+                ln.update(flags)
+                if wall is not None and ln["back"] is None:
+                    ln["front"]["middle"] = wall
+                for sd in (ln["front"], ln["back"]):
+                    if sd is not None and sector in (None, sd["sector"]):
+                        sd.update(side)
+            if not hit:
+                raise ValueError(f"edge override {p}-{q} matches no line")
 
     # ------------------------------------------------------------------ write
     def render(self, vertex_comments=True, per_row=1):
@@ -160,6 +230,11 @@ class SectorMap:
             out.append(f"// {c}".rstrip())
         out.append("Map(")
         out.append(f"    name: \"{self.name}\",")
+        if self.diminishing_light is not None:
+            out.append(f"    diminishing_light: {'true' if self.diminishing_light else 'false'},")
+        if self.fog is not None:
+            (r, g, b), dist = self.fog
+            out.append(f"    fog: Some(Fog(colour: ({int(r)}, {int(g)}, {int(b)}), distance: {fmt(dist)})),")
         out.append("    vertices: [")
         if vertex_comments:
             for k, (x, y) in enumerate(verts):
@@ -185,8 +260,10 @@ class SectorMap:
             if ln["group"] != last_group:
                 out.append(f"        // {ln['group']}")
                 last_group = ln["group"]
+            flags = "".join(f", {k}: true" for k in ("upper_unpegged", "lower_unpegged", "impassable")
+                            if ln.get(k))
             out.append(f"        Line(from: {ln['a']}, to: {ln['b']}, front: {side_text(ln['front'])}"
-                       + (f", back: Some({side_text(ln['back'])})" if ln["back"] else "") + "),")
+                       + (f", back: Some({side_text(ln['back'])})" if ln["back"] else "") + flags + "),")
         out.append("    ],")
         out.append("    things: [")
         for kind, x, y, a in self.things:
@@ -201,4 +278,7 @@ def side_text(side):
     for key in ("upper", "middle", "lower"):
         if side.get(key):
             parts.append(f"{key}: \"{side[key]}\"")
+    for key in ("x_offset", "y_offset"):
+        if side.get(key):
+            parts.append(f"{key}: {fmt(side[key])}")
     return "Side(" + ", ".join(parts) + ")"
