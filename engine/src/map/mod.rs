@@ -82,6 +82,23 @@ pub struct Thing {
 /// Thing kind that marks where the player begins.
 pub const PLAYER_START: &str = "player_start";
 
+/// Texture name that makes a ceiling or floor show the sky.
+pub const SKY: &str = "SKY";
+
+impl Sector {
+    pub fn ceiling_is_sky(&self) -> bool {
+        self.ceiling_texture
+            .as_deref()
+            .is_some_and(|t| t.eq_ignore_ascii_case(SKY))
+    }
+
+    pub fn floor_is_sky(&self) -> bool {
+        self.floor_texture
+            .as_deref()
+            .is_some_and(|t| t.eq_ignore_ascii_case(SKY))
+    }
+}
+
 impl Map {
     pub fn line_points(&self, line: &Line) -> (DVec2, DVec2) {
         (self.vertices[line.from], self.vertices[line.to])

@@ -15,7 +15,7 @@ use glam::DVec2;
 
 use super::columns::ColumnWriter;
 use super::frame::{Frame, Hit};
-use super::shade::{colour, wall_facing, Shade, Surface};
+use super::shade::{ceiling_at_line, colour, plane_surfaces, wall_facing, Shade, Surface};
 use super::view::{Camera, NEAR};
 use crate::geom::cross;
 use crate::map::Map;
@@ -175,28 +175,16 @@ fn pixel_colour(map: &Map, cam: &Camera, hits: &[Hit], y: i32, shade: Shade) -> 
         // Backs of one-sided walls never reach here (see collect_hits).
         let Some(near) = near else { continue };
         let sector = &map.sectors[near.sector];
+        let far_sector = far.map(|f| &map.sectors[f.sector]);
         let light = sector.light;
-        if above(sector.ceiling) {
-            return colour(
-                shade,
-                Surface::Ceiling {
-                    sector: near.sector,
-                },
-                light,
-                1.0,
-            );
+        let (ceiling, floor) = plane_surfaces(near.sector, sector);
+        if above(ceiling_at_line(sector, far_sector)) {
+            return colour(shade, ceiling, light, 1.0);
         }
         if !above(sector.floor) {
-            return colour(
-                shade,
-                Surface::Floor {
-                    sector: near.sector,
-                },
-                light,
-                1.0,
-            );
+            return colour(shade, floor, light, 1.0);
         }
-        match far.map(|f| &map.sectors[f.sector]) {
+        match far_sector {
             Some(back) if above(back.floor) && !above(back.ceiling) => continue,
             _ => return colour(shade, wall, light, facing),
         }

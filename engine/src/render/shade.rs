@@ -29,9 +29,17 @@ impl Shade {
 /// What a pixel shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Surface {
-    Wall { line: usize },
-    Floor { sector: usize },
-    Ceiling { sector: usize },
+    Wall {
+        line: usize,
+    },
+    Floor {
+        sector: usize,
+    },
+    Ceiling {
+        sector: usize,
+    },
+    /// A `"SKY"` ceiling or floor: the same sky whichever sector shows it.
+    Sky,
     Void,
 }
 
@@ -59,6 +67,8 @@ pub fn ids_colour(surface: Surface) -> u32 {
         Surface::Wall { line } => id_colour(line, 1),
         Surface::Floor { sector } => id_colour(sector, 2),
         Surface::Ceiling { sector } => id_colour(sector, 3),
+        // Tag 0 like the void, but never black.
+        Surface::Sky => rgb(96, 160, 224),
         Surface::Void => VOID,
     }
 }
@@ -81,6 +91,8 @@ pub fn colour(shade: Shade, surface: Surface, light: u8, facing: f64) -> u32 {
         }
         (Shade::Flat, Surface::Floor { .. }) => ([110, 100, 90], 0.85),
         (Shade::Flat, Surface::Ceiling { .. }) => ([140, 140, 150], 0.7),
+        // The sky is not lit by sectors.
+        (Shade::Flat, Surface::Sky) => return rgb(110, 150, 200),
     };
     let k = f64::from(light) / 255.0 * scale;
     let [r, g, b] = base.map(|c| (f64::from(c) * k).clamp(0.0, 255.0) as u8);
@@ -95,5 +107,30 @@ pub fn wall_facing(d: glam::DVec2) -> f64 {
         0.8 + 0.2 * (d.y.abs() / len)
     } else {
         1.0
+    }
+}
+
+/// What a sector's ceiling and floor show.
+pub fn plane_surfaces(sector: usize, s: &crate::map::Sector) -> (Surface, Surface) {
+    let ceiling = if s.ceiling_is_sky() {
+        Surface::Sky
+    } else {
+        Surface::Ceiling { sector }
+    };
+    let floor = if s.floor_is_sky() {
+        Surface::Sky
+    } else {
+        Surface::Floor { sector }
+    };
+    (ceiling, floor)
+}
+
+/// The ceiling height a line's near sector shows at that line. Doom's sky
+/// rule: between two sky ceilings there is no upper wall; the sky reaches
+/// down to the far sector's ceiling instead.
+pub fn ceiling_at_line(near: &crate::map::Sector, far: Option<&crate::map::Sector>) -> f64 {
+    match far {
+        Some(far) if near.ceiling_is_sky() && far.ceiling_is_sky() => far.ceiling,
+        _ => near.ceiling,
     }
 }

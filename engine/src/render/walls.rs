@@ -8,7 +8,7 @@
 
 use super::columns::ColumnWriter;
 use super::frame::Frame;
-use super::shade::{colour, wall_facing, Shade, Surface};
+use super::shade::{ceiling_at_line, colour, plane_surfaces, wall_facing, Shade, Surface};
 use super::view::{Camera, NEAR};
 use glam::DVec2;
 
@@ -62,28 +62,15 @@ pub fn draw_seg(
     let front = &map.sectors[seg.front_sector];
     let back = seg.back_sector.map(|b| &map.sectors[b]);
     let light = front.light;
+    let (ceiling_surface, floor_surface) = plane_surfaces(seg.front_sector, front);
     let cols = SegColumns {
         dir,
         cross_from,
-        ceiling: front.ceiling,
+        ceiling: ceiling_at_line(front, back),
         floor: front.floor,
         back: back.map(|b| (b.ceiling, b.floor)),
-        ceiling_colour: colour(
-            shade,
-            Surface::Ceiling {
-                sector: seg.front_sector,
-            },
-            light,
-            1.0,
-        ),
-        floor_colour: colour(
-            shade,
-            Surface::Floor {
-                sector: seg.front_sector,
-            },
-            light,
-            1.0,
-        ),
+        ceiling_colour: colour(shade, ceiling_surface, light, 1.0),
+        floor_colour: colour(shade, floor_surface, light, 1.0),
         wall_colour: colour(
             shade,
             Surface::Wall { line: seg.line },
