@@ -971,8 +971,10 @@ fn from_bytes(bytes: &[u8], label: &str) -> Result<CompiledMap, LevelError> {
 /// A loaded map, however odd, must render through both renderers.
 fn render_both(level: &CompiledMap) {
     let view = View::at_start(&level.map).expect("a loaded map has a valid start");
+    let level = sightline::level::Level::with_builtin_textures(level.clone())
+        .unwrap_or_else(|e| panic!("{e}"));
     for r in Renderer::ALL {
-        render(level, &view, (32, 20), r, Shade::Ids);
+        render(&level, &view, (32, 20), r, Shade::Ids);
     }
 }
 

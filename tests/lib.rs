@@ -4,8 +4,8 @@
 use std::path::{Path, PathBuf};
 
 use glam::DVec2;
-use sightline::bsp::{BuildOptions, CompiledMap};
-use sightline::level::open_level;
+use sightline::bsp::BuildOptions;
+use sightline::level::{open_level, Level};
 use sightline::render::{render_frame, Frame, RenderOptions, Renderer, Shade, View};
 use sightline::Framebuffer;
 
@@ -37,12 +37,12 @@ pub fn map_path(name: &str) -> PathBuf {
     p
 }
 
-pub fn load(path: &Path) -> CompiledMap {
+pub fn load(path: &Path) -> Level {
     open_level(path, &BuildOptions::default()).unwrap_or_else(|e| panic!("{e}"))
 }
 
 pub fn render(
-    level: &CompiledMap,
+    level: &Level,
     view: &View,
     size: (usize, usize),
     renderer: Renderer,
@@ -98,7 +98,7 @@ pub fn difference(a: &Framebuffer, b: &Framebuffer) -> Difference {
 
 /// Renders `view` with both renderers in `ids` shading and returns how they differ.
 pub fn bsp_vs_reference(
-    level: &CompiledMap,
+    level: &Level,
     view: &View,
     size: (usize, usize),
 ) -> (Difference, Framebuffer, Framebuffer) {
@@ -109,7 +109,7 @@ pub fn bsp_vs_reference(
 
 /// Asserts the exactness criterion: at least 99.9% of pixels equal, differences
 /// only in isolated columns (wall edges). Saves both frames on failure.
-pub fn assert_agree(level: &CompiledMap, view: &View, size: (usize, usize), what: &str) {
+pub fn assert_agree(level: &Level, view: &View, size: (usize, usize), what: &str) {
     let (diff, bsp, reference) = bsp_vs_reference(level, view, size);
     let ok = diff.equal_share() >= 0.999 && diff.widest_column_run <= 1;
     if !ok {
@@ -133,7 +133,7 @@ pub fn assert_agree(level: &CompiledMap, view: &View, size: (usize, usize), what
     }
 }
 
-pub fn view(level: &CompiledMap, x: f64, y: f64, angle: f64) -> View {
+pub fn view(level: &Level, x: f64, y: f64, angle: f64) -> View {
     View::at_pose(&level.map, x, y, angle, None).unwrap_or_else(|e| panic!("pose ({x}, {y}): {e}"))
 }
 
@@ -147,7 +147,7 @@ pub fn v(x: f64, y: f64) -> DVec2 {
 /// "along" it, may pass either side of the line's vertices), so comparisons
 /// of degenerate poses exempt exactly these columns and nothing else.
 pub fn columns_along_lines_through_eye(
-    level: &CompiledMap,
+    level: &Level,
     view: &View,
     size: (usize, usize),
 ) -> Vec<usize> {
@@ -184,12 +184,7 @@ pub fn columns_along_lines_through_eye(
 /// [`assert_agree`] for degenerate poses: pixels in the columns of
 /// [`columns_along_lines_through_eye`] are exempt; all others must meet the
 /// same criterion.
-pub fn assert_agree_off_eye_lines(
-    level: &CompiledMap,
-    view: &View,
-    size: (usize, usize),
-    what: &str,
-) {
+pub fn assert_agree_off_eye_lines(level: &Level, view: &View, size: (usize, usize), what: &str) {
     let exempt = columns_along_lines_through_eye(level, view, size);
     let (mut bsp, reference) = (
         render(level, view, size, Renderer::Bsp, Shade::Ids),

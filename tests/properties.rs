@@ -339,11 +339,11 @@ fn one_sector_map(rings: &[&[(f64, f64)]]) -> sightline::Map {
         .unwrap_or_else(|p| panic!("{p:?}\n{}", source.to_ron()))
 }
 
-fn regression_level(map: &sightline::Map, splitter: SplitterKind) -> sightline::CompiledMap {
+fn regression_level(map: &sightline::Map, splitter: SplitterKind) -> sightline::level::Level {
     let level =
         sightline::bsp::build(map, &sightline::bsp::BuildOptions { splitter, seed: 0 }).unwrap();
     check_invariants(&level.map, &level.bsp).unwrap();
-    level
+    sightline::level::Level::with_builtin_textures(level).unwrap()
 }
 
 /// Square pillar (0..16) x (1/7..16+1/7) in a room with a slanted east wall;

@@ -29,13 +29,13 @@
 //! keeps the rest of the map as it was. `validate` still runs on every
 //! generated map; a rejection is reported as a generator bug.
 
+use sightline::level::Level;
 use std::f64::consts::{PI, TAU};
 
 use glam::DVec2;
 use proptest::prelude::*;
 use rand::rngs::ChaCha8Rng;
 use rand::{RngExt, SeedableRng};
-use sightline::bsp::CompiledMap;
 use sightline::map::source::{LineSource, MapSource, SectorSource, SideSource, ThingSource};
 use sightline::map::validate::validate;
 use sightline::map::{Map, PLAYER_START};
@@ -708,13 +708,14 @@ pub fn compile(
     g: &Generated,
     splitter: sightline::bsp::SplitterKind,
     seed: u64,
-) -> CompiledMap {
+) -> Level {
     let options = sightline::bsp::BuildOptions { splitter, seed };
-    sightline::bsp::build(&g.map, &options).unwrap_or_else(|e| {
+    let compiled = sightline::bsp::build(&g.map, &options).unwrap_or_else(|e| {
         panic!(
             "{} (seed {seed}) failed to compile: {e}\n{}",
             splitter.name(),
             describe(spec, g)
         )
-    })
+    });
+    Level::with_builtin_textures(compiled).unwrap_or_else(|e| panic!("{e}"))
 }

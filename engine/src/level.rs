@@ -1,10 +1,12 @@
 //! Opening a level for rendering: a RON source (validated and compiled on the
-//! spot) or a compiled map file (loaded as is), told apart by content.
+//! spot) or a compiled map file (loaded as is), told apart by content, plus
+//! its materials (every texture it names, resolved beside the map file).
 
 use std::path::Path;
 
 use crate::bsp::{build, file, BuildOptions, CompileError, CompiledMap};
 use crate::map::{load::parse_map_bytes, MapError};
+use crate::materials::{MaterialError, Materials};
 
 #[derive(Debug, thiserror::Error)]
 pub enum LevelError {
@@ -16,12 +18,63 @@ pub enum LevelError {
     Compiled { path: String, message: String },
     #[error("{path}: cannot write: {error}")]
     Write { path: String, error: std::io::Error },
+    #[error(transparent)]
+    Materials(#[from] MaterialError),
     #[error("{path}: refusing to overwrite the input map")]
     OverwriteInput { path: String },
 }
 
-/// Reads `path` and returns a compiled map, compiling a source map with `options`.
-pub fn open_level(path: &Path, options: &BuildOptions) -> Result<CompiledMap, LevelError> {
+/// A map ready to render: its geometry and BSP, and its materials.
+pub struct Level {
+    pub compiled: CompiledMap,
+    pub materials: Materials,
+}
+
+impl std::fmt::Debug for Level {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Level")
+            .field("name", &self.compiled.map.name)
+            .field("stats", &self.compiled.stats)
+            .field("textures", &self.materials.textures.len())
+            .finish()
+    }
+}
+
+/// A level is first of all its compiled map: `level.map`, `level.bsp`.
+impl std::ops::Deref for Level {
+    type Target = CompiledMap;
+
+    fn deref(&self) -> &CompiledMap {
+        &self.compiled
+    }
+}
+
+impl Level {
+    /// A level whose textures come from the built-in set only (tests, generated maps).
+    pub fn with_builtin_textures(compiled: CompiledMap) -> Result<Level, MaterialError> {
+        let materials = Materials::resolve(&compiled.map, &[], &compiled.map.name)?;
+        Ok(Level {
+            compiled,
+            materials,
+        })
+    }
+}
+
+/// Reads `path` and returns its level, compiling a source map with `options`;
+/// textures are looked up in `textures/` and `sprites/` beside the map.
+pub fn open_level(path: &Path, options: &BuildOptions) -> Result<Level, LevelError> {
+    let compiled = open_compiled(path, options)?;
+    let label = path.display().to_string();
+    let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+    let materials = Materials::resolve(&compiled.map, &[dir], &label)?;
+    Ok(Level {
+        compiled,
+        materials,
+    })
+}
+
+/// Reads `path` and returns the compiled map alone (no textures).
+pub fn open_compiled(path: &Path, options: &BuildOptions) -> Result<CompiledMap, LevelError> {
     let label = path.display().to_string();
     let bytes = std::fs::read(path).map_err(|error| MapError::Io {
         path: label.clone(),

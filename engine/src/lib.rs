@@ -17,7 +17,9 @@ pub mod framebuffer;
 pub mod geom;
 pub mod level;
 pub mod map;
+pub mod materials;
 pub mod render;
+pub mod texture;
 pub mod tour;
 
 pub use bsp::CompiledMap;

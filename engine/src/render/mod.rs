@@ -18,8 +18,8 @@ pub use frame::{Frame, FrameStats};
 pub use shade::Shade;
 pub use view::{Camera, View};
 
-use crate::bsp::CompiledMap;
 use crate::framebuffer::Framebuffer;
+use crate::level::Level;
 
 /// The visibility algorithms `--renderer` selects.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -56,7 +56,7 @@ pub struct RenderOptions {
 
 /// Renders one frame and returns what it cost.
 pub fn render_frame(
-    level: &CompiledMap,
+    level: &Level,
     view: &View,
     options: &RenderOptions,
     frame: &mut Frame,

@@ -1,0 +1,150 @@
+//! Materials: every texture name a map uses, resolved once when the level is
+//! opened (a PNG beside the map or a built-in texture) into ids the renderer
+//! indexes directly. A name that resolves to nothing is an error naming the
+//! element that uses it.
+
+use std::path::PathBuf;
+
+use crate::map::{Map, Side, PLAYER_START, SKY};
+use crate::texture::{TextureError, TextureId, TextureKind, TextureSet};
+
+/// The textures of one side of a line.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SideTextures {
+    pub upper: Option<TextureId>,
+    pub middle: Option<TextureId>,
+    pub lower: Option<TextureId>,
+}
+
+/// A sector's plane textures; `None` for untextured or sky.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SectorTextures {
+    pub floor: Option<TextureId>,
+    pub ceiling: Option<TextureId>,
+}
+
+#[derive(Default)]
+pub struct Materials {
+    pub textures: TextureSet,
+    /// Per line: `[front, back]` (the back is empty on one-sided lines).
+    pub sides: Vec<[SideTextures; 2]>,
+    pub sectors: Vec<SectorTextures>,
+    /// Per thing: its sprite (`None` for things that are not drawn, such as
+    /// the player start).
+    pub sprites: Vec<Option<TextureId>>,
+    /// The panorama shown by `"SKY"` ceilings and floors, if any sector has one.
+    pub sky: Option<TextureId>,
+}
+
+#[derive(Debug, thiserror::Error)]
+#[error("{path}: {element}: {error}")]
+pub struct MaterialError {
+    pub path: String,
+    /// Which element uses the name, e.g. `line 6 front side upper texture`.
+    pub element: String,
+    pub error: TextureError,
+}
+
+impl Materials {
+    /// Resolves every texture `map` names, looking for PNGs under each of `dirs`
+    /// (`textures/` and `sprites/` inside them) before the built-in textures.
+    /// `label` names the map in errors.
+    pub fn resolve(map: &Map, dirs: &[PathBuf], label: &str) -> Result<Materials, MaterialError> {
+        let mut m = Materials::default();
+        // A name may be a texture of the other kind (a STONE floor): walls and
+        // flats are both just images. Report the lookup of the expected kind.
+        let mut get = |name: &str, kind: TextureKind, element: String| {
+            let other = match kind {
+                TextureKind::Wall => Some(TextureKind::Flat),
+                TextureKind::Flat => Some(TextureKind::Wall),
+                TextureKind::Sprite => None,
+            };
+            m.textures
+                .resolve(name, kind, dirs)
+                .or_else(|error| match other {
+                    Some(o) if matches!(error, TextureError::Missing { .. }) => {
+                        m.textures.resolve(name, o, dirs).map_err(|_| error)
+                    }
+                    _ => Err(error),
+                })
+                .map_err(|error| MaterialError { path: label.to_string(), element, error })
+        };
+        let mut sides = Vec::with_capacity(map.lines.len());
+        for (i, line) in map.lines.iter().enumerate() {
+            let mut pair = [SideTextures::default(); 2];
+            for (k, (which, side)) in [("front", Some(&line.front)), ("back", line.back.as_ref())]
+                .into_iter()
+                .enumerate()
+            {
+                if let Some(side) = side {
+                    pair[k] = side_textures(side, &mut |name, part| {
+                        get(
+                            name,
+                            TextureKind::Wall,
+                            format!("line {i} {which} side {part} texture"),
+                        )
+                    })?;
+                }
+            }
+            sides.push(pair);
+        }
+        let mut sectors = Vec::with_capacity(map.sectors.len());
+        let mut uses_sky = false;
+        for (i, s) in map.sectors.iter().enumerate() {
+            let mut plane =
+                |name: &Option<String>, which: &str| -> Result<Option<TextureId>, MaterialError> {
+                    match name.as_deref() {
+                        None => Ok(None),
+                        Some(n) if n.eq_ignore_ascii_case(SKY) => {
+                            uses_sky = true;
+                            Ok(None)
+                        }
+                        Some(n) => get(n, TextureKind::Flat, format!("sector {i} {which} texture"))
+                            .map(Some),
+                    }
+                };
+            let floor = plane(&s.floor_texture, "floor")?;
+            let ceiling = plane(&s.ceiling_texture, "ceiling")?;
+            sectors.push(SectorTextures { floor, ceiling });
+        }
+        let mut sprites = Vec::with_capacity(map.things.len());
+        for (i, t) in map.things.iter().enumerate() {
+            let sprite = if t.kind == PLAYER_START {
+                None
+            } else {
+                let name = t.kind.to_ascii_uppercase();
+                Some(get(
+                    &name,
+                    TextureKind::Sprite,
+                    format!("thing {i} (kind {:?}) sprite", t.kind),
+                )?)
+            };
+            sprites.push(sprite);
+        }
+        let sky = if uses_sky {
+            Some(get(SKY, TextureKind::Wall, "the sky".into())?)
+        } else {
+            None
+        };
+        Ok(Materials {
+            sides,
+            sectors,
+            sprites,
+            sky,
+            ..m
+        })
+    }
+}
+
+fn side_textures(
+    side: &Side,
+    get: &mut impl FnMut(&str, &str) -> Result<TextureId, MaterialError>,
+) -> Result<SideTextures, MaterialError> {
+    let mut one =
+        |name: &Option<String>, part: &str| name.as_deref().map(|n| get(n, part)).transpose();
+    Ok(SideTextures {
+        upper: one(&side.upper, "upper")?,
+        middle: one(&side.middle, "middle")?,
+        lower: one(&side.lower, "lower")?,
+    })
+}

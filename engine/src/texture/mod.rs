@@ -1,0 +1,306 @@
+//! Textures: the stage between a map's texture names and the renderer's texel
+//! loops. Each name resolves once, to a PNG under the map's `textures/` or
+//! `sprites/` folder or to a built-in [`procedural`] texture, and is handed on
+//! as a column-major [`Texture`] behind a [`TextureId`] in a [`TextureSet`].
+//!
+//! Column-major because walls and sprites are drawn a screen column at a time,
+//! and one screen column samples one texture column: walking `v` down a
+//! contiguous slice stays in cache, where row-major storage would stride by the
+//! texture's width on every texel.
+
+mod decode;
+pub mod procedural;
+
+#[cfg(test)]
+mod preview;
+
+use std::collections::HashMap;
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+pub use decode::MAX_SIDE;
+
+/// A decoded image, ready for column sampling.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Texture {
+    pub width: usize,
+    pub height: usize,
+    /// Column-major: texel (u, v) is `texels[u * height + v]`; v = 0 is the top row.
+    /// Packed like [`crate::framebuffer::rgb`] (RGBA bytes, R first); alpha 0 is
+    /// transparent, 255 opaque.
+    pub texels: Vec<u32>,
+    /// True when every texel's alpha is 255, so a renderer may skip the mask test.
+    pub opaque: bool,
+}
+
+impl Texture {
+    /// Builds a texture from `f(u, v) -> [r, g, b, a]`, called column by column.
+    ///
+    /// Panics on a zero side: every texture in a set has at least one texel, so
+    /// sampling never divides by zero (PNG loading rejects empty images first).
+    pub fn from_fn(
+        width: usize,
+        height: usize,
+        mut f: impl FnMut(usize, usize) -> [u8; 4],
+    ) -> Texture {
+        assert!(width > 0 && height > 0, "texture of size {width}x{height}");
+        let mut texels = Vec::with_capacity(width * height);
+        for u in 0..width {
+            for v in 0..height {
+                texels.push(u32::from_le_bytes(f(u, v)));
+            }
+        }
+        Texture::from_texels(width, height, texels)
+    }
+
+    /// Wraps column-major texels, working out [`Texture::opaque`].
+    fn from_texels(width: usize, height: usize, texels: Vec<u32>) -> Texture {
+        debug_assert_eq!(texels.len(), width * height);
+        let opaque = texels.iter().all(|&t| t >> 24 == 0xff);
+        Texture {
+            width,
+            height,
+            texels,
+            opaque,
+        }
+    }
+
+    /// Reads a PNG file (any colour type and bit depth) into a texture.
+    pub fn read_png(path: &Path) -> Result<Texture, TextureError> {
+        decode::read_png(path)
+    }
+
+    /// Decodes PNG bytes; `path` only names the source in errors.
+    pub fn decode_png(bytes: &[u8], path: &Path) -> Result<Texture, TextureError> {
+        decode::decode_png(std::io::Cursor::new(bytes), path)
+    }
+
+    /// Column `u`, top texel first. `u < width`.
+    #[inline]
+    pub fn column(&self, u: usize) -> &[u32] {
+        &self.texels[u * self.height..(u + 1) * self.height]
+    }
+
+    /// The texel at column `u`, row `v`; both in range.
+    #[inline]
+    pub fn texel(&self, u: usize, v: usize) -> u32 {
+        debug_assert!(u < self.width && v < self.height);
+        self.texels[u * self.height + v]
+    }
+
+    /// The texel at any integer coordinates, wrapped into range (negative ones
+    /// too, by `rem_euclid`), so textures repeat in both directions whatever
+    /// their size; no power-of-two masking.
+    #[inline]
+    pub fn wrapped(&self, u: i64, v: i64) -> u32 {
+        let u = u.rem_euclid(self.width as i64) as usize;
+        let v = v.rem_euclid(self.height as i64) as usize;
+        self.texels[u * self.height + v]
+    }
+}
+
+/// An index into a [`TextureSet`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct TextureId(pub u32);
+
+/// What a name is looked up as: wall and flat textures live in
+/// `<map dir>/textures/`, sprites in `<map dir>/sprites/`; the procedural
+/// textures are separate per kind.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum TextureKind {
+    Wall,
+    Flat,
+    Sprite,
+}
+
+impl TextureKind {
+    /// The folder under a map directory that holds this kind's PNGs.
+    pub fn subdir(self) -> &'static str {
+        match self {
+            TextureKind::Wall | TextureKind::Flat => "textures",
+            TextureKind::Sprite => "sprites",
+        }
+    }
+}
+
+impl fmt::Display for TextureKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            TextureKind::Wall => "wall texture",
+            TextureKind::Flat => "flat",
+            TextureKind::Sprite => "sprite",
+        })
+    }
+}
+
+/// Why a texture name could not become a [`Texture`].
+#[derive(Debug, thiserror::Error)]
+pub enum TextureError {
+    /// No file and no procedural texture has the name: says which files were
+    /// tried and lists the procedural names of that kind.
+    #[error(
+        "{kind} {name:?} not found: tried {}; no procedural {kind} has that name (built in: {})",
+        list_paths(tried),
+        procedural::names(*kind).join(", ")
+    )]
+    Missing {
+        name: String,
+        kind: TextureKind,
+        tried: Vec<PathBuf>,
+    },
+    /// The name could escape the map's folder or name a hidden file.
+    #[error("{kind} name {name:?} is not a plain file name (no path separators, no leading dot)")]
+    BadName { name: String, kind: TextureKind },
+    /// The file is unreadable or not a valid PNG: the path and the decoder's message.
+    #[error("{}: cannot read PNG: {message}", path.display())]
+    Png { path: PathBuf, message: String },
+    /// A side is 0 or above [`MAX_SIDE`]; refused from the header, before
+    /// any pixel memory is allocated.
+    #[error(
+        "{}: PNG is {width}x{height}; textures must be 1 to {MAX_SIDE} texels on a side",
+        path.display()
+    )]
+    Size {
+        path: PathBuf,
+        width: u32,
+        height: u32,
+    },
+}
+
+fn list_paths(paths: &[PathBuf]) -> String {
+    if paths.is_empty() {
+        return "no files (no map directories given)".to_string();
+    }
+    let shown: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
+    shown.join(", ")
+}
+
+/// Every texture a map uses, each loaded once, addressed by [`TextureId`].
+///
+/// Names are cached by exact spelling and kind, not by directory: a set
+/// belongs to one map (one list of directories). Names that lead to the same
+/// source (a wall and a flat both named SKY, or `brick` and `BRICK` when no
+/// file tells them apart) share one texture and one id.
+#[derive(Debug, Default)]
+pub struct TextureSet {
+    textures: Vec<Texture>,
+    names: Vec<String>,
+    ids: HashMap<(String, TextureKind), TextureId>,
+    sources: HashMap<Source, TextureId>,
+}
+
+/// Where a texture's texels come from.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+enum Source {
+    File(PathBuf),
+    /// A procedural texture, by its canonical (upper-case) name; the painters
+    /// depend on the name alone, so the kind is not part of the key.
+    Builtin(&'static str),
+}
+
+impl TextureSet {
+    pub fn new() -> TextureSet {
+        TextureSet::default()
+    }
+
+    /// Resolves `name` once (later calls return the cached id): the first of
+    /// `<dir>/<kind subdir>/<name>.png`, then the lower-case `<name>.png`, for
+    /// each dir in `dirs` in order; then the procedural texture of that name
+    /// (case-insensitive); else [`TextureError::Missing`]. A file that exists
+    /// but does not decode is an error, not a reason to fall back, so a broken
+    /// art file is never silently replaced by a built-in look.
+    pub fn resolve(
+        &mut self,
+        name: &str,
+        kind: TextureKind,
+        dirs: &[PathBuf],
+    ) -> Result<TextureId, TextureError> {
+        let key = (name.to_string(), kind);
+        if let Some(&id) = self.ids.get(&key) {
+            return Ok(id);
+        }
+        let source = find(name, kind, dirs)?;
+        let id = match self.sources.get(&source) {
+            Some(&id) => id,
+            None => {
+                let texture = match &source {
+                    Source::File(path) => decode::read_png(path)?,
+                    Source::Builtin(canonical) => procedural::generate(canonical, kind)
+                        .unwrap_or_else(|| unreachable!("{canonical} was listed")),
+                };
+                // Ids are u32 to keep map data small; four billion textures
+                // would not fit in memory first.
+                let id = TextureId(self.textures.len() as u32);
+                self.textures.push(texture);
+                self.names.push(name.to_string());
+                self.sources.insert(source, id);
+                id
+            }
+        };
+        self.ids.insert(key, id);
+        Ok(id)
+    }
+
+    /// The id `name` already resolved to, if it has.
+    pub fn find(&self, name: &str, kind: TextureKind) -> Option<TextureId> {
+        self.ids.get(&(name.to_string(), kind)).copied()
+    }
+
+    pub fn get(&self, id: TextureId) -> &Texture {
+        &self.textures[id.0 as usize]
+    }
+
+    /// The name as the map spelled it (the first spelling, when several names
+    /// share the texture).
+    pub fn name(&self, id: TextureId) -> &str {
+        &self.names[id.0 as usize]
+    }
+
+    pub fn len(&self) -> usize {
+        self.textures.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.textures.is_empty()
+    }
+}
+
+/// Where `name` comes from, without loading it.
+fn find(name: &str, kind: TextureKind, dirs: &[PathBuf]) -> Result<Source, TextureError> {
+    // A name is joined onto a directory, so a map must not be able to reach
+    // outside it ("../../etc/x"), name a hidden file, or (on Windows) a drive.
+    let plain =
+        !name.is_empty() && !name.starts_with('.') && !name.contains(['/', '\\', '\0', ':']);
+    if !plain {
+        return Err(TextureError::BadName {
+            name: name.to_string(),
+            kind,
+        });
+    }
+    let lower = name.to_lowercase();
+    let mut tried = Vec::new();
+    for dir in dirs {
+        let folder = dir.join(kind.subdir());
+        for file_stem in [name, lower.as_str()] {
+            let path = folder.join(format!("{file_stem}.png"));
+            if tried.contains(&path) {
+                continue; // the name was already lower case
+            }
+            if path.is_file() {
+                return Ok(Source::File(path));
+            }
+            tried.push(path);
+        }
+    }
+    match procedural::canonical(name, kind) {
+        Some(canonical) => Ok(Source::Builtin(canonical)),
+        None => Err(TextureError::Missing {
+            name: name.to_string(),
+            kind,
+            tried,
+        }),
+    }
+}
+
+#[cfg(test)]
+mod tests;
