@@ -67,7 +67,11 @@ impl Materials {
                     }
                     _ => Err(error),
                 })
-                .map_err(|error| MaterialError { path: label.to_string(), element, error })
+                .map_err(|error| MaterialError {
+                    path: label.to_string(),
+                    element,
+                    error,
+                })
         };
         let mut sides = Vec::with_capacity(map.lines.len());
         for (i, line) in map.lines.iter().enumerate() {

@@ -56,8 +56,9 @@ pub struct CaptureArgs {
     pub size: (usize, usize),
     #[arg(long, default_value = "bsp", value_parser = parse_renderer)]
     pub renderer: Renderer,
-    /// ids: each wall, floor and ceiling in a colour from its index; flat: lit colours.
-    #[arg(long, default_value = "flat", value_parser = parse_shade)]
+    /// textured (default): textures, sky, light, fog; flat: lit flat colours;
+    /// ids: each wall, floor and ceiling in a colour from its index.
+    #[arg(long, default_value = "textured", value_parser = parse_shade)]
     pub shade: Shade,
     /// The PNG to write.
     #[arg(short, long)]
@@ -136,7 +137,7 @@ fn parse_renderer(s: &str) -> Result<Renderer, String> {
 }
 
 fn parse_shade(s: &str) -> Result<Shade, String> {
-    Shade::from_name(s).ok_or_else(|| format!("unknown shade `{s}`; choose ids or flat"))
+    Shade::from_name(s).ok_or_else(|| format!("unknown shade `{s}`; choose textured, flat or ids"))
 }
 
 #[cfg(test)]

@@ -5,20 +5,23 @@
 
 use super::columns::ColumnWriter;
 use super::frame::Frame;
+use super::light::Lighting;
 use super::shade::{Shade, Surface, VOID};
 use super::view::Camera;
 use super::walls::draw_seg;
-use crate::bsp::{Child, CompiledMap, Node};
+use crate::bsp::{Child, Node};
 use crate::geom::{front_distance, Aabb};
+use crate::level::Level;
 
 pub fn render(
-    level: &CompiledMap,
+    level: &Level,
     cam: &Camera,
     frame: &mut Frame,
     out: &mut ColumnWriter,
     shade: Shade,
 ) {
     let bsp = &level.bsp;
+    let lighting = Lighting::for_map(&level.map);
     frame.stack.push((bsp.root, None));
     while let Some((child, bbox)) = frame.stack.pop() {
         if frame.occlusion.all_closed() {
@@ -46,7 +49,7 @@ pub fn render(
                 frame.stats.leaves_visited += 1;
                 let leaf = &bsp.leaves[i];
                 for seg in bsp.leaf_segs(leaf) {
-                    draw_seg(&level.map, cam, seg, frame, out, shade);
+                    draw_seg(level, cam, seg, frame, out, shade, &lighting);
                     if frame.occlusion.all_closed() {
                         break;
                     }

@@ -8,6 +8,7 @@
 //! touches 1080 cache lines, more than L1 holds, and that store took 88% of a
 //! maze frame (measurements in ARCHITECTURE.md).
 
+use super::light::Tint;
 use crate::framebuffer::Framebuffer;
 
 pub struct ColumnWriter<'a> {
@@ -47,10 +48,16 @@ impl<'a> ColumnWriter<'a> {
         if y1 <= y0 {
             return;
         }
-        let (y0, y1) = (y0 as usize, y1 as usize);
         let base = (x - self.x0) * self.height;
+        self.canvas[base + y0 as usize..base + y1 as usize].fill(colour);
+        self.count(x, y0, y1);
+    }
+
+    /// Records a write of rows `[y0, y1)` of column `x` (callers: non-empty runs).
+    #[inline]
+    fn count(&mut self, x: usize, y0: i32, y1: i32) {
+        let (y0, y1) = (y0 as usize, y1 as usize);
         self.written += (y1 - y0) as u64;
-        self.canvas[base + y0..base + y1].fill(colour);
         if let Some(counts) = self.counts.as_deref_mut() {
             for c in counts[y0 * self.width + x..]
                 .iter_mut()
@@ -60,6 +67,54 @@ impl<'a> ColumnWriter<'a> {
                 *c = c.saturating_add(1);
             }
         }
+    }
+}
+
+impl ColumnWriter<'_> {
+    /// Fills rows `[y0, y1)` of column `x` with `colour(y)`.
+    #[inline]
+    pub fn fill_with(&mut self, x: usize, y0: i32, y1: i32, mut colour: impl FnMut(i32) -> u32) {
+        if y1 <= y0 {
+            return;
+        }
+        let base = (x - self.x0) * self.height;
+        let run = &mut self.canvas[base + y0 as usize..base + y1 as usize];
+        for (y, p) in (y0..y1).zip(run) {
+            *p = colour(y);
+        }
+        self.count(x, y0, y1);
+    }
+
+    /// Fills rows `[y0, y1)` of column `x` from a texture column: row `y0`
+    /// shows texel row `v`, each row below `dv` further, wrapping at the
+    /// column's end, every texel tinted.
+    #[inline]
+    pub fn textured(
+        &mut self,
+        x: usize,
+        (y0, y1): (i32, i32),
+        column: &[u32],
+        v: f64,
+        dv: f64,
+        tint: Tint,
+    ) {
+        if y1 <= y0 || column.is_empty() {
+            return;
+        }
+        let h = column.len() as f64;
+        let mut v = v.rem_euclid(h);
+        // Steps of a whole texture or more (far walls) need the modulo; near
+        // ones only ever wrap once.
+        let big_step = dv >= h;
+        let base = (x - self.x0) * self.height;
+        for p in &mut self.canvas[base + y0 as usize..base + y1 as usize] {
+            *p = tint.apply(column[(v as usize).min(column.len() - 1)]);
+            v += dv;
+            if v >= h {
+                v = if big_step { v.rem_euclid(h) } else { v - h };
+            }
+        }
+        self.count(x, y0, y1);
     }
 }
 

@@ -7,7 +7,9 @@
 pub mod bsp;
 pub mod columns;
 pub mod frame;
+pub mod light;
 pub mod occlusion;
+pub mod planes;
 pub mod reference;
 pub mod shade;
 pub mod strips;

@@ -6,9 +6,14 @@ use crate::framebuffer::rgb;
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Shade {
+    /// A colour per element index, for comparing renderers pixel by pixel.
     Ids,
-    #[default]
+    /// Lit flat colours, for looking at geometry.
     Flat,
+    /// Textures, sky, light and fog: the game's look. Surfaces without a
+    /// texture fall back to their flat colour.
+    #[default]
+    Textured,
 }
 
 impl Shade {
@@ -16,11 +21,12 @@ impl Shade {
         match self {
             Shade::Ids => "ids",
             Shade::Flat => "flat",
+            Shade::Textured => "textured",
         }
     }
 
     pub fn from_name(name: &str) -> Option<Shade> {
-        [Shade::Ids, Shade::Flat]
+        [Shade::Ids, Shade::Flat, Shade::Textured]
             .into_iter()
             .find(|s| s.name() == name)
     }
@@ -80,7 +86,7 @@ pub fn colour(shade: Shade, surface: Surface, light: u8, facing: f64) -> u32 {
     let (base, scale) = match (shade, surface) {
         (Shade::Ids, _) => return ids_colour(surface),
         (_, Surface::Void) => return VOID,
-        (Shade::Flat, Surface::Wall { line }) => {
+        (_, Surface::Wall { line }) => {
             const PALETTE: [[u8; 3]; 4] = [
                 [170, 120, 90],
                 [150, 150, 160],
@@ -89,10 +95,10 @@ pub fn colour(shade: Shade, surface: Surface, light: u8, facing: f64) -> u32 {
             ];
             (PALETTE[line % PALETTE.len()], facing)
         }
-        (Shade::Flat, Surface::Floor { .. }) => ([110, 100, 90], 0.85),
-        (Shade::Flat, Surface::Ceiling { .. }) => ([140, 140, 150], 0.7),
+        (_, Surface::Floor { .. }) => ([110, 100, 90], 0.85),
+        (_, Surface::Ceiling { .. }) => ([140, 140, 150], 0.7),
         // The sky is not lit by sectors.
-        (Shade::Flat, Surface::Sky) => return rgb(110, 150, 200),
+        (_, Surface::Sky) => return rgb(110, 150, 200),
     };
     let k = f64::from(light) / 255.0 * scale;
     let [r, g, b] = base.map(|c| (f64::from(c) * k).clamp(0.0, 255.0) as u8);

@@ -90,6 +90,11 @@ impl Camera {
         }
     }
 
+    /// The view direction in radians, counter-clockwise from +x.
+    pub fn angle_radians(&self) -> f64 {
+        self.forward.y.atan2(self.forward.x)
+    }
+
     /// Slope (sideways per unit forward) of the ray through column `x`'s centre.
     #[inline]
     pub fn column_slope(&self, x: usize) -> f64 {

@@ -3,49 +3,76 @@
 //! two-sided line, the upper and lower walls around the opening, which narrows
 //! the column's clip bounds for what lies beyond.
 //!
-//! Floors and ceilings are flat colours per sector here, filled per column in
-//! the same pass; they need no separate plane stage until they are textured.
+//! Each part is painted flat (ids, flat shading, untextured surfaces) or from
+//! its texture, pegged as Doom pegs it; the planes go to [`super::planes`].
+
+use glam::DVec2;
 
 use super::columns::ColumnWriter;
 use super::frame::Frame;
+use super::light::Lighting;
+use super::planes::{paint_plane, PlanePaint};
 use super::shade::{ceiling_at_line, colour, plane_surfaces, wall_facing, Shade, Surface};
 use super::view::{Camera, NEAR};
-use glam::DVec2;
-
 use crate::bsp::{LineSide, Seg};
 use crate::geom::cross;
-use crate::map::Map;
+use crate::level::Level;
+use crate::map::{Line, Sector, Side};
+use crate::materials::SideTextures;
+use crate::texture::{Texture, TextureId};
 
-/// Heights and colours of one seg, fixed for all its columns, and its map
-/// line in camera space for the per-column depth.
-struct SegColumns {
-    /// The line's direction (`to - from`), camera space.
+/// How a wall part is painted.
+#[derive(Clone, Copy)]
+enum Paint<'a> {
+    Solid(u32),
+    /// Texel row 0 sits at map height `top`; `light` is the sector's.
+    Textured {
+        texture: &'a Texture,
+        top: f64,
+        light: u8,
+    },
+}
+
+/// Everything about one seg that is fixed across its columns.
+struct SegColumns<'a> {
+    /// The map line's `from` end and direction (`to - from`), camera space.
+    from: DVec2,
     dir: DVec2,
     /// `cross(from, dir)`: depth at slope t is `cross_from / cross((1, t), dir)`.
     cross_from: f64,
+    /// Texture column at the line's start of this side, and whether the side
+    /// runs against the line (a back side measures from the line's `to`).
+    u_offset: f64,
+    backwards: bool,
     ceiling: f64,
     floor: f64,
     /// Back sector's ceiling and floor, for a two-sided line.
     back: Option<(f64, f64)>,
-    ceiling_colour: u32,
-    floor_colour: u32,
-    wall_colour: u32,
+    ceiling_paint: PlanePaint<'a>,
+    floor_paint: PlanePaint<'a>,
+    /// The solid wall of a one-sided line, or the upper and lower walls.
+    middle: Paint<'a>,
+    upper: Paint<'a>,
+    lower: Paint<'a>,
 }
 
 pub fn draw_seg(
-    map: &Map,
+    level: &Level,
     cam: &Camera,
     seg: &Seg,
     frame: &mut Frame,
     out: &mut ColumnWriter,
     shade: Shade,
+    lighting: &Lighting,
 ) {
     frame.stats.walls_considered += 1;
+    let map = &level.map;
+    let line = &map.lines[seg.line];
     // Facing and depth come from the whole map line in camera space, in the
     // line's own direction: the same numbers for every piece and both sides,
     // and the same the reference computes, so edge cases resolve alike.
     // (Camera space mirrors the map, so the eye is in front when this is > 0.)
-    let (from, to) = map.line_points(&map.lines[seg.line]);
+    let (from, to) = map.line_points(line);
     let (from, dir) = (cam.to_camera(from), cam.to_camera(to) - cam.to_camera(from));
     let cross_from = cross(from, dir);
     let facing = match seg.side {
@@ -59,31 +86,13 @@ pub fn draw_seg(
     let Some((x0, x1)) = cam.project_span(cam.to_camera(seg.v1), cam.to_camera(seg.v2)) else {
         return;
     };
-    let front = &map.sectors[seg.front_sector];
-    let back = seg.back_sector.map(|b| &map.sectors[b]);
-    let light = front.light;
-    let (ceiling_surface, floor_surface) = plane_surfaces(seg.front_sector, front);
-    let cols = SegColumns {
-        dir,
-        cross_from,
-        ceiling: ceiling_at_line(front, back),
-        floor: front.floor,
-        back: back.map(|b| (b.ceiling, b.floor)),
-        ceiling_colour: colour(shade, ceiling_surface, light, 1.0),
-        floor_colour: colour(shade, floor_surface, light, 1.0),
-        wall_colour: colour(
-            shade,
-            Surface::Wall { line: seg.line },
-            light,
-            wall_facing(seg.v2 - seg.v1),
-        ),
-    };
+    let cols = seg_columns(level, seg, line, from, dir, cross_from, shade);
     let mut drew = false;
     let mut x = x0;
     while let Some(start) = frame.occlusion.next_open(x, x1) {
         let stop = frame.occlusion.next_closed(start, x1);
         for col in start..stop {
-            draw_column(cam, &cols, col, frame, out);
+            draw_column(cam, lighting, &cols, col, frame, out);
         }
         drew = true;
         x = stop;
@@ -91,9 +100,142 @@ pub fn draw_seg(
     frame.stats.walls_drawn += u64::from(drew);
 }
 
+fn seg_columns<'a>(
+    level: &'a Level,
+    seg: &Seg,
+    line: &Line,
+    from: DVec2,
+    dir: DVec2,
+    cross_from: f64,
+    shade: Shade,
+) -> SegColumns<'a> {
+    let map = &level.map;
+    let front = &map.sectors[seg.front_sector];
+    let back = seg.back_sector.map(|b| &map.sectors[b]);
+    let (side, textures) = match seg.side {
+        LineSide::Front => (&line.front, level.materials.sides[seg.line][0]),
+        // A back seg exists only on two-sided lines.
+        LineSide::Back => (
+            line.back.as_ref().unwrap_or(&line.front),
+            level.materials.sides[seg.line][1],
+        ),
+    };
+    let light = front.light;
+    let (ceiling_surface, floor_surface) = plane_surfaces(seg.front_sector, front);
+    let wall = colour(
+        shade,
+        Surface::Wall { line: seg.line },
+        light,
+        wall_facing(seg.v2 - seg.v1),
+    );
+    let ceiling = ceiling_at_line(front, back);
+    let textured = shade == Shade::Textured;
+    let plane = |surface, height, texture: Option<TextureId>| match (textured, surface, texture) {
+        (true, Surface::Sky, _) => level
+            .materials
+            .sky
+            .map(|t| PlanePaint::Sky(level.materials.textures.get(t))),
+        (true, _, Some(t)) => Some(PlanePaint::Flat {
+            texture: level.materials.textures.get(t),
+            height,
+            light,
+        }),
+        _ => None,
+    };
+    let planes = level.materials.sectors[seg.front_sector];
+    let ceiling_paint = plane(ceiling_surface, front.ceiling, planes.ceiling).unwrap_or(
+        PlanePaint::Solid(colour(shade, ceiling_surface, light, 1.0)),
+    );
+    let floor_paint = plane(floor_surface, front.floor, planes.floor)
+        .unwrap_or(PlanePaint::Solid(colour(shade, floor_surface, light, 1.0)));
+    let (middle, upper, lower) = if textured {
+        wall_paints(level, line, side, &textures, front, back, wall)
+    } else {
+        (Paint::Solid(wall), Paint::Solid(wall), Paint::Solid(wall))
+    };
+    SegColumns {
+        from,
+        dir,
+        cross_from,
+        u_offset: side.x_offset,
+        backwards: seg.side == LineSide::Back,
+        ceiling,
+        floor: front.floor,
+        back: back.map(|b| (b.ceiling, b.floor)),
+        ceiling_paint,
+        floor_paint,
+        middle,
+        upper,
+        lower,
+    }
+}
+
+/// Doom's pegging: where texel row 0 of each wall part sits.
+/// - middle of a one-sided wall: at the ceiling, or with `lower_unpegged`
+///   its bottom row at the floor;
+/// - upper: its bottom row at the back sector's ceiling (it hangs from the
+///   opening), or with `upper_unpegged` at the front ceiling;
+/// - lower: at the back sector's floor (it stands on the opening), or with
+///   `lower_unpegged` where it would be if it started at the front ceiling.
+fn wall_paints<'a>(
+    level: &'a Level,
+    line: &Line,
+    side: &Side,
+    textures: &SideTextures,
+    front: &Sector,
+    back: Option<&Sector>,
+    flat: u32,
+) -> (Paint<'a>, Paint<'a>, Paint<'a>) {
+    let light = front.light;
+    let paint = |id: Option<TextureId>, top: &dyn Fn(&Texture) -> f64| match id {
+        Some(id) => {
+            let texture = level.materials.textures.get(id);
+            Paint::Textured {
+                texture,
+                top: top(texture) + side.y_offset,
+                light,
+            }
+        }
+        None => Paint::Solid(flat),
+    };
+    let flags = line.flags;
+    let middle = paint(textures.middle, &|t| {
+        if flags.lower_unpegged {
+            front.floor + t.height as f64
+        } else {
+            front.ceiling
+        }
+    });
+    let (back_ceiling, back_floor) =
+        back.map_or((front.ceiling, front.floor), |b| (b.ceiling, b.floor));
+    let upper = paint(textures.upper, &|t| {
+        if flags.upper_unpegged {
+            front.ceiling
+        } else {
+            back_ceiling + t.height as f64
+        }
+    });
+    let lower = paint(textures.lower, &|_| {
+        if flags.lower_unpegged {
+            front.ceiling
+        } else {
+            back_floor
+        }
+    });
+    (middle, upper, lower)
+}
+
 #[inline]
-fn draw_column(cam: &Camera, s: &SegColumns, x: usize, frame: &mut Frame, out: &mut ColumnWriter) {
-    let depth = s.cross_from / cross(DVec2::new(1.0, frame.slopes[x]), s.dir);
+fn draw_column(
+    cam: &Camera,
+    lighting: &Lighting,
+    s: &SegColumns,
+    x: usize,
+    frame: &mut Frame,
+    out: &mut ColumnWriter,
+) {
+    let t = frame.slopes[x];
+    let depth = s.cross_from / cross(DVec2::new(1.0, t), s.dir);
     // Columns inside the near-clipped span are at depth >= NEAR up to rounding.
     let depth = if depth.is_finite() {
         depth.max(NEAR)
@@ -104,24 +246,89 @@ fn draw_column(cam: &Camera, s: &SegColumns, x: usize, frame: &mut Frame, out: &
     let (top, bottom) = (frame.clip_top[x], frame.clip_bottom[x]);
     let ceiling_end = row(s.ceiling).clamp(top, bottom);
     let floor_start = row(s.floor).clamp(ceiling_end, bottom);
-    out.fill(x, top, ceiling_end, s.ceiling_colour);
-    out.fill(x, floor_start, bottom, s.floor_colour);
+    paint_plane(
+        out,
+        cam,
+        lighting,
+        x,
+        (top, ceiling_end),
+        t,
+        s.ceiling_paint,
+    );
+    paint_plane(
+        out,
+        cam,
+        lighting,
+        x,
+        (floor_start, bottom),
+        t,
+        s.floor_paint,
+    );
+    let wall = WallColumn {
+        cam,
+        lighting,
+        x,
+        depth,
+        u: texture_u(s, depth, t),
+    };
     match s.back {
         None => {
-            out.fill(x, ceiling_end, floor_start, s.wall_colour);
+            wall.paint(out, (ceiling_end, floor_start), s.middle);
             frame.occlusion.close(x);
         }
         Some((back_ceiling, back_floor)) => {
             // The opening is below both ceilings and above both floors.
             let upper_end = row(back_ceiling).clamp(ceiling_end, floor_start);
             let lower_start = row(back_floor).clamp(upper_end, floor_start);
-            out.fill(x, ceiling_end, upper_end, s.wall_colour);
-            out.fill(x, lower_start, floor_start, s.wall_colour);
+            wall.paint(out, (ceiling_end, upper_end), s.upper);
+            wall.paint(out, (lower_start, floor_start), s.lower);
             if upper_end >= lower_start {
                 frame.occlusion.close(x);
             } else {
                 frame.clip_top[x] = upper_end;
                 frame.clip_bottom[x] = lower_start;
+            }
+        }
+    }
+}
+
+/// Distance along the side from its start to where column slope `t` meets
+/// it, plus the side's texture offset: the texture column.
+#[inline]
+fn texture_u(s: &SegColumns, depth: f64, t: f64) -> f64 {
+    let hit = DVec2::new(depth, depth * t);
+    let length = s.dir.length();
+    let along = (hit - s.from).dot(s.dir) / length;
+    s.u_offset + if s.backwards { length - along } else { along }
+}
+
+/// One column of one seg, for painting its wall parts.
+struct WallColumn<'a> {
+    cam: &'a Camera,
+    lighting: &'a Lighting,
+    x: usize,
+    depth: f64,
+    u: f64,
+}
+
+impl WallColumn<'_> {
+    fn paint(&self, out: &mut ColumnWriter, rows: (i32, i32), paint: Paint) {
+        match paint {
+            Paint::Solid(c) => out.fill(self.x, rows.0, rows.1, c),
+            Paint::Textured {
+                texture,
+                top,
+                light,
+            } => {
+                if rows.1 <= rows.0 {
+                    return;
+                }
+                let u = (self.u.floor() as i64).rem_euclid(texture.width as i64) as usize;
+                // Row y's ray is at height z + depth * slope(y) on the wall.
+                let height = self.cam.z + self.depth * self.cam.row_slope(rows.0);
+                let dv = self.depth / self.cam.focal;
+                let tint = self.lighting.tint(light, self.depth);
+                out.textured(self.x, rows, texture.column(u), top - height, dv, tint);
             }
         }
     }

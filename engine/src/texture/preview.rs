@@ -91,8 +91,11 @@ fn contact_sheet() {
     for kind in KINDS {
         for &name in names(kind) {
             let t0 = Instant::now();
-            all.push((kind, name, generate(name, kind).unwrap()));
-            eprintln!("{name:>8} {kind:?}: {:?}", t0.elapsed());
+            let t = generate(name, kind).unwrap();
+            let elapsed = t0.elapsed();
+            let size = format!("{}x{}", t.width, t.height);
+            eprintln!("{:<6} {name:<8} {size:>8} {elapsed:?}", format!("{kind:?}"));
+            all.push((kind, name, t));
         }
     }
     eprintln!("generated {} textures in {:?}", all.len(), start.elapsed());
@@ -127,7 +130,6 @@ fn contact_sheet() {
             (_, "SKY") => (1, 1, t.width / 2),
             (TextureKind::Sprite, _) => (3, 1, 0),
             (_, "DEBUG1") => (16, 2, 0),
-            (_, "THIN") => (4, 2, 0),
             _ => (2, 2, 0),
         };
         let (w, h) = (t.width * zoom * tiles, t.height * zoom * tiles);

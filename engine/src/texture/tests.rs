@@ -1,6 +1,6 @@
 //! Tests of texel addressing and of name resolution against real files.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use super::*;
@@ -295,16 +295,54 @@ fn absurd_sizes_in_the_map_are_errors() {
     }
 }
 
+// PNGs written by ImageMagick 6.9 rather than by the png crate the engine
+// decodes with, including an interlaced one, which that crate's encoder cannot
+// write. Kept here as hex rather than as files because the repository ignores
+// `*.png`.
+//
+// `convert -size 37x23 xc:red -fill '#0000ff' -draw "rectangle 0,0 9,22"
+//   -fill '#00ff00' -draw "rectangle 0,12 36,22" -fill '#ffffff'
+//   -draw "point 36,22" -strip -interlace PNG -define png:color-type=2
+//   PNG24:interlaced_rgb.png`
+const INTERLACED_RGB: &str = concat!(
+    "89504e470d0a1a0a0000000d49484452000000250000001708020000017449216400000072494441",
+    "5448c7ed94510e80200c43dfb8ff9deb878991452759c488d22f082bedba808100610050a861c8ed",
+    "d156dc58bfaef6acd37287420873e65ba9d159e4287f677de9a1e14c005d98173379935ba164b649",
+    "c12fd392731fa2b7a7930ca36c7ffe7d6d4ebd9feae57ff831fa9b7af762012499173b914667d200",
+    "00000049454e44ae426082",
+);
+// `convert -size 4x3 xc:'#ff8000' -fill none -draw "color 0,0 point"
+//   -fill '#102030' -draw "point 3,2" -strip PNG8:palette_trns.png`
+const PALETTE_TRNS: &str = concat!(
+    "89504e470d0a1a0a0000000d4948445200000004000000030803000000832a5ef400000009504c54",
+    "45000000ff8000102030793a45e00000000174524e530040e6d866000000114944415408d7636060",
+    "6464046130c10400005c000dc91f9f280000000049454e44ae426082",
+);
+// `convert -size 2x5 gradient:'#000000-#ffffff' -rotate 90 -strip
+//   -define png:bit-depth=16 -define png:color-type=0 grey16.png`
+const GREY16: &str = concat!(
+    "89504e470d0a1a0a0000000d4948445200000005000000021000000000e59195c200000017494441",
+    "5408d763fcffff00c341c6030c07189818e00000593a05044d25a0220000000049454e44ae426082",
+);
+
+fn unhex(hex: &str) -> Vec<u8> {
+    (0..hex.len())
+        .step_by(2)
+        .map(|i| u8::from_str_radix(&hex[i..i + 2], 16).unwrap())
+        .collect()
+}
+
 #[test]
-fn committed_fixtures_decode() {
-    // Tiny PNGs written by ImageMagick (see fixtures/textures/README.md), so
-    // the decoder also meets files the png crate's own encoder did not write,
-    // including an interlaced one, which that encoder cannot produce.
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/textures");
-    let load = |name: &str| Texture::read_png(&dir.join(name)).unwrap_or_else(|e| panic!("{e}"));
+fn files_from_another_encoder_decode() {
+    // Through the file path, as a map's textures are read.
+    let dir = MapDir::new();
+    let load = |name: &str, hex: &str| {
+        let path = dir.write(&format!("textures/{name}"), &unhex(hex));
+        Texture::read_png(&path).unwrap_or_else(|e| panic!("{e}"))
+    };
     let rgba = |t: &Texture, u, v| t.texel(u, v).to_le_bytes();
 
-    let t = load("interlaced_rgb.png");
+    let t = load("interlaced_rgb.png", INTERLACED_RGB);
     assert_eq!((t.width, t.height), (37, 23));
     assert!(t.opaque);
     for u in 0..37 {
@@ -319,14 +357,14 @@ fn committed_fixtures_decode() {
         }
     }
 
-    let t = load("palette_trns.png");
+    let t = load("palette_trns.png", PALETTE_TRNS);
     assert_eq!((t.width, t.height), (4, 3));
     assert!(!t.opaque);
     assert_eq!(rgba(&t, 0, 0)[3], 0);
     assert_eq!(rgba(&t, 1, 0), [0xff, 0x80, 0x00, 255]);
     assert_eq!(rgba(&t, 3, 2), [0x10, 0x20, 0x30, 255]);
 
-    let t = load("grey16.png");
+    let t = load("grey16.png", GREY16);
     assert_eq!((t.width, t.height), (5, 2));
     let row: Vec<u8> = (0..5).map(|u| rgba(&t, u, 1)[0]).collect();
     assert_eq!(row, [0xff, 0xbf, 0x80, 0x40, 0x00]); // high bytes of the 16-bit samples

@@ -1,5 +1,6 @@
-//! Flats: floor and ceiling textures, seen from above or below, so they tile
-//! in both directions and carry no top-left lighting bias beyond a mild emboss.
+//! Flats: floor and ceiling textures. They are seen from above or below at
+//! every angle, so they tile both ways and keep their emboss light mild: a
+//! strong top-left light would look wrong from the other side of the room.
 
 use super::paint::{add, hex, mix, opaque, rand01, scale, smoothstep, Field, TileNoise};
 use crate::texture::Texture;
@@ -40,7 +41,7 @@ pub fn floor(seed: u32) -> Texture {
             c = scale(c, 0.8);
         }
         c = mix(hex(0x2c2823), c, smoothstep(-0.5, 1.0, edge));
-        opaque(scale(c, height.light(u, v, 0.6, true)))
+        opaque(scale(c, height.light(u, v, 0.6)))
     })
 }
 
@@ -62,7 +63,7 @@ pub fn tile(seed: u32) -> Texture {
             scale([1.0, 0.97, 0.9], 0.06 * smoothstep(14.0, 2.0, x + y)),
         );
         c = mix(hex(0x8c8880), c, smoothstep(-0.2, 0.6, edge));
-        opaque(scale(c, height.light(u, v, 0.5, true)))
+        opaque(scale(c, height.light(u, v, 0.5)))
     })
 }
 
@@ -152,7 +153,7 @@ pub fn ceil(seed: u32) -> Texture {
         let lit = if f < 9.0 {
             1.0
         } else {
-            height.light(u, v, 0.6, true)
+            height.light(u, v, 0.6)
         };
         opaque(scale(c, lit))
     })
@@ -215,6 +216,6 @@ pub fn dirt(seed: u32) -> Texture {
         } else {
             c = scale(c, 0.8 + 0.2 * smoothstep(1.0, 1.6, d)); // the hollow it sits in
         }
-        opaque(scale(c, height.light(u, v, 0.8, true)))
+        opaque(scale(c, height.light(u, v, 0.8)))
     })
 }

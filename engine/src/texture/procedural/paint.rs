@@ -92,9 +92,9 @@ pub fn value_noise(seed: u32, x: f32, y: f32, px: i32, py: i32) -> f32 {
     top + (bottom - top) * sy
 }
 
-/// `x.floor() as i32` without the libm call `f32::floor` becomes on baseline
-/// x86-64 (no SSE4.1 `roundss`); for the coordinates used here, well inside
-/// the i32 range.
+/// `x.floor() as i32` without the libm call that `f32::floor` compiles to on
+/// baseline x86-64 (no SSE4.1 `roundss`). Noise coordinates here are small,
+/// well inside the i32 range.
 fn floor(x: f32) -> i32 {
     let i = x as i32;
     if (i as f32) > x {
@@ -104,8 +104,8 @@ fn floor(x: f32) -> i32 {
     }
 }
 
-/// `i` reduced into `0..p`. Texture coordinates are nearly always in range
-/// already; skipping the division there made the sky 3x faster.
+/// `i` reduced into `0..p`. Noise coordinates are nearly always in range
+/// already, and this runs per octave per texel: skip the integer division.
 fn wrap(i: i32, p: i32) -> i32 {
     if (0..p).contains(&i) {
         i
@@ -135,10 +135,11 @@ pub fn fbm(seed: u32, x: f32, y: f32, px: i32, py: i32, octaves: u32) -> f32 {
     sum / total
 }
 
-/// Tileable fBm over a `w` x `h` texture with `cx` by `cy` lattice cells at
-/// the coarsest octave: the same values as [`fbm`], but each octave's lattice
-/// is hashed once into a table. Hashing four corners per octave per texel
-/// made the sky alone take 20 ms; table lookups take a fraction of that.
+/// Tileable fBm over a texture of `size` texels with `cells` lattice cells
+/// across and down at the coarsest octave: the same values as [`fbm`], but
+/// each octave's lattice is hashed once into a table. Hashing four corners per
+/// octave per texel instead took all procedural textures 31 ms rather than
+/// 20 ms (release, fastest of 5 runs, 2-core dev VM).
 pub struct TileNoise {
     /// Texels to lattice cells of the coarsest octave.
     scale: (f32, f32),
@@ -209,7 +210,7 @@ impl Lattice {
     }
 }
 
-/// A per-texel scalar field, column-major like [`super::super::Texture`].
+/// A per-texel scalar field, column-major like [`Texture`](crate::texture::Texture).
 pub struct Field {
     pub w: usize,
     pub h: usize,
@@ -231,23 +232,20 @@ impl Field {
         self.data[u * self.h + v]
     }
 
-    /// The value at any coordinates, wrapped (tiling textures) or clamped
-    /// (sprites, whose outside is empty).
-    pub fn sample(&self, u: i64, v: i64, wrap: bool) -> f32 {
-        let (u, v) = if wrap {
-            (u.rem_euclid(self.w as i64), v.rem_euclid(self.h as i64))
-        } else {
-            (u.clamp(0, self.w as i64 - 1), v.clamp(0, self.h as i64 - 1))
-        };
-        self.data[u as usize * self.h + v as usize]
+    /// The value at any coordinates, wrapped: the fields belong to tiling
+    /// textures.
+    pub fn wrapped(&self, u: i64, v: i64) -> f32 {
+        let u = u.rem_euclid(self.w as i64) as usize;
+        let v = v.rem_euclid(self.h as i64) as usize;
+        self.data[u * self.h + v]
     }
 
     /// Emboss lighting of this field read as a height map, light from the top
     /// left (as Doom's artists painted it): a slope rising towards the bottom
     /// right faces the light. Returns a brightness factor around 1.
-    pub fn light(&self, u: usize, v: usize, strength: f32, wrap: bool) -> f32 {
+    pub fn light(&self, u: usize, v: usize, strength: f32) -> f32 {
         let (u, v) = (u as i64, v as i64);
-        let rise = self.sample(u + 1, v + 1, wrap) - self.sample(u - 1, v - 1, wrap);
+        let rise = self.wrapped(u + 1, v + 1) - self.wrapped(u - 1, v - 1);
         (1.0 + strength * rise).max(0.2)
     }
 }

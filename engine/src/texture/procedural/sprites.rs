@@ -81,7 +81,7 @@ pub fn lamp(_seed: u32) -> Texture {
     let (w, h) = (24, 64);
     let brass = hex(0xb08d3c);
     let base: Shape = Box::new(move |x, y| {
-        let half = 8.0 - (y - 58.0).max(0.0) * -0.4;
+        let half = 8.0 + 0.4 * (y - 58.0); // widening to the floor
         (y >= 58.0 && (x - 12.0).abs() < half)
             .then(|| scale(brass, cylinder(x, 12.0, half) * (0.8 + 0.05 * (y - 58.0))))
     });

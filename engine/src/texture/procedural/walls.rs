@@ -48,7 +48,7 @@ pub fn brick(seed: u32) -> Texture {
         let mortar = scale(hex(0x8a8276), 0.75 + 0.4 * grain.at(uf * 2.0, vf));
         let albedo = mix(mortar, brick, smoothstep(0.05, 0.35, hgt));
         let dirt = 0.8 + 0.3 * grime.at(uf, vf);
-        opaque(scale(albedo, height.light(u, v, 0.9, true) * dirt))
+        opaque(scale(albedo, height.light(u, v, 0.9) * dirt))
     })
 }
 
@@ -137,7 +137,7 @@ pub fn stone(seed: u32) -> Texture {
             0.35 * smoothstep(0.55, 0.8, stain.at(uf, vf)),
         );
         let albedo = mix(hex(0x2e2c29), face, smoothstep(0.3, 1.4, d));
-        opaque(scale(albedo, height.light(u, v, 0.7, true)))
+        opaque(scale(albedo, height.light(u, v, 0.7)))
     })
 }
 
@@ -200,7 +200,7 @@ pub fn wood(seed: u32) -> Texture {
         if hgt > 1.05 {
             c = mix(hex(0x3a3a3c), hex(0x9a9a9c), (hgt - 1.05) * 1.5); // nail heads
         }
-        opaque(scale(c, height.light(u, v, 0.6, true)))
+        opaque(scale(c, height.light(u, v, 0.6)))
     })
 }
 
@@ -251,7 +251,7 @@ pub fn metal(seed: u32) -> Texture {
         if rivet(x, y) < 1.9 {
             c = hex(0x848c94);
         }
-        opaque(scale(c, height.light(u, v, 1.1, true)))
+        opaque(scale(c, height.light(u, v, 1.1)))
     })
 }
 
@@ -335,7 +335,7 @@ pub fn door(seed: u32) -> Texture {
         } else {
             c
         };
-        opaque(scale(c, height.light(u, v, 0.8, true)))
+        opaque(scale(c, height.light(u, v, 0.8)))
     })
 }
 
@@ -380,6 +380,6 @@ pub fn support(seed: u32) -> Texture {
         } else {
             base
         };
-        opaque(scale(c, height.light(u, v, 0.9, true)))
+        opaque(scale(c, height.light(u, v, 0.9)))
     })
 }
