@@ -52,34 +52,15 @@ fn tr_plus(vertices: &str, line: &str) -> String {
 
 fn tr_plus_lines(vertices: &str, lines: &[impl AsRef<str>]) -> String {
     let text = tr("(256.0, 0.0),\n", &format!("(256.0, 0.0), {vertices}\n"));
-    let lines: String = lines
-        .iter()
-        .map(|l| format!("        {},\n", l.as_ref()))
-        .collect();
-    edit(
-        &text,
-        "    ],\n    things",
-        &format!("{lines}    ],\n    things"),
-    )
+    let lines: String = lines.iter().map(|l| format!("        {},\n", l.as_ref())).collect();
+    edit(&text, "    ],\n    things", &format!("{lines}    ],\n    things"))
 }
 
 /// A square loop of lines through vertices 6, 7, 8, 9, clockwise when
 /// `clockwise`, each with the given sides.
 fn square_loop(clockwise: bool, sides: &str) -> Vec<String> {
-    let order = if clockwise {
-        [6, 7, 8, 9]
-    } else {
-        [6, 9, 8, 7]
-    };
-    (0..4)
-        .map(|k| {
-            format!(
-                "Line(from: {}, to: {}, {sides})",
-                order[k],
-                order[(k + 1) % 4]
-            )
-        })
-        .collect()
+    let order = if clockwise { [6, 7, 8, 9] } else { [6, 9, 8, 7] };
+    (0..4).map(|k| format!("Line(from: {}, to: {}, {sides})", order[k], order[(k + 1) % 4])).collect()
 }
 
 /// The problems of a one-sided square loop (lines 7 to 10) inside sector 0
@@ -88,18 +69,8 @@ fn square_mismatches(front: usize, found: &[usize]) -> Vec<Problem> {
     (7..=10)
         .flat_map(|line| {
             [
-                Problem::SideMismatch {
-                    line,
-                    side: "front",
-                    expected: Some(front),
-                    found: found.to_vec(),
-                },
-                Problem::SideMismatch {
-                    line,
-                    side: "back",
-                    expected: None,
-                    found: vec![0],
-                },
+                Problem::SideMismatch { line, side: "front", expected: Some(front), found: found.to_vec() },
+                Problem::SideMismatch { line, side: "back", expected: None, found: vec![0] },
             ]
         })
         .collect()
@@ -110,8 +81,7 @@ const SQUARE: &str = "(96.0, 96.0), (96.0, 160.0), (160.0, 160.0), (160.0, 96.0)
 
 /// A source map with every line reversed: each sector ends up on the left.
 fn reversed(text: &str) -> String {
-    let mut src: MapSource =
-        sightline::map::load::parse_source(text.as_bytes(), "fixture").expect("fixture parses");
+    let mut src: MapSource = sightline::map::load::parse_source(text.as_bytes(), "fixture").expect("fixture parses");
     for l in &mut src.lines {
         std::mem::swap(&mut l.from, &mut l.to);
     }
@@ -131,9 +101,7 @@ fn position_of(text: &str, marker: &str) -> (usize, usize) {
 
 /// A directory under the target dir for files the tests write.
 fn scratch(sub: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join("bad_input")
-        .join(sub);
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("bad_input").join(sub);
     std::fs::create_dir_all(&dir).expect("scratch dir");
     dir
 }
@@ -178,19 +146,10 @@ struct Case {
 }
 
 fn case(name: &'static str, text: impl Into<Vec<u8>>, want: Want) -> Case {
-    Case {
-        name,
-        bytes: text.into(),
-        want,
-    }
+    Case { name, bytes: text.into(), want }
 }
 
-fn invalid(
-    name: &'static str,
-    text: String,
-    problems: Vec<Problem>,
-    mentions: &'static [&'static str],
-) -> Case {
+fn invalid(name: &'static str, text: String, problems: Vec<Problem>, mentions: &'static [&'static str]) -> Case {
     case(name, text, Want::Invalid { problems, mentions })
 }
 
@@ -224,29 +183,16 @@ fn check(case: &Case) -> Result<(), String> {
     };
     let message = loaded.to_string();
     let mut also = vec![
-        (
-            "open_level",
-            open_level(&path, &options).err().map(|e| e.to_string()),
-        ),
-        (
-            "level_from_bytes",
-            level_from_bytes(&case.bytes, &label, &options)
-                .err()
-                .map(|e| e.to_string()),
-        ),
+        ("open_level", open_level(&path, &options).err().map(|e| e.to_string())),
+        ("level_from_bytes", level_from_bytes(&case.bytes, &label, &options).err().map(|e| e.to_string())),
     ];
     if let Ok(text) = std::str::from_utf8(&case.bytes) {
-        also.push((
-            "parse_map",
-            parse_map(text, &label).err().map(|e| e.to_string()),
-        ));
+        also.push(("parse_map", parse_map(text, &label).err().map(|e| e.to_string())));
     }
     for (door, other) in also {
         match other {
             None => return Err(format!("{door} accepted it")),
-            Some(m) if m != message => {
-                return Err(format!("{door} says `{m}` but load_map says `{message}`"))
-            }
+            Some(m) if m != message => return Err(format!("{door} says `{m}` but load_map says `{message}`")),
             Some(_) => {}
         }
     }
@@ -255,21 +201,11 @@ fn check(case: &Case) -> Result<(), String> {
     }
 
     match (&case.want, &loaded) {
-        (
-            Want::Syntax { at, says },
-            MapError::Syntax {
-                line,
-                col,
-                message: m,
-                ..
-            },
-        ) => {
+        (Want::Syntax { at, says }, MapError::Syntax { line, col, message: m, .. }) => {
             let text = std::str::from_utf8(&case.bytes).expect("syntax cases are text");
             let (want_line, want_col) = position_of(text, at);
             if *line != want_line || col.abs_diff(want_col) > 1 {
-                return Err(format!(
-                    "reported at {line}:{col}, but `{at}` is at {want_line}:{want_col}: {message}"
-                ));
+                return Err(format!("reported at {line}:{col}, but `{at}` is at {want_line}:{want_col}: {message}"));
             }
             if !m.contains(says) {
                 return Err(format!("message lacks `{says}`: {message}"));
@@ -278,18 +214,11 @@ fn check(case: &Case) -> Result<(), String> {
                 return Err(format!("message is not FILE:LINE:COL: {message}"));
             }
         }
-        (
-            Want::SyntaxAtEnd { says },
-            MapError::Syntax {
-                line, message: m, ..
-            },
-        ) => {
+        (Want::SyntaxAtEnd { says }, MapError::Syntax { line, message: m, .. }) => {
             let text = std::str::from_utf8(&case.bytes).expect("syntax cases are text");
             let last = text.trim_end().lines().count();
             if *line != last || !m.contains(says) {
-                return Err(format!(
-                    "expected `{says}` on the last line, {last}: {message}"
-                ));
+                return Err(format!("expected `{says}` on the last line, {last}: {message}"));
             }
         }
         (Want::Empty, MapError::Empty { .. }) => {
@@ -299,9 +228,7 @@ fn check(case: &Case) -> Result<(), String> {
         }
         (Want::Binary { offset }, MapError::Binary { offset: got, .. }) => {
             if got != offset {
-                return Err(format!(
-                    "binary at byte {got}, expected {offset}: {message}"
-                ));
+                return Err(format!("binary at byte {got}, expected {offset}: {message}"));
             }
             if !message.contains(&format!("byte {offset}")) {
                 return Err(format!("message does not name byte {offset}: {message}"));
@@ -322,17 +249,9 @@ fn check(case: &Case) -> Result<(), String> {
 
 /// Checks every row and reports all failures at once.
 fn check_all(cases: &[Case]) {
-    let failures: Vec<String> = cases
-        .iter()
-        .filter_map(|c| check(c).err().map(|e| format!("{}: {e}", c.name)))
-        .collect();
-    assert!(
-        failures.is_empty(),
-        "{} of {} cases failed:\n{}",
-        failures.len(),
-        cases.len(),
-        failures.join("\n")
-    );
+    let failures: Vec<String> =
+        cases.iter().filter_map(|c| check(c).err().map(|e| format!("{}: {e}", c.name))).collect();
+    assert!(failures.is_empty(), "{} of {} cases failed:\n{}", failures.len(), cases.len(), failures.join("\n"));
 }
 
 // ---------------------------------------------------------------------------
@@ -342,12 +261,7 @@ fn check_all(cases: &[Case]) {
 fn malformed_ron_is_a_syntax_error_at_the_right_line_and_column() {
     let missing_comma = tr("(0.0, 256.0), (256.0", "(0.0, 256.0) (256.0");
     check_all(&[
-        syntax(
-            "missing comma between vertices",
-            missing_comma.clone(),
-            "(256.0, 256.0)",
-            "comma",
-        ),
+        syntax("missing comma between vertices", missing_comma.clone(), "(256.0, 256.0)", "comma"),
         syntax(
             "missing comma between sector fields",
             tr("light: 192)", "light: 192 ceiling_texture: \"X\")"),
@@ -362,25 +276,12 @@ fn malformed_ron_is_a_syntax_error_at_the_right_line_and_column() {
         ),
         syntax(
             "extra closing paren",
-            tr(
-                "Side(sector: 1)),\n        Line(from: 3",
-                "Side(sector: 1))),\n        Line(from: 3",
-            ),
+            tr("Side(sector: 1)),\n        Line(from: 3", "Side(sector: 1))),\n        Line(from: 3"),
             "),\n        Line(from: 3",
             "comma",
         ),
-        syntax(
-            "string for an integer",
-            tr("light: 160,", "light:\"bright\","),
-            "\"bright\"",
-            "integer",
-        ),
-        syntax(
-            "string for a float",
-            tr("(512.0, 0.0)", "(\"east\", 0.0)"),
-            "\"east\"",
-            "float",
-        ),
+        syntax("string for an integer", tr("light: 160,", "light:\"bright\","), "\"bright\"", "integer"),
+        syntax("string for a float", tr("(512.0, 0.0)", "(\"east\", 0.0)"), "\"east\"", "float"),
         syntax(
             "float for an index",
             tr("from: 3, to: 4", "from: 3.5, to: 4"),
@@ -394,24 +295,9 @@ fn malformed_ron_is_a_syntax_error_at_the_right_line_and_column() {
             "99999999999999999999999",
             "out of bounds",
         ),
-        syntax(
-            "misspelt struct name",
-            tr("Sector(floor: 24.0", "Sectr(floor: 24.0"),
-            "Sectr",
-            "Sector",
-        ),
-        syntax(
-            "missing required field",
-            tr("light: 160, ", ""),
-            "),\n    ],\n    lines",
-            "light",
-        ),
-        syntax(
-            "`nan` is not a RON float (`NaN` is)",
-            tr("(512.0, 0.0)", "(nan, 0.0)"),
-            "nan",
-            "float",
-        ),
+        syntax("misspelt struct name", tr("Sector(floor: 24.0", "Sectr(floor: 24.0"), "Sectr", "Sector"),
+        syntax("missing required field", tr("light: 160, ", ""), "),\n    ],\n    lines", "light"),
+        syntax("`nan` is not a RON float (`NaN` is)", tr("(512.0, 0.0)", "(nan, 0.0)"), "nan", "float"),
         syntax(
             "trailing garbage",
             format!("{}extra stuff\n", two_rooms()),
@@ -419,36 +305,16 @@ fn malformed_ron_is_a_syntax_error_at_the_right_line_and_column() {
             ")\nextra stuff",
             "trailing",
         ),
-        syntax(
-            "wrong top-level value",
-            "[1, 2, 3]\n".to_string(),
-            "[1, 2, 3]",
-            "Map",
-        ),
-        syntax(
-            "unknown sector field",
-            tr("light: 160,", "light: 160, brightness: 3,"),
-            "brightness",
-            "brightness",
-        ),
+        syntax("wrong top-level value", "[1, 2, 3]\n".to_string(), "[1, 2, 3]", "Map"),
+        syntax("unknown sector field", tr("light: 160,", "light: 160, brightness: 3,"), "brightness", "brightness"),
         syntax(
             "misspelt optional field",
             tr("ceiling_texture: \"SKY\"", "ceiling_textur: \"SKY\""),
             "ceiling_textur",
             "ceiling_textur",
         ),
-        syntax(
-            "misspelt back side",
-            tr("back: Some(Side(sector: 0))", "bakc: Some(Side(sector: 0))"),
-            "bakc",
-            "bakc",
-        ),
-        syntax(
-            "CRLF line endings",
-            missing_comma.replace('\n', "\r\n"),
-            "(256.0, 256.0)",
-            "comma",
-        ),
+        syntax("misspelt back side", tr("back: Some(Side(sector: 0))", "bakc: Some(Side(sector: 0))"), "bakc", "bakc"),
+        syntax("CRLF line endings", missing_comma.replace('\n', "\r\n"), "(256.0, 256.0)", "comma"),
         syntax(
             "tab before the error counts as one column",
             edit(&missing_comma, "        (0.0, 0.0)", "\t(0.0, 0.0)"),
@@ -468,21 +334,13 @@ fn malformed_ron_is_a_syntax_error_at_the_right_line_and_column() {
 fn truncated_ron_is_a_syntax_error_at_its_end() {
     let text = two_rooms();
     check_all(&[
-        case(
-            "two_rooms cut in half",
-            &text[..text.len() / 2],
-            Want::SyntaxAtEnd { says: "end" },
-        ),
+        case("two_rooms cut in half", &text[..text.len() / 2], Want::SyntaxAtEnd { says: "end" }),
         case(
             "two_rooms cut before its last paren",
             text.trim_end().trim_end_matches(')'),
             Want::SyntaxAtEnd { says: "" },
         ),
-        case(
-            "comment only",
-            "// nothing here\n",
-            Want::SyntaxAtEnd { says: "Map" },
-        ),
+        case("comment only", "// nothing here\n", Want::SyntaxAtEnd { says: "Map" }),
     ]);
 }
 
@@ -526,22 +384,10 @@ fn binary_files_are_binary() {
     latin1[latin1_at] = 0xe4;
     check_all(&[
         case("random bytes", random, Want::Binary { offset: first_nul }),
-        case(
-            "a NUL inside a map",
-            map_with_nul,
-            Want::Binary { offset: 200 },
-        ),
+        case("a NUL inside a map", map_with_nul, Want::Binary { offset: 200 }),
         case("latin-1 text", latin1, Want::Binary { offset: latin1_at }),
-        case(
-            "a PNG",
-            b"\x89PNG\r\n\x1a\n\0\0\0\rIHDR".to_vec(),
-            Want::Binary { offset: 8 },
-        ),
-        case(
-            "invalid UTF-8 without NULs",
-            b"Map(name: \"\xff\xfe\")".to_vec(),
-            Want::Binary { offset: 11 },
-        ),
+        case("a PNG", b"\x89PNG\r\n\x1a\n\0\0\0\rIHDR".to_vec(), Want::Binary { offset: 8 }),
+        case("invalid UTF-8 without NULs", b"Map(name: \"\xff\xfe\")".to_vec(), Want::Binary { offset: 11 }),
     ]);
 }
 
@@ -623,11 +469,7 @@ fn bad_numbers_name_the_vertex_or_sector() {
         invalid(
             name,
             tr("(512.0, 0.0)", &format!("({x}, 0.0)")),
-            vec![Problem::BadVertex {
-                vertex: 4,
-                x: value,
-                y: 0.0,
-            }],
+            vec![Problem::BadVertex { vertex: 4, x: value, y: 0.0 }],
             &["vertex 4", "not a finite coordinate"],
         )
     };
@@ -640,63 +482,35 @@ fn bad_numbers_name_the_vertex_or_sector() {
         invalid(
             "floor NaN",
             tr("floor: 24.0", "floor: NaN"),
-            vec![Problem::BadHeight {
-                sector: 1,
-                which: "floor",
-                value: f64::NAN,
-            }],
+            vec![Problem::BadHeight { sector: 1, which: "floor", value: f64::NAN }],
             &["sector 1", "floor height NaN"],
         ),
         invalid(
             "ceiling inf",
             tr("ceiling: 128.0, light: 192", "ceiling: inf, light: 192"),
-            vec![Problem::BadHeight {
-                sector: 0,
-                which: "ceiling",
-                value: f64::INFINITY,
-            }],
+            vec![Problem::BadHeight { sector: 0, which: "ceiling", value: f64::INFINITY }],
             &["sector 0", "ceiling height inf"],
         ),
         invalid(
             "floor above ceiling",
             tr("floor: 24.0", "floor: 200.0"),
-            vec![Problem::FloorAboveCeiling {
-                sector: 1,
-                floor: 200.0,
-                ceiling: 128.0,
-            }],
+            vec![Problem::FloorAboveCeiling { sector: 1, floor: 200.0, ceiling: 128.0 }],
             &["sector 1", "floor 200.0 is above ceiling 128.0"],
         ),
         invalid(
             "light 256",
             tr("light: 160", "light: 256"),
-            vec![Problem::BadLight {
-                sector: 1,
-                light: 256,
-            }],
+            vec![Problem::BadLight { sector: 1, light: 256 }],
             &["sector 1", "light 256", "0..=255"],
         ),
         invalid(
             "light -1",
             tr("light: 192", "light: -1"),
-            vec![Problem::BadLight {
-                sector: 0,
-                light: -1,
-            }],
+            vec![Problem::BadLight { sector: 0, light: -1 }],
             &["sector 0", "light -1"],
         ),
-        invalid(
-            "thing at NaN",
-            tr("x: 64.0", "x: NaN"),
-            vec![Problem::BadThing { thing: 0 }],
-            &["thing 0"],
-        ),
-        invalid(
-            "thing angle inf",
-            tr("angle: 0.0", "angle: inf"),
-            vec![Problem::BadThing { thing: 0 }],
-            &["thing 0"],
-        ),
+        invalid("thing at NaN", tr("x: 64.0", "x: NaN"), vec![Problem::BadThing { thing: 0 }], &["thing 0"]),
+        invalid("thing angle inf", tr("angle: 0.0", "angle: inf"), vec![Problem::BadThing { thing: 0 }], &["thing 0"]),
     ]);
 }
 
@@ -711,71 +525,37 @@ fn bad_geometry_names_the_lines_and_vertices() {
         ),
         invalid(
             "two vertices at one position",
-            tr_plus(
-                "(0.0, 0.0),",
-                "Line(from: 6, to: 2, front: Side(sector: 0))",
-            ),
-            vec![Problem::SharedPosition {
-                vertex: 6,
-                first: 0,
-            }],
+            tr_plus("(0.0, 0.0),", "Line(from: 6, to: 2, front: Side(sector: 0))"),
+            vec![Problem::SharedPosition { vertex: 6, first: 0 }],
             &["vertex 6", "vertex 0"],
         ),
         invalid(
             "minus zero is the same position as zero",
-            tr_plus(
-                "(-0.0, -0.0),",
-                "Line(from: 6, to: 2, front: Side(sector: 0))",
-            ),
-            vec![Problem::SharedPosition {
-                vertex: 6,
-                first: 0,
-            }],
+            tr_plus("(-0.0, -0.0),", "Line(from: 6, to: 2, front: Side(sector: 0))"),
+            vec![Problem::SharedPosition { vertex: 6, first: 0 }],
             &["vertex 6", "vertex 0"],
         ),
         invalid(
             "sector left open",
-            tr(
-                "        Line(from: 3, to: 4, front: Side(sector: 1)),\n",
-                "",
-            ),
-            vec![Problem::Unclosed {
-                sector: 1,
-                vertex: 3,
-                into: 1,
-                out_of: 0,
-            }],
+            tr("        Line(from: 3, to: 4, front: Side(sector: 1)),\n", ""),
+            vec![Problem::Unclosed { sector: 1, vertex: 3, into: 1, out_of: 0 }],
             &["sector 1", "vertex 3", "do not close"],
         ),
         invalid(
             "diagonal crossing the doorway",
             tr_plus("", "Line(from: 0, to: 3, front: Side(sector: 0))"),
-            vec![Problem::Crossing {
-                line: 6,
-                other: 7,
-                at: glam::DVec2::new(256.0, 128.0),
-            }],
+            vec![Problem::Crossing { line: 6, other: 7, at: glam::DVec2::new(256.0, 128.0) }],
             &["line 6", "crosses line 7", "(256.0, 128.0)"],
         ),
         invalid(
             "T-junction",
-            tr_plus(
-                "(128.0, 0.0),",
-                "Line(from: 6, to: 1, front: Side(sector: 0))",
-            ),
-            vec![Problem::Touching {
-                line: 5,
-                other: 7,
-                at: glam::DVec2::new(128.0, 0.0),
-            }],
+            tr_plus("(128.0, 0.0),", "Line(from: 6, to: 1, front: Side(sector: 0))"),
+            vec![Problem::Touching { line: 5, other: 7, at: glam::DVec2::new(128.0, 0.0) }],
             &["line 5", "line 7", "(128.0, 0.0)", "split the line"],
         ),
         invalid(
             "collinear overlap",
-            tr_plus(
-                "(128.0, 0.0),",
-                "Line(from: 0, to: 6, front: Side(sector: 0))",
-            ),
+            tr_plus("(128.0, 0.0),", "Line(from: 0, to: 6, front: Side(sector: 0))"),
             vec![Problem::Overlap { line: 5, other: 7 }],
             &["line 5", "overlaps line 7"],
         ),
@@ -800,10 +580,7 @@ fn bad_geometry_names_the_lines_and_vertices() {
         invalid(
             "inside-out two rooms",
             reversed(&two_rooms()),
-            vec![
-                Problem::InsideOut { sector: 0 },
-                Problem::InsideOut { sector: 1 },
-            ],
+            vec![Problem::InsideOut { sector: 0 }, Problem::InsideOut { sector: 1 }],
             &["2 problems", "sector 0", "sector 1", "face away"],
         ),
         invalid(
@@ -814,8 +591,10 @@ fn bad_geometry_names_the_lines_and_vertices() {
                 "        Sector(floor: 0.0, ceiling: 64.0, light: 0),\n    ],\n    lines",
             ),
             square_mismatches(2, &[0, 2]),
-            &["line 7: just off its front side lies sectors [0, 2] at once, but the line says sector 2",
-              "line 7: just off its back side lies sector 0, but the line says nothing"],
+            &[
+                "line 7: just off its front side lies sectors [0, 2] at once, but the line says sector 2",
+                "line 7: just off its back side lies sector 0, but the line says nothing",
+            ],
         ),
         invalid(
             "pillar wound the wrong way",
@@ -825,10 +604,7 @@ fn bad_geometry_names_the_lines_and_vertices() {
         ),
         invalid(
             "a sector no line uses",
-            tr(
-                "    ],\n    lines",
-                "        Sector(floor: 0.0, ceiling: 64.0, light: 0),\n    ],\n    lines",
-            ),
+            tr("    ],\n    lines", "        Sector(floor: 0.0, ceiling: 64.0, light: 0),\n    ],\n    lines"),
             vec![Problem::NoLines { sector: 2 }],
             &["sector 2", "no line side"],
         ),
@@ -839,12 +615,7 @@ fn bad_geometry_names_the_lines_and_vertices() {
 fn player_start_problems_name_the_thing() {
     let start = "Thing(kind: \"player_start\", x: 64.0, y: 128.0, angle: 0.0),";
     check_all(&[
-        invalid(
-            "no things",
-            tr(start, ""),
-            vec![Problem::NoPlayerStart],
-            &["no thing of kind \"player_start\""],
-        ),
+        invalid("no things", tr(start, ""), vec![Problem::NoPlayerStart], &["no thing of kind \"player_start\""]),
         invalid(
             "no things field",
             tr(&format!("    things: [\n        {start}\n    ],\n"), ""),
@@ -860,21 +631,13 @@ fn player_start_problems_name_the_thing() {
         invalid(
             "start outside the map",
             tr("x: 64.0", "x: 1000.0"),
-            vec![Problem::StartOutside {
-                thing: 0,
-                x: 1000.0,
-                y: 128.0,
-            }],
+            vec![Problem::StartOutside { thing: 0, x: 1000.0, y: 128.0 }],
             &["thing 0", "(1000.0, 128.0)", "not inside any sector"],
         ),
         invalid(
             "start exactly on a line",
             tr("x: 64.0", "x: 256.0"),
-            vec![Problem::StartOutside {
-                thing: 0,
-                x: 256.0,
-                y: 128.0,
-            }],
+            vec![Problem::StartOutside { thing: 0, x: 256.0, y: 128.0 }],
             &["thing 0", "(256.0, 128.0)"],
         ),
         invalid(
@@ -884,11 +647,7 @@ fn player_start_problems_name_the_thing() {
                 "Thing(kind: \"lamp\", x: 64.0, y: 64.0),\n        \
                  Thing(kind: \"player_start\", x: -5.0, y: 128.0),",
             ),
-            vec![Problem::StartOutside {
-                thing: 1,
-                x: -5.0,
-                y: 128.0,
-            }],
+            vec![Problem::StartOutside { thing: 1, x: -5.0, y: 128.0 }],
             &["thing 1", "(-5.0, 128.0)"],
         ),
     ]);
@@ -901,10 +660,7 @@ fn the_edit_helpers_make_valid_maps_too() {
     let pillar = tr_plus_lines(SQUARE, &square_loop(false, "front: Side(sector: 0)"));
     parse_map(&pillar, "pillar.ron").unwrap_or_else(|e| panic!("{e}"));
     let nested = edit(
-        &tr_plus_lines(
-            SQUARE,
-            &square_loop(true, "front: Side(sector: 2), back: Some(Side(sector: 0))"),
-        ),
+        &tr_plus_lines(SQUARE, &square_loop(true, "front: Side(sector: 2), back: Some(Side(sector: 0))")),
         "    ],\n    lines",
         "        Sector(floor: 8.0, ceiling: 64.0, light: 0),\n    ],\n    lines",
     );
@@ -914,9 +670,7 @@ fn the_edit_helpers_make_valid_maps_too() {
 /// Many problems are listed with a count, the first twelve shown.
 #[test]
 fn many_problems_are_counted_and_capped() {
-    let lights: String = (0..20)
-        .map(|_| "        Sector(floor: 0.0, ceiling: 64.0, light: 300),\n")
-        .collect();
+    let lights: String = (0..20).map(|_| "        Sector(floor: 0.0, ceiling: 64.0, light: 300),\n").collect();
     let text = tr("    ],\n    lines", &format!("{lights}    ],\n    lines"));
     let err = parse_map(&text, "many.ron").expect_err("20 bad lights");
     assert_eq!(err.problems().len(), 20, "{err}");
@@ -924,10 +678,7 @@ fn many_problems_are_counted_and_capped() {
     assert!(message.starts_with("many.ron: 20 problems:"), "{message}");
     assert!(message.contains("sector 2: light 300"), "{message}");
     assert!(message.contains("... and 8 more"), "{message}");
-    assert!(
-        !message.contains("sector 14:"),
-        "only twelve are shown: {message}"
-    );
+    assert!(!message.contains("sector 14:"), "only twelve are shown: {message}");
 }
 
 /// A missing file and a directory are I/O errors naming the path.
@@ -940,16 +691,9 @@ fn unreadable_paths_are_io_errors() {
         let label = path.display().to_string();
         let err = load_map(&path).expect_err("unreadable");
         assert!(matches!(err, MapError::Io { .. }), "{err:?}");
-        assert!(
-            err.to_string()
-                .starts_with(&format!("{label}: cannot read")),
-            "{err}"
-        );
+        assert!(err.to_string().starts_with(&format!("{label}: cannot read")), "{err}");
         let err = open_level(&path, &BuildOptions::default()).expect_err("unreadable");
-        assert!(
-            matches!(err, LevelError::Map(MapError::Io { .. })),
-            "{err:?}"
-        );
+        assert!(matches!(err, LevelError::Map(MapError::Io { .. })), "{err:?}");
         assert!(err.to_string().contains(&label), "{err}");
     }
 }
@@ -971,8 +715,7 @@ fn from_bytes(bytes: &[u8], label: &str) -> Result<CompiledMap, LevelError> {
 /// A loaded map, however odd, must render through both renderers.
 fn render_both(level: &CompiledMap) {
     let view = View::at_start(&level.map).expect("a loaded map has a valid start");
-    let level = sightline::level::Level::with_builtin_textures(level.clone())
-        .unwrap_or_else(|e| panic!("{e}"));
+    let level = sightline::level::Level::with_builtin_textures(level.clone()).unwrap_or_else(|e| panic!("{e}"));
     for r in Renderer::ALL {
         render(&level, &view, (32, 20), r, Shade::Ids);
     }
@@ -984,10 +727,7 @@ fn compiled_map_round_trips() {
     for name in ["two_rooms.ron", "room.ron", "pillars.ron"] {
         let (c, bytes) = compiled(name);
         let back = from_bytes(&bytes, name).unwrap_or_else(|e| panic!("{e}"));
-        assert!(
-            back == c,
-            "{name}: the loaded map differs from the compiled one"
-        );
+        assert!(back == c, "{name}: the loaded map differs from the compiled one");
     }
 }
 
@@ -997,34 +737,11 @@ fn compiled_headers_and_versions_are_refused() {
     let magic = file::MAGIC;
     let with_version = |v: u8| [magic, &[v], &good[magic.len() + 1..]].concat();
     let rows: Vec<(&str, Vec<u8>, String)> = vec![
-        (
-            "only the magic",
-            magic.to_vec(),
-            "truncated after the header".into(),
-        ),
-        (
-            "magic and version",
-            [magic, &[file::VERSION]].concat(),
-            "truncated".into(),
-        ),
-        (
-            "version 0",
-            with_version(0),
-            format!(
-                "format version 0, this build reads version {}",
-                file::VERSION
-            ),
-        ),
-        (
-            "the previous version",
-            with_version(file::VERSION - 1),
-            format!("format version {}", file::VERSION - 1),
-        ),
-        (
-            "the next version",
-            with_version(file::VERSION + 1),
-            format!("format version {}", file::VERSION + 1),
-        ),
+        ("only the magic", magic.to_vec(), "truncated after the header".into()),
+        ("magic and version", [magic, &[file::VERSION]].concat(), "truncated".into()),
+        ("version 0", with_version(0), format!("format version 0, this build reads version {}", file::VERSION)),
+        ("the previous version", with_version(file::VERSION - 1), format!("format version {}", file::VERSION - 1)),
+        ("the next version", with_version(file::VERSION + 1), format!("format version {}", file::VERSION + 1)),
         ("version 255", with_version(255), "recompile the map".into()),
         (
             "garbage after the header",
@@ -1085,10 +802,7 @@ fn flipped_bytes_in_a_compiled_map_never_panic() {
                 }
                 Ok(level) => {
                     loaded += 1;
-                    assert!(
-                        pos > file::MAGIC.len(),
-                        "a damaged header loaded: byte {pos}"
-                    );
+                    assert!(pos > file::MAGIC.len(), "a damaged header loaded: byte {pos}");
                     if level != original {
                         render_both(&level);
                     }
@@ -1140,10 +854,7 @@ fn a_corrupt_compiled_file_names_its_path() {
     std::fs::write(&path, &bytes).unwrap();
     let err = open_level(&path, &BuildOptions::default()).expect_err("half a file");
     let message = err.to_string();
-    assert!(
-        message.starts_with(&format!("{}: corrupt or truncated", path.display())),
-        "{message}"
-    );
+    assert!(message.starts_with(&format!("{}: corrupt or truncated", path.display())), "{message}");
 }
 
 // ---------------------------------------------------------------------------
@@ -1165,9 +876,7 @@ fn bug_huge_and_tiny_numbers_print_compactly() {
         tr("floor: 0.0, ceiling: 128.0", "floor: 1e-300, ceiling: 0.0"),
     ];
     for text in cases {
-        let message = parse_map(&text, "big.ron")
-            .expect_err("bad number")
-            .to_string();
+        let message = parse_map(&text, "big.ron").expect_err("bad number").to_string();
         assert!(message.len() < 200, "{} chars: {message}", message.len());
     }
 }
@@ -1213,11 +922,7 @@ fn bug_every_flipped_byte_in_a_compiled_map_is_refused() {
     let loaded: Vec<String> = loading_flips(&bytes)
         .into_iter()
         .map(|(pos, mask, level)| {
-            let what = if level == original {
-                "identical"
-            } else {
-                "changed"
-            };
+            let what = if level == original { "identical" } else { "changed" };
             format!("byte {pos} ^ {mask:#04x}: loads, {what}")
         })
         .collect();

@@ -28,38 +28,21 @@ fn hard_poses(level: &CompiledMap) -> Vec<(String, View)> {
     }
     // Exactly on partition lines (they are wall lines, so also on the
     // extension of a wall), looking along them, across them and at random.
-    for node in level
-        .bsp
-        .nodes
-        .iter()
-        .step_by((level.bsp.nodes.len() / 12).max(1))
-    {
+    for node in level.bsp.nodes.iter().step_by((level.bsp.nodes.len() / 12).max(1)) {
         let d = node.b - node.a;
         let along = d.y.atan2(d.x).to_degrees();
         for t in [-3.0, -1.0, -0.25, 1.25, 2.0, 4.0] {
             let p = node.a + d * t;
             for angle in [along, along + 90.0, along + 180.0, along + 37.0] {
                 if let Some(view) = try_view(level, p.x, p.y, angle) {
-                    poses.push((
-                        format!(
-                            "on partition {:?}->{:?} t={t} angle {angle}",
-                            node.a, node.b
-                        ),
-                        view,
-                    ));
+                    poses.push((format!("on partition {:?}->{:?} t={t} angle {angle}", node.a, node.b), view));
                 }
             }
         }
     }
     // A wall 0.01 units in front of the eye, and a vertex straight ahead
     // along an axis (the centre column's ray passes exactly through it).
-    for (i, line) in level
-        .map
-        .lines
-        .iter()
-        .enumerate()
-        .step_by((level.map.lines.len() / 10).max(1))
-    {
+    for (i, line) in level.map.lines.iter().enumerate().step_by((level.map.lines.len() / 10).max(1)) {
         let (a, b) = level.map.line_points(line);
         let d = (b - a).normalize();
         let normal = v(d.y, -d.x);
@@ -70,18 +53,11 @@ fn hard_poses(level: &CompiledMap) -> Vec<(String, View)> {
                 poses.push((format!("0.01 from line {i} angle {angle}"), view));
             }
         }
-        for (axis, angle) in [
-            (v(-24.0, 0.0), 0.0),
-            (v(24.0, 0.0), 180.0),
-            (v(0.0, -24.0), 90.0),
-            (v(0.0, 24.0), 270.0),
-        ] {
+        for (axis, angle) in [(v(-24.0, 0.0), 0.0), (v(24.0, 0.0), 180.0), (v(0.0, -24.0), 90.0), (v(0.0, 24.0), 270.0)]
+        {
             let p = a + axis;
             if let Some(view) = try_view(level, p.x, p.y, angle) {
-                poses.push((
-                    format!("vertex of line {i} dead ahead, angle {angle}"),
-                    view,
-                ));
+                poses.push((format!("vertex of line {i} dead ahead, angle {angle}"), view));
             }
         }
     }
@@ -106,11 +82,7 @@ fn random_poses(level: &CompiledMap, count: usize, seed: u64) -> Vec<(String, Vi
             poses.push((format!("random ({x}, {y}) angle {angle}"), view));
         }
     }
-    assert_eq!(
-        poses.len(),
-        count,
-        "could not find {count} poses inside the map"
-    );
+    assert_eq!(poses.len(), count, "could not find {count} poses inside the map");
     poses
 }
 
@@ -119,21 +91,11 @@ fn bsp_matches_reference_on_every_shipped_map() {
     for path in shipped_maps() {
         let level = load(&path);
         let mut poses = hard_poses(&level);
-        assert!(
-            poses.len() >= 10,
-            "{}: only {} hard poses found",
-            path.display(),
-            poses.len()
-        );
+        assert!(poses.len() >= 10, "{}: only {} hard poses found", path.display(), poses.len());
         poses.extend(random_poses(&level, 24, 7));
         for (what, view) in &poses {
             for size in SIZES {
-                assert_agree(
-                    &level,
-                    view,
-                    size,
-                    &format!("{} {what} {size:?}", path.display()),
-                );
+                assert_agree(&level, view, size, &format!("{} {what} {size:?}", path.display()));
             }
         }
         eprintln!("{}: {} poses agree", path.display(), poses.len());
@@ -145,25 +107,12 @@ fn eye_heights_at_neighbouring_floors_and_ceilings() {
     for path in shipped_maps() {
         let level = load(&path);
         let start = level.map.player_start();
-        let mut heights: Vec<f64> = level
-            .map
-            .sectors
-            .iter()
-            .flat_map(|s| [s.floor, s.ceiling])
-            .collect();
+        let mut heights: Vec<f64> = level.map.sectors.iter().flat_map(|s| [s.floor, s.ceiling]).collect();
         heights.dedup();
         for z in heights {
             for angle in [0.0, 60.0, 135.0, 270.0] {
-                let view = View {
-                    z,
-                    ..View::at_pose(&level.map, start.pos.x, start.pos.y, angle, None).unwrap()
-                };
-                assert_agree(
-                    &level,
-                    &view,
-                    (320, 200),
-                    &format!("{} eye at z={z} angle {angle}", path.display()),
-                );
+                let view = View { z, ..View::at_pose(&level.map, start.pos.x, start.pos.y, angle, None).unwrap() };
+                assert_agree(&level, &view, (320, 200), &format!("{} eye at z={z} angle {angle}", path.display()));
             }
         }
     }

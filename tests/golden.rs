@@ -22,12 +22,8 @@ fn frames_match_golden_images() {
         let stem = path.file_stem().unwrap().to_string_lossy().to_string();
         let views = tour(&level.map, 8, 11);
         // The start facing its own angle, then two seeded poses from the tour.
-        for (i, view) in [views[0], views[8], views[9]]
-            .iter()
-            .take(POSES)
-            .enumerate()
-        {
-            for shade in [Shade::Flat, Shade::Ids] {
+        for (i, view) in [views[0], views[8], views[9]].iter().take(POSES).enumerate() {
+            for shade in [Shade::Textured, Shade::Flat, Shade::Ids] {
                 let frame = render(&level, view, SIZE, Renderer::Bsp, shade);
                 let file = dir.join(format!("{stem}-{i}-{}.png", shade.name()));
                 if bless {
@@ -40,22 +36,12 @@ fn frames_match_golden_images() {
                 });
                 let diff = difference(&frame, &golden);
                 if diff.pixels != 0 {
-                    let out = std::env::temp_dir()
-                        .join(format!("golden-{stem}-{i}-{}.png", shade.name()));
+                    let out = std::env::temp_dir().join(format!("golden-{stem}-{i}-{}.png", shade.name()));
                     std::fs::write(&out, frame.to_png()).unwrap();
-                    failures.push(format!(
-                        "{}: {} pixels differ (got {})",
-                        file.display(),
-                        diff.pixels,
-                        out.display()
-                    ));
+                    failures.push(format!("{}: {} pixels differ (got {})", file.display(), diff.pixels, out.display()));
                 }
             }
         }
     }
-    assert!(
-        failures.is_empty(),
-        "golden frames changed:\n{}",
-        failures.join("\n")
-    );
+    assert!(failures.is_empty(), "golden frames changed:\n{}", failures.join("\n"));
 }

@@ -23,11 +23,7 @@ pub fn shipped_maps() -> Vec<PathBuf> {
         .filter(|p| p.extension().is_some_and(|x| x == "ron"))
         .collect();
     maps.sort();
-    assert!(
-        maps.len() >= 5,
-        "expected the shipped maps in {}, found {maps:?}",
-        dir.display()
-    );
+    assert!(maps.len() >= 5, "expected the shipped maps in {}, found {maps:?}", dir.display());
     maps
 }
 
@@ -41,19 +37,9 @@ pub fn load(path: &Path) -> Level {
     open_level(path, &BuildOptions::default()).unwrap_or_else(|e| panic!("{e}"))
 }
 
-pub fn render(
-    level: &Level,
-    view: &View,
-    size: (usize, usize),
-    renderer: Renderer,
-    shade: Shade,
-) -> Framebuffer {
+pub fn render(level: &Level, view: &View, size: (usize, usize), renderer: Renderer, shade: Shade) -> Framebuffer {
     let mut fb = Framebuffer::new(size.0, size.1);
-    let options = RenderOptions {
-        renderer,
-        shade,
-        count_writes: false,
-    };
+    let options = RenderOptions { renderer, shade, count_writes: false };
     render_frame(level, view, &options, &mut Frame::new(), &mut fb);
     fb
 }
@@ -89,19 +75,11 @@ pub fn difference(a: &Framebuffer, b: &Framebuffer) -> Difference {
         run = if d { run + 1 } else { 0 };
         widest = widest.max(run);
     }
-    Difference {
-        pixels,
-        total: a.pixels.len(),
-        widest_column_run: widest,
-    }
+    Difference { pixels, total: a.pixels.len(), widest_column_run: widest }
 }
 
 /// Renders `view` with both renderers in `ids` shading and returns how they differ.
-pub fn bsp_vs_reference(
-    level: &Level,
-    view: &View,
-    size: (usize, usize),
-) -> (Difference, Framebuffer, Framebuffer) {
+pub fn bsp_vs_reference(level: &Level, view: &View, size: (usize, usize)) -> (Difference, Framebuffer, Framebuffer) {
     let bsp = render(level, view, size, Renderer::Bsp, Shade::Ids);
     let reference = render(level, view, size, Renderer::Reference, Shade::Ids);
     (difference(&bsp, &reference), bsp, reference)
@@ -117,10 +95,7 @@ pub fn assert_agree(level: &Level, view: &View, size: (usize, usize), what: &str
         let _ = std::fs::create_dir_all(&dir);
         let stem = what.replace(|c: char| !c.is_ascii_alphanumeric(), "_");
         let _ = std::fs::write(dir.join(format!("{stem}-bsp.png")), bsp.to_png());
-        let _ = std::fs::write(
-            dir.join(format!("{stem}-reference.png")),
-            reference.to_png(),
-        );
+        let _ = std::fs::write(dir.join(format!("{stem}-reference.png")), reference.to_png());
         panic!(
             "{what}: bsp and reference differ in {} of {} pixels ({:.4}% equal), widest run of differing columns {} \
              (frames saved in {})",
@@ -146,21 +121,12 @@ pub fn v(x: f64, y: f64) -> DVec2 {
 /// of two independent f64 computations (a ray from a point on a line,
 /// "along" it, may pass either side of the line's vertices), so comparisons
 /// of degenerate poses exempt exactly these columns and nothing else.
-pub fn columns_along_lines_through_eye(
-    level: &Level,
-    view: &View,
-    size: (usize, usize),
-) -> Vec<usize> {
+pub fn columns_along_lines_through_eye(level: &Level, view: &View, size: (usize, usize)) -> Vec<usize> {
     let cam = sightline::render::Camera::new(view, size.0, size.1);
     let mut columns = Vec::new();
     for line in &level.map.lines {
         let (a, b) = level.map.line_points(line);
-        let scale = a
-            .abs()
-            .max(b.abs())
-            .max(view.pos.abs())
-            .max_element()
-            .max(1.0);
+        let scale = a.abs().max(b.abs()).max(view.pos.abs()).max_element().max(1.0);
         if sightline::geom::front_distance(a, b, view.pos).abs() > 1e-9 * scale {
             continue;
         }
@@ -170,10 +136,7 @@ pub fn columns_along_lines_through_eye(
                 continue;
             }
             let slope = c.y / c.x;
-            columns
-                .extend((0..size.0).filter(|&x| {
-                    (cam.column_slope(x) - slope).abs() <= 1e-9 * (1.0 + slope.abs())
-                }));
+            columns.extend((0..size.0).filter(|&x| (cam.column_slope(x) - slope).abs() <= 1e-9 * (1.0 + slope.abs())));
         }
     }
     columns.sort_unstable();

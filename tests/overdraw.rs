@@ -17,11 +17,7 @@ fn every_pixel_written_exactly_once() {
             let mut fb = Framebuffer::new(w, h);
             for renderer in Renderer::ALL {
                 for view in &views {
-                    let options = RenderOptions {
-                        renderer,
-                        shade: Shade::Ids,
-                        count_writes: true,
-                    };
+                    let options = RenderOptions { renderer, shade: Shade::Ids, count_writes: true };
                     let stats = render_frame(&level, view, &options, &mut frame, &mut fb);
                     let counts = frame.write_counts();
                     assert_eq!(counts.len(), w * h);
@@ -48,17 +44,8 @@ fn occlusion_culls_and_stops_early_on_the_maze() {
     let mut fb = Framebuffer::new(320, 200);
     let mut culled = 0;
     for view in tour(&level.map, 8, 4) {
-        let stats = render_frame(
-            &level,
-            &view,
-            &RenderOptions::default(),
-            &mut frame,
-            &mut fb,
-        );
-        assert!(
-            stats.walls_considered * 4 < level.bsp.segs.len() as u64,
-            "{stats:?}"
-        );
+        let stats = render_frame(&level, &view, &RenderOptions::default(), &mut frame, &mut fb);
+        assert!(stats.walls_considered * 4 < level.bsp.segs.len() as u64, "{stats:?}");
         culled += stats.subtrees_culled;
     }
     assert!(culled > 0, "no subtree was ever culled by its bounding box");

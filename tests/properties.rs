@@ -18,9 +18,7 @@ use glam::DVec2;
 use proptest::prelude::*;
 use proptest::test_runner::Config;
 use rand::{RngExt, SeedableRng};
-use random_maps::{
-    compile, generate, map_spec, random_poses, usable, Generated, MapSpec, WallLines,
-};
+use random_maps::{compile, generate, map_spec, random_poses, usable, Generated, MapSpec, WallLines};
 use sightline::bsp::check::check_invariants;
 use sightline::bsp::SplitterKind;
 use sightline::render::shade::VOID;
@@ -34,10 +32,7 @@ const SIZES: [(usize, usize); 2] = [(96, 60), (127, 75)];
 
 /// `cases` unless `PROPTEST_CASES` asks for another number (for long runs).
 fn config(cases: u32) -> Config {
-    let cases = std::env::var("PROPTEST_CASES")
-        .ok()
-        .and_then(|n| n.parse().ok())
-        .unwrap_or(cases);
+    let cases = std::env::var("PROPTEST_CASES").ok().and_then(|n| n.parse().ok()).unwrap_or(cases);
     Config {
         cases,
         // No regression files next to the tests; the seed is in the report.
@@ -158,9 +153,7 @@ fn check_agreement(
             for size in SIZES {
                 if lines == WallLines::Only {
                     let what = format!("{} splitter seed {seed} {what} {size:?}", splitter.name());
-                    let result = std::panic::catch_unwind(|| {
-                        assert_agree_off_eye_lines(&level, view, size, &what)
-                    });
+                    let result = std::panic::catch_unwind(|| assert_agree_off_eye_lines(&level, view, size, &what));
                     if let Err(e) = result {
                         let message = e.downcast_ref::<String>().cloned().unwrap_or_default();
                         panic!("{message}; {}", saved(spec, g));
@@ -175,10 +168,7 @@ fn check_agreement(
                         &level,
                         view,
                         size,
-                        &format!(
-                            "{} splitter seed {seed} {what} {size:?}; {where_}",
-                            splitter.name()
-                        ),
+                        &format!("{} splitter seed {seed} {what} {size:?}; {where_}", splitter.name()),
                     );
                 }
             }
@@ -281,13 +271,8 @@ fn generator_makes_varied_valid_maps() {
         assert_eq!(random_poses(&g, 8, 1, WallLines::Any).len(), 8);
         assert_eq!(random_poses(&g, 8, 2, WallLines::Avoid).len(), 8);
     }
-    eprintln!(
-        "500 maps: {pillars_placed} of {pillars_asked} pillars placed, {sectors} sectors, {lines} lines"
-    );
-    assert!(
-        pillars_placed * 10 >= pillars_asked * 8,
-        "too many pillars did not fit"
-    );
+    eprintln!("500 maps: {pillars_placed} of {pillars_asked} pillars placed, {sectors} sectors, {lines} lines");
+    assert!(pillars_placed * 10 >= pillars_asked * 8, "too many pillars did not fit");
 }
 
 // Minimal reproductions of the bugs the random maps found. Each is a closed
@@ -311,12 +296,7 @@ fn one_sector_map(rings: &[&[(f64, f64)]]) -> sightline::Map {
             ceiling_texture: None,
         }],
         lines: Vec::new(),
-        things: vec![ThingSource {
-            kind: sightline::map::PLAYER_START.into(),
-            x: -128.0,
-            y: 0.0,
-            angle: 0.0,
-        }],
+        things: vec![ThingSource { kind: sightline::map::PLAYER_START.into(), x: -128.0, y: 0.0, angle: 0.0 }],
         diminishing_light: true,
         fog: None,
     };
@@ -335,13 +315,11 @@ fn one_sector_map(rings: &[&[(f64, f64)]]) -> sightline::Map {
             });
         }
     }
-    sightline::map::validate::validate(&source)
-        .unwrap_or_else(|p| panic!("{p:?}\n{}", source.to_ron()))
+    sightline::map::validate::validate(&source).unwrap_or_else(|p| panic!("{p:?}\n{}", source.to_ron()))
 }
 
 fn regression_level(map: &sightline::Map, splitter: SplitterKind) -> sightline::level::Level {
-    let level =
-        sightline::bsp::build(map, &sightline::bsp::BuildOptions { splitter, seed: 0 }).unwrap();
+    let level = sightline::bsp::build(map, &sightline::bsp::BuildOptions { splitter, seed: 0 }).unwrap();
     check_invariants(&level.map, &level.bsp).unwrap();
     sightline::level::Level::with_builtin_textures(level).unwrap()
 }
@@ -359,28 +337,13 @@ fn regression_level(map: &sightline::Map, splitter: SplitterKind) -> sightline::
 #[test]
 fn regression_eye_on_partition_split_point_rounding() {
     let top = 16.0 + 1.0 / 7.0;
-    let room: &[(f64, f64)] = &[
-        (-256.0, -256.0),
-        (-256.0, 256.0),
-        (256.0, 256.0),
-        (320.0, -256.0),
-    ];
-    let pillar: &[(f64, f64)] = &[
-        (16.0, top),
-        (0.0, top),
-        (0.0, top - 16.0),
-        (16.0, top - 16.0),
-    ];
+    let room: &[(f64, f64)] = &[(-256.0, -256.0), (-256.0, 256.0), (256.0, 256.0), (320.0, -256.0)];
+    let pillar: &[(f64, f64)] = &[(16.0, top), (0.0, top), (0.0, top - 16.0), (16.0, top - 16.0)];
     let map = one_sector_map(&[room, pillar]);
     for splitter in SplitterKind::ALL {
         let level = regression_level(&map, splitter);
         let view = sightline_tests::view(&level, -128.0, top, 0.0);
-        assert_agree(
-            &level,
-            &view,
-            ODD,
-            &format!("pillar corner along partition, {}", splitter.name()),
-        );
+        assert_agree(&level, &view, ODD, &format!("pillar corner along partition, {}", splitter.name()));
     }
 }
 
@@ -395,21 +358,10 @@ fn regression_eye_on_partition_split_point_rounding() {
 #[test]
 fn regression_eye_on_partition_far_end_rounding() {
     let c = (101.857_142_857_142_86, 17.333_333_333_333_332);
-    let room: &[(f64, f64)] = &[
-        (-300.0, -300.0),
-        (-300.0, 300.0),
-        (300.0, 300.0),
-        c,
-        (300.0, -300.0),
-    ];
+    let room: &[(f64, f64)] = &[(-300.0, -300.0), (-300.0, 300.0), (300.0, 300.0), c, (300.0, -300.0)];
     let map = one_sector_map(&[room]);
     let level = regression_level(&map, SplitterKind::Cost);
-    let view = sightline_tests::view(
-        &level,
-        82.042_857_142_857_12,
-        -10.933_333_333_333_394,
-        54.970_424_513_818_905,
-    );
+    let view = sightline_tests::view(&level, 82.042_857_142_857_12, -10.933_333_333_333_394, 54.970_424_513_818_905);
     assert_agree(&level, &view, ODD, "reflex corner along partition");
 }
 
@@ -424,35 +376,14 @@ fn regression_eye_on_partition_far_end_rounding() {
 #[test]
 fn regression_void_along_wall_line() {
     let c = (100.714_285_714_285_71, 14.666_666_666_666_666);
-    let room: &[(f64, f64)] = &[
-        (-300.0, -300.0),
-        (-300.0, 300.0),
-        (300.0, 300.0),
-        c,
-        (300.0, -300.0),
-    ];
+    let room: &[(f64, f64)] = &[(-300.0, -300.0), (-300.0, 300.0), (300.0, 300.0), c, (300.0, -300.0)];
     let map = one_sector_map(&[room]);
     for splitter in SplitterKind::ALL {
         let level = regression_level(&map, splitter);
-        let view = sightline_tests::view(
-            &level,
-            -118.5,
-            -299.199_999_999_999_93,
-            55.068_348_587_869_885,
-        );
+        let view = sightline_tests::view(&level, -118.5, -299.199_999_999_999_93, 55.068_348_587_869_885);
         let fb = sightline_tests::render(&level, &view, ODD, Renderer::Bsp, Shade::Ids);
         let void = fb.pixels.iter().filter(|&&p| p == VOID).count();
-        assert_eq!(
-            void,
-            0,
-            "{}: {void} void pixels in a closed room",
-            splitter.name()
-        );
-        assert_agree(
-            &level,
-            &view,
-            ODD,
-            &format!("void along wall line, {}", splitter.name()),
-        );
+        assert_eq!(void, 0, "{}: {void} void pixels in a closed room", splitter.name());
+        assert_agree(&level, &view, ODD, &format!("void along wall line, {}", splitter.name()));
     }
 }

@@ -158,37 +158,18 @@ pub fn pillar_spec() -> impl Strategy<Value = PillarSpec> {
         prop::bool::weighted(0.15),
         any::<u64>(),
     )
-        .prop_map(|(kind, sides, radius, axis_square, seed)| PillarSpec {
-            kind,
-            sides,
-            radius,
-            axis_square,
-            seed,
-        })
+        .prop_map(|(kind, sides, radius, axis_square, seed)| PillarSpec { kind, sides, radius, axis_square, seed })
 }
 
 /// Any map the generator makes.
 pub fn map_spec() -> impl Strategy<Value = MapSpec> {
-    (
-        room_kind(),
-        3usize..=24,
-        any::<u64>(),
-        prop::collection::vec(pillar_spec(), 0..=6),
-        placement(),
-        any::<u64>(),
-    )
-        .prop_map(
-            |(kind, vertices, room_seed, pillars, placement, seed)| MapSpec {
-                room: RoomSpec {
-                    kind,
-                    vertices,
-                    seed: room_seed,
-                },
-                pillars,
-                placement,
-                seed,
-            },
-        )
+    (room_kind(), 3usize..=24, any::<u64>(), prop::collection::vec(pillar_spec(), 0..=6), placement(), any::<u64>())
+        .prop_map(|(kind, vertices, room_seed, pillars, placement, seed)| MapSpec {
+            room: RoomSpec { kind, vertices, seed: room_seed },
+            pillars,
+            placement,
+            seed,
+        })
 }
 
 /// A generated map and what the poses need to know about it.
@@ -210,12 +191,7 @@ fn room_ring(spec: &RoomSpec) -> Vec<DVec2> {
     if spec.kind == RoomKind::Rectangle {
         let w = r.random_range(80..=4000) as f64 / 2.0;
         let h = r.random_range(80..=4000) as f64 / 2.0;
-        return vec![
-            DVec2::new(w, h),
-            DVec2::new(-w, h),
-            DVec2::new(-w, -h),
-            DVec2::new(w, -h),
-        ];
+        return vec![DVec2::new(w, h), DVec2::new(-w, h), DVec2::new(-w, -h), DVec2::new(w, -h)];
     }
     let n = spec.vertices.clamp(3, 24);
     // Gaps: MIN_GAP plus a random share of the rest, none reaching 0.9 pi.
@@ -229,16 +205,8 @@ fn room_ring(spec: &RoomSpec) -> Vec<DVec2> {
         }
     };
     let big: f64 = r.random_range(40.0..=2000.0);
-    let low: f64 = if spec.kind == RoomKind::Star {
-        r.random_range(0.05f64..0.95)
-    } else {
-        1.0
-    };
-    let stretch = if r.random_bool(0.5) {
-        1.0
-    } else {
-        r.random_range(0.3..1.0)
-    };
+    let low: f64 = if spec.kind == RoomKind::Star { r.random_range(0.05f64..0.95) } else { 1.0 };
+    let stretch = if r.random_bool(0.5) { 1.0 } else { r.random_range(0.3..1.0) };
     let mut angle = r.random_range(0.0..TAU);
     gaps.iter()
         .map(|g| {
@@ -289,25 +257,16 @@ fn segment_distance(a: DVec2, b: DVec2, p: DVec2) -> f64 {
 }
 
 fn ring_distance(ring: &[DVec2], p: DVec2) -> f64 {
-    (0..ring.len())
-        .map(|i| segment_distance(ring[i], ring[(i + 1) % ring.len()], p))
-        .fold(f64::INFINITY, f64::min)
+    (0..ring.len()).map(|i| segment_distance(ring[i], ring[(i + 1) % ring.len()], p)).fold(f64::INFINITY, f64::min)
 }
 
 fn bbox(ring: &[DVec2]) -> (DVec2, DVec2) {
-    ring.iter()
-        .fold((DVec2::INFINITY, DVec2::NEG_INFINITY), |(lo, hi), &p| {
-            (lo.min(p), hi.max(p))
-        })
+    ring.iter().fold((DVec2::INFINITY, DVec2::NEG_INFINITY), |(lo, hi), &p| (lo.min(p), hi.max(p)))
 }
 
 /// A height: often exactly one already in use, sometimes fractional.
 fn height(r: &mut ChaCha8Rng, lo: f64, hi: f64, shared: &[f64]) -> f64 {
-    let usable: Vec<f64> = shared
-        .iter()
-        .copied()
-        .filter(|h| (lo..=hi).contains(h))
-        .collect();
+    let usable: Vec<f64> = shared.iter().copied().filter(|h| (lo..=hi).contains(h)).collect();
     if !usable.is_empty() && r.random_bool(0.3) {
         return usable[r.random_range(0..usable.len())];
     }
@@ -319,13 +278,7 @@ fn height(r: &mut ChaCha8Rng, lo: f64, hi: f64, shared: &[f64]) -> f64 {
 }
 
 fn sector(floor: f64, ceiling: f64, light: i64) -> SectorSource {
-    SectorSource {
-        floor,
-        ceiling,
-        light,
-        floor_texture: None,
-        ceiling_texture: None,
-    }
+    SectorSource { floor, ceiling, light, floor_texture: None, ceiling_texture: None }
 }
 
 fn pillar_sector(r: &mut ChaCha8Rng, kind: PillarKind, room: &SectorSource) -> SectorSource {
@@ -359,10 +312,7 @@ fn pillar_sector(r: &mut ChaCha8Rng, kind: PillarKind, room: &SectorSource) -> S
 }
 
 fn side(sector: usize) -> SideSource {
-    SideSource {
-        sector: sector as i64,
-        ..SideSource::default()
-    }
+    SideSource { sector: sector as i64, ..SideSource::default() }
 }
 
 /// Builds, places and validates the map `spec` describes. Panics on a
@@ -384,9 +334,7 @@ pub fn generate(spec: &MapSpec) -> Generated {
                 let c = DVec2::new(pr.random_range(lo.x..=hi.x), pr.random_range(lo.y..=hi.y));
                 if inside(&room, c)
                     && ring_distance(&room, c) >= radius + margin
-                    && pillars
-                        .iter()
-                        .all(|(_, _, q, rq)| c.distance(*q) >= radius + rq + margin)
+                    && pillars.iter().all(|(_, _, q, rq)| c.distance(*q) >= radius + rq + margin)
                 {
                     spot = Some(c);
                     break 'search;
@@ -400,32 +348,20 @@ pub fn generate(spec: &MapSpec) -> Generated {
     }
 
     // Heights and light.
-    let room_floor = if r.random_bool(0.3) {
-        0.0
-    } else {
-        height(&mut r, -64.0, 128.0, &[])
-    };
-    let room_ceiling = if r.random_bool(0.05) {
-        room_floor
-    } else {
-        height(&mut r, room_floor + 1.0, 256.0, &[room_floor + 128.0])
-    };
+    let room_floor = if r.random_bool(0.3) { 0.0 } else { height(&mut r, -64.0, 128.0, &[]) };
+    let room_ceiling =
+        if r.random_bool(0.05) { room_floor } else { height(&mut r, room_floor + 1.0, 256.0, &[room_floor + 128.0]) };
     let mut sectors = vec![sector(room_floor, room_ceiling, r.random_range(0..=255))];
 
     // The player start: in the room, clear of every solid pillar.
-    let solid: Vec<&Vec<DVec2>> = pillars
-        .iter()
-        .filter(|(i, ..)| spec.pillars[*i].kind.is_solid())
-        .map(|(_, ring, ..)| ring)
-        .collect();
+    let solid: Vec<&Vec<DVec2>> =
+        pillars.iter().filter(|(i, ..)| spec.pillars[*i].kind.is_solid()).map(|(_, ring, ..)| ring).collect();
     let start = (0..10_000)
         .map(|_| DVec2::new(r.random_range(lo.x..=hi.x), r.random_range(lo.y..=hi.y)))
         .find(|&p| {
             inside(&room, p)
                 && ring_distance(&room, p) > 0.5
-                && solid
-                    .iter()
-                    .all(|ring| !inside(ring, p) && ring_distance(ring, p) > 0.5)
+                && solid.iter().all(|ring| !inside(ring, p) && ring_distance(ring, p) > 0.5)
         })
         .unwrap_or_else(|| panic!("generator bug: no room for the player start in {spec:?}"));
     let start_angle = r.random_range(0.0..360.0);
@@ -434,20 +370,11 @@ pub fn generate(spec: &MapSpec) -> Generated {
     let snap = |v: f64| (v * 16.0).round() / 16.0;
     let (unit, place): (f64, Box<dyn Fn(DVec2) -> DVec2>) = match spec.placement {
         Placement::Raw => (1.0, Box::new(|p| p)),
-        Placement::Grid => (
-            1.0,
-            Box::new(move |p: DVec2| DVec2::new(snap(p.x), snap(p.y))),
-        ),
-        Placement::Offset(x, y) => (
-            1.0,
-            Box::new(move |p: DVec2| DVec2::new(snap(p.x) + x, snap(p.y) + y)),
-        ),
+        Placement::Grid => (1.0, Box::new(move |p: DVec2| DVec2::new(snap(p.x), snap(p.y)))),
+        Placement::Offset(x, y) => (1.0, Box::new(move |p: DVec2| DVec2::new(snap(p.x) + x, snap(p.y) + y))),
         Placement::Scale(k) => {
             let s = 2f64.powi(k);
-            (
-                s,
-                Box::new(move |p: DVec2| DVec2::new(snap(p.x) * s, snap(p.y) * s)),
-            )
+            (s, Box::new(move |p: DVec2| DVec2::new(snap(p.x) * s, snap(p.y) * s)))
         }
     };
 
@@ -493,27 +420,14 @@ pub fn generate(spec: &MapSpec) -> Generated {
         vertices,
         sectors,
         lines,
-        things: vec![ThingSource {
-            kind: PLAYER_START.into(),
-            x: start.x,
-            y: start.y,
-            angle: start_angle,
-        }],
+        things: vec![ThingSource { kind: PLAYER_START.into(), x: start.x, y: start.y, angle: start_angle }],
         diminishing_light: true,
         fog: None,
     };
     let map = validate(&source).unwrap_or_else(|problems| {
-        panic!(
-            "generator bug: invalid map {problems:?}\nspec {spec:?}\n{}",
-            source.to_ron()
-        )
+        panic!("generator bug: invalid map {problems:?}\nspec {spec:?}\n{}", source.to_ron())
     });
-    Generated {
-        source,
-        map,
-        unit,
-        pillars_placed: pillars.len(),
-    }
+    Generated { source, map, unit, pillars_placed: pillars.len() }
 }
 
 /// A usable pose: inside a sector and not on (or within 1e-3 of) a line.
@@ -529,11 +443,7 @@ pub fn on_wall_line(map: &Map, p: DVec2) -> bool {
     map.lines.iter().any(|line| {
         let (a, b) = map.line_points(line);
         let d = b - a;
-        let scale = p
-            .abs()
-            .max_element()
-            .max(a.abs().max_element())
-            .max(b.abs().max_element());
+        let scale = p.abs().max_element().max(a.abs().max_element()).max(b.abs().max_element());
         let distance = sightline::geom::cross(p - a, d).abs() / d.length();
         distance <= 1e-12 * scale.max(1.0)
     })
@@ -551,12 +461,7 @@ pub enum WallLines {
     Only,
 }
 
-const AXES: [(f64, f64, f64); 4] = [
-    (1.0, 0.0, 0.0),
-    (0.0, 1.0, 90.0),
-    (-1.0, 0.0, 180.0),
-    (0.0, -1.0, 270.0),
-];
+const AXES: [(f64, f64, f64); 4] = [(1.0, 0.0, 0.0), (0.0, 1.0, 90.0), (-1.0, 0.0, 180.0), (0.0, -1.0, 270.0)];
 
 /// Up to `count` random poses in `g`'s map (exactly `count` unless `lines`
 /// is [`WallLines::Only`]), described for failure messages: uniform points,
@@ -564,12 +469,7 @@ const AXES: [(f64, f64, f64); 4] = [
 /// (partition lines) looking along them, points very near walls; angles
 /// sometimes exactly axis-aligned; eye heights sometimes exactly a sector's
 /// floor or ceiling.
-pub fn random_poses(
-    g: &Generated,
-    count: usize,
-    seed: u64,
-    lines: WallLines,
-) -> Vec<(String, View)> {
+pub fn random_poses(g: &Generated, count: usize, seed: u64, lines: WallLines) -> Vec<(String, View)> {
     let map = &g.map;
     let mut r = rng(seed, 6);
     let (lo, hi) = bbox(&map.vertices);
@@ -579,27 +479,15 @@ pub fn random_poses(
     while poses.len() < count {
         attempts += 1;
         if attempts >= 20_000 {
-            assert!(
-                lines == WallLines::Only,
-                "generator bug: cannot find poses in\n{}",
-                g.source.to_ron()
-            );
+            assert!(lines == WallLines::Only, "generator bug: cannot find poses in\n{}", g.source.to_ron());
             break;
         }
         let axis_angle = |r: &mut ChaCha8Rng| AXES[r.random_range(0..4)].2;
-        let kind = if lines == WallLines::Only {
-            7
-        } else {
-            r.random_range(0..10)
-        };
+        let kind = if lines == WallLines::Only { 7 } else { r.random_range(0..10) };
         let (what, p, angle) = match kind {
             0..=3 => {
                 let p = DVec2::new(r.random_range(lo.x..=hi.x), r.random_range(lo.y..=hi.y));
-                let angle = if r.random_bool(0.3) {
-                    axis_angle(&mut r)
-                } else {
-                    r.random_range(0.0..360.0)
-                };
+                let angle = if r.random_bool(0.3) { axis_angle(&mut r) } else { r.random_range(0.0..360.0) };
                 ("uniform", p, angle)
             }
             4..=6 => {
@@ -608,11 +496,7 @@ pub fn random_poses(
                 let (dx, dy, angle) = AXES[r.random_range(0..4)];
                 let d = r.random_range(0.0..extent) * if r.random_bool(0.3) { 0.01 } else { 1.0 };
                 let p = DVec2::new(v.x - dx * d, v.y - dy * d);
-                let angle = if r.random_bool(0.8) {
-                    angle
-                } else {
-                    r.random_range(0.0..360.0)
-                };
+                let angle = if r.random_bool(0.8) { angle } else { r.random_range(0.0..360.0) };
                 ("vertex axis", p, angle)
             }
             7..=8 => {
@@ -620,21 +504,11 @@ pub fn random_poses(
                 // looking along it.
                 let line = &map.lines[r.random_range(0..map.lines.len())];
                 let (a, b) = map.line_points(line);
-                let t = if r.random_bool(0.5) {
-                    r.random_range(-4.0..-0.001)
-                } else {
-                    r.random_range(1.001..5.0)
-                };
+                let t = if r.random_bool(0.5) { r.random_range(-4.0..-0.001) } else { r.random_range(1.001..5.0) };
                 let d = b - a;
                 let along = d.y.atan2(d.x).to_degrees();
-                let angle = [
-                    along,
-                    along + 180.0,
-                    along,
-                    along + 180.0,
-                    along + 90.0,
-                    r.random_range(0.0..360.0),
-                ][r.random_range(0..6)];
+                let angle = [along, along + 180.0, along, along + 180.0, along + 90.0, r.random_range(0.0..360.0)]
+                    [r.random_range(0..6)];
                 let p = a + d * t;
                 if lines == WallLines::Avoid {
                     // Just off the line instead: a hair to either side.
@@ -673,16 +547,12 @@ pub fn random_poses(
             0 | 1 => None,
             2 => {
                 let s = &map.sectors[r.random_range(0..map.sectors.len())];
-                Some(if r.random_bool(0.5) {
-                    s.floor
-                } else {
-                    s.ceiling
-                })
+                Some(if r.random_bool(0.5) { s.floor } else { s.ceiling })
             }
             _ => Some(r.random_range(-80.0..300.0)),
         };
-        let view = View::at_pose(map, p.x, p.y, angle, z)
-            .unwrap_or_else(|e| panic!("pose ({}, {}) rejected: {e}", p.x, p.y));
+        let view =
+            View::at_pose(map, p.x, p.y, angle, z).unwrap_or_else(|e| panic!("pose ({}, {}) rejected: {e}", p.x, p.y));
         poses.push((
             format!(
                 "{what} pose{} ({:?}, {:?}) angle {angle:?} z {:?} in sector {sector}",
@@ -703,19 +573,9 @@ pub fn describe(spec: &MapSpec, g: &Generated) -> String {
 }
 
 /// Compiles with the given splitter or fails with the map attached.
-pub fn compile(
-    spec: &MapSpec,
-    g: &Generated,
-    splitter: sightline::bsp::SplitterKind,
-    seed: u64,
-) -> Level {
+pub fn compile(spec: &MapSpec, g: &Generated, splitter: sightline::bsp::SplitterKind, seed: u64) -> Level {
     let options = sightline::bsp::BuildOptions { splitter, seed };
-    let compiled = sightline::bsp::build(&g.map, &options).unwrap_or_else(|e| {
-        panic!(
-            "{} (seed {seed}) failed to compile: {e}\n{}",
-            splitter.name(),
-            describe(spec, g)
-        )
-    });
+    let compiled = sightline::bsp::build(&g.map, &options)
+        .unwrap_or_else(|e| panic!("{} (seed {seed}) failed to compile: {e}\n{}", splitter.name(), describe(spec, g)));
     Level::with_builtin_textures(compiled).unwrap_or_else(|e| panic!("{e}"))
 }

@@ -17,10 +17,7 @@ fn compile(c: &mut Criterion) {
         .collect();
     maps.sort();
     let mut group = c.benchmark_group("compile");
-    group
-        .sample_size(10)
-        .warm_up_time(Duration::from_millis(300))
-        .measurement_time(Duration::from_secs(2));
+    group.sample_size(10).warm_up_time(Duration::from_millis(300)).measurement_time(Duration::from_secs(2));
     for path in maps {
         let name = path.file_stem().unwrap().to_string_lossy().to_string();
         let map = load_map(&path).expect("shipped map loads");
@@ -35,9 +32,7 @@ fn compile(c: &mut Criterion) {
                 s.splits,
                 s.depth
             );
-            group.bench_function(BenchmarkId::new(splitter.name(), &name), |b| {
-                b.iter(|| build(&map, &options))
-            });
+            group.bench_function(BenchmarkId::new(splitter.name(), &name), |b| b.iter(|| build(&map, &options)));
         }
     }
     group.finish();

@@ -28,18 +28,11 @@ fn frames(c: &mut Criterion) {
         let level = open_level(&path, &BuildOptions::default()).expect("shipped map loads");
         let views = tour(&level.map, 8, 1);
         let mut group = c.benchmark_group(format!("frame/{name}"));
-        group
-            .sample_size(10)
-            .warm_up_time(Duration::from_millis(500))
-            .measurement_time(Duration::from_secs(3));
+        group.sample_size(10).warm_up_time(Duration::from_millis(500)).measurement_time(Duration::from_secs(3));
         group.throughput(Throughput::Elements(views.len() as u64));
         for (w, h) in [(320, 200), (1920, 1080)] {
             for renderer in Renderer::ALL {
-                let options = RenderOptions {
-                    renderer,
-                    shade: Shade::Flat,
-                    count_writes: false,
-                };
+                let options = RenderOptions { renderer, shade: Shade::Flat, count_writes: false };
                 let mut fb = Framebuffer::new(w, h);
                 let mut frame = Frame::new();
                 let id = BenchmarkId::new(renderer.name(), format!("{w}x{h}"));

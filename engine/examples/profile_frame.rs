@@ -14,11 +14,10 @@ fn main() {
         eprintln!("usage: profile_frame MAP WxH bsp|reference SECONDS");
         std::process::exit(2);
     }
-    let level = open_level(std::path::Path::new(&args[1]), &BuildOptions::default())
-        .unwrap_or_else(|e| {
-            eprintln!("{e}");
-            std::process::exit(1)
-        });
+    let level = open_level(std::path::Path::new(&args[1]), &BuildOptions::default()).unwrap_or_else(|e| {
+        eprintln!("{e}");
+        std::process::exit(1)
+    });
     let (w, h) = args[2]
         .split_once('x')
         .map(|(w, h)| (w.parse().unwrap_or(640), h.parse().unwrap_or(400)))
@@ -26,10 +25,7 @@ fn main() {
     let renderer = Renderer::from_name(&args[3]).unwrap_or_default();
     let seconds: f64 = args[4].parse().unwrap_or(5.0);
     let views = tour(&level.map, 8, 1);
-    let options = RenderOptions {
-        renderer,
-        ..Default::default()
-    };
+    let options = RenderOptions { renderer, ..Default::default() };
     let (mut fb, mut frame) = (Framebuffer::new(w, h), Frame::new());
     let start = Instant::now();
     let mut frames = 0u64;
@@ -39,8 +35,5 @@ fn main() {
             frames += 1;
         }
     }
-    println!(
-        "{frames} frames, {:.3} ms per frame",
-        start.elapsed().as_secs_f64() * 1e3 / frames as f64
-    );
+    println!("{frames} frames, {:.3} ms per frame", start.elapsed().as_secs_f64() * 1e3 / frames as f64);
 }

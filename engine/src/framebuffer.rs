@@ -27,11 +27,7 @@ pub struct Framebuffer {
 
 impl Framebuffer {
     pub fn new(width: usize, height: usize) -> Framebuffer {
-        Framebuffer {
-            width,
-            height,
-            pixels: vec![rgb(0, 0, 0); width * height],
-        }
+        Framebuffer { width, height, pixels: vec![rgb(0, 0, 0); width * height] }
     }
 
     pub fn get(&self, x: usize, y: usize) -> u32 {
@@ -63,31 +59,15 @@ impl Framebuffer {
     pub fn read_png(path: &Path) -> Result<Framebuffer, String> {
         let file = std::fs::File::open(path).map_err(|e| format!("{}: {e}", path.display()))?;
         let decoder = png::Decoder::new(std::io::BufReader::new(file));
-        let mut reader = decoder
-            .read_info()
-            .map_err(|e| format!("{}: {e}", path.display()))?;
+        let mut reader = decoder.read_info().map_err(|e| format!("{}: {e}", path.display()))?;
         let mut buf = vec![0; reader.output_buffer_size().ok_or("PNG too large")?];
-        let info = reader
-            .next_frame(&mut buf)
-            .map_err(|e| format!("{}: {e}", path.display()))?;
+        let info = reader.next_frame(&mut buf).map_err(|e| format!("{}: {e}", path.display()))?;
         let step = match (info.color_type, info.bit_depth) {
             (png::ColorType::Rgb, png::BitDepth::Eight) => 3,
             (png::ColorType::Rgba, png::BitDepth::Eight) => 4,
-            other => {
-                return Err(format!(
-                    "{}: unsupported PNG format {other:?}",
-                    path.display()
-                ))
-            }
+            other => return Err(format!("{}: unsupported PNG format {other:?}", path.display())),
         };
-        let pixels = buf[..info.buffer_size()]
-            .chunks_exact(step)
-            .map(|c| rgb(c[0], c[1], c[2]))
-            .collect();
-        Ok(Framebuffer {
-            width: info.width as usize,
-            height: info.height as usize,
-            pixels,
-        })
+        let pixels = buf[..info.buffer_size()].chunks_exact(step).map(|c| rgb(c[0], c[1], c[2])).collect();
+        Ok(Framebuffer { width: info.width as usize, height: info.height as usize, pixels })
     }
 }

@@ -75,21 +75,11 @@ pub fn segment_contact(p0: DVec2, p1: DVec2, q0: DVec2, q1: DVec2) -> Contact {
     if a == Side::On && b == Side::On {
         return collinear_contact(p0, p1, q0, q1);
     }
-    let opposite = |s: Side, t: Side| {
-        matches!(
-            (s, t),
-            (Side::Front, Side::Back) | (Side::Back, Side::Front)
-        )
-    };
+    let opposite = |s: Side, t: Side| matches!((s, t), (Side::Front, Side::Back) | (Side::Back, Side::Front));
     if opposite(a, b) && opposite(c, d) {
         return Contact::Cross(line_intersection(p0, p1, q0, q1));
     }
-    for (side, point, s0, s1) in [
-        (a, q0, p0, p1),
-        (b, q1, p0, p1),
-        (c, p0, q0, q1),
-        (d, p1, q0, q1),
-    ] {
+    for (side, point, s0, s1) in [(a, q0, p0, p1), (b, q1, p0, p1), (c, p0, q0, q1), (d, p1, q0, q1)] {
         if side == Side::On && strictly_between(s0, s1, point) {
             return Contact::Touch(point);
         }
@@ -160,10 +150,7 @@ pub struct Aabb {
 }
 
 impl Aabb {
-    pub const EMPTY: Aabb = Aabb {
-        min: DVec2::INFINITY,
-        max: DVec2::NEG_INFINITY,
-    };
+    pub const EMPTY: Aabb = Aabb { min: DVec2::INFINITY, max: DVec2::NEG_INFINITY };
 
     pub fn include(&mut self, p: DVec2) {
         self.min = self.min.min(p);
@@ -171,10 +158,7 @@ impl Aabb {
     }
 
     pub fn union(self, other: Aabb) -> Aabb {
-        Aabb {
-            min: self.min.min(other.min),
-            max: self.max.max(other.max),
-        }
+        Aabb { min: self.min.min(other.min), max: self.max.max(other.max) }
     }
 
     pub fn contains(&self, p: DVec2) -> bool {
@@ -193,47 +177,23 @@ mod tests {
     #[test]
     fn front_is_right_hand_side() {
         // Walking north along x = 0, east (+x) is on the right.
-        assert_eq!(
-            exact_side(v(0.0, 0.0), v(0.0, 10.0), v(5.0, 5.0)),
-            Side::Front
-        );
-        assert_eq!(
-            exact_side(v(0.0, 0.0), v(0.0, 10.0), v(-5.0, 5.0)),
-            Side::Back
-        );
+        assert_eq!(exact_side(v(0.0, 0.0), v(0.0, 10.0), v(5.0, 5.0)), Side::Front);
+        assert_eq!(exact_side(v(0.0, 0.0), v(0.0, 10.0), v(-5.0, 5.0)), Side::Back);
         assert!(front_distance(v(0.0, 0.0), v(0.0, 10.0), v(5.0, 5.0)) > 0.0);
     }
 
     #[test]
     fn contacts() {
         let o = v(0.0, 0.0);
-        assert!(matches!(
-            segment_contact(o, v(10.0, 10.0), v(0.0, 10.0), v(10.0, 0.0)),
-            Contact::Cross(_)
-        ));
-        assert_eq!(
-            segment_contact(o, v(10.0, 0.0), v(10.0, 0.0), v(10.0, 5.0)),
-            Contact::None
-        );
-        assert_eq!(
-            segment_contact(o, v(10.0, 0.0), v(5.0, 0.0), v(5.0, 5.0)),
-            Contact::Touch(v(5.0, 0.0))
-        );
-        assert_eq!(
-            segment_contact(o, v(10.0, 0.0), v(5.0, 0.0), v(15.0, 0.0)),
-            Contact::Overlap
-        );
-        assert_eq!(
-            segment_contact(o, v(10.0, 0.0), v(10.0, 0.0), v(15.0, 0.0)),
-            Contact::None
-        );
+        assert!(matches!(segment_contact(o, v(10.0, 10.0), v(0.0, 10.0), v(10.0, 0.0)), Contact::Cross(_)));
+        assert_eq!(segment_contact(o, v(10.0, 0.0), v(10.0, 0.0), v(10.0, 5.0)), Contact::None);
+        assert_eq!(segment_contact(o, v(10.0, 0.0), v(5.0, 0.0), v(5.0, 5.0)), Contact::Touch(v(5.0, 0.0)));
+        assert_eq!(segment_contact(o, v(10.0, 0.0), v(5.0, 0.0), v(15.0, 0.0)), Contact::Overlap);
+        assert_eq!(segment_contact(o, v(10.0, 0.0), v(10.0, 0.0), v(15.0, 0.0)), Contact::None);
         // Near-collinear at a million units: decided exactly, not by an epsilon.
         let a = v(1_000_000.0, 1_000_000.0);
         let b = v(1_010_000.0, 1_000_000.0);
-        assert_eq!(
-            exact_side(a, b, v(1_005_000.0, 1_000_000.000_000_1)),
-            Side::Back
-        );
+        assert_eq!(exact_side(a, b, v(1_005_000.0, 1_000_000.000_000_1)), Side::Back);
     }
 
     #[test]

@@ -28,6 +28,8 @@ pub enum LevelError {
 pub struct Level {
     pub compiled: CompiledMap,
     pub materials: Materials,
+    /// The sector each thing stands in (things do not move yet).
+    pub thing_sectors: Vec<usize>,
 }
 
 impl std::fmt::Debug for Level {
@@ -53,10 +55,12 @@ impl Level {
     /// A level whose textures come from the built-in set only (tests, generated maps).
     pub fn with_builtin_textures(compiled: CompiledMap) -> Result<Level, MaterialError> {
         let materials = Materials::resolve(&compiled.map, &[], &compiled.map.name)?;
-        Ok(Level {
-            compiled,
-            materials,
-        })
+        Ok(Level::new(compiled, materials))
+    }
+
+    pub fn new(compiled: CompiledMap, materials: Materials) -> Level {
+        let thing_sectors = compiled.map.things.iter().map(|t| compiled.sector_at(t.pos)).collect();
+        Level { compiled, materials, thing_sectors }
     }
 }
 
@@ -67,60 +71,32 @@ pub fn open_level(path: &Path, options: &BuildOptions) -> Result<Level, LevelErr
     let label = path.display().to_string();
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     let materials = Materials::resolve(&compiled.map, &[dir], &label)?;
-    Ok(Level {
-        compiled,
-        materials,
-    })
+    Ok(Level::new(compiled, materials))
 }
 
 /// Reads `path` and returns the compiled map alone (no textures).
 pub fn open_compiled(path: &Path, options: &BuildOptions) -> Result<CompiledMap, LevelError> {
     let label = path.display().to_string();
-    let bytes = std::fs::read(path).map_err(|error| MapError::Io {
-        path: label.clone(),
-        error,
-    })?;
+    let bytes = std::fs::read(path).map_err(|error| MapError::Io { path: label.clone(), error })?;
     level_from_bytes(&bytes, &label, options)
 }
 
-pub fn level_from_bytes(
-    bytes: &[u8],
-    label: &str,
-    options: &BuildOptions,
-) -> Result<CompiledMap, LevelError> {
+pub fn level_from_bytes(bytes: &[u8], label: &str, options: &BuildOptions) -> Result<CompiledMap, LevelError> {
     if file::is_compiled(bytes) {
-        return file::from_bytes(bytes).map_err(|message| LevelError::Compiled {
-            path: label.to_string(),
-            message,
-        });
+        return file::from_bytes(bytes).map_err(|message| LevelError::Compiled { path: label.to_string(), message });
     }
     let map = parse_map_bytes(bytes, label)?;
-    build(&map, options).map_err(|error| LevelError::Compile {
-        path: label.to_string(),
-        error,
-    })
+    build(&map, options).map_err(|error| LevelError::Compile { path: label.to_string(), error })
 }
 
 /// Writes `bytes` to `path` atomically: a temporary file beside it, then a
 /// rename. A failure leaves any existing file at `path` untouched.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), LevelError> {
     use std::io::Write;
-    let err = |error| LevelError::Write {
-        path: path.display().to_string(),
-        error,
-    };
-    let dir = path
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    let name = path
-        .file_name()
-        .ok_or_else(|| err(std::io::Error::other("not a file name")))?;
-    let tmp = dir.join(format!(
-        ".{}.tmp{}",
-        name.to_string_lossy(),
-        std::process::id()
-    ));
+    let err = |error| LevelError::Write { path: path.display().to_string(), error };
+    let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    let name = path.file_name().ok_or_else(|| err(std::io::Error::other("not a file name")))?;
+    let tmp = dir.join(format!(".{}.tmp{}", name.to_string_lossy(), std::process::id()));
     let result = (|| {
         let mut f = std::fs::File::create(&tmp)?;
         f.write_all(bytes)?;
@@ -140,9 +116,7 @@ pub fn check_not_input(input: &Path, output: &Path) -> Result<(), LevelError> {
         _ => false,
     };
     if same {
-        return Err(LevelError::OverwriteInput {
-            path: output.display().to_string(),
-        });
+        return Err(LevelError::OverwriteInput { path: output.display().to_string() });
     }
     Ok(())
 }

@@ -67,26 +67,17 @@ impl Materials {
                     }
                     _ => Err(error),
                 })
-                .map_err(|error| MaterialError {
-                    path: label.to_string(),
-                    element,
-                    error,
-                })
+                .map_err(|error| MaterialError { path: label.to_string(), element, error })
         };
         let mut sides = Vec::with_capacity(map.lines.len());
         for (i, line) in map.lines.iter().enumerate() {
             let mut pair = [SideTextures::default(); 2];
-            for (k, (which, side)) in [("front", Some(&line.front)), ("back", line.back.as_ref())]
-                .into_iter()
-                .enumerate()
+            for (k, (which, side)) in
+                [("front", Some(&line.front)), ("back", line.back.as_ref())].into_iter().enumerate()
             {
                 if let Some(side) = side {
                     pair[k] = side_textures(side, &mut |name, part| {
-                        get(
-                            name,
-                            TextureKind::Wall,
-                            format!("line {i} {which} side {part} texture"),
-                        )
+                        get(name, TextureKind::Wall, format!("line {i} {which} side {part} texture"))
                     })?;
                 }
             }
@@ -95,18 +86,16 @@ impl Materials {
         let mut sectors = Vec::with_capacity(map.sectors.len());
         let mut uses_sky = false;
         for (i, s) in map.sectors.iter().enumerate() {
-            let mut plane =
-                |name: &Option<String>, which: &str| -> Result<Option<TextureId>, MaterialError> {
-                    match name.as_deref() {
-                        None => Ok(None),
-                        Some(n) if n.eq_ignore_ascii_case(SKY) => {
-                            uses_sky = true;
-                            Ok(None)
-                        }
-                        Some(n) => get(n, TextureKind::Flat, format!("sector {i} {which} texture"))
-                            .map(Some),
+            let mut plane = |name: &Option<String>, which: &str| -> Result<Option<TextureId>, MaterialError> {
+                match name.as_deref() {
+                    None => Ok(None),
+                    Some(n) if n.eq_ignore_ascii_case(SKY) => {
+                        uses_sky = true;
+                        Ok(None)
                     }
-                };
+                    Some(n) => get(n, TextureKind::Flat, format!("sector {i} {which} texture")).map(Some),
+                }
+            };
             let floor = plane(&s.floor_texture, "floor")?;
             let ceiling = plane(&s.ceiling_texture, "ceiling")?;
             sectors.push(SectorTextures { floor, ceiling });
@@ -117,26 +106,12 @@ impl Materials {
                 None
             } else {
                 let name = t.kind.to_ascii_uppercase();
-                Some(get(
-                    &name,
-                    TextureKind::Sprite,
-                    format!("thing {i} (kind {:?}) sprite", t.kind),
-                )?)
+                Some(get(&name, TextureKind::Sprite, format!("thing {i} (kind {:?}) sprite", t.kind))?)
             };
             sprites.push(sprite);
         }
-        let sky = if uses_sky {
-            Some(get(SKY, TextureKind::Wall, "the sky".into())?)
-        } else {
-            None
-        };
-        Ok(Materials {
-            sides,
-            sectors,
-            sprites,
-            sky,
-            ..m
-        })
+        let sky = if uses_sky { Some(get(SKY, TextureKind::Wall, "the sky".into())?) } else { None };
+        Ok(Materials { sides, sectors, sprites, sky, ..m })
     }
 }
 
@@ -144,8 +119,7 @@ fn side_textures(
     side: &Side,
     get: &mut impl FnMut(&str, &str) -> Result<TextureId, MaterialError>,
 ) -> Result<SideTextures, MaterialError> {
-    let mut one =
-        |name: &Option<String>, part: &str| name.as_deref().map(|n| get(n, part)).transpose();
+    let mut one = |name: &Option<String>, part: &str| name.as_deref().map(|n| get(n, part)).transpose();
     Ok(SideTextures {
         upper: one(&side.upper, "upper")?,
         middle: one(&side.middle, "middle")?,

@@ -30,10 +30,7 @@ pub fn tour(map: &Map, extra: usize, seed: u64) -> Vec<View> {
     let mut attempts = 0;
     while views.len() < 8 + extra && attempts < 10_000 * (extra + 1) {
         attempts += 1;
-        let p = DVec2::new(
-            rng.random_range(bbox.min.x..=bbox.max.x),
-            rng.random_range(bbox.min.y..=bbox.max.y),
-        );
+        let p = DVec2::new(rng.random_range(bbox.min.x..=bbox.max.x), rng.random_range(bbox.min.y..=bbox.max.y));
         let angle = rng.random_range(0.0..360.0);
         if map.distance_to_nearest_line(p) >= CLEARANCE {
             if let Ok(v) = View::at_pose(map, p.x, p.y, angle, None) {

@@ -24,11 +24,7 @@ pub fn run(args: &CaptureArgs) -> Result<()> {
     .with_context(|| format!("{map_name}: bad pose"))?;
     let (width, height) = args.size;
     let mut fb = Framebuffer::new(width, height);
-    let options = RenderOptions {
-        renderer: args.renderer,
-        shade: args.shade,
-        count_writes: false,
-    };
+    let options = RenderOptions { renderer: args.renderer, shade: args.shade, count_writes: false };
     render_frame(&level, &view, &options, &mut Frame::new(), &mut fb);
     write_atomic(&args.output, &fb.to_png())?;
     Ok(())
@@ -47,14 +43,8 @@ pub fn run_default() -> Result<()> {
         output: output.clone(),
     };
     run(&args)?;
-    println!(
-        "Captured {} from its player start to {}",
-        map.display(),
-        output.display()
-    );
-    println!(
-        "(The playable window arrives with the play issue; see README.md for `sightline capture`.)"
-    );
+    println!("Captured {} from its player start to {}", map.display(), output.display());
+    println!("(The playable window arrives with the play issue; see README.md for `sightline capture`.)");
     Ok(())
 }
 
@@ -64,7 +54,5 @@ fn default_map_path() -> PathBuf {
     if here.exists() {
         return here;
     }
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("..")
-        .join(DEFAULT_MAP)
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join(DEFAULT_MAP)
 }

@@ -7,11 +7,7 @@ use sightline::bsp::SplitterKind;
 use sightline::render::{Renderer, Shade};
 
 #[derive(Parser)]
-#[command(
-    name = "sightline",
-    version,
-    about = "A Doom-style 2.5D engine: compile maps, capture frames"
-)]
+#[command(name = "sightline", version, about = "A Doom-style 2.5D engine: compile maps, capture frames")]
 pub struct Cli {
     #[command(subcommand)]
     pub command: Option<Command>,
@@ -79,17 +75,13 @@ const MAX_SIDE: usize = 16_384;
 const MAX_PIXELS: usize = 8_192 * 8_192;
 
 pub fn parse_size(s: &str) -> Result<(usize, usize), String> {
-    let (w, h) = s
-        .split_once(['x', 'X'])
-        .ok_or_else(|| format!("size `{s}` is not WxH, e.g. 640x400"))?;
+    let (w, h) = s.split_once(['x', 'X']).ok_or_else(|| format!("size `{s}` is not WxH, e.g. 640x400"))?;
     let side = |v: &str| {
         v.trim()
             .parse::<usize>()
             .ok()
             .filter(|n| (1..=MAX_SIDE).contains(n))
-            .ok_or_else(|| {
-                format!("size `{s}`: `{v}` is not a whole number of pixels in 1..={MAX_SIDE}")
-            })
+            .ok_or_else(|| format!("size `{s}`: `{v}` is not a whole number of pixels in 1..={MAX_SIDE}"))
     };
     let (w, h) = (side(w)?, side(h)?);
     if w * h > MAX_PIXELS {
@@ -105,21 +97,13 @@ pub fn parse_pose(s: &str) -> Result<Pose, String> {
     }
     let mut values = Vec::with_capacity(4);
     for p in &parts {
-        let v: f64 = p
-            .trim()
-            .parse()
-            .map_err(|_| format!("pose `{s}`: `{p}` is not a number"))?;
+        let v: f64 = p.trim().parse().map_err(|_| format!("pose `{s}`: `{p}` is not a number"))?;
         if !v.is_finite() {
             return Err(format!("pose `{s}`: `{p}` is not finite"));
         }
         values.push(v);
     }
-    Ok(Pose {
-        x: values[0],
-        y: values[1],
-        angle: values[2],
-        z: values.get(3).copied(),
-    })
+    Ok(Pose { x: values[0], y: values[1], angle: values[2], z: values.get(3).copied() })
 }
 
 fn parse_splitter(s: &str) -> Result<SplitterKind, String> {
@@ -151,10 +135,7 @@ mod tests {
         assert!(parse_size("320").is_err());
         assert!(parse_size("99999x2").is_err());
         assert_eq!(parse_pose("1,2,90").map(|p| p.z), Ok(None));
-        assert_eq!(
-            parse_pose("1,-2,90,50").map(|p| (p.y, p.z)),
-            Ok((-2.0, Some(50.0)))
-        );
+        assert_eq!(parse_pose("1,-2,90,50").map(|p| (p.y, p.z)), Ok((-2.0, Some(50.0))));
         assert!(parse_pose("1,2").is_err());
         assert!(parse_pose("1,2,nan").is_err());
     }

@@ -10,20 +10,12 @@ use crate::cli::CompileArgs;
 pub fn run(args: &CompileArgs) -> Result<()> {
     check_not_input(&args.map, &args.output)?;
     if is_compiled_file(&args.map) {
-        anyhow::bail!(
-            "{}: is already a compiled map; compile its .ron source",
-            args.map.display()
-        );
+        anyhow::bail!("{}: is already a compiled map; compile its .ron source", args.map.display());
     }
     let map = load_map(&args.map)?;
-    let options = BuildOptions {
-        splitter: args.splitter,
-        seed: args.seed,
-    };
-    let compiled = build(&map, &options).map_err(|error| LevelError::Compile {
-        path: args.map.display().to_string(),
-        error,
-    })?;
+    let options = BuildOptions { splitter: args.splitter, seed: args.seed };
+    let compiled =
+        build(&map, &options).map_err(|error| LevelError::Compile { path: args.map.display().to_string(), error })?;
     write_atomic(&args.output, &file::to_bytes(&compiled))?;
     let s = &compiled.stats;
     if args.json {
@@ -52,8 +44,6 @@ pub fn run(args: &CompileArgs) -> Result<()> {
 fn is_compiled_file(path: &std::path::Path) -> bool {
     use std::io::Read;
     let mut head = [0u8; 32];
-    let n = std::fs::File::open(path)
-        .and_then(|mut f| f.read(&mut head))
-        .unwrap_or(0);
+    let n = std::fs::File::open(path).and_then(|mut f| f.read(&mut head)).unwrap_or(0);
     file::is_compiled(&head[..n])
 }

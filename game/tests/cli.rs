@@ -19,10 +19,7 @@ use sightline::map::parse_map;
 const PRECIOUS: &[u8] = b"precious bytes: not a PNG, not a map\n";
 
 fn shipped_map(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("..")
-        .join("maps")
-        .join(name)
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join("maps").join(name)
 }
 
 fn two_rooms() -> String {
@@ -58,14 +55,8 @@ impl Scene {
         let compiled = compiled_two_rooms();
         let files: [(&str, Vec<u8>); 9] = [
             ("map.ron", text.clone().into()),
-            (
-                "bad.ron",
-                edit(&text, "(0.0, 256.0), (256.0", "(0.0, 256.0) (256.0").into(),
-            ),
-            (
-                "invalid.ron",
-                edit(&text, "from: 3, to: 4", "from: 99, to: 4").into(),
-            ),
+            ("bad.ron", edit(&text, "(0.0, 256.0), (256.0", "(0.0, 256.0) (256.0").into()),
+            ("invalid.ron", edit(&text, "from: 3, to: 4", "from: 99, to: 4").into()),
             ("empty.ron", Vec::new()),
             ("binary.ron", b"\x89PNG\r\n\x1a\n\0\0\0\rIHDR".to_vec()),
             ("half.slbsp", compiled[..compiled.len() / 2].to_vec()),
@@ -133,11 +124,7 @@ struct Run {
 
 impl Run {
     fn ok(&self, what: &str) -> &Run {
-        assert!(
-            self.success,
-            "{what}: exit {:?}\nstdout: {}\nstderr: {}",
-            self.code, self.stdout, self.stderr
-        );
+        assert!(self.success, "{what}: exit {:?}\nstdout: {}\nstderr: {}", self.code, self.stdout, self.stderr);
         self
     }
 }
@@ -168,23 +155,14 @@ fn check_refused(args: &[&str], mentions: &[&str]) -> Result<(), String> {
             .iter()
             .filter(|(k, v)| before.get(*k) != Some(v))
             .map(|(k, _)| k.display().to_string())
-            .chain(
-                before
-                    .keys()
-                    .filter(|k| !after.contains_key(*k))
-                    .map(|k| k.display().to_string()),
-            )
+            .chain(before.keys().filter(|k| !after.contains_key(*k)).map(|k| k.display().to_string()))
             .collect();
         wrong.push(format!("files changed: {changed:?}"));
     }
     if wrong.is_empty() {
         Ok(())
     } else {
-        Err(format!(
-            "{}\n    stderr: {}",
-            wrong.join("; "),
-            run.stderr.trim_end()
-        ))
+        Err(format!("{}\n    stderr: {}", wrong.join("; "), run.stderr.trim_end()))
     }
 }
 
@@ -193,27 +171,15 @@ fn check_all_refused(rows: &[(Vec<&str>, &[&str])]) {
     let failures: Vec<String> = rows
         .iter()
         .filter_map(|(args, mentions)| {
-            check_refused(args, mentions)
-                .err()
-                .map(|e| format!("sightline {}: {e}", args.join(" ")))
+            check_refused(args, mentions).err().map(|e| format!("sightline {}: {e}", args.join(" ")))
         })
         .collect();
-    assert!(
-        failures.is_empty(),
-        "{} of {} rows failed:\n{}",
-        failures.len(),
-        rows.len(),
-        failures.join("\n")
-    );
+    assert!(failures.is_empty(), "{} of {} rows failed:\n{}", failures.len(), rows.len(), failures.join("\n"));
 }
 
 /// The PNG signature and the IHDR size of `bytes`.
 fn png_size(bytes: &[u8]) -> (u32, u32) {
-    assert!(
-        bytes.len() > 24,
-        "too short for a PNG: {} bytes",
-        bytes.len()
-    );
+    assert!(bytes.len() > 24, "too short for a PNG: {} bytes", bytes.len());
     assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n", "PNG signature");
     assert_eq!(&bytes[12..16], b"IHDR", "first chunk is IHDR");
     let be = |i: usize| u32::from_be_bytes(bytes[i..i + 4].try_into().unwrap());
@@ -233,10 +199,7 @@ macro_rules! capture {
 #[test]
 fn capture_refuses_bad_sizes() {
     check_all_refused(&[
-        (
-            capture!("--size", "0x10"),
-            &["--size", "0x10", "`0`", "1..=16384"],
-        ),
+        (capture!("--size", "0x10"), &["--size", "0x10", "`0`", "1..=16384"]),
         (capture!("--size", "64x0"), &["--size", "64x0", "`0`"]),
         (capture!("--size", "10"), &["--size", "`10`", "WxH"]),
         (capture!("--size", "100000x100000"), &["--size", "`100000`"]),
@@ -253,28 +216,13 @@ fn capture_refuses_bad_poses() {
     check_all_refused(&[
         (capture!("--pose", "1,2"), &["--pose", "`1,2`", "X,Y,ANGLE"]),
         (capture!("--pose", "1,2,3,4,5"), &["--pose", "X,Y,ANGLE"]),
-        (
-            capture!("--pose", "1,2,nan"),
-            &["--pose", "`nan`", "not finite"],
-        ),
-        (
-            capture!("--pose", "64,128,0,inf"),
-            &["--pose", "`inf`", "not finite"],
-        ),
-        (
-            capture!("--pose", "a,b,c"),
-            &["--pose", "`a` is not a number"],
-        ),
+        (capture!("--pose", "1,2,nan"), &["--pose", "`nan`", "not finite"]),
+        (capture!("--pose", "64,128,0,inf"), &["--pose", "`inf`", "not finite"]),
+        (capture!("--pose", "a,b,c"), &["--pose", "`a` is not a number"]),
         (capture!("--pose", "1e999,128,0"), &["--pose", "not finite"]),
         // Outside every sector, and exactly on a wall: the map names itself.
-        (
-            capture!("--pose", "-5,128,0"),
-            &["map.ron", "bad pose", "(-5, 128)", "not inside any sector"],
-        ),
-        (
-            capture!("--pose", "1000,1000,90"),
-            &["map.ron", "(1000, 1000)"],
-        ),
+        (capture!("--pose", "-5,128,0"), &["map.ron", "bad pose", "(-5, 128)", "not inside any sector"]),
+        (capture!("--pose", "1000,1000,90"), &["map.ron", "(1000, 1000)"]),
         (capture!("--pose", "256,128,0"), &["map.ron", "(256, 128)"]),
     ]);
 }
@@ -282,14 +230,8 @@ fn capture_refuses_bad_poses() {
 #[test]
 fn capture_refuses_bad_choices() {
     check_all_refused(&[
-        (
-            capture!("--renderer", "raytrace"),
-            &["--renderer", "raytrace", "bsp", "reference"],
-        ),
-        (
-            capture!("--shade", "neon"),
-            &["--shade", "neon", "ids", "flat"],
-        ),
+        (capture!("--renderer", "raytrace"), &["--renderer", "raytrace", "bsp", "reference"]),
+        (capture!("--shade", "neon"), &["--shade", "neon", "ids", "flat"]),
         (capture!("--frobnicate"), &["--frobnicate"]),
         (vec!["capture", "map.ron"], &["--output"]),
         (vec!["capture", "-o", "out.png"], &["<MAP>"]),
@@ -303,51 +245,28 @@ fn capture_refuses_bad_map_files() {
         (capture("missing.ron"), &["missing.ron", "cannot read"]),
         (capture("dir.ron"), &["dir.ron", "cannot read"]),
         (capture("bad.ron"), &["bad.ron:5:34", "comma"]),
-        (
-            capture("invalid.ron"),
-            &["invalid.ron", "line 3", "vertex 99"],
-        ),
+        (capture("invalid.ron"), &["invalid.ron", "line 3", "vertex 99"]),
         (capture("empty.ron"), &["empty.ron", "empty"]),
         (capture("binary.ron"), &["binary.ron", "binary", "byte 8"]),
-        (
-            capture("half.slbsp"),
-            &["half.slbsp", "corrupt or truncated"],
-        ),
+        (capture("half.slbsp"), &["half.slbsp", "corrupt or truncated"]),
     ]);
 }
 
 #[test]
 fn capture_refuses_bad_outputs() {
     check_all_refused(&[
-        (
-            vec!["capture", "map.ron", "-o", "map.ron"],
-            &["map.ron", "refusing to overwrite"],
-        ),
-        (
-            vec!["capture", "map.ron", "-o", "sub/../map.ron"],
-            &["sub/../map.ron", "refusing to overwrite"],
-        ),
-        (
-            vec!["capture", "map.ron", "-o", "nodir/out.png"],
-            &["nodir/out.png", "cannot write"],
-        ),
-        (
-            vec!["capture", "map.ron", "-o", "sub"],
-            &["sub", "cannot write"],
-        ),
-        (
-            vec!["capture", "map.ron", "-o", "."],
-            &[".: cannot write", "not a file name"],
-        ),
+        (vec!["capture", "map.ron", "-o", "map.ron"], &["map.ron", "refusing to overwrite"]),
+        (vec!["capture", "map.ron", "-o", "sub/../map.ron"], &["sub/../map.ron", "refusing to overwrite"]),
+        (vec!["capture", "map.ron", "-o", "nodir/out.png"], &["nodir/out.png", "cannot write"]),
+        (vec!["capture", "map.ron", "-o", "sub"], &["sub", "cannot write"]),
+        (vec!["capture", "map.ron", "-o", "."], &[".: cannot write", "not a file name"]),
     ]);
 }
 
 #[test]
 fn capture_writes_a_png() {
     let scene = Scene::new();
-    let run = scene.run(&[
-        "capture", "map.ron", "--shade", "ids", "--size", "64x40", "-o", "new.png",
-    ]);
+    let run = scene.run(&["capture", "map.ron", "--shade", "ids", "--size", "64x40", "-o", "new.png"]);
     run.ok("capture");
     assert!(!run.stderr.contains("panicked"), "{}", run.stderr);
     let png = std::fs::read(scene.path("new.png")).expect("the PNG was written");
@@ -371,26 +290,12 @@ fn capture_survives_extreme_poses_and_sizes() {
         "511.99999999999,255.9999999999,200,1e15",
     ];
     let sizes = ["1x1", "1x300", "300x1", "16384x1"];
-    let runs = poses
-        .iter()
-        .map(|p| (*p, "48x30"))
-        .chain(sizes.iter().map(|s| ("64,128,0", *s)));
+    let runs = poses.iter().map(|p| (*p, "48x30")).chain(sizes.iter().map(|s| ("64,128,0", *s)));
     for (pose, size) in runs {
         for renderer in ["bsp", "reference"] {
-            let args = [
-                "capture",
-                "map.ron",
-                "-o",
-                "x.png",
-                "--renderer",
-                renderer,
-                "--size",
-                size,
-            ];
+            let args = ["capture", "map.ron", "-o", "x.png", "--renderer", renderer, "--size", size];
             let run = scene.run(&[&args[..], &[&format!("--pose={pose}")]].concat());
-            run.ok(&format!(
-                "--pose={pose} --size {size} --renderer {renderer}"
-            ));
+            run.ok(&format!("--pose={pose} --size {size} --renderer {renderer}"));
             let (w, h) = size.split_once('x').unwrap();
             let png = std::fs::read(scene.path("x.png")).unwrap();
             assert_eq!(png_size(&png), (w.parse().unwrap(), h.parse().unwrap()));
@@ -419,10 +324,7 @@ fn capture_replaces_an_existing_output() {
     let png = std::fs::read(scene.path("out.png")).unwrap();
     assert_eq!(png_size(&png), (33, 17));
     let after = scene.snapshot();
-    let changed: Vec<_> = after
-        .keys()
-        .filter(|k| before.get(*k) != after.get(*k))
-        .collect();
+    let changed: Vec<_> = after.keys().filter(|k| before.get(*k) != after.get(*k)).collect();
     assert_eq!(changed, [Path::new("out.png")], "only out.png changes");
 }
 
@@ -432,24 +334,12 @@ fn capture_replaces_an_existing_output() {
 #[test]
 fn compile_refuses_to_overwrite_its_input() {
     check_all_refused(&[
-        (
-            vec!["compile", "map.ron", "-o", "map.ron"],
-            &["map.ron", "refusing to overwrite the input map"],
-        ),
-        (
-            vec!["compile", "map.ron", "-o", "./sub/../map.ron"],
-            &["./sub/../map.ron", "refusing"],
-        ),
+        (vec!["compile", "map.ron", "-o", "map.ron"], &["map.ron", "refusing to overwrite the input map"]),
+        (vec!["compile", "map.ron", "-o", "./sub/../map.ron"], &["./sub/../map.ron", "refusing"]),
         #[cfg(unix)]
-        (
-            vec!["compile", "map.ron", "-o", "link.ron"],
-            &["link.ron", "refusing"],
-        ),
+        (vec!["compile", "map.ron", "-o", "link.ron"], &["link.ron", "refusing"]),
         #[cfg(unix)]
-        (
-            vec!["compile", "link.ron", "-o", "map.ron"],
-            &["map.ron", "refusing"],
-        ),
+        (vec!["compile", "link.ron", "-o", "map.ron"], &["map.ron", "refusing"]),
     ]);
 }
 
@@ -459,18 +349,12 @@ fn compile_of_a_bad_map_leaves_the_output_alone() {
     let compile = |map| vec!["compile", map, "-o", "out.slbsp"];
     check_all_refused(&[
         (compile("bad.ron"), &["bad.ron:5:34", "comma"]),
-        (
-            compile("invalid.ron"),
-            &["invalid.ron", "line 3", "`from` refers to vertex 99"],
-        ),
+        (compile("invalid.ron"), &["invalid.ron", "line 3", "`from` refers to vertex 99"]),
         (compile("empty.ron"), &["empty.ron", "empty"]),
         (compile("binary.ron"), &["binary.ron", "byte 8"]),
         (compile("missing.ron"), &["missing.ron", "cannot read"]),
         (compile("dir.ron"), &["dir.ron", "cannot read"]),
-        (
-            compile("compiled.slbsp"),
-            &["compiled.slbsp", "already a compiled map"],
-        ),
+        (compile("compiled.slbsp"), &["compiled.slbsp", "already a compiled map"]),
     ]);
 }
 
@@ -478,38 +362,14 @@ fn compile_of_a_bad_map_leaves_the_output_alone() {
 fn compile_refuses_bad_arguments() {
     check_all_refused(&[
         (
-            vec![
-                "compile",
-                "map.ron",
-                "-o",
-                "out.slbsp",
-                "--splitter",
-                "nonsense",
-            ],
-            &[
-                "--splitter",
-                "unknown splitter `nonsense`",
-                "random",
-                "cost",
-            ],
+            vec!["compile", "map.ron", "-o", "out.slbsp", "--splitter", "nonsense"],
+            &["--splitter", "unknown splitter `nonsense`", "random", "cost"],
         ),
-        (
-            vec!["compile", "map.ron", "-o", "out.slbsp", "--seed", "abc"],
-            &["--seed", "abc"],
-        ),
-        (
-            vec!["compile", "map.ron", "-o", "out.slbsp", "--seed=-1"],
-            &["--seed", "'-1'"],
-        ),
+        (vec!["compile", "map.ron", "-o", "out.slbsp", "--seed", "abc"], &["--seed", "abc"]),
+        (vec!["compile", "map.ron", "-o", "out.slbsp", "--seed=-1"], &["--seed", "'-1'"]),
         (vec!["compile", "map.ron"], &["--output"]),
-        (
-            vec!["compile", "map.ron", "-o", "nodir/out.slbsp"],
-            &["nodir/out.slbsp", "cannot write"],
-        ),
-        (
-            vec!["compile", "map.ron", "-o", "sub"],
-            &["sub", "cannot write"],
-        ),
+        (vec!["compile", "map.ron", "-o", "nodir/out.slbsp"], &["nodir/out.slbsp", "cannot write"]),
+        (vec!["compile", "map.ron", "-o", "sub"], &["sub", "cannot write"]),
         (vec!["frobnicate"], &["frobnicate"]),
     ]);
 }
@@ -519,65 +379,28 @@ fn compile_json_is_one_object_on_the_last_line_and_the_file_loads() {
     let scene = Scene::new();
     for splitter in ["cost", "random"] {
         let out = format!("two_rooms.{splitter}.slbsp");
-        let run = scene.run(&[
-            "compile",
-            "map.ron",
-            "-o",
-            &out,
-            "--json",
-            "--splitter",
-            splitter,
-            "--seed",
-            "3",
-        ]);
+        let run = scene.run(&["compile", "map.ron", "-o", &out, "--json", "--splitter", splitter, "--seed", "3"]);
         run.ok("compile --json");
         let last = run.stdout.lines().last().expect("some stdout");
-        let stats: serde_json::Value = serde_json::from_str(last)
-            .unwrap_or_else(|e| panic!("last stdout line is not JSON ({e}): {last}"));
+        let stats: serde_json::Value =
+            serde_json::from_str(last).unwrap_or_else(|e| panic!("last stdout line is not JSON ({e}): {last}"));
         let obj = stats.as_object().expect("a JSON object");
-        for key in [
-            "lines_in",
-            "sides_in",
-            "sides_out",
-            "splits",
-            "nodes",
-            "leaves",
-            "depth",
-        ] {
-            assert!(
-                obj.get(key).is_some_and(|v| v.is_u64()),
-                "`{key}` missing or not a count: {last}"
-            );
+        for key in ["lines_in", "sides_in", "sides_out", "splits", "nodes", "leaves", "depth"] {
+            assert!(obj.get(key).is_some_and(|v| v.is_u64()), "`{key}` missing or not a count: {last}");
         }
-        assert!(
-            obj.get("build_ms")
-                .is_some_and(|v| v.as_f64().is_some_and(|ms| ms >= 0.0)),
-            "{last}"
-        );
+        assert!(obj.get("build_ms").is_some_and(|v| v.as_f64().is_some_and(|ms| ms >= 0.0)), "{last}");
         assert_eq!(obj["lines_in"], 7, "{last}");
         assert_eq!(obj["sides_in"], 8, "{last}");
-        assert!(
-            obj["sides_out"].as_u64() >= obj["sides_in"].as_u64(),
-            "{last}"
-        );
-        assert_eq!(
-            obj["leaves"].as_u64(),
-            obj["nodes"].as_u64().map(|n| n + 1),
-            "a binary tree: {last}"
-        );
+        assert!(obj["sides_out"].as_u64() >= obj["sides_in"].as_u64(), "{last}");
+        assert_eq!(obj["leaves"].as_u64(), obj["nodes"].as_u64().map(|n| n + 1), "a binary tree: {last}");
 
         let compiled = std::fs::read(scene.path(&out)).expect("compiled file written");
         assert!(compiled.starts_with(file::MAGIC), "compiled file header");
         let png = format!("{out}.png");
         scene
-            .run(&[
-                "capture", &out, "--shade", "ids", "--size", "64x40", "-o", &png,
-            ])
+            .run(&["capture", &out, "--shade", "ids", "--size", "64x40", "-o", &png])
             .ok("capture of the compiled file");
-        assert_eq!(
-            png_size(&std::fs::read(scene.path(&png)).unwrap()),
-            (64, 40)
-        );
+        assert_eq!(png_size(&std::fs::read(scene.path(&png)).unwrap()), (64, 40));
     }
 }
 
@@ -585,31 +408,12 @@ fn compile_json_is_one_object_on_the_last_line_and_the_file_loads() {
 #[test]
 fn a_compiled_map_captures_like_its_source() {
     let scene = Scene::new();
-    scene
-        .run(&["compile", "map.ron", "-o", "map.slbsp"])
-        .ok("compile");
+    scene.run(&["compile", "map.ron", "-o", "map.slbsp"]).ok("compile");
     for (input, png) in [("map.ron", "a.png"), ("map.slbsp", "b.png")] {
-        scene
-            .run(&[
-                "capture",
-                input,
-                "--size",
-                "80x50",
-                "--pose",
-                "100,100,30",
-                "-o",
-                png,
-            ])
-            .ok("capture");
+        scene.run(&["capture", input, "--size", "80x50", "--pose", "100,100,30", "-o", png]).ok("capture");
     }
-    let (a, b) = (
-        std::fs::read(scene.path("a.png")).unwrap(),
-        std::fs::read(scene.path("b.png")).unwrap(),
-    );
-    assert!(
-        a == b,
-        "capture of the compiled map differs from the source's"
-    );
+    let (a, b) = (std::fs::read(scene.path("a.png")).unwrap(), std::fs::read(scene.path("b.png")).unwrap());
+    assert!(a == b, "capture of the compiled map differs from the source's");
 }
 
 #[test]

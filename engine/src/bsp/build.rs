@@ -65,11 +65,7 @@ pub fn classify(a: DVec2, b: DVec2, seg: &Seg) -> Class {
     let (on1, on2) = (d1.abs() < ON_EPSILON, d2.abs() < ON_EPSILON);
     if on1 && on2 {
         // Collinear: it goes where its own front faces.
-        return if (seg.v2 - seg.v1).dot(d) > 0.0 {
-            Class::Front
-        } else {
-            Class::Back
-        };
+        return if (seg.v2 - seg.v1).dot(d) > 0.0 { Class::Front } else { Class::Back };
     }
     if d1 > -ON_EPSILON && d2 > -ON_EPSILON {
         Class::Front
@@ -88,15 +84,8 @@ pub fn classify(a: DVec2, b: DVec2, seg: &Seg) -> Class {
 fn split(map: &Map, seg: &Seg, a: DVec2, b: DVec2) -> (Seg, Seg) {
     let (from, to) = map.line_points(&map.lines[seg.line]);
     let cut = line_intersection(from, to, a, b);
-    let first = Seg {
-        v2: cut,
-        ..seg.clone()
-    };
-    let second = Seg {
-        v1: cut,
-        offset: seg.offset + cut.distance(seg.v1),
-        ..seg.clone()
-    };
+    let first = Seg { v2: cut, ..seg.clone() };
+    let second = Seg { v1: cut, offset: seg.offset + cut.distance(seg.v1), ..seg.clone() };
     (first, second)
 }
 
@@ -115,10 +104,7 @@ fn initial_segs(map: &Map) -> Vec<WorkSeg> {
             back_sector,
             offset: 0.0,
         };
-        segs.push(WorkSeg {
-            seg: front,
-            source: segs.len(),
-        });
+        segs.push(WorkSeg { seg: front, source: segs.len() });
         if let Some(back) = &line.back {
             let seg = Seg {
                 v1: to,
@@ -129,10 +115,7 @@ fn initial_segs(map: &Map) -> Vec<WorkSeg> {
                 back_sector: Some(line.front.sector),
                 offset: 0.0,
             };
-            segs.push(WorkSeg {
-                seg,
-                source: segs.len(),
-            });
+            segs.push(WorkSeg { seg, source: segs.len() });
         }
     }
     segs
@@ -169,18 +152,9 @@ pub fn build(map: &Map, options: &BuildOptions) -> Result<CompiledMap, CompileEr
         SplitterKind::Random => Box::new(RandomSplitter::new(sides_in, options.seed)),
         SplitterKind::Cost => Box::new(CostSplitter::new(map.lines.len())),
     };
-    let mut bsp = Bsp {
-        root: Child::Leaf(0),
-        nodes: Vec::new(),
-        leaves: Vec::new(),
-        segs: Vec::new(),
-    };
+    let mut bsp = Bsp { root: Child::Leaf(0), nodes: Vec::new(), leaves: Vec::new(), segs: Vec::new() };
     let (mut splits, mut depth) = (0, 0);
-    let mut stack = vec![Work {
-        segs,
-        slot: Slot::Root,
-        depth: 0,
-    }];
+    let mut stack = vec![Work { segs, slot: Slot::Root, depth: 0 }];
     while let Some(work) = stack.pop() {
         let child = match splitter.pick(&work.segs) {
             None => {
@@ -193,18 +167,9 @@ pub fn build(map: &Map, options: &BuildOptions) -> Result<CompiledMap, CompileEr
                 splits += cuts;
                 let index = bsp.nodes.len();
                 let bbox = [bbox_of(&front), bbox_of(&back)];
-                bsp.nodes.push(Node {
-                    a,
-                    b,
-                    children: [Child::Leaf(0); 2],
-                    bbox,
-                });
+                bsp.nodes.push(Node { a, b, children: [Child::Leaf(0); 2], bbox });
                 for (k, segs) in [(1, back), (0, front)] {
-                    stack.push(Work {
-                        segs,
-                        slot: Slot::Child(index, k),
-                        depth: work.depth + 1,
-                    });
+                    stack.push(Work { segs, slot: Slot::Child(index, k), depth: work.depth + 1 });
                 }
                 Child::Node(index)
             }
@@ -226,20 +191,11 @@ pub fn build(map: &Map, options: &BuildOptions) -> Result<CompiledMap, CompileEr
         depth,
         build_ms: started.elapsed().as_secs_f64() * 1e3,
     };
-    Ok(CompiledMap {
-        map: map.clone(),
-        bsp,
-        stats,
-    })
+    Ok(CompiledMap { map: map.clone(), bsp, stats })
 }
 
 /// Splits a set of segs by the line `a -> b`; returns front, back and the number of cuts.
-fn partition(
-    map: &Map,
-    segs: Vec<WorkSeg>,
-    a: DVec2,
-    b: DVec2,
-) -> (Vec<WorkSeg>, Vec<WorkSeg>, usize) {
+fn partition(map: &Map, segs: Vec<WorkSeg>, a: DVec2, b: DVec2) -> (Vec<WorkSeg>, Vec<WorkSeg>, usize) {
     let (mut front, mut back, mut cuts) = (Vec::new(), Vec::new(), 0);
     for w in segs {
         match classify(a, b, &w.seg) {
@@ -248,19 +204,9 @@ fn partition(
             Class::Split(start_in_front) => {
                 cuts += 1;
                 let (first, second) = split(map, &w.seg, a, b);
-                let (f, k) = if start_in_front {
-                    (first, second)
-                } else {
-                    (second, first)
-                };
-                front.push(WorkSeg {
-                    seg: f,
-                    source: w.source,
-                });
-                back.push(WorkSeg {
-                    seg: k,
-                    source: w.source,
-                });
+                let (f, k) = if start_in_front { (first, second) } else { (second, first) };
+                front.push(WorkSeg { seg: f, source: w.source });
+                back.push(WorkSeg { seg: k, source: w.source });
             }
         }
     }
@@ -270,18 +216,9 @@ fn partition(
 fn make_leaf(bsp: &mut Bsp, segs: Vec<WorkSeg>) -> Result<usize, CompileError> {
     let sector = segs[0].seg.front_sector;
     if let Some(other) = segs.iter().find(|s| s.seg.front_sector != sector) {
-        return Err(CompileError::MixedLeaf {
-            a: sector,
-            b: other.seg.front_sector,
-            at: other.seg.v1,
-        });
+        return Err(CompileError::MixedLeaf { a: sector, b: other.seg.front_sector, at: other.seg.v1 });
     }
-    let leaf = Leaf {
-        first: bsp.segs.len(),
-        count: segs.len(),
-        sector,
-        bbox: bbox_of(&segs),
-    };
+    let leaf = Leaf { first: bsp.segs.len(), count: segs.len(), sector, bbox: bbox_of(&segs) };
     bsp.segs.extend(segs.into_iter().map(|w| w.seg));
     bsp.leaves.push(leaf);
     Ok(bsp.leaves.len() - 1)

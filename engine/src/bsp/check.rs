@@ -14,17 +14,9 @@ use crate::map::Map;
 pub fn check_structure(map: &Map, bsp: &Bsp) -> Result<(), String> {
     let finite = |p: glam::DVec2| p.x.is_finite() && p.y.is_finite();
     for (i, s) in bsp.segs.iter().enumerate() {
-        let sectors_ok = s.front_sector < map.sectors.len()
-            && s.back_sector.is_none_or(|b| b < map.sectors.len());
-        if s.line >= map.lines.len()
-            || !sectors_ok
-            || !finite(s.v1)
-            || !finite(s.v2)
-            || !s.offset.is_finite()
-        {
-            return Err(format!(
-                "seg {i} refers to a missing line or sector, or is not finite"
-            ));
+        let sectors_ok = s.front_sector < map.sectors.len() && s.back_sector.is_none_or(|b| b < map.sectors.len());
+        if s.line >= map.lines.len() || !sectors_ok || !finite(s.v1) || !finite(s.v2) || !s.offset.is_finite() {
+            return Err(format!("seg {i} refers to a missing line or sector, or is not finite"));
         }
     }
     let mut referenced_nodes = vec![false; bsp.nodes.len()];
@@ -36,9 +28,7 @@ pub fn check_structure(map: &Map, bsp: &Bsp) -> Result<(), String> {
         };
         match seen {
             None => Err(format!("{what} refers to {child:?}, which does not exist")),
-            Some(true) => Err(format!(
-                "{what}: {child:?} is referenced twice (not a tree)"
-            )),
+            Some(true) => Err(format!("{what}: {child:?} is referenced twice (not a tree)")),
             Some(seen) => {
                 *seen = true;
                 Ok(())
@@ -54,20 +44,13 @@ pub fn check_structure(map: &Map, bsp: &Bsp) -> Result<(), String> {
             mark(child, &format!("node {i}"))?;
         }
     }
-    if referenced_nodes
-        .iter()
-        .chain(&referenced_leaves)
-        .any(|seen| !seen)
-    {
+    if referenced_nodes.iter().chain(&referenced_leaves).any(|seen| !seen) {
         return Err("some nodes or leaves are not reachable from the root".into());
     }
     // The leaves' seg ranges must partition `segs`: each seg in exactly one leaf.
     let mut owned = vec![false; bsp.segs.len()];
     for (i, leaf) in bsp.leaves.iter().enumerate() {
-        let end = leaf
-            .first
-            .checked_add(leaf.count)
-            .filter(|&e| e <= bsp.segs.len());
+        let end = leaf.first.checked_add(leaf.count).filter(|&e| e <= bsp.segs.len());
         let Some(end) = end.filter(|_| leaf.count > 0 && leaf.sector < map.sectors.len()) else {
             return Err(format!("leaf {i} has a bad seg range or sector"));
         };
@@ -102,10 +85,7 @@ fn tolerance(p: glam::DVec2) -> f64 {
 fn check_sides_covered(map: &Map, bsp: &Bsp) -> Result<(), String> {
     let mut pieces: HashMap<(usize, bool), Vec<usize>> = HashMap::new();
     for (i, s) in bsp.segs.iter().enumerate() {
-        pieces
-            .entry((s.line, s.side == LineSide::Back))
-            .or_default()
-            .push(i);
+        pieces.entry((s.line, s.side == LineSide::Back)).or_default().push(i);
     }
     for (l, line) in map.lines.iter().enumerate() {
         for back in [false, true] {
@@ -128,16 +108,10 @@ fn check_sides_covered(map: &Map, bsp: &Bsp) -> Result<(), String> {
             for s in &list {
                 let tol = tolerance(s.v1);
                 if s.v1.distance(reached) > tol {
-                    return Err(format!(
-                        "line {l} side {back}: gap or overlap before offset {}",
-                        s.offset
-                    ));
+                    return Err(format!("line {l} side {back}: gap or overlap before offset {}", s.offset));
                 }
                 if (s.offset - covered).abs() > tol {
-                    return Err(format!(
-                        "line {l} side {back}: piece offset {} should be {covered}",
-                        s.offset
-                    ));
+                    return Err(format!("line {l} side {back}: piece offset {} should be {covered}", s.offset));
                 }
                 for p in [s.v1, s.v2] {
                     if front_distance(start, end, p).abs() > tol {
@@ -150,10 +124,7 @@ fn check_sides_covered(map: &Map, bsp: &Bsp) -> Result<(), String> {
                 covered += s.v1.distance(s.v2);
                 reached = s.v2;
             }
-            if list.is_empty()
-                || reached.distance(end) > tolerance(end)
-                || (covered - length).abs() > tolerance(end)
-            {
+            if list.is_empty() || reached.distance(end) > tolerance(end) || (covered - length).abs() > tolerance(end) {
                 return Err(format!("line {l} side {back}: pieces do not cover it"));
             }
         }
@@ -179,11 +150,7 @@ fn check_sides_of_ancestors(bsp: &Bsp) -> Result<(), String> {
                         let node = &bsp.nodes[n];
                         for p in [s.v1, s.v2] {
                             let d = front_distance(node.a, node.b, p);
-                            let ok = if behind {
-                                d < tolerance(p)
-                            } else {
-                                d > -tolerance(p)
-                            };
+                            let ok = if behind { d < tolerance(p) } else { d > -tolerance(p) };
                             if !ok {
                                 return Err(format!(
                                     "leaf {l}: a seg of line {} is on the wrong side of node {n}",
@@ -205,18 +172,12 @@ fn check_leaves_convex(bsp: &Bsp) -> Result<(), String> {
         let segs = bsp.leaf_segs(leaf);
         for s in segs {
             if s.front_sector != leaf.sector {
-                return Err(format!(
-                    "leaf {l}: seg of line {} is not of sector {}",
-                    s.line, leaf.sector
-                ));
+                return Err(format!("leaf {l}: seg of line {} is not of sector {}", s.line, leaf.sector));
             }
             for t in segs {
                 for p in [t.v1, t.v2] {
                     if front_distance(s.v1, s.v2, p) < -tolerance(p) {
-                        return Err(format!(
-                            "leaf {l} is not convex: line {} is behind line {}",
-                            t.line, s.line
-                        ));
+                        return Err(format!("leaf {l} is not convex: line {} is behind line {}", t.line, s.line));
                     }
                 }
             }

@@ -31,11 +31,7 @@ pub fn is_compiled(bytes: &[u8]) -> bool {
 }
 
 pub fn to_bytes(compiled: &CompiledMap) -> Vec<u8> {
-    let contents = Contents {
-        map: compiled.map.clone(),
-        bsp: compiled.bsp.clone(),
-        stats: compiled.stats.clone(),
-    };
+    let contents = Contents { map: compiled.map.clone(), bsp: compiled.bsp.clone(), stats: compiled.stats.clone() };
     // Serializing plain in-memory data into a Vec cannot fail.
     let payload = postcard::to_stdvec(&contents).unwrap_or_default();
     let mut bytes = MAGIC.to_vec();
@@ -47,23 +43,16 @@ pub fn to_bytes(compiled: &CompiledMap) -> Vec<u8> {
 
 /// Decodes a compiled map; the error says what is wrong with it.
 pub fn from_bytes(bytes: &[u8]) -> Result<CompiledMap, String> {
-    let rest = bytes
-        .strip_prefix(MAGIC)
-        .ok_or("not a compiled map (bad header)")?;
+    let rest = bytes.strip_prefix(MAGIC).ok_or("not a compiled map (bad header)")?;
     let (&version, payload) = rest.split_first().ok_or("truncated after the header")?;
     if version != VERSION {
-        return Err(format!(
-            "format version {version}, this build reads version {VERSION}; recompile the map"
-        ));
+        return Err(format!("format version {version}, this build reads version {VERSION}; recompile the map"));
     }
-    let (checksum, payload) = payload
-        .split_first_chunk::<4>()
-        .ok_or("truncated after the header")?;
+    let (checksum, payload) = payload.split_first_chunk::<4>().ok_or("truncated after the header")?;
     if crc32fast::hash(payload) != u32::from_le_bytes(*checksum) {
         return Err("corrupt or truncated: checksum mismatch".into());
     }
-    let contents: Contents =
-        postcard::from_bytes(payload).map_err(|e| format!("corrupt or truncated: {e}"))?;
+    let contents: Contents = postcard::from_bytes(payload).map_err(|e| format!("corrupt or truncated: {e}"))?;
     // Validate again, as if from source: the bytes may have been tampered with.
     let map = validate(&contents.map.to_source()).map_err(|problems| {
         let first = problems.first().map(|p| p.to_string()).unwrap_or_default();
@@ -72,9 +61,5 @@ pub fn from_bytes(bytes: &[u8]) -> Result<CompiledMap, String> {
     // A file can be well-formed and checksummed yet hand-made: hold its tree to
     // every promise the compiler makes (a few ms even for large maps).
     check_invariants(&map, &contents.bsp)?;
-    Ok(CompiledMap {
-        map,
-        bsp: contents.bsp,
-        stats: contents.stats,
-    })
+    Ok(CompiledMap { map, bsp: contents.bsp, stats: contents.stats })
 }

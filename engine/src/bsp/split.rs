@@ -61,11 +61,7 @@ impl Tally {
 
 /// Classifies every seg against `segs[candidate]`'s line, stopping early once
 /// `give_up` says the tally can no longer win.
-pub fn tally(
-    segs: &[WorkSeg],
-    candidate: usize,
-    give_up: impl Fn(&Tally) -> bool,
-) -> Option<Tally> {
+pub fn tally(segs: &[WorkSeg], candidate: usize, give_up: impl Fn(&Tally) -> bool) -> Option<Tally> {
     let part = &segs[candidate].seg;
     let mut t = Tally::default();
     for s in segs {
@@ -103,9 +99,7 @@ impl Splitter for RandomSplitter {
     fn pick(&mut self, segs: &[WorkSeg]) -> Option<usize> {
         let mut by_priority: Vec<usize> = (0..segs.len()).collect();
         by_priority.sort_by_key(|&i| self.order[segs[i].source]);
-        by_priority
-            .into_iter()
-            .find(|&c| tally(segs, c, |t| t.divides()).is_none())
+        by_priority.into_iter().find(|&c| tally(segs, c, |t| t.divides()).is_none())
     }
 }
 
@@ -119,11 +113,7 @@ pub struct CostSplitter {
 
 impl CostSplitter {
     pub fn new(lines: usize) -> Self {
-        CostSplitter {
-            split_weight: 8,
-            seen: vec![usize::MAX; lines],
-            stamp: 0,
-        }
+        CostSplitter { split_weight: 8, seen: vec![usize::MAX; lines], stamp: 0 }
     }
 }
 

@@ -20,17 +20,9 @@ pub enum MapError {
     #[error("{path}: not a text map: byte {offset} is binary data")]
     Binary { path: String, offset: usize },
     #[error("{path}:{line}:{col}: {message}")]
-    Syntax {
-        path: String,
-        line: usize,
-        col: usize,
-        message: String,
-    },
+    Syntax { path: String, line: usize, col: usize, message: String },
     #[error("{path}: {}", list_problems(problems))]
-    Invalid {
-        path: String,
-        problems: Vec<Problem>,
-    },
+    Invalid { path: String, problems: Vec<Problem> },
 }
 
 impl MapError {
@@ -64,99 +56,28 @@ fn list_problems(problems: &[Problem]) -> String {
 /// One thing wrong with a map, naming the element it concerns.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Problem {
-    Missing {
-        what: &'static str,
-    },
-    BadVertex {
-        vertex: usize,
-        x: f64,
-        y: f64,
-    },
-    SharedPosition {
-        vertex: usize,
-        first: usize,
-    },
-    BadHeight {
-        sector: usize,
-        which: &'static str,
-        value: f64,
-    },
-    FloorAboveCeiling {
-        sector: usize,
-        floor: f64,
-        ceiling: f64,
-    },
-    BadLight {
-        sector: usize,
-        light: i64,
-    },
-    DanglingVertex {
-        line: usize,
-        end: &'static str,
-        vertex: i64,
-        count: usize,
-    },
-    DanglingSector {
-        line: usize,
-        side: &'static str,
-        sector: i64,
-        count: usize,
-    },
-    BadOffset {
-        line: usize,
-        side: &'static str,
-    },
-    ZeroLength {
-        line: usize,
-    },
-    DuplicateLine {
-        line: usize,
-        first: usize,
-    },
-    Crossing {
-        line: usize,
-        other: usize,
-        at: DVec2,
-    },
-    Touching {
-        line: usize,
-        other: usize,
-        at: DVec2,
-    },
-    Overlap {
-        line: usize,
-        other: usize,
-    },
-    Unclosed {
-        sector: usize,
-        vertex: usize,
-        into: usize,
-        out_of: usize,
-    },
-    InsideOut {
-        sector: usize,
-    },
-    SideMismatch {
-        line: usize,
-        side: &'static str,
-        expected: Option<usize>,
-        found: Vec<usize>,
-    },
-    NoLines {
-        sector: usize,
-    },
-    BadThing {
-        thing: usize,
-    },
+    Missing { what: &'static str },
+    BadVertex { vertex: usize, x: f64, y: f64 },
+    SharedPosition { vertex: usize, first: usize },
+    BadHeight { sector: usize, which: &'static str, value: f64 },
+    FloorAboveCeiling { sector: usize, floor: f64, ceiling: f64 },
+    BadLight { sector: usize, light: i64 },
+    DanglingVertex { line: usize, end: &'static str, vertex: i64, count: usize },
+    DanglingSector { line: usize, side: &'static str, sector: i64, count: usize },
+    BadOffset { line: usize, side: &'static str },
+    ZeroLength { line: usize },
+    DuplicateLine { line: usize, first: usize },
+    Crossing { line: usize, other: usize, at: DVec2 },
+    Touching { line: usize, other: usize, at: DVec2 },
+    Overlap { line: usize, other: usize },
+    Unclosed { sector: usize, vertex: usize, into: usize, out_of: usize },
+    InsideOut { sector: usize },
+    SideMismatch { line: usize, side: &'static str, expected: Option<usize>, found: Vec<usize> },
+    NoLines { sector: usize },
+    BadThing { thing: usize },
     NoPlayerStart,
-    BadFog {
-        distance: f64,
-    },
-    StartOutside {
-        thing: usize,
-        x: f64,
-        y: f64,
-    },
+    BadFog { distance: f64 },
+    StartOutside { thing: usize, x: f64, y: f64 },
 }
 
 /// Numbers print with `{:?}`, which is exact and short (`1e300`, not 301 digits).
@@ -182,14 +103,12 @@ impl fmt::Display for Problem {
             Problem::BadLight { sector, light } => {
                 write!(f, "sector {sector}: light {light} is outside 0..=255")
             }
-            Problem::DanglingVertex { line, end, vertex, count } => write!(
-                f,
-                "line {line}: `{end}` refers to vertex {vertex}, but the vertices are numbered 0..{count}"
-            ),
-            Problem::DanglingSector { line, side, sector, count } => write!(
-                f,
-                "line {line}: {side} side refers to sector {sector}, but the sectors are numbered 0..{count}"
-            ),
+            Problem::DanglingVertex { line, end, vertex, count } => {
+                write!(f, "line {line}: `{end}` refers to vertex {vertex}, but the vertices are numbered 0..{count}")
+            }
+            Problem::DanglingSector { line, side, sector, count } => {
+                write!(f, "line {line}: {side} side refers to sector {sector}, but the sectors are numbered 0..{count}")
+            }
             Problem::BadOffset { line, side } => {
                 write!(f, "line {line}: {side} side has a texture offset that is not finite")
             }
@@ -211,10 +130,9 @@ impl fmt::Display for Problem {
                 "sector {sector}: its lines do not close at vertex {vertex} \
                  ({into} of its boundary edges arrive there, {out_of} leave; they must match)"
             ),
-            Problem::InsideOut { sector } => write!(
-                f,
-                "sector {sector}: its sides face away from it (the front of a line is its right-hand side)"
-            ),
+            Problem::InsideOut { sector } => {
+                write!(f, "sector {sector}: its sides face away from it (the front of a line is its right-hand side)")
+            }
             Problem::SideMismatch { line, side, expected, found } => {
                 let name = |s: &[usize]| match s {
                     [] => "no sector".to_string(),
@@ -253,10 +171,7 @@ impl fmt::Display for Problem {
 /// Reads, parses and validates a sector map file.
 pub fn load_map(path: &Path) -> Result<Map, MapError> {
     let label = path.display().to_string();
-    let bytes = std::fs::read(path).map_err(|error| MapError::Io {
-        path: label.clone(),
-        error,
-    })?;
+    let bytes = std::fs::read(path).map_err(|error| MapError::Io { path: label.clone(), error })?;
     parse_map_bytes(&bytes, &label)
 }
 
@@ -267,30 +182,20 @@ pub fn parse_map(text: &str, label: &str) -> Result<Map, MapError> {
 
 pub(crate) fn parse_map_bytes(bytes: &[u8], label: &str) -> Result<Map, MapError> {
     let source = parse_source(bytes, label)?;
-    validate::validate(&source).map_err(|problems| MapError::Invalid {
-        path: label.to_string(),
-        problems,
-    })
+    validate::validate(&source).map_err(|problems| MapError::Invalid { path: label.to_string(), problems })
 }
 
 /// Checks that `bytes` are non-empty text and returns them as `&str`.
 pub(crate) fn as_text<'a>(bytes: &'a [u8], label: &str) -> Result<&'a str, MapError> {
     if let Some(offset) = bytes.iter().position(|&b| b == 0) {
-        return Err(MapError::Binary {
-            path: label.to_string(),
-            offset,
-        });
+        return Err(MapError::Binary { path: label.to_string(), offset });
     }
-    let text = std::str::from_utf8(bytes).map_err(|e| MapError::Binary {
-        path: label.to_string(),
-        offset: e.valid_up_to(),
-    })?;
+    let text = std::str::from_utf8(bytes)
+        .map_err(|e| MapError::Binary { path: label.to_string(), offset: e.valid_up_to() })?;
     // Editors on Windows may start UTF-8 files with a byte-order mark.
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     if text.trim().is_empty() {
-        return Err(MapError::Empty {
-            path: label.to_string(),
-        });
+        return Err(MapError::Empty { path: label.to_string() });
     }
     Ok(text)
 }
@@ -300,14 +205,11 @@ pub fn parse_source(bytes: &[u8], label: &str) -> Result<MapSource, MapError> {
     let text = as_text(bytes, label)?;
     // IMPLICIT_SOME lets optional fields be written bare (`middle: "BRICK"`)
     // while `back: Some(Side(...))` keeps working.
-    let options =
-        ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
-    options
-        .from_str::<MapSource>(text)
-        .map_err(|e| MapError::Syntax {
-            path: label.to_string(),
-            line: e.span.start.line,
-            col: e.span.start.col,
-            message: e.code.to_string(),
-        })
+    let options = ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
+    options.from_str::<MapSource>(text).map_err(|e| MapError::Syntax {
+        path: label.to_string(),
+        line: e.span.start.line,
+        col: e.span.start.col,
+        message: e.code.to_string(),
+    })
 }

@@ -87,15 +87,11 @@ pub const SKY: &str = "SKY";
 
 impl Sector {
     pub fn ceiling_is_sky(&self) -> bool {
-        self.ceiling_texture
-            .as_deref()
-            .is_some_and(|t| t.eq_ignore_ascii_case(SKY))
+        self.ceiling_texture.as_deref().is_some_and(|t| t.eq_ignore_ascii_case(SKY))
     }
 
     pub fn floor_is_sky(&self) -> bool {
-        self.floor_texture
-            .as_deref()
-            .is_some_and(|t| t.eq_ignore_ascii_case(SKY))
+        self.floor_texture.as_deref().is_some_and(|t| t.eq_ignore_ascii_case(SKY))
     }
 }
 
@@ -194,18 +190,12 @@ impl Map {
             things: self
                 .things
                 .iter()
-                .map(|t| ThingSource {
-                    kind: t.kind.clone(),
-                    x: t.pos.x,
-                    y: t.pos.y,
-                    angle: t.angle,
-                })
+                .map(|t| ThingSource { kind: t.kind.clone(), x: t.pos.x, y: t.pos.y, angle: t.angle })
                 .collect(),
             diminishing_light: self.diminishing_light,
-            fog: self.fog.map(|f| source::FogSource {
-                colour: (f.colour[0], f.colour[1], f.colour[2]),
-                distance: f.distance,
-            }),
+            fog: self
+                .fog
+                .map(|f| source::FogSource { colour: (f.colour[0], f.colour[1], f.colour[2]), distance: f.distance }),
         }
     }
 }

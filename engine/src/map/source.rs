@@ -108,9 +108,7 @@ fn is_zero(x: &f64) -> bool {
 impl MapSource {
     /// Pretty RON text that [`crate::map::parse_map`] reads back.
     pub fn to_ron(&self) -> String {
-        let config = ron::ser::PrettyConfig::new()
-            .struct_names(true)
-            .depth_limit(3);
+        let config = ron::ser::PrettyConfig::new().struct_names(true).depth_limit(3);
         // Serializing plain data to a String cannot fail.
         ron::ser::to_string_pretty(self, config).unwrap_or_default()
     }

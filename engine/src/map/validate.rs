@@ -25,10 +25,7 @@ pub fn validate(src: &MapSource) -> Result<Map, Vec<Problem>> {
         return Err(problems);
     }
     match find_player_start(&map) {
-        Ok(start) => Ok(Map {
-            player_start: start,
-            ..map
-        }),
+        Ok(start) => Ok(Map { player_start: start, ..map }),
         Err(p) => {
             problems.push(p);
             Err(problems)
@@ -43,51 +40,30 @@ fn in_range(x: f64) -> bool {
 /// Phase 1: every element on its own. Returns a [`Map`] whose indices are safe.
 fn check_elements(src: &MapSource) -> Result<Map, Vec<Problem>> {
     let mut problems = Vec::new();
-    for (what, empty) in [
-        ("vertices", src.vertices.is_empty()),
-        ("sectors", src.sectors.is_empty()),
-        ("lines", src.lines.is_empty()),
-    ] {
+    for (what, empty) in
+        [("vertices", src.vertices.is_empty()), ("sectors", src.sectors.is_empty()), ("lines", src.lines.is_empty())]
+    {
         if empty {
             problems.push(Problem::Missing { what });
         }
     }
-    let vertices: Vec<DVec2> = src
-        .vertices
-        .iter()
-        .map(|&(x, y)| DVec2::new(x, y))
-        .collect();
+    let vertices: Vec<DVec2> = src.vertices.iter().map(|&(x, y)| DVec2::new(x, y)).collect();
     for (i, v) in vertices.iter().enumerate() {
         if !in_range(v.x) || !in_range(v.y) {
-            problems.push(Problem::BadVertex {
-                vertex: i,
-                x: v.x,
-                y: v.y,
-            });
+            problems.push(Problem::BadVertex { vertex: i, x: v.x, y: v.y });
         }
     }
     let sectors = src.sectors.iter().enumerate().map(|(i, s)| {
         for (which, value) in [("floor", s.floor), ("ceiling", s.ceiling)] {
             if !in_range(value) {
-                problems.push(Problem::BadHeight {
-                    sector: i,
-                    which,
-                    value,
-                });
+                problems.push(Problem::BadHeight { sector: i, which, value });
             }
         }
         if s.floor > s.ceiling {
-            problems.push(Problem::FloorAboveCeiling {
-                sector: i,
-                floor: s.floor,
-                ceiling: s.ceiling,
-            });
+            problems.push(Problem::FloorAboveCeiling { sector: i, floor: s.floor, ceiling: s.ceiling });
         }
         if !(0..=255).contains(&s.light) {
-            problems.push(Problem::BadLight {
-                sector: i,
-                light: s.light,
-            });
+            problems.push(Problem::BadLight { sector: i, light: s.light });
         }
         Sector {
             floor: s.floor,
@@ -103,56 +79,27 @@ fn check_elements(src: &MapSource) -> Result<Map, Vec<Problem>> {
         let vertex = |end: &'static str, v: i64, problems: &mut Vec<Problem>| {
             let ok = usize::try_from(v).ok().filter(|&v| v < vertices.len());
             if ok.is_none() {
-                problems.push(Problem::DanglingVertex {
-                    line: i,
-                    end,
-                    vertex: v,
-                    count: vertices.len(),
-                });
+                problems.push(Problem::DanglingVertex { line: i, end, vertex: v, count: vertices.len() });
             }
             ok.unwrap_or(0)
         };
         let from = vertex("from", l.from, &mut problems);
         let to = vertex("to", l.to, &mut problems);
         let front = check_side(i, "front", &l.front, sectors.len(), &mut problems);
-        let back = l
-            .back
-            .as_ref()
-            .map(|b| check_side(i, "back", b, sectors.len(), &mut problems));
-        let flags = LineFlags {
-            upper_unpegged: l.upper_unpegged,
-            lower_unpegged: l.lower_unpegged,
-            impassable: l.impassable,
-        };
-        lines.push(Line {
-            from,
-            to,
-            front,
-            back,
-            flags,
-        });
+        let back = l.back.as_ref().map(|b| check_side(i, "back", b, sectors.len(), &mut problems));
+        let flags =
+            LineFlags { upper_unpegged: l.upper_unpegged, lower_unpegged: l.lower_unpegged, impassable: l.impassable };
+        lines.push(Line { from, to, front, back, flags });
     }
-    let things = src
-        .things
-        .iter()
-        .map(|t| Thing {
-            kind: t.kind.clone(),
-            pos: DVec2::new(t.x, t.y),
-            angle: t.angle,
-        })
-        .collect();
+    let things =
+        src.things.iter().map(|t| Thing { kind: t.kind.clone(), pos: DVec2::new(t.x, t.y), angle: t.angle }).collect();
     if !problems.is_empty() {
         return Err(problems);
     }
-    let fog = src.fog.as_ref().map(|f| Fog {
-        colour: [f.colour.0, f.colour.1, f.colour.2],
-        distance: f.distance,
-    });
+    let fog = src.fog.as_ref().map(|f| Fog { colour: [f.colour.0, f.colour.1, f.colour.2], distance: f.distance });
     if let Some(f) = fog {
         if !(f.distance.is_finite() && f.distance > 0.0) {
-            problems.push(Problem::BadFog {
-                distance: f.distance,
-            });
+            problems.push(Problem::BadFog { distance: f.distance });
         }
     }
     if !problems.is_empty() {
@@ -170,21 +117,10 @@ fn check_elements(src: &MapSource) -> Result<Map, Vec<Problem>> {
     })
 }
 
-fn check_side(
-    line: usize,
-    side: &'static str,
-    s: &SideSource,
-    sectors: usize,
-    problems: &mut Vec<Problem>,
-) -> Side {
+fn check_side(line: usize, side: &'static str, s: &SideSource, sectors: usize, problems: &mut Vec<Problem>) -> Side {
     let sector = usize::try_from(s.sector).ok().filter(|&v| v < sectors);
     if sector.is_none() {
-        problems.push(Problem::DanglingSector {
-            line,
-            side,
-            sector: s.sector,
-            count: sectors,
-        });
+        problems.push(Problem::DanglingSector { line, side, sector: s.sector, count: sectors });
     }
     if !s.x_offset.is_finite() || !s.y_offset.is_finite() {
         problems.push(Problem::BadOffset { line, side });
@@ -272,9 +208,7 @@ fn check_crossings(map: &Map) -> Vec<Problem> {
         }
     }
     problems.sort_by_key(|p| match p {
-        Problem::Crossing { line, .. }
-        | Problem::Touching { line, .. }
-        | Problem::Overlap { line, .. } => *line,
+        Problem::Crossing { line, .. } | Problem::Touching { line, .. } | Problem::Overlap { line, .. } => *line,
         _ => usize::MAX,
     });
     problems
@@ -312,12 +246,7 @@ fn check_sectors(map: &Map) -> Vec<Problem> {
     for (&(sector, vertex), &(into, out_of)) in unclosed {
         if !reported[sector] {
             reported[sector] = true;
-            problems.push(Problem::Unclosed {
-                sector,
-                vertex,
-                into,
-                out_of,
-            });
+            problems.push(Problem::Unclosed { sector, vertex, into, out_of });
         }
     }
     for sector in 0..n {
@@ -346,18 +275,12 @@ fn check_sides_face_their_sectors(map: &Map) -> Vec<Problem> {
         let offset = (d.length() * 1e-3).min(1e-2);
         let mid = a + d * 0.5;
         let back = line.back.as_ref().map(|s| s.sector);
-        for (side, probe, expected) in [
-            ("front", mid + normal * offset, Some(line.front.sector)),
-            ("back", mid - normal * offset, back),
-        ] {
+        for (side, probe, expected) in
+            [("front", mid + normal * offset, Some(line.front.sector)), ("back", mid - normal * offset, back)]
+        {
             let found = sectors_containing(map, probe);
             if found.as_slice() != expected.as_slice() {
-                problems.push(Problem::SideMismatch {
-                    line: i,
-                    side,
-                    expected,
-                    found,
-                });
+                problems.push(Problem::SideMismatch { line: i, side, expected, found });
                 if problems.len() >= MAX_CROSSINGS_REPORTED {
                     return problems;
                 }
@@ -379,11 +302,7 @@ fn sectors_containing(map: &Map, p: DVec2) -> Vec<usize> {
             }
         }
     }
-    odd.iter()
-        .enumerate()
-        .filter(|(_, &o)| o)
-        .map(|(s, _)| s)
-        .collect()
+    odd.iter().enumerate().filter(|(_, &o)| o).map(|(s, _)| s).collect()
 }
 
 /// Phase 3: things. The first player start is the one used.
@@ -393,19 +312,11 @@ fn find_player_start(map: &Map) -> Result<usize, Problem> {
             return Err(Problem::BadThing { thing: i });
         }
     }
-    let start = map
-        .things
-        .iter()
-        .position(|t| t.kind == PLAYER_START)
-        .ok_or(Problem::NoPlayerStart)?;
+    let start = map.things.iter().position(|t| t.kind == PLAYER_START).ok_or(Problem::NoPlayerStart)?;
     let p = map.things[start].pos;
     match map.sector_at(p) {
         Some(_) => Ok(start),
-        None => Err(Problem::StartOutside {
-            thing: start,
-            x: p.x,
-            y: p.y,
-        }),
+        None => Err(Problem::StartOutside { thing: start, x: p.x, y: p.y }),
     }
 }
 
@@ -433,22 +344,11 @@ mod tests {
     }
 
     fn loop_lines(order: [usize; 4], side: &str) -> String {
-        (0..4)
-            .map(|k| {
-                format!(
-                    "Line(from: {}, to: {}, front: {side}),",
-                    order[k],
-                    order[(k + 1) % 4]
-                )
-            })
-            .collect()
+        (0..4).map(|k| format!("Line(from: {}, to: {}, front: {side}),", order[k], order[(k + 1) % 4])).collect()
     }
 
     fn problems(text: &str) -> Vec<Problem> {
-        parse_map(text, "t.ron")
-            .err()
-            .map(|e| e.problems().to_vec())
-            .unwrap_or_default()
+        parse_map(text, "t.ron").err().map(|e| e.problems().to_vec()).unwrap_or_default()
     }
 
     #[test]
@@ -459,10 +359,7 @@ mod tests {
         // Clockwise: closure and the sector's total winding both still pass.
         let bad = room_with_inner_loop(&loop_lines([4, 5, 6, 7], "Side(sector: 0)"), "", "");
         let p = problems(&bad);
-        assert!(
-            matches!(p[0], Problem::SideMismatch { line: 4.., .. }),
-            "{p:?}"
-        );
+        assert!(matches!(p[0], Problem::SideMismatch { line: 4.., .. }), "{p:?}");
         assert!(p[0].to_string().contains("winding"), "{}", p[0]);
     }
 
@@ -475,17 +372,7 @@ mod tests {
             "Sector(floor: 0.0, ceiling: 128.0, light: 160)",
         );
         let p = problems(&nested);
-        assert!(
-            p.iter().any(|p| matches!(
-                p,
-                Problem::SideMismatch {
-                    side: "back",
-                    expected: None,
-                    ..
-                }
-            )),
-            "{p:?}"
-        );
+        assert!(p.iter().any(|p| matches!(p, Problem::SideMismatch { side: "back", expected: None, .. })), "{p:?}");
         // The same loop as two-sided lines between the sectors is valid.
         let portal = room_with_inner_loop(
             &loop_lines([4, 5, 6, 7], "Side(sector: 1), back: Some(Side(sector: 0))"),
@@ -497,12 +384,8 @@ mod tests {
 
     #[test]
     fn misspelt_field_is_an_error() {
-        let text = room_with_inner_loop("", "", "")
-            .replace("light: 160)", "light: 160, flor_texture: \"X\")");
+        let text = room_with_inner_loop("", "", "").replace("light: 160)", "light: 160, flor_texture: \"X\")");
         let err = parse_map(&text, "t.ron").unwrap_err().to_string();
-        assert!(
-            err.contains("flor_texture") && err.starts_with("t.ron:"),
-            "{err}"
-        );
+        assert!(err.contains("flor_texture") && err.starts_with("t.ron:"), "{err}");
     }
 }

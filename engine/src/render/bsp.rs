@@ -13,13 +13,7 @@ use crate::bsp::{Child, Node};
 use crate::geom::{front_distance, Aabb};
 use crate::level::Level;
 
-pub fn render(
-    level: &Level,
-    cam: &Camera,
-    frame: &mut Frame,
-    out: &mut ColumnWriter,
-    shade: Shade,
-) {
+pub fn render(level: &Level, cam: &Camera, frame: &mut Frame, out: &mut ColumnWriter, shade: Shade) {
     let bsp = &level.bsp;
     let lighting = Lighting::for_map(&level.map);
     frame.stack.push((bsp.root, None));
@@ -38,12 +32,8 @@ pub fn render(
                 frame.stats.nodes_visited += 1;
                 let node = &bsp.nodes[i];
                 let near = near_side(node, cam) as usize;
-                frame
-                    .stack
-                    .push((node.children[1 - near], Some(node.bbox[1 - near])));
-                frame
-                    .stack
-                    .push((node.children[near], Some(node.bbox[near])));
+                frame.stack.push((node.children[1 - near], Some(node.bbox[1 - near])));
+                frame.stack.push((node.children[near], Some(node.bbox[near])));
             }
             Child::Leaf(i) => {
                 frame.stats.leaves_visited += 1;
@@ -80,11 +70,7 @@ fn near_side(node: &Node, cam: &Camera) -> bool {
 /// Columns still open after the walk look out of the map: paint them void, so
 /// that every pixel is still written exactly once.
 fn fill_void(frame: &mut Frame, out: &mut ColumnWriter, shade: Shade) {
-    let colour = if shade == Shade::Ids {
-        super::shade::ids_colour(Surface::Void)
-    } else {
-        VOID
-    };
+    let colour = if shade == Shade::Ids { super::shade::ids_colour(Surface::Void) } else { VOID };
     let width = frame.occlusion.width();
     let mut x = 0;
     while let Some(start) = frame.occlusion.next_open(x, width) {
@@ -102,10 +88,7 @@ fn fill_void(frame: &mut Frame, out: &mut ColumnWriter, shade: Shade) {
 fn box_visible(cam: &Camera, bbox: &Aabb, frame: &Frame) -> bool {
     // Within a unit of the box, call it visible: the silhouette argument below
     // needs the eye clear of the box by much more than NEAR.
-    let grown = Aabb {
-        min: bbox.min - 1.0,
-        max: bbox.max + 1.0,
-    };
+    let grown = Aabb { min: bbox.min - 1.0, max: bbox.max + 1.0 };
     if grown.contains(cam.eye) {
         return true;
     }
@@ -120,12 +103,7 @@ fn box_visible(cam: &Camera, bbox: &Aabb, frame: &Frame) -> bool {
         }
     };
     // Corners counter-clockwise from bottom-left.
-    let c = [
-        lo,
-        glam::DVec2::new(hi.x, lo.y),
-        hi,
-        glam::DVec2::new(lo.x, hi.y),
-    ];
+    let c = [lo, glam::DVec2::new(hi.x, lo.y), hi, glam::DVec2::new(lo.x, hi.y)];
     // The visible chain of box edges runs counter-clockwise from `a` to `b`, so
     // the eye is on the right of a -> b and `a` projects left of `b`.
     let (a, b) = match (region(e.x, lo.x, hi.x), region(e.y, lo.y, hi.y)) {

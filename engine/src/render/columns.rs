@@ -20,25 +20,14 @@ pub struct ColumnWriter<'a> {
     /// Per-pixel write counts (row-major, whole frame), when asked for.
     counts: Option<&'a mut [u16]>,
     pub written: u64,
+    /// Pixels the masked pass wrote over the opaque pass (not in `counts`).
+    pub masked_written: u64,
 }
 
 impl<'a> ColumnWriter<'a> {
     /// A writer for columns `[x0, x0 + canvas.len() / height)` of a `width` x `height` frame.
-    pub fn new(
-        canvas: &'a mut [u32],
-        x0: usize,
-        width: usize,
-        height: usize,
-        counts: Option<&'a mut [u16]>,
-    ) -> Self {
-        ColumnWriter {
-            canvas,
-            x0,
-            height,
-            width,
-            counts,
-            written: 0,
-        }
+    pub fn new(canvas: &'a mut [u32], x0: usize, width: usize, height: usize, counts: Option<&'a mut [u16]>) -> Self {
+        ColumnWriter { canvas, x0, height, width, counts, written: 0, masked_written: 0 }
     }
 
     /// Fills rows `[y0, y1)` of column `x`. Empty and inverted runs write nothing;
@@ -59,11 +48,7 @@ impl<'a> ColumnWriter<'a> {
         let (y0, y1) = (y0 as usize, y1 as usize);
         self.written += (y1 - y0) as u64;
         if let Some(counts) = self.counts.as_deref_mut() {
-            for c in counts[y0 * self.width + x..]
-                .iter_mut()
-                .step_by(self.width)
-                .take(y1 - y0)
-            {
+            for c in counts[y0 * self.width + x..].iter_mut().step_by(self.width).take(y1 - y0) {
                 *c = c.saturating_add(1);
             }
         }
@@ -71,6 +56,13 @@ impl<'a> ColumnWriter<'a> {
 }
 
 impl ColumnWriter<'_> {
+    /// Writes one pixel of the masked pass (sprites, see-through middles).
+    #[inline]
+    pub fn put_masked(&mut self, x: usize, y: i32, colour: u32) {
+        self.canvas[(x - self.x0) * self.height + y as usize] = colour;
+        self.masked_written += 1;
+    }
+
     /// Fills rows `[y0, y1)` of column `x` with `colour(y)`.
     #[inline]
     pub fn fill_with(&mut self, x: usize, y0: i32, y1: i32, mut colour: impl FnMut(i32) -> u32) {
@@ -89,15 +81,7 @@ impl ColumnWriter<'_> {
     /// shows texel row `v`, each row below `dv` further, wrapping at the
     /// column's end, every texel tinted.
     #[inline]
-    pub fn textured(
-        &mut self,
-        x: usize,
-        (y0, y1): (i32, i32),
-        column: &[u32],
-        v: f64,
-        dv: f64,
-        tint: Tint,
-    ) {
+    pub fn textured(&mut self, x: usize, (y0, y1): (i32, i32), column: &[u32], v: f64, dv: f64, tint: Tint) {
         if y1 <= y0 || column.is_empty() {
             return;
         }

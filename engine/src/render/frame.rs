@@ -19,6 +19,11 @@ pub struct FrameStats {
     pub walls_considered: u64,
     /// Segs or lines that wrote at least one column.
     pub walls_drawn: u64,
+    /// Pixels written by the masked pass (sprites and see-through middles),
+    /// on top of the opaque pass's exactly-once.
+    pub masked_pixels_written: u64,
+    /// Things in view (in front of the eye and on screen).
+    pub sprites_in_view: u64,
 }
 
 impl FrameStats {
@@ -27,6 +32,36 @@ impl FrameStats {
         self.pixels_written as f64 / (width * height).max(1) as f64
     }
 }
+
+/// What a column's walk left open beyond a depth: after the seg at `depth`
+/// was drawn there, only rows `[top, bottom)` still show what lies behind it
+/// (empty once the column closed). Sprites and masked middles farther away
+/// are clipped to the window of the last event nearer than they are.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct ClipEvent {
+    pub depth: f64,
+    pub top: i32,
+    pub bottom: i32,
+    /// The column's previous (nearer) event, or `NONE`.
+    pub prev: u32,
+}
+
+/// A see-through middle texture to draw in one column, in depth order with
+/// the sprites: the seg's line and side, where the texture column falls, and
+/// the clip event its own opening left.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct MaskedColumn {
+    pub depth: f64,
+    pub line: usize,
+    pub back_side: bool,
+    pub u: f64,
+    pub event: u32,
+    /// The column's previous masked entry, or `NONE`.
+    pub prev: u32,
+}
+
+/// End of a per-column list.
+pub(crate) const NONE: u32 = u32::MAX;
 
 /// One ray's crossing of a line, for the reference renderer.
 #[derive(Clone, Copy, Debug)]
@@ -50,6 +85,14 @@ pub struct Frame {
     pub(crate) hits: Vec<Hit>,
     /// Column-major canvas of the strip being drawn (see [`super::columns`]).
     pub(crate) canvas: Vec<u32>,
+    /// Clip events of all columns, and each column's latest (deepest).
+    pub(crate) events: Vec<ClipEvent>,
+    pub(crate) last_event: Vec<u32>,
+    /// Masked middles to draw, and each column's latest entry.
+    pub(crate) masked: Vec<MaskedColumn>,
+    pub(crate) last_masked: Vec<u32>,
+    /// Things in view, far to near (see [`super::sprites`]).
+    pub(crate) sprites: Vec<super::sprites::VisSprite>,
     /// Writes per pixel (row-major), kept only when counting was asked for.
     pub(crate) counts: Vec<u16>,
     pub stats: FrameStats,
@@ -72,6 +115,13 @@ impl Frame {
         self.slopes.extend((0..w).map(|x| cam.column_slope(x)));
         self.stack.clear();
         self.hits.clear();
+        self.events.clear();
+        self.last_event.clear();
+        self.last_event.resize(w, NONE);
+        self.masked.clear();
+        self.last_masked.clear();
+        self.last_masked.resize(w, NONE);
+        self.sprites.clear();
         self.counts.clear();
         if count_writes {
             self.counts.resize(w * h, 0);
@@ -84,6 +134,36 @@ impl Frame {
     pub(crate) fn begin_strip(&mut self, x0: usize, x1: usize) {
         self.occlusion.reset_to_strip(self.clip_top.len(), x0, x1);
         self.stack.clear();
+    }
+
+    /// Records that beyond `depth`, column `x` shows only rows `[top, bottom)`.
+    #[inline]
+    pub(crate) fn push_event(&mut self, x: usize, depth: f64, top: i32, bottom: i32) -> u32 {
+        let index = self.events.len() as u32;
+        self.events.push(ClipEvent { depth, top, bottom, prev: self.last_event[x] });
+        self.last_event[x] = index;
+        index
+    }
+
+    /// Queues a masked middle column for the masked pass.
+    pub(crate) fn push_masked(&mut self, x: usize, depth: f64, line: usize, back_side: bool, u: f64, event: u32) {
+        let index = self.masked.len() as u32;
+        self.masked.push(MaskedColumn { depth, line, back_side, u, event, prev: self.last_masked[x] });
+        self.last_masked[x] = index;
+    }
+
+    /// Rows `[top, bottom)` of column `x` through which something at `depth`
+    /// can be seen: the window of the last clip event nearer than it.
+    pub(crate) fn window(&self, x: usize, depth: f64, height: i32) -> (i32, i32) {
+        let mut e = self.last_event[x];
+        while e != NONE {
+            let event = &self.events[e as usize];
+            if event.depth < depth {
+                return (event.top, event.bottom);
+            }
+            e = event.prev;
+        }
+        (0, height)
     }
 
     /// Writes per pixel of the last frame rendered with counting on (row-major).

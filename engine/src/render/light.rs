@@ -26,10 +26,7 @@ pub struct Lighting {
 
 impl Lighting {
     pub fn for_map(map: &Map) -> Lighting {
-        Lighting {
-            diminishing: map.diminishing_light,
-            fog: map.fog,
-        }
+        Lighting { diminishing: map.diminishing_light, fog: map.fog }
     }
 
     /// The tint of a surface lit at `light` (0..=255) seen at `depth`.
@@ -37,26 +34,17 @@ impl Lighting {
     pub fn tint(&self, light: u8, depth: f64) -> Tint {
         let light = f64::from(light);
         let level = if self.diminishing {
-            (light + NEAR_BOOST - depth * LOSS_PER_UNIT)
-                .clamp(light * FLOOR_SHARE, (light + NEAR_BOOST).min(255.0))
+            (light + NEAR_BOOST - depth * LOSS_PER_UNIT).clamp(light * FLOOR_SHARE, (light + NEAR_BOOST).min(255.0))
         } else {
             light
         };
         let scale = (level / 255.0 * 256.0) as u32;
         match self.fog {
-            None => Tint {
-                scale,
-                fog: 0,
-                fog_rgb: [0; 3],
-            },
+            None => Tint { scale, fog: 0, fog_rgb: [0; 3] },
             Some(f) => {
                 let share = (depth / f.distance).clamp(0.0, 1.0);
                 let fog = (share * 256.0) as u32;
-                Tint {
-                    scale: scale * (256 - fog) / 256,
-                    fog,
-                    fog_rgb: f.colour.map(|c| u32::from(c) * fog),
-                }
+                Tint { scale: scale * (256 - fog) / 256, fog, fog_rgb: f.colour.map(|c| u32::from(c) * fog) }
             }
         }
     }
@@ -79,12 +67,7 @@ impl Tint {
         if self.fog == 0 {
             u32::from_le_bytes([ch(r, 0), ch(g, 0), ch(b, 0), 255])
         } else {
-            u32::from_le_bytes([
-                ch(r, self.fog_rgb[0]),
-                ch(g, self.fog_rgb[1]),
-                ch(b, self.fog_rgb[2]),
-                255,
-            ])
+            u32::from_le_bytes([ch(r, self.fog_rgb[0]), ch(g, self.fog_rgb[1]), ch(b, self.fog_rgb[2]), 255])
         }
     }
 }
@@ -96,33 +79,15 @@ mod tests {
 
     #[test]
     fn light_and_fog() {
-        let plain = Lighting {
-            diminishing: false,
-            fog: None,
-        };
-        assert_eq!(
-            plain.tint(255, 5000.0).apply(rgb(200, 100, 0)),
-            rgb(200, 100, 0)
-        );
+        let plain = Lighting { diminishing: false, fog: None };
+        assert_eq!(plain.tint(255, 5000.0).apply(rgb(200, 100, 0)), rgb(200, 100, 0));
         assert_eq!(plain.tint(0, 1.0).apply(rgb(200, 100, 50)), rgb(0, 0, 0));
-        let dim = Lighting {
-            diminishing: true,
-            fog: None,
-        };
+        let dim = Lighting { diminishing: true, fog: None };
         let near = dim.tint(160, 10.0).apply(rgb(200, 200, 200));
         let far = dim.tint(160, 2000.0).apply(rgb(200, 200, 200));
         assert!(near.to_le_bytes()[0] > far.to_le_bytes()[0]);
-        let fog = Lighting {
-            diminishing: false,
-            fog: Some(Fog {
-                colour: [100, 110, 120],
-                distance: 1000.0,
-            }),
-        };
-        assert_eq!(
-            fog.tint(255, 1000.0).apply(rgb(0, 0, 0)),
-            rgb(100, 110, 120)
-        );
+        let fog = Lighting { diminishing: false, fog: Some(Fog { colour: [100, 110, 120], distance: 1000.0 }) };
+        assert_eq!(fog.tint(255, 1000.0).apply(rgb(0, 0, 0)), rgb(100, 110, 120));
         assert_eq!(fog.tint(255, 0.0).apply(rgb(10, 20, 30)), rgb(10, 20, 30));
     }
 }

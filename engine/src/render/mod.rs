@@ -12,6 +12,7 @@ pub mod occlusion;
 pub mod planes;
 pub mod reference;
 pub mod shade;
+pub mod sprites;
 pub mod strips;
 pub mod view;
 pub mod walls;
@@ -70,18 +71,23 @@ pub fn render_frame(
     let mut canvas = std::mem::take(&mut frame.canvas);
     let mut counts = std::mem::take(&mut frame.counts);
     let (w, h) = (cam.width, cam.height);
+    let lighting = light::Lighting::for_map(&level.map);
+    sprites::collect(level, &cam, frame);
+    frame.stats.sprites_in_view = frame.sprites.len() as u64;
     for (x0, x1) in strips::strips(w, h) {
         canvas.resize((x1 - x0) * h, 0);
         let counting = options.count_writes.then_some(counts.as_mut_slice());
         let mut out = columns::ColumnWriter::new(&mut canvas, x0, w, h, counting);
         frame.begin_strip(x0, x1);
         match options.renderer {
-            Renderer::Bsp => bsp::render(level, &cam, frame, &mut out, options.shade),
-            Renderer::Reference => {
-                reference::render(&level.map, &cam, x0..x1, frame, &mut out, options.shade)
+            Renderer::Bsp => {
+                bsp::render(level, &cam, frame, &mut out, options.shade);
+                sprites::draw(level, &cam, frame, &mut out, options.shade, &lighting, (x0, x1));
             }
+            Renderer::Reference => reference::render(level, &cam, x0..x1, frame, &mut out, options.shade),
         }
         frame.stats.pixels_written += out.written;
+        frame.stats.masked_pixels_written += out.masked_written;
         columns::present_strip(&canvas, x0, x1, fb);
     }
     frame.canvas = canvas;

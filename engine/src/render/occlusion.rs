@@ -99,11 +99,7 @@ impl Occlusion {
 
     /// Runs `[start, end)` of open columns within `[x0, x1)`.
     pub fn open_runs(&self, x0: usize, x1: usize) -> OpenRuns<'_> {
-        OpenRuns {
-            mask: self,
-            x: x0,
-            end: x1,
-        }
+        OpenRuns { mask: self, x: x0, end: x1 }
     }
 }
 
@@ -144,10 +140,7 @@ mod tests {
         for x in (0..130).chain(140..150) {
             m.close(x);
         }
-        assert_eq!(
-            m.open_runs(0, 200).collect::<Vec<_>>(),
-            vec![(130, 140), (150, 200)]
-        );
+        assert_eq!(m.open_runs(0, 200).collect::<Vec<_>>(), vec![(130, 140), (150, 200)]);
         assert_eq!(m.open_runs(135, 145).collect::<Vec<_>>(), vec![(135, 140)]);
         assert_eq!(m.open_count(), 60);
         assert!(!m.any_open(0, 130));

@@ -42,11 +42,7 @@ pub fn paint_plane(
     }
     match paint {
         PlanePaint::Solid(c) => out.fill(x, y0, y1, c),
-        PlanePaint::Flat {
-            texture,
-            height,
-            light,
-        } => {
+        PlanePaint::Flat { texture, height, light } => {
             let ray = cam.forward + cam.right * t;
             let rise = height - cam.z;
             out.fill_with(x, y0, y1, |y| {
@@ -66,8 +62,7 @@ pub fn paint_plane(
             let u = (-angle * texels_per_radian).rem_euclid(w) as usize;
             let column = texture.column(u.min(texture.width - 1));
             out.fill_with(x, y0, y1, |y| {
-                let v =
-                    h * SKY_HORIZON + (f64::from(y) + 0.5 - cam.cy) / cam.focal * texels_per_radian;
+                let v = h * SKY_HORIZON + (f64::from(y) + 0.5 - cam.cy) / cam.focal * texels_per_radian;
                 column[(v.max(0.0) as usize).min(texture.height - 1)]
             });
         }

@@ -15,14 +15,16 @@ use glam::DVec2;
 
 use super::columns::ColumnWriter;
 use super::frame::{Frame, Hit};
-use super::shade::{ceiling_at_line, colour, plane_surfaces, wall_facing, Shade, Surface};
+use super::shade::{ceiling_at_line, colour, masked_top, plane_surfaces, wall_facing, Shade, Surface};
 use super::view::{Camera, NEAR};
 use crate::geom::cross;
+use crate::level::Level;
 use crate::map::Map;
+use crate::texture::Texture;
 
 /// Renders `columns` (one strip) of the frame.
 pub fn render(
-    map: &Map,
+    level: &Level,
     cam: &Camera,
     columns: std::ops::Range<usize>,
     frame: &mut Frame,
@@ -31,22 +33,26 @@ pub fn render(
 ) {
     // Line ends in camera space (depth, sideways) and whether the line is
     // two-sided, once per frame.
-    let ends: Vec<(DVec2, DVec2, bool)> = map
+    let ends: Vec<(DVec2, DVec2, bool)> = level
+        .map
         .lines
         .iter()
         .map(|l| {
-            let (a, b) = map.line_points(l);
+            let (a, b) = level.map.line_points(l);
             (cam.to_camera(a), cam.to_camera(b), l.back.is_some())
         })
         .collect();
+    let map = &level.map;
     let eye_sector = map.sector_at(cam.eye);
+    let things = things_in_front(level, cam);
     for x in columns {
         collect_hits(cam, &ends, x, &mut frame.hits);
         order_ties(map, eye_sector, &mut frame.hits);
+        let sprites = sprites_on_column(cam, &things, x);
         frame.stats.walls_considered += ends.len() as u64;
         let mut run: Option<(i32, u32)> = None;
         for y in 0..cam.height as i32 {
-            let c = pixel_colour(map, cam, &frame.hits, y, shade);
+            let c = pixel_colour(level, cam, &ends, &frame.hits, &sprites, (cam.column_slope(x), y), shade);
             match run {
                 Some((_, rc)) if rc == c => {}
                 Some((start, rc)) => {
@@ -99,28 +105,12 @@ fn collect_hits(cam: &Camera, ends: &[(DVec2, DVec2, bool)], x: usize, hits: &mu
         // behind it (no ray on screen passes near it) by the line parameter.
         let w = cross(a, ray) / den;
         let (left, right) = if from_front { (a, b) } else { (b, a) };
-        let (left_bound, right_bound) = if from_front {
-            (w >= 0.0, w <= 1.0)
-        } else {
-            (w <= 1.0, w >= 0.0)
-        };
-        let left_ok = if left.x > 0.0 {
-            cam.left_of_or_on(left, x)
-        } else {
-            left_bound
-        };
-        let right_ok = if right.x > 0.0 {
-            !cam.left_of_or_on(right, x)
-        } else {
-            right_bound
-        };
+        let (left_bound, right_bound) = if from_front { (w >= 0.0, w <= 1.0) } else { (w <= 1.0, w >= 0.0) };
+        let left_ok = if left.x > 0.0 { cam.left_of_or_on(left, x) } else { left_bound };
+        let right_ok = if right.x > 0.0 { !cam.left_of_or_on(right, x) } else { right_bound };
         let crosses = left_ok && right_ok;
         if crosses {
-            hits.push(Hit {
-                depth,
-                line,
-                from_front,
-            });
+            hits.push(Hit { depth, line, from_front });
         }
     }
     hits.sort_by(|p, q| p.depth.total_cmp(&q.depth).then(p.line.cmp(&q.line)));
@@ -145,10 +135,7 @@ fn order_ties(map: &Map, eye_sector: Option<usize>, hits: &mut [Hit]) {
     let mut current = eye_sector;
     let mut i = 0;
     while i < hits.len() {
-        let tied = hits[i..]
-            .iter()
-            .take_while(|h| h.depth - hits[i].depth <= hits[i].depth * TIE)
-            .count();
+        let tied = hits[i..].iter().take_while(|h| h.depth - hits[i].depth <= hits[i].depth * TIE).count();
         if tied > 1 {
             if let Some(k) = (i..i + tied).find(|&k| sides(&hits[k]).0 == current) {
                 hits[i..=k].rotate_right(1);
@@ -159,8 +146,89 @@ fn order_ties(map: &Map, eye_sector: Option<usize>, hits: &mut [Hit]) {
     }
 }
 
-fn pixel_colour(map: &Map, cam: &Camera, hits: &[Hit], y: i32, shade: Shade) -> u32 {
+/// A thing in front of the eye: its depth, the sideways position of its
+/// left edge, and its sprite.
+struct Billboard<'a> {
+    thing: usize,
+    depth: f64,
+    left: f64,
+    texture: &'a Texture,
+    floor: f64,
+    light: u8,
+}
+
+fn things_in_front<'a>(level: &'a Level, cam: &Camera) -> Vec<Billboard<'a>> {
+    let mut out = Vec::new();
+    for (thing, t) in level.map.things.iter().enumerate() {
+        let Some(id) = level.materials.sprites[thing] else { continue };
+        let q = cam.to_camera(t.pos);
+        if q.x < NEAR {
+            continue;
+        }
+        let texture = level.materials.textures.get(id);
+        let sector = &level.map.sectors[level.thing_sectors[thing]];
+        out.push(Billboard {
+            thing,
+            depth: q.x,
+            left: q.y - texture.width as f64 / 2.0,
+            texture,
+            floor: sector.floor,
+            light: sector.light,
+        });
+    }
+    out
+}
+
+/// The billboards column `x`'s ray passes through, nearest first, with the
+/// texel column it meets in each.
+fn sprites_on_column<'a>(cam: &Camera, things: &'a [Billboard<'a>], x: usize) -> Vec<(&'a Billboard<'a>, usize)> {
+    let t = cam.column_slope(x);
+    let mut hits: Vec<(&Billboard, usize)> = things
+        .iter()
+        .filter_map(|b| {
+            let u = t * b.depth - b.left;
+            (0.0..b.texture.width as f64).contains(&u).then_some((b, u as usize))
+        })
+        .collect();
+    hits.sort_by(|p, q| p.0.depth.total_cmp(&q.0.depth).then(p.0.thing.cmp(&q.0.thing)));
+    hits
+}
+
+/// The opaque texel of `texture` column `u` that row `y`'s ray meets at
+/// `depth`, if the ray passes within `[top - height, top)`.
+fn texel_at(cam: &Camera, texture: &Texture, u: usize, top: f64, depth: f64, y: i32) -> Option<u32> {
+    let h = texture.height as f64;
+    if cam.row_above(y, depth, top) || !cam.row_above(y, depth, top - h) {
+        return None;
+    }
+    let v = top - (cam.z + depth * cam.row_slope(y));
+    let texel = texture.column(u.min(texture.width - 1))[(v.max(0.0) as usize).min(texture.height - 1)];
+    (texel >> 24 != 0).then_some(texel)
+}
+
+fn pixel_colour(
+    level: &Level,
+    cam: &Camera,
+    ends: &[(DVec2, DVec2, bool)],
+    hits: &[Hit],
+    sprites: &[(&Billboard, usize)],
+    (t, y): (f64, i32),
+    shade: Shade,
+) -> u32 {
+    let map = &level.map;
+    let mut sprites = sprites.iter().peekable();
     for hit in hits {
+        // Billboards nearer than this crossing (or at its depth: a sprite
+        // against a wall is in front of it) come first.
+        while let Some(&&(b, u)) = sprites.peek() {
+            if b.depth > hit.depth {
+                break;
+            }
+            sprites.next();
+            if texel_at(cam, b.texture, u, b.floor + b.texture.height as f64, b.depth, y).is_some() {
+                return colour(shade, Surface::Thing { thing: b.thing }, b.light, 1.0);
+            }
+        }
         // Is this row's ray above `height` where it crosses the line?
         let above = |height: f64| cam.row_above(y, hit.depth, height);
         let line = &map.lines[hit.line];
@@ -185,9 +253,36 @@ fn pixel_colour(map: &Map, cam: &Camera, hits: &[Hit], y: i32, shade: Shade) -> 
             return colour(shade, floor, light, 1.0);
         }
         match far_sector {
-            Some(back) if above(back.floor) && !above(back.ceiling) => continue,
+            Some(back) if above(back.floor) && !above(back.ceiling) => {
+                // Through the opening, unless a see-through middle covers it here.
+                let side = usize::from(!hit.from_front);
+                if let Some(id) = level.materials.sides[hit.line][side].middle {
+                    let texture = level.materials.textures.get(id);
+                    let top = masked_top(map, line, !hit.from_front, texture.height as f64);
+                    let u = masked_u(&ends[hit.line], near.x_offset, hit, t);
+                    let u = (u.floor() as i64).rem_euclid(texture.width as i64) as usize;
+                    if texel_at(cam, texture, u, top, hit.depth, y).is_some() {
+                        return colour(shade, wall, light, 1.0);
+                    }
+                }
+                continue;
+            }
             _ => return colour(shade, wall, light, facing),
         }
     }
+    for &(b, u) in sprites {
+        if texel_at(cam, b.texture, u, b.floor + b.texture.height as f64, b.depth, y).is_some() {
+            return colour(shade, Surface::Thing { thing: b.thing }, b.light, 1.0);
+        }
+    }
     colour(shade, Surface::Void, 0, 1.0)
+}
+
+/// Where along its side (plus the side's offset) the crossing `hit` lies:
+/// the texture column of a see-through middle.
+fn masked_u(&(a, b, _): &(DVec2, DVec2, bool), x_offset: f64, hit: &Hit, t: f64) -> f64 {
+    let dir = b - a;
+    let length = dir.length();
+    let along = (DVec2::new(hit.depth, hit.depth * t) - a).dot(dir) / length;
+    x_offset + if hit.from_front { along } else { length - along }
 }

@@ -26,9 +26,7 @@ impl Shade {
     }
 
     pub fn from_name(name: &str) -> Option<Shade> {
-        [Shade::Ids, Shade::Flat, Shade::Textured]
-            .into_iter()
-            .find(|s| s.name() == name)
+        [Shade::Ids, Shade::Flat, Shade::Textured].into_iter().find(|s| s.name() == name)
     }
 }
 
@@ -46,6 +44,10 @@ pub enum Surface {
     },
     /// A `"SKY"` ceiling or floor: the same sky whichever sector shows it.
     Sky,
+    /// A thing's sprite.
+    Thing {
+        thing: usize,
+    },
     Void,
 }
 
@@ -75,6 +77,11 @@ pub fn ids_colour(surface: Surface) -> u32 {
         Surface::Ceiling { sector } => id_colour(sector, 3),
         // Tag 0 like the void, but never black.
         Surface::Sky => rgb(96, 160, 224),
+        // Tag 0 with an odd red channel: neither sky (red 96) nor void.
+        Surface::Thing { thing } => {
+            let c = id_colour(thing, 0).to_le_bytes();
+            rgb(c[0] | 1, c[1], c[2] & !3)
+        }
         Surface::Void => VOID,
     }
 }
@@ -87,15 +94,11 @@ pub fn colour(shade: Shade, surface: Surface, light: u8, facing: f64) -> u32 {
         (Shade::Ids, _) => return ids_colour(surface),
         (_, Surface::Void) => return VOID,
         (_, Surface::Wall { line }) => {
-            const PALETTE: [[u8; 3]; 4] = [
-                [170, 120, 90],
-                [150, 150, 160],
-                [120, 140, 110],
-                [175, 160, 120],
-            ];
+            const PALETTE: [[u8; 3]; 4] = [[170, 120, 90], [150, 150, 160], [120, 140, 110], [175, 160, 120]];
             (PALETTE[line % PALETTE.len()], facing)
         }
         (_, Surface::Floor { .. }) => ([110, 100, 90], 0.85),
+        (_, Surface::Thing { .. }) => ([200, 180, 60], 1.0),
         (_, Surface::Ceiling { .. }) => ([140, 140, 150], 0.7),
         // The sky is not lit by sectors.
         (_, Surface::Sky) => return rgb(110, 150, 200),
@@ -118,16 +121,8 @@ pub fn wall_facing(d: glam::DVec2) -> f64 {
 
 /// What a sector's ceiling and floor show.
 pub fn plane_surfaces(sector: usize, s: &crate::map::Sector) -> (Surface, Surface) {
-    let ceiling = if s.ceiling_is_sky() {
-        Surface::Sky
-    } else {
-        Surface::Ceiling { sector }
-    };
-    let floor = if s.floor_is_sky() {
-        Surface::Sky
-    } else {
-        Surface::Floor { sector }
-    };
+    let ceiling = if s.ceiling_is_sky() { Surface::Sky } else { Surface::Ceiling { sector } };
+    let floor = if s.floor_is_sky() { Surface::Sky } else { Surface::Floor { sector } };
     (ceiling, floor)
 }
 
@@ -139,4 +134,20 @@ pub fn ceiling_at_line(near: &crate::map::Sector, far: Option<&crate::map::Secto
         Some(far) if near.ceiling_is_sky() && far.ceiling_is_sky() => far.ceiling,
         _ => near.ceiling,
     }
+}
+
+/// Height of texel row 0 of a see-through middle texture on a two-sided line,
+/// seen from its front (`back_side == false`) or back. Doom's rule: it hangs
+/// from the lower of the two ceilings, or with `lower_unpegged` stands on the
+/// higher of the two floors; it is drawn once, not tiled.
+pub fn masked_top(map: &crate::map::Map, line: &crate::map::Line, back_side: bool, texture_height: f64) -> f64 {
+    let front = &map.sectors[line.front.sector];
+    let back = line.back.as_ref().map_or(front, |b| &map.sectors[b.sector]);
+    let side = if back_side { line.back.as_ref().unwrap_or(&line.front) } else { &line.front };
+    let top = if line.flags.lower_unpegged {
+        front.floor.max(back.floor) + texture_height
+    } else {
+        front.ceiling.min(back.ceiling)
+    };
+    top + side.y_offset
 }

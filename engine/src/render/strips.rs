@@ -20,9 +20,7 @@ const ALIGN: usize = 16;
 pub fn strips(width: usize, height: usize) -> impl Iterator<Item = (usize, usize)> {
     let fit = STRIP_BYTES / (height.max(1) * 4);
     let step = (fit / ALIGN * ALIGN).max(ALIGN);
-    (0..width)
-        .step_by(step)
-        .map(move |x0| (x0, (x0 + step).min(width)))
+    (0..width).step_by(step).map(move |x0| (x0, (x0 + step).min(width)))
 }
 
 #[cfg(test)]

@@ -34,12 +34,7 @@ pub struct View {
 
 impl View {
     pub fn new(pos: DVec2, z: f64, angle: f64) -> View {
-        View {
-            pos,
-            z,
-            angle,
-            fov: 90.0,
-        }
+        View { pos, z, angle, fov: 90.0 }
     }
 }
 
@@ -66,16 +61,8 @@ impl Camera {
         let forward = DVec2::new(cos, sin);
         let right = DVec2::new(sin, -cos);
         // tan(45 degrees) computes as 0.9999999999999999; make the default exact.
-        let fov = if view.fov.is_finite() {
-            view.fov.clamp(1.0, 179.0)
-        } else {
-            90.0
-        };
-        let tan_half = if fov == 90.0 {
-            1.0
-        } else {
-            (fov / 2.0).to_radians().tan()
-        };
+        let fov = if view.fov.is_finite() { view.fov.clamp(1.0, 179.0) } else { 90.0 };
+        let tan_half = if fov == 90.0 { 1.0 } else { (fov / 2.0).to_radians().tan() };
         let focal = (width as f64 / 2.0) / tan_half;
         Camera {
             eye: view.pos,
@@ -194,17 +181,8 @@ pub enum PoseError {
 impl View {
     /// A view at `(x, y)` looking at `angle`; the eye `z` defaults to
     /// [`EYE_HEIGHT`] above the floor of the sector there.
-    pub fn at_pose(
-        map: &crate::map::Map,
-        x: f64,
-        y: f64,
-        angle: f64,
-        z: Option<f64>,
-    ) -> Result<View, PoseError> {
-        if ![x, y, angle, z.unwrap_or(0.0)]
-            .iter()
-            .all(|v| v.is_finite())
-        {
+    pub fn at_pose(map: &crate::map::Map, x: f64, y: f64, angle: f64, z: Option<f64>) -> Result<View, PoseError> {
+        if ![x, y, angle, z.unwrap_or(0.0)].iter().all(|v| v.is_finite()) {
             return Err(PoseError::NotFinite);
         }
         let pos = DVec2::new(x, y);

@@ -35,6 +35,7 @@ enum Paint<'a> {
 
 /// Everything about one seg that is fixed across its columns.
 struct SegColumns<'a> {
+    line: usize,
     /// The map line's `from` end and direction (`to - from`), camera space.
     from: DVec2,
     dir: DVec2,
@@ -50,6 +51,8 @@ struct SegColumns<'a> {
     back: Option<(f64, f64)>,
     ceiling_paint: PlanePaint<'a>,
     floor_paint: PlanePaint<'a>,
+    /// A see-through middle on a two-sided line, drawn later with the sprites.
+    masked: bool,
     /// The solid wall of a one-sided line, or the upper and lower walls.
     middle: Paint<'a>,
     upper: Paint<'a>,
@@ -115,45 +118,38 @@ fn seg_columns<'a>(
     let (side, textures) = match seg.side {
         LineSide::Front => (&line.front, level.materials.sides[seg.line][0]),
         // A back seg exists only on two-sided lines.
-        LineSide::Back => (
-            line.back.as_ref().unwrap_or(&line.front),
-            level.materials.sides[seg.line][1],
-        ),
+        LineSide::Back => (line.back.as_ref().unwrap_or(&line.front), level.materials.sides[seg.line][1]),
     };
     let light = front.light;
     let (ceiling_surface, floor_surface) = plane_surfaces(seg.front_sector, front);
-    let wall = colour(
-        shade,
-        Surface::Wall { line: seg.line },
-        light,
-        wall_facing(seg.v2 - seg.v1),
-    );
+    let wall = colour(shade, Surface::Wall { line: seg.line }, light, wall_facing(seg.v2 - seg.v1));
     let ceiling = ceiling_at_line(front, back);
     let textured = shade == Shade::Textured;
     let plane = |surface, height, texture: Option<TextureId>| match (textured, surface, texture) {
-        (true, Surface::Sky, _) => level
-            .materials
-            .sky
-            .map(|t| PlanePaint::Sky(level.materials.textures.get(t))),
-        (true, _, Some(t)) => Some(PlanePaint::Flat {
-            texture: level.materials.textures.get(t),
-            height,
-            light,
-        }),
+        (true, Surface::Sky, _) => level.materials.sky.map(|t| PlanePaint::Sky(level.materials.textures.get(t))),
+        (true, _, Some(t)) => Some(PlanePaint::Flat { texture: level.materials.textures.get(t), height, light }),
         _ => None,
     };
     let planes = level.materials.sectors[seg.front_sector];
-    let ceiling_paint = plane(ceiling_surface, front.ceiling, planes.ceiling).unwrap_or(
-        PlanePaint::Solid(colour(shade, ceiling_surface, light, 1.0)),
-    );
-    let floor_paint = plane(floor_surface, front.floor, planes.floor)
-        .unwrap_or(PlanePaint::Solid(colour(shade, floor_surface, light, 1.0)));
+    let ceiling_paint = plane(ceiling_surface, front.ceiling, planes.ceiling).unwrap_or(PlanePaint::Solid(colour(
+        shade,
+        ceiling_surface,
+        light,
+        1.0,
+    )));
+    let floor_paint = plane(floor_surface, front.floor, planes.floor).unwrap_or(PlanePaint::Solid(colour(
+        shade,
+        floor_surface,
+        light,
+        1.0,
+    )));
     let (middle, upper, lower) = if textured {
         wall_paints(level, line, side, &textures, front, back, wall)
     } else {
         (Paint::Solid(wall), Paint::Solid(wall), Paint::Solid(wall))
     };
     SegColumns {
+        line: seg.line,
         from,
         dir,
         cross_from,
@@ -164,6 +160,7 @@ fn seg_columns<'a>(
         back: back.map(|b| (b.ceiling, b.floor)),
         ceiling_paint,
         floor_paint,
+        masked: back.is_some() && textures.middle.is_some(),
         middle,
         upper,
         lower,
@@ -190,11 +187,7 @@ fn wall_paints<'a>(
     let paint = |id: Option<TextureId>, top: &dyn Fn(&Texture) -> f64| match id {
         Some(id) => {
             let texture = level.materials.textures.get(id);
-            Paint::Textured {
-                texture,
-                top: top(texture) + side.y_offset,
-                light,
-            }
+            Paint::Textured { texture, top: top(texture) + side.y_offset, light }
         }
         None => Paint::Solid(flat),
     };
@@ -206,8 +199,7 @@ fn wall_paints<'a>(
             front.ceiling
         }
     });
-    let (back_ceiling, back_floor) =
-        back.map_or((front.ceiling, front.floor), |b| (b.ceiling, b.floor));
+    let (back_ceiling, back_floor) = back.map_or((front.ceiling, front.floor), |b| (b.ceiling, b.floor));
     let upper = paint(textures.upper, &|t| {
         if flags.upper_unpegged {
             front.ceiling
@@ -226,55 +218,23 @@ fn wall_paints<'a>(
 }
 
 #[inline]
-fn draw_column(
-    cam: &Camera,
-    lighting: &Lighting,
-    s: &SegColumns,
-    x: usize,
-    frame: &mut Frame,
-    out: &mut ColumnWriter,
-) {
+fn draw_column(cam: &Camera, lighting: &Lighting, s: &SegColumns, x: usize, frame: &mut Frame, out: &mut ColumnWriter) {
     let t = frame.slopes[x];
     let depth = s.cross_from / cross(DVec2::new(1.0, t), s.dir);
     // Columns inside the near-clipped span are at depth >= NEAR up to rounding.
-    let depth = if depth.is_finite() {
-        depth.max(NEAR)
-    } else {
-        NEAR
-    };
+    let depth = if depth.is_finite() { depth.max(NEAR) } else { NEAR };
     let row = |height: f64| cam.first_row_at_or_below(depth, height);
     let (top, bottom) = (frame.clip_top[x], frame.clip_bottom[x]);
     let ceiling_end = row(s.ceiling).clamp(top, bottom);
     let floor_start = row(s.floor).clamp(ceiling_end, bottom);
-    paint_plane(
-        out,
-        cam,
-        lighting,
-        x,
-        (top, ceiling_end),
-        t,
-        s.ceiling_paint,
-    );
-    paint_plane(
-        out,
-        cam,
-        lighting,
-        x,
-        (floor_start, bottom),
-        t,
-        s.floor_paint,
-    );
-    let wall = WallColumn {
-        cam,
-        lighting,
-        x,
-        depth,
-        u: texture_u(s, depth, t),
-    };
+    paint_plane(out, cam, lighting, x, (top, ceiling_end), t, s.ceiling_paint);
+    paint_plane(out, cam, lighting, x, (floor_start, bottom), t, s.floor_paint);
+    let wall = WallColumn { cam, lighting, x, depth, u: texture_u(s, depth, t) };
     match s.back {
         None => {
             wall.paint(out, (ceiling_end, floor_start), s.middle);
             frame.occlusion.close(x);
+            frame.push_event(x, depth, 0, 0);
         }
         Some((back_ceiling, back_floor)) => {
             // The opening is below both ceilings and above both floors.
@@ -287,6 +247,10 @@ fn draw_column(
             } else {
                 frame.clip_top[x] = upper_end;
                 frame.clip_bottom[x] = lower_start;
+            }
+            let event = frame.push_event(x, depth, upper_end, lower_start.max(upper_end));
+            if s.masked && upper_end < lower_start {
+                frame.push_masked(x, depth, s.line, s.backwards, wall.u, event);
             }
         }
     }
@@ -315,11 +279,7 @@ impl WallColumn<'_> {
     fn paint(&self, out: &mut ColumnWriter, rows: (i32, i32), paint: Paint) {
         match paint {
             Paint::Solid(c) => out.fill(self.x, rows.0, rows.1, c),
-            Paint::Textured {
-                texture,
-                top,
-                light,
-            } => {
+            Paint::Textured { texture, top, light } => {
                 if rows.1 <= rows.0 {
                     return;
                 }

@@ -28,25 +28,14 @@ pub(super) fn decode_png(input: impl BufRead + Seek, path: &Path) -> Result<Text
         (info.width, info.height)
     };
     if width == 0 || height == 0 || width > MAX_SIDE || height > MAX_SIDE {
-        return Err(TextureError::Size {
-            path: path.to_path_buf(),
-            width,
-            height,
-        });
+        return Err(TextureError::Size { path: path.to_path_buf(), width, height });
     }
     let mut reader = decoder.read_info().map_err(|e| png_error(path, e))?;
-    let size = reader
-        .output_buffer_size()
-        .ok_or_else(|| png_error(path, "image too large for memory"))?;
+    let size = reader.output_buffer_size().ok_or_else(|| png_error(path, "image too large for memory"))?;
     let mut buf = vec![0u8; size];
-    let frame = reader
-        .next_frame(&mut buf)
-        .map_err(|e| png_error(path, e))?;
+    let frame = reader.next_frame(&mut buf).map_err(|e| png_error(path, e))?;
     if frame.bit_depth != ::png::BitDepth::Eight {
-        return Err(png_error(
-            path,
-            format!("unexpected {:?} output", frame.bit_depth),
-        ));
+        return Err(png_error(path, format!("unexpected {:?} output", frame.bit_depth)));
     }
     let samples = frame.color_type.samples();
     let (w, h) = (frame.width as usize, frame.height as usize);
@@ -73,10 +62,7 @@ pub(super) fn decode_png(input: impl BufRead + Seek, path: &Path) -> Result<Text
 }
 
 fn png_error(path: &Path, message: impl ToString) -> TextureError {
-    TextureError::Png {
-        path: path.to_path_buf(),
-        message: message.to_string(),
-    }
+    TextureError::Png { path: path.to_path_buf(), message: message.to_string() }
 }
 
 #[cfg(test)]
@@ -120,9 +106,7 @@ mod tests {
     #[test]
     fn rgb_is_transposed_to_columns() {
         // 3x2, row-major: distinct colour per pixel.
-        let data: Vec<u8> = (0..6)
-            .flat_map(|i| [i * 10, i * 10 + 1, i * 10 + 2])
-            .collect();
+        let data: Vec<u8> = (0..6).flat_map(|i| [i * 10, i * 10 + 1, i * 10 + 2]).collect();
         let t = decode(&encode(3, 2, ColorType::Rgb, BitDepth::Eight, &data, None)).unwrap();
         assert_eq!((t.width, t.height), (3, 2));
         assert!(t.opaque);
@@ -148,28 +132,14 @@ mod tests {
         let trns = [0];
         // 2-bit indices, 3 pixels: 0, 1, 1 packed MSB first.
         let data = [0b00_01_01_00];
-        let png = encode(
-            3,
-            1,
-            ColorType::Indexed,
-            BitDepth::Two,
-            &data,
-            Some((&plte, Some(&trns))),
-        );
+        let png = encode(3, 1, ColorType::Indexed, BitDepth::Two, &data, Some((&plte, Some(&trns))));
         let t = decode(&png).unwrap();
         assert_eq!(rgba(&t, 0, 0), [10, 20, 30, 0]);
         assert_eq!(rgba(&t, 1, 0), [200, 100, 50, 255]);
         assert_eq!(rgba(&t, 2, 0), [200, 100, 50, 255]);
         assert!(!t.opaque);
 
-        let png = encode(
-            3,
-            1,
-            ColorType::Indexed,
-            BitDepth::Two,
-            &data,
-            Some((&plte, None)),
-        );
+        let png = encode(3, 1, ColorType::Indexed, BitDepth::Two, &data, Some((&plte, None)));
         let t = decode(&png).unwrap();
         assert_eq!(rgba(&t, 0, 0), [10, 20, 30, 255]);
         assert!(t.opaque);
@@ -177,38 +147,14 @@ mod tests {
 
     #[test]
     fn grey_low_depth_and_grey_alpha_expand() {
-        let t = decode(&encode(
-            2,
-            1,
-            ColorType::Grayscale,
-            BitDepth::Eight,
-            &[7, 200],
-            None,
-        ))
-        .unwrap();
+        let t = decode(&encode(2, 1, ColorType::Grayscale, BitDepth::Eight, &[7, 200], None)).unwrap();
         assert_eq!(rgba(&t, 1, 0), [200, 200, 200, 255]);
         // 1-bit grey scales to the full range: 1 -> 255.
-        let t = decode(&encode(
-            8,
-            1,
-            ColorType::Grayscale,
-            BitDepth::One,
-            &[0b1000_0001],
-            None,
-        ))
-        .unwrap();
+        let t = decode(&encode(8, 1, ColorType::Grayscale, BitDepth::One, &[0b1000_0001], None)).unwrap();
         assert_eq!(rgba(&t, 0, 0), [255, 255, 255, 255]);
         assert_eq!(rgba(&t, 1, 0), [0, 0, 0, 255]);
         assert_eq!(rgba(&t, 7, 0), [255, 255, 255, 255]);
-        let t = decode(&encode(
-            1,
-            1,
-            ColorType::GrayscaleAlpha,
-            BitDepth::Eight,
-            &[90, 0],
-            None,
-        ))
-        .unwrap();
+        let t = decode(&encode(1, 1, ColorType::GrayscaleAlpha, BitDepth::Eight, &[90, 0], None)).unwrap();
         assert_eq!(rgba(&t, 0, 0), [90, 90, 90, 0]);
     }
 
@@ -216,25 +162,9 @@ mod tests {
     fn sixteen_bit_keeps_the_high_byte() {
         // Big-endian samples: 0x1234 -> 0x12.
         let data = [0x12, 0x34, 0xab, 0xcd, 0xff, 0x00, 0x80, 0x00];
-        let t = decode(&encode(
-            1,
-            1,
-            ColorType::Rgba,
-            BitDepth::Sixteen,
-            &data,
-            None,
-        ))
-        .unwrap();
+        let t = decode(&encode(1, 1, ColorType::Rgba, BitDepth::Sixteen, &data, None)).unwrap();
         assert_eq!(rgba(&t, 0, 0), [0x12, 0xab, 0xff, 0x80]);
-        let t = decode(&encode(
-            1,
-            1,
-            ColorType::Grayscale,
-            BitDepth::Sixteen,
-            &[0xee, 0x01],
-            None,
-        ))
-        .unwrap();
+        let t = decode(&encode(1, 1, ColorType::Grayscale, BitDepth::Sixteen, &[0xee, 0x01], None)).unwrap();
         assert_eq!(rgba(&t, 0, 0), [0xee, 0xee, 0xee, 255]);
     }
 
@@ -261,11 +191,7 @@ mod tests {
     fn absurd_dimensions_are_errors_not_allocations() {
         for (w, h) in [(MAX_SIDE + 1, 1), (1, 100_000), (0x7fff_ffff, 0x7fff_ffff)] {
             match decode(&raw_png(w, h)) {
-                Err(TextureError::Size {
-                    width,
-                    height,
-                    path,
-                }) => {
+                Err(TextureError::Size { width, height, path }) => {
                     assert_eq!((width, height), (w, h));
                     assert_eq!(path, Path::new("test.png"));
                 }
@@ -276,10 +202,7 @@ mod tests {
         // long as it names the file.
         for (w, h) in [(0, 5), (5, 0)] {
             let err = decode(&raw_png(w, h)).unwrap_err();
-            assert!(
-                matches!(err, TextureError::Png { .. } | TextureError::Size { .. }),
-                "{err:?}"
-            );
+            assert!(matches!(err, TextureError::Png { .. } | TextureError::Size { .. }), "{err:?}");
             assert!(err.to_string().starts_with("test.png: "), "{err}");
         }
     }

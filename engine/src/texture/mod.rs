@@ -38,11 +38,7 @@ impl Texture {
     ///
     /// Panics on a zero side: every texture in a set has at least one texel, so
     /// sampling never divides by zero (PNG loading rejects empty images first).
-    pub fn from_fn(
-        width: usize,
-        height: usize,
-        mut f: impl FnMut(usize, usize) -> [u8; 4],
-    ) -> Texture {
+    pub fn from_fn(width: usize, height: usize, mut f: impl FnMut(usize, usize) -> [u8; 4]) -> Texture {
         assert!(width > 0 && height > 0, "texture of size {width}x{height}");
         let mut texels = Vec::with_capacity(width * height);
         for u in 0..width {
@@ -57,12 +53,7 @@ impl Texture {
     fn from_texels(width: usize, height: usize, texels: Vec<u32>) -> Texture {
         debug_assert_eq!(texels.len(), width * height);
         let opaque = texels.iter().all(|&t| t >> 24 == 0xff);
-        Texture {
-            width,
-            height,
-            texels,
-            opaque,
-        }
+        Texture { width, height, texels, opaque }
     }
 
     /// Reads a PNG file (any colour type and bit depth) into a texture.
@@ -143,11 +134,7 @@ pub enum TextureError {
         list_paths(tried),
         procedural::names(*kind).join(", ")
     )]
-    Missing {
-        name: String,
-        kind: TextureKind,
-        tried: Vec<PathBuf>,
-    },
+    Missing { name: String, kind: TextureKind, tried: Vec<PathBuf> },
     /// The name could escape the map's folder or name a hidden file.
     #[error("{kind} name {name:?} is not a plain file name (no path separators, no leading dot)")]
     BadName { name: String, kind: TextureKind },
@@ -160,11 +147,7 @@ pub enum TextureError {
         "{}: PNG is {width}x{height}; textures must be 1 to {MAX_SIDE} texels on a side",
         path.display()
     )]
-    Size {
-        path: PathBuf,
-        width: u32,
-        height: u32,
-    },
+    Size { path: PathBuf, width: u32, height: u32 },
 }
 
 fn list_paths(paths: &[PathBuf]) -> String {
@@ -209,12 +192,7 @@ impl TextureSet {
     /// (case-insensitive); else [`TextureError::Missing`]. A file that exists
     /// but does not decode is an error, not a reason to fall back, so a broken
     /// art file is never silently replaced by a built-in look.
-    pub fn resolve(
-        &mut self,
-        name: &str,
-        kind: TextureKind,
-        dirs: &[PathBuf],
-    ) -> Result<TextureId, TextureError> {
+    pub fn resolve(&mut self, name: &str, kind: TextureKind, dirs: &[PathBuf]) -> Result<TextureId, TextureError> {
         let key = (name.to_string(), kind);
         if let Some(&id) = self.ids.get(&key) {
             return Ok(id);
@@ -225,8 +203,9 @@ impl TextureSet {
             None => {
                 let texture = match &source {
                     Source::File(path) => decode::read_png(path)?,
-                    Source::Builtin(canonical) => procedural::generate(canonical, kind)
-                        .unwrap_or_else(|| unreachable!("{canonical} was listed")),
+                    Source::Builtin(canonical) => {
+                        procedural::generate(canonical, kind).unwrap_or_else(|| unreachable!("{canonical} was listed"))
+                    }
                 };
                 // Ids are u32 to keep map data small; four billion textures
                 // would not fit in memory first.
@@ -269,13 +248,9 @@ impl TextureSet {
 fn find(name: &str, kind: TextureKind, dirs: &[PathBuf]) -> Result<Source, TextureError> {
     // A name is joined onto a directory, so a map must not be able to reach
     // outside it ("../../etc/x"), name a hidden file, or (on Windows) a drive.
-    let plain =
-        !name.is_empty() && !name.starts_with('.') && !name.contains(['/', '\\', '\0', ':']);
+    let plain = !name.is_empty() && !name.starts_with('.') && !name.contains(['/', '\\', '\0', ':']);
     if !plain {
-        return Err(TextureError::BadName {
-            name: name.to_string(),
-            kind,
-        });
+        return Err(TextureError::BadName { name: name.to_string(), kind });
     }
     let lower = name.to_lowercase();
     let mut tried = Vec::new();
@@ -294,11 +269,7 @@ fn find(name: &str, kind: TextureKind, dirs: &[PathBuf]) -> Result<Source, Textu
     }
     match procedural::canonical(name, kind) {
         Some(canonical) => Ok(Source::Builtin(canonical)),
-        None => Err(TextureError::Missing {
-            name: name.to_string(),
-            kind,
-            tried,
-        }),
+        None => Err(TextureError::Missing { name: name.to_string(), kind, tried }),
     }
 }
 

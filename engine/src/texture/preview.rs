@@ -35,11 +35,7 @@ impl Sheet {
                 let (u, v) = ((px / zoom + roll) % t.width, (py / zoom) % t.height);
                 let [r, g, b, a] = t.texel(u, v).to_le_bytes();
                 let check = if (px / 4 + py / 4) % 2 == 0 { 90 } else { 60 };
-                let c = if a == 0 {
-                    [check, check, check + 20]
-                } else {
-                    [r, g, b]
-                };
+                let c = if a == 0 { [check, check, check + 20] } else { [r, g, b] };
                 self.put(x0 + px, y0 + py, c);
             }
         }
@@ -69,11 +65,7 @@ fn write_texture(path: &Path, t: &Texture) {
         }
     }
     let file = std::fs::File::create(path).unwrap();
-    let mut encoder = png::Encoder::new(
-        std::io::BufWriter::new(file),
-        t.width as u32,
-        t.height as u32,
-    );
+    let mut encoder = png::Encoder::new(std::io::BufWriter::new(file), t.width as u32, t.height as u32);
     encoder.set_color(png::ColorType::Rgba);
     encoder.set_depth(png::BitDepth::Eight);
     let mut writer = encoder.write_header().unwrap();
@@ -141,11 +133,7 @@ fn contact_sheet() {
         shelf = shelf.max(h);
     }
     let height = y + shelf + MARGIN;
-    let mut sheet = Sheet {
-        w: SHEET_WIDTH,
-        h: height,
-        rgb: vec![[32, 32, 40]; SHEET_WIDTH * height],
-    };
+    let mut sheet = Sheet { w: SHEET_WIDTH, h: height, rgb: vec![[32, 32, 40]; SHEET_WIDTH * height] };
     for (t, x, y, zoom, tiles, roll) in placed {
         sheet.draw(t, x, y, zoom, tiles, roll);
     }

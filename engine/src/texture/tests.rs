@@ -12,8 +12,7 @@ impl MapDir {
     fn new() -> MapDir {
         static NEXT: AtomicUsize = AtomicUsize::new(0);
         let n = NEXT.fetch_add(1, Ordering::Relaxed);
-        let dir =
-            std::env::temp_dir().join(format!("sightline-texture-{}-{n}", std::process::id()));
+        let dir = std::env::temp_dir().join(format!("sightline-texture-{}-{n}", std::process::id()));
         let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(dir.join("textures")).unwrap();
         std::fs::create_dir_all(dir.join("sprites")).unwrap();
@@ -45,9 +44,7 @@ fn solid_png(w: u32, h: u32, rgba: [u8; 4]) -> Vec<u8> {
     encoder.set_color(::png::ColorType::Rgba);
     encoder.set_depth(::png::BitDepth::Eight);
     let mut writer = encoder.write_header().unwrap();
-    writer
-        .write_image_data(&rgba.repeat((w * h) as usize))
-        .unwrap();
+    writer.write_image_data(&rgba.repeat((w * h) as usize)).unwrap();
     writer.finish().unwrap();
     out
 }
@@ -64,10 +61,7 @@ fn from_fn_is_column_major() {
     assert!(t.opaque);
     for u in 0..5 {
         for v in 0..3 {
-            assert_eq!(
-                t.texels[u * 3 + v],
-                u32::from_le_bytes([u as u8, v as u8, 7, 255])
-            );
+            assert_eq!(t.texels[u * 3 + v], u32::from_le_bytes([u as u8, v as u8, 7, 255]));
             assert_eq!(t.texel(u, v), t.texels[u * 3 + v]);
             assert_eq!(t.column(u)[v], t.texel(u, v));
         }
@@ -81,15 +75,9 @@ fn wrapped_repeats_any_size_in_both_directions() {
     for (w, h) in [(1, 1), (1, 64), (37, 23), (64, 64), (96, 128)] {
         let t = coded(w, h);
         let (wi, hi) = (w as i64, h as i64);
-        for (u, v) in [
-            (0, 0),
-            (wi - 1, hi - 1),
-            (wi, hi),
-            (-1, -1),
-            (-wi, -hi),
-            (-wi - 1, 5),
-            (3 * wi + 2, -7 * hi - 3),
-        ] {
+        for (u, v) in
+            [(0, 0), (wi - 1, hi - 1), (wi, hi), (-1, -1), (-wi, -hi), (-wi - 1, 5), (3 * wi + 2, -7 * hi - 3)]
+        {
             let expected = t.texel(u.rem_euclid(wi) as usize, v.rem_euclid(hi) as usize);
             assert_eq!(t.wrapped(u, v), expected, "{w}x{h} at ({u}, {v})");
         }
@@ -97,19 +85,14 @@ fn wrapped_repeats_any_size_in_both_directions() {
         assert_eq!(t.wrapped(-1, -1), t.texel(w - 1, h - 1));
         assert_eq!(
             t.wrapped(i64::MIN, i64::MAX),
-            t.texel(
-                i64::MIN.rem_euclid(wi) as usize,
-                i64::MAX.rem_euclid(hi) as usize
-            )
+            t.texel(i64::MIN.rem_euclid(wi) as usize, i64::MAX.rem_euclid(hi) as usize)
         );
     }
 }
 
 #[test]
 fn opacity_is_computed() {
-    let t = Texture::from_fn(3, 2, |u, v| {
-        [0, 0, 0, if (u, v) == (2, 1) { 0 } else { 255 }]
-    });
+    let t = Texture::from_fn(3, 2, |u, v| [0, 0, 0, if (u, v) == (2, 1) { 0 } else { 255 }]);
     assert!(!t.opaque);
     let t = Texture::from_fn(3, 2, |_, _| [0, 0, 0, 128]);
     assert!(!t.opaque, "partial alpha is not opaque");
@@ -149,30 +132,19 @@ fn png_in_the_map_overrides_the_procedural_texture() {
     dir.write("textures/BRICK.png", &solid_png(3, 5, [1, 2, 3, 255]));
     dir.write("sprites/barrel.png", &solid_png(2, 2, [9, 9, 9, 0]));
     let mut set = TextureSet::new();
-    let brick = set
-        .resolve("BRICK", TextureKind::Wall, &dir.dirs())
-        .unwrap();
+    let brick = set.resolve("BRICK", TextureKind::Wall, &dir.dirs()).unwrap();
     assert_eq!((set.get(brick).width, set.get(brick).height), (3, 5));
     assert_eq!(set.get(brick).texel(2, 4), crate::framebuffer::rgb(1, 2, 3));
     // Wall and flat textures share the folder.
-    let flat = set
-        .resolve("BRICK", TextureKind::Flat, &dir.dirs())
-        .unwrap();
+    let flat = set.resolve("BRICK", TextureKind::Flat, &dir.dirs()).unwrap();
     assert_eq!(set.get(flat), set.get(brick));
     // Exact name first, then the lower-case file name.
-    let barrel = set
-        .resolve("BARREL", TextureKind::Sprite, &dir.dirs())
-        .unwrap();
+    let barrel = set.resolve("BARREL", TextureKind::Sprite, &dir.dirs()).unwrap();
     assert_eq!(set.get(barrel).width, 2);
     assert!(!set.get(barrel).opaque);
     // A sprite name is not looked up among the textures, nor the other way.
-    let stone = set
-        .resolve("STONE", TextureKind::Wall, &dir.dirs())
-        .unwrap();
-    assert_eq!(
-        set.get(stone),
-        &procedural::generate("STONE", TextureKind::Wall).unwrap()
-    );
+    let stone = set.resolve("STONE", TextureKind::Wall, &dir.dirs()).unwrap();
+    assert_eq!(set.get(stone), &procedural::generate("STONE", TextureKind::Wall).unwrap());
 }
 
 #[test]
@@ -194,43 +166,24 @@ fn earlier_directories_win() {
 fn missing_name_lists_what_was_tried() {
     let dir = MapDir::new();
     let mut set = TextureSet::new();
-    let err = set
-        .resolve("NoSuch", TextureKind::Wall, &dir.dirs())
-        .unwrap_err();
+    let err = set.resolve("NoSuch", TextureKind::Wall, &dir.dirs()).unwrap_err();
     match &err {
         TextureError::Missing { name, kind, tried } => {
             assert_eq!(name, "NoSuch");
             assert_eq!(*kind, TextureKind::Wall);
-            assert_eq!(
-                tried,
-                &[
-                    dir.0.join("textures/NoSuch.png"),
-                    dir.0.join("textures/nosuch.png")
-                ]
-            );
+            assert_eq!(tried, &[dir.0.join("textures/NoSuch.png"), dir.0.join("textures/nosuch.png")]);
         }
         other => panic!("{other:?}"),
     }
     let text = err.to_string();
-    assert!(
-        text.contains("\"NoSuch\"") && text.contains("nosuch.png"),
-        "{text}"
-    );
-    assert!(
-        text.contains("no procedural wall texture") && text.contains("BRICK, STONE"),
-        "{text}"
-    );
+    assert!(text.contains("\"NoSuch\"") && text.contains("nosuch.png"), "{text}");
+    assert!(text.contains("no procedural wall texture") && text.contains("BRICK, STONE"), "{text}");
     assert_eq!(set.len(), 0);
 
     // A flat name is not a wall, and a sprite is looked for under sprites/.
-    let err = set
-        .resolve("floor", TextureKind::Sprite, &dir.dirs())
-        .unwrap_err();
+    let err = set.resolve("floor", TextureKind::Sprite, &dir.dirs()).unwrap_err();
     let text = err.to_string();
-    assert!(
-        text.contains("sprites/floor.png") && text.contains("BARREL"),
-        "{text}"
-    );
+    assert!(text.contains("sprites/floor.png") && text.contains("BARREL"), "{text}");
     assert!(matches!(err, TextureError::Missing { ref tried, .. } if tried.len() == 1));
 }
 
@@ -238,13 +191,8 @@ fn missing_name_lists_what_was_tried() {
 fn names_that_are_paths_are_refused() {
     let mut set = TextureSet::new();
     for name in ["", "../BRICK", "a/b", "a\\b", ".hidden", "c:x"] {
-        let err = set
-            .resolve(name, TextureKind::Wall, &[PathBuf::from("maps")])
-            .unwrap_err();
-        assert!(
-            matches!(err, TextureError::BadName { .. }),
-            "{name:?}: {err:?}"
-        );
+        let err = set.resolve(name, TextureKind::Wall, &[PathBuf::from("maps")]).unwrap_err();
+        assert!(matches!(err, TextureError::BadName { .. }), "{name:?}: {err:?}");
     }
 }
 
@@ -258,14 +206,9 @@ fn broken_files_are_errors_naming_the_file_not_fallbacks() {
     for (name, path) in [("BRICK", &truncated), ("STONE", &garbage)] {
         match set.resolve(name, TextureKind::Wall, &dir.dirs()) {
             Err(err @ TextureError::Png { .. }) => {
-                let TextureError::Png { path: p, .. } = &err else {
-                    unreachable!()
-                };
+                let TextureError::Png { path: p, .. } = &err else { unreachable!() };
                 assert_eq!(p, path);
-                assert!(
-                    err.to_string().starts_with(&path.display().to_string()),
-                    "{err}"
-                );
+                assert!(err.to_string().starts_with(&path.display().to_string()), "{err}");
             }
             other => panic!("{name}: {other:?}"),
         }
@@ -281,15 +224,8 @@ fn absurd_sizes_in_the_map_are_errors() {
     let path = dir.write("textures/WIDE.png", &wide);
     let mut set = TextureSet::new();
     match set.resolve("WIDE", TextureKind::Wall, &dir.dirs()) {
-        Err(TextureError::Size {
-            path: p,
-            width,
-            height,
-        }) => {
-            assert_eq!(
-                (p.as_path(), width, height),
-                (path.as_path(), MAX_SIDE + 1, 1)
-            );
+        Err(TextureError::Size { path: p, width, height }) => {
+            assert_eq!((p.as_path(), width, height), (path.as_path(), MAX_SIDE + 1, 1));
         }
         other => panic!("{other:?}"),
     }
@@ -326,10 +262,7 @@ const GREY16: &str = concat!(
 );
 
 fn unhex(hex: &str) -> Vec<u8> {
-    (0..hex.len())
-        .step_by(2)
-        .map(|i| u8::from_str_radix(&hex[i..i + 2], 16).unwrap())
-        .collect()
+    (0..hex.len()).step_by(2).map(|i| u8::from_str_radix(&hex[i..i + 2], 16).unwrap()).collect()
 }
 
 #[test]

@@ -30,11 +30,7 @@ pub fn floor(seed: u32) -> Texture {
         let stone = mix(hex(0x6e665c), hex(0x8a8172), tone);
         let mut c = scale(stone, 0.78 + 0.35 * grain.at(uf, vf));
         // Feet polish the middle of each tile and leave dirt at its edges.
-        c = mix(
-            c,
-            hex(0x4a4238),
-            0.4 * smoothstep(0.5, 0.8, wear.at(uf, vf)),
-        );
+        c = mix(c, hex(0x4a4238), 0.4 * smoothstep(0.5, 0.8, wear.at(uf, vf)));
         c = scale(c, 0.88 + 0.12 * smoothstep(2.0, 10.0, edge));
         // Pits: the odd darker texel in the stone.
         if rand01(seed ^ 3, u as i32, v as i32) < 0.04 {
@@ -58,10 +54,7 @@ pub fn tile(seed: u32) -> Texture {
         let mut c = scale(base, tone * (0.93 + 0.12 * speck.at(u as f32, v as f32)));
         // Glaze: a soft sheen towards each tile's upper left.
         let (x, y) = ((u % 16) as f32, (v % 16) as f32);
-        c = add(
-            c,
-            scale([1.0, 0.97, 0.9], 0.06 * smoothstep(14.0, 2.0, x + y)),
-        );
+        c = add(c, scale([1.0, 0.97, 0.9], 0.06 * smoothstep(14.0, 2.0, x + y)));
         c = mix(hex(0x8c8880), c, smoothstep(-0.2, 0.6, edge));
         opaque(scale(c, height.light(u, v, 0.5)))
     })
@@ -150,11 +143,7 @@ pub fn ceil(seed: u32) -> Texture {
         }
         let glow = smoothstep(20.0, 10.0, f) * 0.2;
         c = add(c, scale(hex(0xffe7b0), glow));
-        let lit = if f < 9.0 {
-            1.0
-        } else {
-            height.light(u, v, 0.6)
-        };
+        let lit = if f < 9.0 { 1.0 } else { height.light(u, v, 0.6) };
         opaque(scale(c, lit))
     })
 }
@@ -195,11 +184,7 @@ pub fn dirt(seed: u32) -> Texture {
         .collect();
     let height = Field::new(W, W, |u, v| {
         let (d, _) = pebbles[u * W + v];
-        let stone = if d < 1.0 {
-            0.6 * (1.0 - d * d).sqrt()
-        } else {
-            0.0
-        };
+        let stone = if d < 1.0 { 0.6 * (1.0 - d * d).sqrt() } else { 0.0 };
         0.5 * soil.at(u as f32, v as f32) + 0.3 * fine.at(u as f32, v as f32) + stone
     });
     Texture::from_fn(W, W, |u, v| {

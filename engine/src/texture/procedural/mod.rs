@@ -19,18 +19,14 @@ use super::{Texture, TextureKind};
 /// Wall textures. DEBUG1 (1x1), THIN (1x64) and ODD (37x23) exist for the
 /// renderer's hard cases: a texture with one texel, one column, and sides that
 /// are prime.
-const WALLS: &[&str] = &[
-    "BRICK", "STONE", "WOOD", "METAL", "STEP", "DOOR", "GRATE", "FENCE", "SUPPORT", "SKY",
-    "DEBUG1", "THIN", "ODD",
-];
+const WALLS: &[&str] =
+    &["BRICK", "STONE", "WOOD", "METAL", "STEP", "DOOR", "GRATE", "FENCE", "SUPPORT", "SKY", "DEBUG1", "THIN", "ODD"];
 
 /// Floor and ceiling textures. The sky is both a wall and a flat: a sector
 /// ceiling named SKY shows the panorama.
 const FLATS: &[&str] = &["FLOOR", "TILE", "GRASS", "WATER", "CEIL", "DIRT", "SKY"];
 
-const SPRITES: &[&str] = &[
-    "BARREL", "LAMP", "COLUMN", "PLANT", "TORCH", "CRATE", "STATUE",
-];
+const SPRITES: &[&str] = &["BARREL", "LAMP", "COLUMN", "PLANT", "TORCH", "CRATE", "STATUE"];
 
 /// Names of the built-in textures of each kind, upper case.
 pub fn names(kind: TextureKind) -> &'static [&'static str] {
@@ -43,10 +39,7 @@ pub fn names(kind: TextureKind) -> &'static [&'static str] {
 
 /// The listed spelling of built-in `name` (any case) of `kind`, if there is one.
 pub fn canonical(name: &str, kind: TextureKind) -> Option<&'static str> {
-    names(kind)
-        .iter()
-        .copied()
-        .find(|n| n.eq_ignore_ascii_case(name))
+    names(kind).iter().copied().find(|n| n.eq_ignore_ascii_case(name))
 }
 
 /// The built-in texture `name` (any case) of `kind`, or `None` when there is
@@ -108,10 +101,7 @@ mod tests {
                     let clear = t.texels.iter().filter(|&&p| p >> 24 == 0).count();
                     assert!(clear > 0 && clear < t.texels.len(), "{name}: {clear} clear");
                     // Procedural masks are binary: the renderer may test alpha != 0.
-                    assert!(
-                        t.texels.iter().all(|&p| matches!(p >> 24, 0 | 255)),
-                        "{name}"
-                    );
+                    assert!(t.texels.iter().all(|&p| matches!(p >> 24, 0 | 255)), "{name}");
                 }
             }
         }
@@ -124,17 +114,9 @@ mod tests {
         assert_eq!(size("THIN", TextureKind::Wall), Some((1, 64)));
         assert_eq!(size("ODD", TextureKind::Wall), Some((37, 23)));
         assert_eq!(size("SKY", TextureKind::Wall), Some((1024, 200)));
-        assert_eq!(
-            size("SKY", TextureKind::Flat),
-            size("SKY", TextureKind::Wall)
-        );
-        let all: Vec<_> = KINDS
-            .iter()
-            .flat_map(|&k| names(k).iter().map(move |&n| size(n, k).unwrap()))
-            .collect();
-        assert!(all
-            .iter()
-            .any(|&(w, h)| !w.is_power_of_two() || !h.is_power_of_two()));
+        assert_eq!(size("SKY", TextureKind::Flat), size("SKY", TextureKind::Wall));
+        let all: Vec<_> = KINDS.iter().flat_map(|&k| names(k).iter().map(move |&n| size(n, k).unwrap())).collect();
+        assert!(all.iter().any(|&(w, h)| !w.is_power_of_two() || !h.is_power_of_two()));
     }
 
     #[test]
@@ -175,17 +157,12 @@ mod tests {
     fn sprites_stand_on_their_bottom_row_and_sky_wraps() {
         for &name in names(TextureKind::Sprite) {
             let t = generate(name, TextureKind::Sprite).unwrap();
-            let bottom = (0..t.width)
-                .filter(|&u| alpha(&t, u, t.height - 1) == 255)
-                .count();
+            let bottom = (0..t.width).filter(|&u| alpha(&t, u, t.height - 1) == 255).count();
             assert!(bottom >= 2, "{name} floats above the ground");
             // A column of air at both edges, so clamped sampling at the
             // sprite's sides never smears the figure.
             for u in [0, t.width - 1] {
-                assert!(
-                    (0..t.height).all(|v| alpha(&t, u, v) == 0),
-                    "{name} column {u}"
-                );
+                assert!((0..t.height).all(|v| alpha(&t, u, v) == 0), "{name} column {u}");
             }
         }
         // Column 0 continues column width-1: the two differ no more than
@@ -202,11 +179,7 @@ mod tests {
                 .sum()
         };
         let inside = (1..sky.width).map(|u| step(u - 1, u)).max().unwrap();
-        assert!(
-            step(sky.width - 1, 0) <= inside,
-            "seam {} > {inside}",
-            step(sky.width - 1, 0)
-        );
+        assert!(step(sky.width - 1, 0) <= inside, "seam {} > {inside}", step(sky.width - 1, 0));
         // The bottom of the panorama is land, darker than the sky at the top.
         let luma = |p: u32| p.to_le_bytes()[..3].iter().map(|&c| c as u32).sum::<u32>();
         assert!(luma(sky.texel(0, sky.height - 1)) < luma(sky.texel(0, sky.height / 2)));

@@ -17,19 +17,11 @@ pub const CLEAR: [u8; 4] = [0, 0, 0, 0];
 
 /// `0xRRGGBB` as a colour.
 pub const fn hex(c: u32) -> Rgb {
-    [
-        ((c >> 16) & 0xff) as f32 / 255.0,
-        ((c >> 8) & 0xff) as f32 / 255.0,
-        (c & 0xff) as f32 / 255.0,
-    ]
+    [((c >> 16) & 0xff) as f32 / 255.0, ((c >> 8) & 0xff) as f32 / 255.0, (c & 0xff) as f32 / 255.0]
 }
 
 pub fn mix(a: Rgb, b: Rgb, t: f32) -> Rgb {
-    [
-        a[0] + (b[0] - a[0]) * t,
-        a[1] + (b[1] - a[1]) * t,
-        a[2] + (b[2] - a[2]) * t,
-    ]
+    [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2] + (b[2] - a[2]) * t]
 }
 
 pub fn scale(c: Rgb, k: f32) -> Rgb {
@@ -54,9 +46,7 @@ pub fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
 /// FNV-1a of the upper-cased name: each texture gets its own noise, and the
 /// same texture the same noise whatever case the map spelled it in.
 pub fn seed_of(name: &str) -> u32 {
-    name.bytes().fold(0x811c_9dc5, |h, b| {
-        (h ^ b.to_ascii_uppercase() as u32).wrapping_mul(0x0100_0193)
-    })
+    name.bytes().fold(0x811c_9dc5, |h, b| (h ^ b.to_ascii_uppercase() as u32).wrapping_mul(0x0100_0193))
 }
 
 /// A well-mixed 32-bit hash of a lattice point (the `lowbias32` finaliser by
@@ -120,14 +110,7 @@ pub fn fbm(seed: u32, x: f32, y: f32, px: i32, py: i32, octaves: u32) -> f32 {
     let (mut sum, mut weight, mut total, mut freq) = (0.0, 1.0, 0.0, 1);
     for octave in 0..octaves {
         let f = freq as f32;
-        sum += weight
-            * value_noise(
-                seed.wrapping_add(octave),
-                x * f,
-                y * f,
-                px * freq,
-                py * freq,
-            );
+        sum += weight * value_noise(seed.wrapping_add(octave), x * f, y * f, px * freq, py * freq);
         total += weight;
         weight *= 0.5;
         freq *= 2;
@@ -162,19 +145,14 @@ impl TileNoise {
             .map(|o| {
                 let (px, py) = (cells.0 << o, cells.1 << o);
                 let values = (0..=py)
-                    .flat_map(|y| {
-                        (0..=px).map(move |x| rand01(seed.wrapping_add(o), x % px, y % py))
-                    })
+                    .flat_map(|y| (0..=px).map(move |x| rand01(seed.wrapping_add(o), x % px, y % py)))
                     .collect();
                 Lattice { px, py, values }
             })
             .collect();
         let total: f32 = (0..octaves).map(|o| 0.5f32.powi(o as i32)).sum();
         TileNoise {
-            scale: (
-                cells.0 as f32 / size.0 as f32,
-                cells.1 as f32 / size.1 as f32,
-            ),
+            scale: (cells.0 as f32 / size.0 as f32, cells.1 as f32 / size.1 as f32),
             octaves: lattices,
             norm: 1.0 / total,
         }

@@ -71,9 +71,7 @@ pub fn sky(seed: u32) -> Texture {
     let gullies = TileNoise::new(seed ^ 6, (W, H), (48, 12), 3);
     // Per-column ridge lines (row of the crest): far mountains with sharp
     // peaks, then a nearer line of wooded hills with a bumpy tree line.
-    let far: Vec<f32> = (0..W)
-        .map(|u| H as f32 - 25.0 - 95.0 * profile(seed ^ 3, u, 7, 6, true).powf(1.5))
-        .collect();
+    let far: Vec<f32> = (0..W).map(|u| H as f32 - 25.0 - 95.0 * profile(seed ^ 3, u, 7, 6, true).powf(1.5)).collect();
     // Which way each column's slope faces: rising to the right faces the
     // light (from the left) and is lit.
     let facing: Vec<f32> = (0..W)
@@ -105,9 +103,8 @@ pub fn sky(seed: u32) -> Texture {
         })
         .collect();
     // A ragged snow line, per column.
-    let snow: Vec<f32> = (0..W)
-        .map(|u| snowline + 3.0 * (u as f32 * std::f32::consts::TAU * 53.0 / W as f32).sin())
-        .collect();
+    let snow: Vec<f32> =
+        (0..W).map(|u| snowline + 3.0 * (u as f32 * std::f32::consts::TAU * 53.0 / W as f32).sin()).collect();
 
     Texture::from_fn(W, H, |u, v| {
         let (uf, vf) = (u as f32, v as f32);

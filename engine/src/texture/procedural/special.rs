@@ -23,11 +23,7 @@ pub fn grate(seed: u32) -> Texture {
         // passes in front at crossings.
         let t = (if on_h { ay } else { ax }) / BAR * 2.0 - 1.0;
         let lit = 0.45 + 0.75 * (1.0 - t * t).sqrt() - 0.25 * t;
-        let metal = mix(
-            hex(0x4a5058),
-            hex(0x6e4b34),
-            smoothstep(0.55, 0.8, rust.at(u as f32, v as f32)),
-        );
+        let metal = mix(hex(0x4a5058), hex(0x6e4b34), smoothstep(0.55, 0.8, rust.at(u as f32, v as f32)));
         opaque(scale(metal, lit))
     })
 }
@@ -48,11 +44,7 @@ pub fn fence(seed: u32) -> Texture {
         // Wires weave: at alternate crossings one or the other is in front.
         let front_a = ((u + v) / PITCH + (u + PITCH * W - v) / PITCH) & 1 == 0;
         let use_a = on_a && (!on_b || front_a);
-        let lit = if use_a {
-            [1.05, 0.8][a]
-        } else {
-            [0.95, 0.7][b]
-        };
+        let lit = if use_a { [1.05, 0.8][a] } else { [0.95, 0.7][b] };
         let c = mix(hex(0xa9afb5), hex(0x7d7766), tarnish.at(u as f32, v as f32));
         opaque(scale(c, lit))
     })
@@ -68,10 +60,7 @@ pub fn debug1() -> Texture {
 pub fn thin() -> Texture {
     Texture::from_fn(1, 64, |_, v| {
         let band = if (v / 8) % 2 == 0 { 1.0 } else { 0.7 };
-        opaque(scale(
-            mix(hex(0xffd27a), hex(0x8a4a10), v as f32 / 63.0),
-            band,
-        ))
+        opaque(scale(mix(hex(0xffd27a), hex(0x8a4a10), v as f32 / 63.0), band))
     })
 }
 

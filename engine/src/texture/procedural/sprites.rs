@@ -20,11 +20,7 @@ fn paint(w: usize, h: usize, shapes: Vec<Shape>) -> Texture {
         if u == 0 || u == w - 1 {
             return CLEAR;
         }
-        shapes
-            .iter()
-            .rev()
-            .find_map(|s| s(x, y))
-            .map_or(CLEAR, opaque)
+        shapes.iter().rev().find_map(|s| s(x, y)).map_or(CLEAR, opaque)
     })
 }
 
@@ -38,8 +34,7 @@ pub fn barrel(seed: u32) -> Texture {
     let grime = &TileNoise::new(seed, (w, h), (4, 6), 3);
     let cx = 16.0;
     // Half-width bulges a little at mid-height, like a real drum.
-    let radius =
-        |y: f32| 12.0 + 1.5 * (std::f32::consts::PI * ((y - 6.0) / 42.0).clamp(0.0, 1.0)).sin();
+    let radius = |y: f32| 12.0 + 1.5 * (std::f32::consts::PI * ((y - 6.0) / 42.0).clamp(0.0, 1.0)).sin();
     let body: Shape = Box::new(move |x, y| {
         let r = radius(y);
         if y < 6.0 || (x - cx).abs() > r {
@@ -48,11 +43,7 @@ pub fn barrel(seed: u32) -> Texture {
         let t = (y - 6.0) / 42.0;
         let rib = [0.08, 0.5, 0.92].iter().any(|&rt| (t - rt).abs() < 0.035);
         let base = if rib { hex(0x7c8a5a) } else { hex(0x4f6236) };
-        let dirty = mix(
-            base,
-            hex(0x4a3a28),
-            0.45 * smoothstep(0.55, 0.8, grime.at(x, y)),
-        );
+        let dirty = mix(base, hex(0x4a3a28), 0.45 * smoothstep(0.55, 0.8, grime.at(x, y)));
         let lit = cylinder(x, cx, r) * if rib { 1.15 } else { 1.0 };
         Some(scale(dirty, lit))
     });
@@ -67,11 +58,7 @@ pub fn barrel(seed: u32) -> Texture {
             return Some(scale(hex(0x8c9478), 0.8 + 0.4 * (1.0 - dy)));
         }
         let swirl = rand01(seed, x as i32 / 2, y as i32);
-        Some(mix(
-            hex(0x5fd02c),
-            hex(0xb8ff6a),
-            swirl * 0.6 + 0.4 * (1.0 - d),
-        ))
+        Some(mix(hex(0x5fd02c), hex(0xb8ff6a), swirl * 0.6 + 0.4 * (1.0 - d)))
     });
     paint(w, h, vec![body, lid])
 }
@@ -85,9 +72,8 @@ pub fn lamp(_seed: u32) -> Texture {
         (y >= 58.0 && (x - 12.0).abs() < half)
             .then(|| scale(brass, cylinder(x, 12.0, half) * (0.8 + 0.05 * (y - 58.0))))
     });
-    let pole: Shape = Box::new(move |x, y| {
-        (y >= 18.0 && (x - 12.0).abs() < 1.5).then(|| scale(brass, cylinder(x, 12.0, 1.5)))
-    });
+    let pole: Shape =
+        Box::new(move |x, y| (y >= 18.0 && (x - 12.0).abs() < 1.5).then(|| scale(brass, cylinder(x, 12.0, 1.5))));
     // Fabric shade lit from inside: brightest at the middle and the bottom.
     let shade: Shape = Box::new(|x, y| {
         if !(3.0..20.0).contains(&y) {
@@ -100,15 +86,10 @@ pub fn lamp(_seed: u32) -> Texture {
         }
         let glow = 1.0 - ((x - 12.0) / half).powi(2);
         let c = mix(hex(0xc06a24), hex(0xffe28a), glow * (0.5 + 0.5 * t));
-        Some(if !(4.0..19.0).contains(&y) {
-            hex(0x8a5a20)
-        } else {
-            c
-        })
+        Some(if !(4.0..19.0).contains(&y) { hex(0x8a5a20) } else { c })
     });
-    let finial: Shape = Box::new(move |x, y| {
-        (((x - 12.0).powi(2) + (y - 2.0).powi(2)).sqrt() < 1.6).then(|| scale(brass, 1.2))
-    });
+    let finial: Shape =
+        Box::new(move |x, y| (((x - 12.0).powi(2) + (y - 2.0).powi(2)).sqrt() < 1.6).then(|| scale(brass, 1.2)));
     paint(w, h, vec![base, pole, shade, finial])
 }
 
@@ -138,22 +119,9 @@ pub fn column(seed: u32) -> Texture {
         // Flutes: grooves evenly spaced around the shaft, seen foreshortened.
         let angle = ((x - 16.0) / half).clamp(-1.0, 1.0).asin();
         let flute = (angle * 6.0).cos() * 0.5 + 0.5;
-        Some(scale(
-            marble(x, y),
-            cylinder(x, 16.0, half) * (0.68 + 0.4 * flute),
-        ))
+        Some(scale(marble(x, y), cylinder(x, 16.0, half) * (0.68 + 0.4 * flute)))
     });
-    paint(
-        w,
-        h,
-        vec![
-            shaft,
-            slab(41.0, 44.0, 13.0),
-            slab(44.0, 48.0, 14.5),
-            slab(6.0, 9.0, 12.5),
-            slab(3.0, 6.0, 14.0),
-        ],
-    )
+    paint(w, h, vec![shaft, slab(41.0, 44.0, 13.0), slab(44.0, 48.0, 14.5), slab(6.0, 9.0, 12.5), slab(3.0, 6.0, 14.0)])
 }
 
 /// A fern in a terracotta pot. 32x56.
@@ -161,10 +129,7 @@ pub fn plant(seed: u32) -> Texture {
     let (w, h) = (32, 56);
     let pot: Shape = Box::new(|x, y| {
         if (40.0..44.0).contains(&y) && (x - 16.0).abs() < 11.0 {
-            return Some(scale(
-                hex(0xb8643a),
-                cylinder(x, 16.0, 11.0) * if y < 41.0 { 1.2 } else { 1.0 },
-            ));
+            return Some(scale(hex(0xb8643a), cylinder(x, 16.0, 11.0) * if y < 41.0 { 1.2 } else { 1.0 }));
         }
         let t = (y - 44.0) / 12.0;
         let half = 10.0 - 3.0 * t;
@@ -175,11 +140,7 @@ pub fn plant(seed: u32) -> Texture {
     let mut leaves: Vec<Shape> = vec![pot];
     for i in 0..9 {
         let a = -2.6 + 2.2 * (i as f32 / 8.0) + 0.25 * (rand01(seed, i, 0) - 0.5);
-        let a = if i % 2 == 0 {
-            a
-        } else {
-            -std::f32::consts::PI - a
-        };
+        let a = if i % 2 == 0 { a } else { -std::f32::consts::PI - a };
         let len = 18.0 + 14.0 * rand01(seed, i, 1);
         let (dx, dy) = (a.cos(), a.sin());
         let tone = 0.75 + 0.35 * (i as f32 / 8.0);
@@ -247,16 +208,11 @@ pub fn crate_(seed: u32) -> Texture {
     let (w, h) = (48, 48);
     let grain = &TileNoise::new(seed, (w, h), (12, 3), 3);
     let wood = move |x: f32, y: f32, tone: f32, along_x: bool| {
-        let g = if along_x {
-            grain.at(x, y * 3.0)
-        } else {
-            grain.at(y, x * 3.0)
-        };
+        let g = if along_x { grain.at(x, y * 3.0) } else { grain.at(y, x * 3.0) };
         scale(mix(hex(0x9c7040), hex(0x6a4422), g * 0.8), tone)
     };
-    let lid: Shape = Box::new(move |x, y| {
-        inside_box(x, y, 3.0, 45.0, 1.0, 6.0).then(|| scale(wood(x, y, 1.0, true), 1.25))
-    });
+    let lid: Shape =
+        Box::new(move |x, y| inside_box(x, y, 3.0, 45.0, 1.0, 6.0).then(|| scale(wood(x, y, 1.0, true), 1.25)));
     let front: Shape = Box::new(move |x, y| {
         if !inside_box(x, y, 2.0, 46.0, 6.0, 48.0) {
             return None;
@@ -283,11 +239,7 @@ pub fn crate_(seed: u32) -> Texture {
         let gap = (fy - 5.0) % 8.0 < 1.0;
         let shadow = smoothstep(5.0, 8.0, fx).min(smoothstep(5.0, 8.0, fy));
         let tone = (0.7 + 0.12 * rand01(seed, plank as i32, 0)) * (0.7 + 0.3 * shadow);
-        Some(if gap {
-            hex(0x2a1a0e)
-        } else {
-            wood(x, y + plank * 11.0, tone, true)
-        })
+        Some(if gap { hex(0x2a1a0e) } else { wood(x, y + plank * 11.0, tone, true) })
     });
     paint(w, h, vec![lid, front])
 }
@@ -314,11 +266,7 @@ pub fn statue(seed: u32) -> Texture {
         let block = inside_box(x, y, 4.0, 28.0, 51.0, 60.0);
         let plinth = inside_box(x, y, 2.0, 30.0, 60.0, 64.0);
         (cornice || block || plinth).then(|| {
-            let edge = if cornice && y < 49.0 || plinth && y < 61.0 {
-                1.3
-            } else {
-                1.0
-            };
+            let edge = if cornice && y < 49.0 || plinth && y < 61.0 { 1.3 } else { 1.0 };
             scale(hex(0x8e8a84), cylinder(x, 16.0, 20.0) * edge)
         })
     });
@@ -354,8 +302,7 @@ pub fn statue(seed: u32) -> Texture {
         (d < 1.9).then(|| bronze(x, y, 1.1 - 0.3 * d))
     });
     let staff: Shape = Box::new(move |x, y| {
-        ((2.0..48.0).contains(&y) && (x - 25.5).abs() < 1.0)
-            .then(|| bronze(x, y, cylinder(x, 25.5, 1.0)))
+        ((2.0..48.0).contains(&y) && (x - 25.5).abs() < 1.0).then(|| bronze(x, y, cylinder(x, 25.5, 1.0)))
     });
     paint(w, h, vec![pedestal, staff, body, arms, head])
 }

@@ -21,10 +21,7 @@ pub fn brick(seed: u32) -> Texture {
         let shift = if course % 2 == 1 { BW as usize / 2 } else { 0 };
         let x = (u + shift) % W;
         let col = x / BW as usize;
-        let (bx, by) = (
-            (x % BW as usize) as f32 + 0.5,
-            (v % BH as usize) as f32 + 0.5,
-        );
+        let (bx, by) = ((x % BW as usize) as f32 + 0.5, (v % BH as usize) as f32 + 0.5);
         (col, course, bx, by)
     };
     let height = Field::new(W, H, |u, v| {
@@ -85,26 +82,12 @@ pub fn stone(seed: u32) -> Texture {
     let block = |x: f32, y: f32| {
         let y = y.rem_euclid(H as f32);
         let x = x.rem_euclid(W as f32);
-        let c = courses
-            .iter()
-            .position(|(t, ch, _)| y < (t + ch) as f32)
-            .unwrap_or(0);
+        let c = courses.iter().position(|(t, ch, _)| y < (t + ch) as f32).unwrap_or(0);
         let (t, ch, cuts) = &courses[c];
         let dy = (y - *t as f32).min((t + ch) as f32 - y);
-        let next = cuts
-            .iter()
-            .position(|&cx| cx as f32 > x)
-            .unwrap_or(cuts.len());
-        let left = if next == 0 {
-            cuts[cuts.len() - 1] as f32 - W as f32
-        } else {
-            cuts[next - 1] as f32
-        };
-        let right = if next == cuts.len() {
-            cuts[0] as f32 + W as f32
-        } else {
-            cuts[next] as f32
-        };
+        let next = cuts.iter().position(|&cx| cx as f32 > x).unwrap_or(cuts.len());
+        let left = if next == 0 { cuts[cuts.len() - 1] as f32 - W as f32 } else { cuts[next - 1] as f32 };
+        let right = if next == cuts.len() { cuts[0] as f32 + W as f32 } else { cuts[next] as f32 };
         let dx = (x - left).min(right - x);
         let id = (c as i32, ((next + cuts.len() - 1) % cuts.len()) as i32);
         (id, dx.min(dy))
@@ -131,11 +114,7 @@ pub fn stone(seed: u32) -> Texture {
         let tint = mix(hex(0x7d7a72), hex(0x8e8f92), rand01(seed ^ 5, c, b));
         let face = scale(tint, 0.78 + 0.3 * tone);
         let face = scale(face, 0.75 + 0.45 * grain.at(u, v));
-        let face = mix(
-            face,
-            hex(0x4d4a40),
-            0.35 * smoothstep(0.55, 0.8, stain.at(uf, vf)),
-        );
+        let face = mix(face, hex(0x4d4a40), 0.35 * smoothstep(0.55, 0.8, stain.at(uf, vf)));
         let albedo = mix(hex(0x2e2c29), face, smoothstep(0.3, 1.4, d));
         opaque(scale(albedo, height.light(u, v, 0.7)))
     })
@@ -164,9 +143,7 @@ pub fn wood(seed: u32) -> Texture {
         let (p, x, pw) = plank_of(u);
         let edge = (x as f32 + 0.5).min(pw as f32 - 0.5 - x as f32);
         let j = joint(p) as f32;
-        let along = (v as f32 + 0.5 - j)
-            .abs()
-            .min(H as f32 - (v as f32 + 0.5 - j).abs());
+        let along = (v as f32 + 0.5 - j).abs().min(H as f32 - (v as f32 + 0.5 - j).abs());
         let nail = |nv: f32, nu: f32| {
             let d = ((v as f32 + 0.5 - nv).powi(2) + (x as f32 + 0.5 - nu).powi(2)).sqrt();
             smoothstep(1.8, 0.6, d)
@@ -216,25 +193,17 @@ pub fn metal(seed: u32) -> Texture {
         // along each side including the corners, evenly spaced.
         let (x0, x1, y0, y1) = (4.5, W as f32 - 4.5, 4.5, PH as f32 - 4.5);
         let (sx, sy) = ((x1 - x0) / 4.0, (y1 - y0) / 4.0);
-        let near =
-            |p: f32, lo: f32, step: f32| lo + ((p - lo) / step).round().clamp(0.0, 4.0) * step;
+        let near = |p: f32, lo: f32, step: f32| lo + ((p - lo) / step).round().clamp(0.0, 4.0) * step;
         let dist = |cx: f32, cy: f32| ((x - cx).powi(2) + (y - cy).powi(2)).sqrt();
         let ry = near(y, y0, sy);
         let rx = near(x, x0, sx);
-        dist(x0, ry)
-            .min(dist(x1, ry))
-            .min(dist(rx, y0))
-            .min(dist(rx, y1))
+        dist(x0, ry).min(dist(x1, ry)).min(dist(rx, y0)).min(dist(rx, y1))
     };
     let height = Field::new(W, H, |u, v| {
         let (x, y) = (u as f32 + 0.5, (v % PH) as f32 + 0.5);
         let edge = x.min(W as f32 - x).min(y).min(PH as f32 - y);
         let r = rivet(x, y);
-        let dome = if r < 1.9 {
-            (1.0 - (r / 1.9).powi(2)).sqrt() * 0.8
-        } else {
-            0.0
-        };
+        let dome = if r < 1.9 { (1.0 - (r / 1.9).powi(2)).sqrt() * 0.8 } else { 0.0 };
         smoothstep(0.5, 2.5, edge) * 0.6 + dome
     });
     Texture::from_fn(W, H, |u, v| {
@@ -267,10 +236,7 @@ pub fn step(seed: u32) -> Texture {
             1..=3 => scale(hex(0xb8ab8e), 0.85 + 0.3 * g),
             4 => hex(0x3a342c),
             5 => hex(0x1a1714),
-            _ => scale(
-                mix(hex(0x2a2723), hex(0x3e3832), g),
-                1.0 - 0.2 * (v as f32 / H as f32),
-            ),
+            _ => scale(mix(hex(0x2a2723), hex(0x3e3832), g), 1.0 - 0.2 * (v as f32 / H as f32)),
         };
         opaque(c)
     })
@@ -289,11 +255,7 @@ pub fn door(seed: u32) -> Texture {
     let height = Field::new(W, H, |u, v| {
         let (x, y) = (u as f32 + 0.5, v as f32 + 0.5);
         let edge = x.min(W as f32 - x).min(y).min(H as f32 - y);
-        let mut h = if edge < FRAME {
-            1.0 - smoothstep(FRAME - 1.5, FRAME, edge) * 0.6
-        } else {
-            0.4
-        };
+        let mut h = if edge < FRAME { 1.0 - smoothstep(FRAME - 1.5, FRAME, edge) * 0.6 } else { 0.4 };
         if edge >= FRAME {
             let board = ((x - FRAME) / 17.0).fract() * 17.0;
             h -= 0.3 * (1.0 - smoothstep(0.0, 1.2, board.min(17.0 - board)));
@@ -323,18 +285,10 @@ pub fn door(seed: u32) -> Texture {
             let across = (x - FRAME) % 17.0;
             let seam = smoothstep(0.0, 1.2, across.min(17.0 - across));
             let grain = ((x * 0.8 + figure.at(x, y) * 10.0 + tone * 7.0) * 1.5).sin() * 0.5 + 0.5;
-            let wood = mix(
-                mix(hex(0x7a5230), hex(0x8d6238), tone),
-                hex(0x4d3119),
-                smoothstep(0.5, 1.0, grain) * 0.6,
-            );
+            let wood = mix(mix(hex(0x7a5230), hex(0x8d6238), tone), hex(0x4d3119), smoothstep(0.5, 1.0, grain) * 0.6);
             scale(wood, 0.45 + 0.55 * seam)
         };
-        let c = if (ring(x, y) - 5.0).abs() < 1.3 || ring(x, y) < 1.5 {
-            hex(0x9c8450)
-        } else {
-            c
-        };
+        let c = if (ring(x, y) - 5.0).abs() < 1.3 || ring(x, y) < 1.5 { hex(0x9c8450) } else { c };
         opaque(scale(c, height.light(u, v, 0.8)))
     })
 }
@@ -350,8 +304,7 @@ pub fn support(seed: u32) -> Texture {
         let flange = !(6.0..26.0).contains(&x);
         let plate = (4.0..28.0).contains(&x) && (24.0..40.0).contains(&y);
         let bolt = [10.0, 22.0].iter().any(|&bx| {
-            ((x - bx).powi(2) + (y - 28.0).powi(2)).sqrt() < 1.8
-                || ((x - bx).powi(2) + (y - 36.0).powi(2)).sqrt() < 1.8
+            ((x - bx).powi(2) + (y - 28.0).powi(2)).sqrt() < 1.8 || ((x - bx).powi(2) + (y - 36.0).powi(2)).sqrt() < 1.8
         });
         let edge = x.min(W as f32 - x);
         if bolt {
@@ -367,10 +320,7 @@ pub fn support(seed: u32) -> Texture {
     Texture::from_fn(W, H, |u, v| {
         let x = u as f32 + 0.5;
         let hgt = height.at(u, v);
-        let base = add(
-            scale(hex(0x505a60), 0.8 + 0.35 * brushed.at(u as f32, v as f32)),
-            [0.02, 0.01, 0.0],
-        );
+        let base = add(scale(hex(0x505a60), 0.8 + 0.35 * brushed.at(u as f32, v as f32)), [0.02, 0.01, 0.0]);
         let c = if hgt < 0.2 {
             // The web, recessed and in shadow from the flanges.
             let shadow = smoothstep(6.0, 10.0, x).min(smoothstep(26.0, 22.0, x));

@@ -1,0 +1,185 @@
+//! The masked pass: things (billboard sprites) and see-through middle
+//! textures, drawn after the opaque walk, far to near, each clipped to what
+//! the walls in front of it left open (Doom's drawsegs idea, kept per column
+//! as clip events; see [`super::frame::ClipEvent`]).
+//!
+//! A sprite faces the viewer: at depth `d` it spans sideways `[s - w/2, s + w/2)`
+//! and stands on its sector's floor, one map unit per texel. Column `x` shows
+//! texel column `u = t_x * d - (s - w/2)` when `0 <= u < w`; the reference
+//! renderer uses the same predicates, so `ids` frames agree.
+
+use super::columns::ColumnWriter;
+use super::frame::{Frame, NONE};
+use super::light::Lighting;
+use super::shade::{colour, ids_colour, masked_top, Shade, Surface};
+use super::view::{Camera, NEAR};
+use crate::level::Level;
+use crate::texture::{Texture, TextureId};
+
+/// A thing in view.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct VisSprite {
+    pub thing: usize,
+    pub depth: f64,
+    /// Sideways position of its left edge, camera space.
+    pub left: f64,
+    /// Floor height it stands on, and its sector's light.
+    pub floor: f64,
+    pub light: u8,
+    pub texture: TextureId,
+    /// Columns it may cover (the predicate decides each).
+    pub x0: usize,
+    pub x1: usize,
+}
+
+/// Finds the things in view and sorts them far to near.
+pub(crate) fn collect(level: &Level, cam: &Camera, frame: &mut Frame) {
+    frame.sprites.clear();
+    for (thing, t) in level.map.things.iter().enumerate() {
+        let Some(texture) = level.materials.sprites[thing] else { continue };
+        let q = cam.to_camera(t.pos);
+        if q.x < NEAR {
+            continue;
+        }
+        let w = level.materials.textures.get(texture).width as f64;
+        let left = q.y - w / 2.0;
+        // One column of slack each side: the per-column predicate decides.
+        let x0 = cam.first_column_at_or_right(glam::DVec2::new(q.x, left)).saturating_sub(1);
+        let x1 = (cam.first_column_at_or_right(glam::DVec2::new(q.x, left + w)) + 1).min(cam.width);
+        if x0 >= x1 {
+            continue;
+        }
+        let sector = &level.map.sectors[level.thing_sectors[thing]];
+        frame.sprites.push(VisSprite {
+            thing,
+            depth: q.x,
+            left,
+            floor: sector.floor,
+            light: sector.light,
+            texture,
+            x0,
+            x1,
+        });
+    }
+    frame.sprites.sort_by(|a, b| b.depth.total_cmp(&a.depth).then(a.thing.cmp(&b.thing)));
+}
+
+/// What every masked column draw needs to know.
+struct MaskedPass<'a> {
+    level: &'a Level,
+    cam: &'a Camera,
+    frame: &'a Frame,
+    shade: Shade,
+    lighting: &'a Lighting,
+}
+
+/// Draws sprites and masked middles over columns `[x0, x1)`, far to near per column.
+pub(crate) fn draw(
+    level: &Level,
+    cam: &Camera,
+    frame: &Frame,
+    out: &mut ColumnWriter,
+    shade: Shade,
+    lighting: &Lighting,
+    (x0, x1): (usize, usize),
+) {
+    let pass = MaskedPass { level, cam, frame, shade, lighting };
+    let here: Vec<&VisSprite> = frame.sprites.iter().filter(|s| s.x0 < x1 && s.x1 > x0).collect();
+    for x in x0..x1 {
+        let mut sprites = here.iter().filter(|s| s.x0 <= x && x < s.x1).peekable();
+        let mut masked = frame.last_masked[x];
+        // Merge the two far-to-near lists by depth.
+        loop {
+            let m = (masked != NONE).then(|| frame.masked[masked as usize]);
+            match (sprites.peek(), m) {
+                (None, None) => break,
+                (Some(s), m) if m.is_none_or(|m| s.depth >= m.depth) => {
+                    pass.sprite_column(out, s, x);
+                    sprites.next();
+                }
+                (_, Some(m)) => {
+                    pass.masked_column(out, &m, x);
+                    masked = m.prev;
+                }
+                (Some(_), None) => unreachable!("covered by the arm above"),
+            }
+        }
+    }
+}
+
+impl MaskedPass<'_> {
+    fn sprite_column(&self, out: &mut ColumnWriter, s: &VisSprite, x: usize) {
+        let texture = self.level.materials.textures.get(s.texture);
+        let u = self.frame.slopes[x] * s.depth - s.left;
+        if !(0.0..texture.width as f64).contains(&u) {
+            return;
+        }
+        let top = s.floor + texture.height as f64;
+        let paint = match self.shade {
+            Shade::Ids => Texels::Solid(ids_colour(Surface::Thing { thing: s.thing })),
+            Shade::Flat => Texels::Solid(colour(self.shade, Surface::Thing { thing: s.thing }, s.light, 1.0)),
+            Shade::Textured => Texels::Tinted(self.lighting.tint(s.light, s.depth)),
+        };
+        let cam = self.cam;
+        let rows = (cam.first_row_at_or_below(s.depth, top), cam.first_row_at_or_below(s.depth, s.floor));
+        self.put_texels(out, x, s.depth, rows, (texture, u as usize, top), paint);
+    }
+
+    fn masked_column(&self, out: &mut ColumnWriter, m: &super::frame::MaskedColumn, x: usize) {
+        let map = &self.level.map;
+        let line = &map.lines[m.line];
+        let Some(id) = self.level.materials.sides[m.line][m.back_side as usize].middle else { return };
+        let texture = self.level.materials.textures.get(id);
+        let top = masked_top(map, line, m.back_side, texture.height as f64);
+        let near =
+            if m.back_side { line.back.as_ref().map_or(line.front.sector, |b| b.sector) } else { line.front.sector };
+        let light = map.sectors[near].light;
+        let paint = match self.shade {
+            Shade::Textured => Texels::Tinted(self.lighting.tint(light, m.depth)),
+            _ => Texels::Solid(colour(self.shade, Surface::Wall { line: m.line }, light, 1.0)),
+        };
+        let u = (m.u.floor() as i64).rem_euclid(texture.width as i64) as usize;
+        let bottom = top - texture.height as f64;
+        let cam = self.cam;
+        let rows = (cam.first_row_at_or_below(m.depth, top), cam.first_row_at_or_below(m.depth, bottom));
+        let event = self.frame.events[m.event as usize];
+        let rows = (rows.0.max(event.top), rows.1.min(event.bottom));
+        self.put_texels(out, x, m.depth, rows, (texture, u, top), paint);
+    }
+
+    /// Writes the opaque texels of texture column `u` over rows `rows` of
+    /// column `x`, clipped to the window left open in front of `depth`; texel
+    /// row `v` is at height `top - v`.
+    fn put_texels(
+        &self,
+        out: &mut ColumnWriter,
+        x: usize,
+        depth: f64,
+        rows: (i32, i32),
+        (texture, u, top): (&Texture, usize, f64),
+        paint: Texels,
+    ) {
+        let cam = self.cam;
+        let (open_top, open_bottom) = self.frame.window(x, depth, cam.height as i32);
+        let column = texture.column(u.min(texture.width - 1));
+        for y in rows.0.max(open_top)..rows.1.min(open_bottom) {
+            let v = top - (cam.z + depth * cam.row_slope(y));
+            let texel = column[(v.max(0.0) as usize).min(texture.height - 1)];
+            if texel >> 24 == 0 {
+                continue;
+            }
+            let c = match paint {
+                Texels::Solid(c) => c,
+                Texels::Tinted(t) => t.apply(texel),
+            };
+            out.put_masked(x, y, c);
+        }
+    }
+}
+
+/// How opaque texels become pixels.
+#[derive(Clone, Copy)]
+enum Texels {
+    Solid(u32),
+    Tinted(super::light::Tint),
+}
