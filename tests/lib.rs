@@ -39,7 +39,7 @@ pub fn load(path: &Path) -> Level {
 
 pub fn render(level: &Level, view: &View, size: (usize, usize), renderer: Renderer, shade: Shade) -> Framebuffer {
     let mut fb = Framebuffer::new(size.0, size.1);
-    let options = RenderOptions { renderer, shade, count_writes: false };
+    let options = RenderOptions { renderer, shade, count_writes: false, ..Default::default() };
     render_frame(level, view, &options, &mut Frame::new(), &mut fb);
     fb
 }

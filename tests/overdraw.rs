@@ -17,7 +17,8 @@ fn every_pixel_written_exactly_once() {
             let mut fb = Framebuffer::new(w, h);
             for renderer in Renderer::ALL {
                 for view in &views {
-                    let options = RenderOptions { renderer, shade: Shade::Ids, count_writes: true };
+                    let options =
+                        RenderOptions { renderer, shade: Shade::Ids, count_writes: true, ..Default::default() };
                     let stats = render_frame(&level, view, &options, &mut frame, &mut fb);
                     let counts = frame.write_counts();
                     assert_eq!(counts.len(), w * h);

@@ -110,7 +110,7 @@ proptest! {
                     for (renderer, shade) in Renderer::ALL.into_iter().zip([Shade::Ids, Shade::Flat]).chain(
                         Renderer::ALL.into_iter().zip([Shade::Flat, Shade::Ids]),
                     ) {
-                        let options = RenderOptions { renderer, shade, count_writes: true };
+                        let options = RenderOptions { renderer, shade, count_writes: true, ..Default::default() };
                         let mut fb = Framebuffer::new(size.0, size.1);
                         let mut frame = Frame::new();
                         let stats = render_frame(&level, view, &options, &mut frame, &mut fb);

@@ -32,7 +32,7 @@ fn frames(c: &mut Criterion) {
         group.throughput(Throughput::Elements(views.len() as u64));
         for (w, h) in [(320, 200), (1920, 1080)] {
             for renderer in Renderer::ALL {
-                let options = RenderOptions { renderer, shade: Shade::Flat, count_writes: false };
+                let options = RenderOptions { renderer, shade: Shade::Flat, count_writes: false, ..Default::default() };
                 let mut fb = Framebuffer::new(w, h);
                 let mut frame = Frame::new();
                 let id = BenchmarkId::new(renderer.name(), format!("{w}x{h}"));

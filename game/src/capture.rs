@@ -24,7 +24,8 @@ pub fn run(args: &CaptureArgs) -> Result<()> {
     .with_context(|| format!("{map_name}: bad pose"))?;
     let (width, height) = args.size;
     let mut fb = Framebuffer::new(width, height);
-    let options = RenderOptions { renderer: args.renderer, shade: args.shade, count_writes: false };
+    let options =
+        RenderOptions { renderer: args.renderer, shade: args.shade, count_writes: false, ..Default::default() };
     render_frame(&level, &view, &options, &mut Frame::new(), &mut fb);
     write_atomic(&args.output, &fb.to_png())?;
     Ok(())

@@ -13,9 +13,15 @@ use crate::bsp::{Child, Node};
 use crate::geom::{front_distance, Aabb};
 use crate::level::Level;
 
-pub fn render(level: &Level, cam: &Camera, frame: &mut Frame, out: &mut ColumnWriter, shade: Shade) {
+pub fn render(
+    level: &Level,
+    cam: &Camera,
+    frame: &mut Frame,
+    out: &mut ColumnWriter,
+    shade: Shade,
+    lighting: &Lighting,
+) {
     let bsp = &level.bsp;
-    let lighting = Lighting::for_map(&level.map);
     frame.stack.push((bsp.root, None));
     while let Some((child, bbox)) = frame.stack.pop() {
         if frame.occlusion.all_closed() {
@@ -39,7 +45,7 @@ pub fn render(level: &Level, cam: &Camera, frame: &mut Frame, out: &mut ColumnWr
                 frame.stats.leaves_visited += 1;
                 let leaf = &bsp.leaves[i];
                 for seg in bsp.leaf_segs(leaf) {
-                    draw_seg(level, cam, seg, frame, out, shade, &lighting);
+                    draw_seg(level, cam, seg, frame, out, shade, lighting);
                     if frame.occlusion.all_closed() {
                         break;
                     }

@@ -96,6 +96,8 @@ pub struct Frame {
     /// Writes per pixel (row-major), kept only when counting was asked for.
     pub(crate) counts: Vec<u16>,
     pub stats: FrameStats,
+    /// What the last frame did (see [`super::plan`]).
+    pub plan: super::plan::Plan,
 }
 
 impl Frame {

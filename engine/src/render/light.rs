@@ -29,6 +29,11 @@ impl Lighting {
         Lighting { diminishing: map.diminishing_light, fog: map.fog }
     }
 
+    /// The light model the frame's plan allows.
+    pub fn for_plan(map: &Map, plan: &super::plan::Plan) -> Lighting {
+        Lighting { diminishing: plan.diminishing, fog: if plan.fog { map.fog } else { None } }
+    }
+
     /// The tint of a surface lit at `light` (0..=255) seen at `depth`.
     #[inline]
     pub fn tint(&self, light: u8, depth: f64) -> Tint {

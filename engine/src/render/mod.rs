@@ -9,6 +9,7 @@ pub mod columns;
 pub mod frame;
 pub mod light;
 pub mod occlusion;
+pub mod plan;
 pub mod planes;
 pub mod reference;
 pub mod shade;
@@ -55,6 +56,8 @@ pub struct RenderOptions {
     pub shade: Shade,
     /// Keep a per-pixel write count (see [`Frame::write_counts`]).
     pub count_writes: bool,
+    /// Effects to leave out even where the map asks for them.
+    pub disabled: plan::Disabled,
 }
 
 /// Renders one frame and returns what it cost.
@@ -71,9 +74,13 @@ pub fn render_frame(
     let mut canvas = std::mem::take(&mut frame.canvas);
     let mut counts = std::mem::take(&mut frame.counts);
     let (w, h) = (cam.width, cam.height);
-    let lighting = light::Lighting::for_map(&level.map);
-    sprites::collect(level, &cam, frame);
+    if !options.disabled.sprites {
+        sprites::collect(level, &cam, frame);
+    }
     frame.stats.sprites_in_view = frame.sprites.len() as u64;
+    let plan = plan::Plan::new(level, frame.sprites.len(), options.disabled);
+    frame.plan = plan;
+    let lighting = light::Lighting::for_plan(&level.map, &plan);
     for (x0, x1) in strips::strips(w, h) {
         canvas.resize((x1 - x0) * h, 0);
         let counting = options.count_writes.then_some(counts.as_mut_slice());
@@ -81,8 +88,10 @@ pub fn render_frame(
         frame.begin_strip(x0, x1);
         match options.renderer {
             Renderer::Bsp => {
-                bsp::render(level, &cam, frame, &mut out, options.shade);
-                sprites::draw(level, &cam, frame, &mut out, options.shade, &lighting, (x0, x1));
+                bsp::render(level, &cam, frame, &mut out, options.shade, &lighting);
+                if plan.masked_pass() {
+                    sprites::draw(level, &cam, frame, &mut out, options.shade, &lighting, (x0, x1));
+                }
             }
             Renderer::Reference => reference::render(level, &cam, x0..x1, frame, &mut out, options.shade),
         }

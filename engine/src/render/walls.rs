@@ -11,6 +11,7 @@ use glam::DVec2;
 use super::columns::ColumnWriter;
 use super::frame::Frame;
 use super::light::Lighting;
+use super::plan::Plan;
 use super::planes::{paint_plane, PlanePaint};
 use super::shade::{ceiling_at_line, colour, plane_surfaces, wall_facing, Shade, Surface};
 use super::view::{Camera, NEAR};
@@ -89,7 +90,7 @@ pub fn draw_seg(
     let Some((x0, x1)) = cam.project_span(cam.to_camera(seg.v1), cam.to_camera(seg.v2)) else {
         return;
     };
-    let cols = seg_columns(level, seg, line, from, dir, cross_from, shade);
+    let cols = seg_columns(level, seg, line, (from, dir, cross_from), shade, &frame.plan);
     let mut drew = false;
     let mut x = x0;
     while let Some(start) = frame.occlusion.next_open(x, x1) {
@@ -107,10 +108,9 @@ fn seg_columns<'a>(
     level: &'a Level,
     seg: &Seg,
     line: &Line,
-    from: DVec2,
-    dir: DVec2,
-    cross_from: f64,
+    (from, dir, cross_from): (DVec2, DVec2, f64),
     shade: Shade,
+    plan: &Plan,
 ) -> SegColumns<'a> {
     let map = &level.map;
     let front = &map.sectors[seg.front_sector];
@@ -126,7 +126,9 @@ fn seg_columns<'a>(
     let ceiling = ceiling_at_line(front, back);
     let textured = shade == Shade::Textured;
     let plane = |surface, height, texture: Option<TextureId>| match (textured, surface, texture) {
-        (true, Surface::Sky, _) => level.materials.sky.map(|t| PlanePaint::Sky(level.materials.textures.get(t))),
+        (true, Surface::Sky, _) if plan.sky => {
+            level.materials.sky.map(|t| PlanePaint::Sky(level.materials.textures.get(t)))
+        }
         (true, _, Some(t)) => Some(PlanePaint::Flat { texture: level.materials.textures.get(t), height, light }),
         _ => None,
     };
@@ -160,7 +162,7 @@ fn seg_columns<'a>(
         back: back.map(|b| (b.ceiling, b.floor)),
         ceiling_paint,
         floor_paint,
-        masked: back.is_some() && textures.middle.is_some(),
+        masked: plan.masked && back.is_some() && textures.middle.is_some(),
         middle,
         upper,
         lower,
