@@ -61,7 +61,10 @@ pub(crate) fn collect(level: &Level, cam: &Camera, frame: &mut Frame) {
             x1,
         });
     }
-    frame.sprites.sort_by(|a, b| b.depth.total_cmp(&a.depth).then(a.thing.cmp(&b.thing)));
+    // Far to near. At equal depth the lower-numbered thing is drawn last, on
+    // top, and a sprite goes over a masked middle: the reference walks near
+    // to far and lets the first it meets win, in that same order.
+    frame.sprites.sort_by(|a, b| b.depth.total_cmp(&a.depth).then(b.thing.cmp(&a.thing)));
 }
 
 /// What every masked column draw needs to know.
@@ -93,7 +96,7 @@ pub(crate) fn draw(
             let m = (masked != NONE).then(|| frame.masked[masked as usize]);
             match (sprites.peek(), m) {
                 (None, None) => break,
-                (Some(s), m) if m.is_none_or(|m| s.depth >= m.depth) => {
+                (Some(s), m) if m.is_none_or(|m| s.depth > m.depth) => {
                     pass.sprite_column(out, s, x);
                     sprites.next();
                 }
