@@ -56,6 +56,23 @@ impl<'a> ColumnWriter<'a> {
 }
 
 impl ColumnWriter<'_> {
+    /// Fills columns `[x0, x1)` of row `y` with `colour(x)`: a horizontal span
+    /// of the opaque pass.
+    #[inline]
+    pub fn fill_row(&mut self, y: i32, x0: usize, x1: usize, mut colour: impl FnMut(usize) -> u32) {
+        let y = y as usize;
+        let start = (x0 - self.x0) * self.height + y;
+        for (x, p) in (x0..x1).zip(self.canvas[start..].iter_mut().step_by(self.height)) {
+            *p = colour(x);
+        }
+        self.written += (x1 - x0) as u64;
+        if let Some(counts) = self.counts.as_deref_mut() {
+            for c in &mut counts[y * self.width + x0..y * self.width + x1] {
+                *c = c.saturating_add(1);
+            }
+        }
+    }
+
     /// Writes one pixel of the masked pass (sprites, see-through middles).
     #[inline]
     pub fn put_masked(&mut self, x: usize, y: i32, colour: u32) {
@@ -85,17 +102,20 @@ impl ColumnWriter<'_> {
         if y1 <= y0 || column.is_empty() {
             return;
         }
-        let h = column.len() as f64;
-        let mut v = v.rem_euclid(h);
-        // Steps of a whole texture or more (far walls) need the modulo; near
-        // ones only ever wrap once.
-        let big_step = dv >= h;
+        // 16.16 fixed point: an integer add and a compare per texel instead
+        // of a float add, compare and conversion.
+        const FRAC: u32 = 16;
+        let h = column.len() as i64;
+        let wrap = h << FRAC;
+        let mut v = (v.rem_euclid(h as f64) * f64::from(1u32 << FRAC)) as i64 % wrap;
+        // Steps of a whole texture or more (far walls) wrap by modulo.
+        let dv = (dv * f64::from(1u32 << FRAC)) as i64 % wrap;
         let base = (x - self.x0) * self.height;
         for p in &mut self.canvas[base + y0 as usize..base + y1 as usize] {
-            *p = tint.apply(column[(v as usize).min(column.len() - 1)]);
+            *p = tint.apply(column[(v >> FRAC) as usize]);
             v += dv;
-            if v >= h {
-                v = if big_step { v.rem_euclid(h) } else { v - h };
+            if v >= wrap {
+                v -= wrap;
             }
         }
         self.count(x, y0, y1);

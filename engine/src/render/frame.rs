@@ -81,6 +81,9 @@ pub struct Frame {
     pub(crate) clip_bottom: Vec<i32>,
     /// Slope of each column's ray.
     pub(crate) slopes: Vec<f64>,
+    /// Inverse of each row's slope: a plane `rise` above the eye is
+    /// `rise * inv_rows[y]` away along row `y`'s ray.
+    pub(crate) inv_rows: Vec<f64>,
     pub(crate) stack: Vec<(Child, Option<Aabb>)>,
     pub(crate) hits: Vec<Hit>,
     /// Column-major canvas of the strip being drawn (see [`super::columns`]).
@@ -98,6 +101,9 @@ pub struct Frame {
     pub stats: FrameStats,
     /// What the last frame did (see [`super::plan`]).
     pub plan: super::plan::Plan,
+    /// Textured planes go to `visplanes` as spans (else painted per column).
+    pub(crate) spans: bool,
+    pub(crate) visplanes: super::visplanes::Visplanes,
 }
 
 impl Frame {
@@ -115,6 +121,8 @@ impl Frame {
         self.clip_bottom.resize(w, h as i32);
         self.slopes.clear();
         self.slopes.extend((0..w).map(|x| cam.column_slope(x)));
+        self.inv_rows.clear();
+        self.inv_rows.extend((0..h as i32).map(|y| 1.0 / cam.row_slope(y)));
         self.stack.clear();
         self.hits.clear();
         self.events.clear();
@@ -135,6 +143,7 @@ impl Frame {
     /// already reset by [`Frame::begin`] and untouched by other strips.
     pub(crate) fn begin_strip(&mut self, x0: usize, x1: usize) {
         self.occlusion.reset_to_strip(self.clip_top.len(), x0, x1);
+        self.visplanes.begin_strip(x0, x1);
         self.stack.clear();
     }
 

@@ -43,37 +43,37 @@ impl Lighting {
         } else {
             light
         };
-        let scale = (level / 255.0 * 256.0) as u32;
+        let scale = ((level / 255.0 * 256.0) as u32).min(256);
         match self.fog {
-            None => Tint { scale, fog: 0, fog_rgb: [0; 3] },
+            None => Tint { scale, fog: 0 },
             Some(f) => {
                 let share = (depth / f.distance).clamp(0.0, 1.0);
                 let fog = (share * 256.0) as u32;
-                Tint { scale: scale * (256 - fog) / 256, fog, fog_rgb: f.colour.map(|c| u32::from(c) * fog) }
+                let [r, g, b] = f.colour.map(|c| (u32::from(c) * fog) >> 8);
+                Tint { scale: (scale * (256 - fog)) >> 8, fog: r | g << 8 | b << 16 }
             }
         }
     }
 }
 
-/// A colour transform: channels scaled by `scale / 256`, plus the fog colour
-/// already weighted by its share (`fog / 256`).
+/// A colour transform: channels scaled by `scale / 256` (at most 1), then the
+/// fog colour, already weighted by its share, added (packed like a pixel).
+/// No channel can overflow: `c * scale / 256 + fog_c * share` stays within 255
+/// because `scale` already left room for the fog's share.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Tint {
     scale: u32,
     fog: u32,
-    fog_rgb: [u32; 3],
 }
 
 impl Tint {
+    /// Scales red and blue in one multiply and green in another (they sit in
+    /// separate bytes of the pixel, 8 bits of headroom each).
     #[inline]
     pub fn apply(&self, c: u32) -> u32 {
-        let [r, g, b, _] = c.to_le_bytes();
-        let ch = |v: u8, f: u32| ((u32::from(v) * self.scale + f) >> 8).min(255) as u8;
-        if self.fog == 0 {
-            u32::from_le_bytes([ch(r, 0), ch(g, 0), ch(b, 0), 255])
-        } else {
-            u32::from_le_bytes([ch(r, self.fog_rgb[0]), ch(g, self.fog_rgb[1]), ch(b, self.fog_rgb[2]), 255])
-        }
+        let rb = (((c & 0x00ff_00ff) * self.scale) >> 8) & 0x00ff_00ff;
+        let g = (((c & 0x0000_ff00) * self.scale) >> 8) & 0x0000_ff00;
+        ((rb | g) + self.fog) | 0xff00_0000
     }
 }
 

@@ -16,6 +16,7 @@ pub mod shade;
 pub mod sprites;
 pub mod strips;
 pub mod view;
+pub mod visplanes;
 pub mod walls;
 
 pub use frame::{Frame, FrameStats};
@@ -58,6 +59,17 @@ pub struct RenderOptions {
     pub count_writes: bool,
     /// Effects to leave out even where the map asks for them.
     pub disabled: plan::Disabled,
+    /// How textured floors and ceilings are drawn.
+    pub floors: Floors,
+}
+
+/// Textured floors and ceilings as horizontal spans (Doom's visplanes) or per
+/// column; the measured figures that chose the default are in ARCHITECTURE.md.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Floors {
+    #[default]
+    Spans,
+    Columns,
 }
 
 /// Renders one frame and returns what it cost.
@@ -80,6 +92,7 @@ pub fn render_frame(
     frame.stats.sprites_in_view = frame.sprites.len() as u64;
     let plan = plan::Plan::new(level, frame.sprites.len(), options.disabled);
     frame.plan = plan;
+    frame.spans = options.floors == Floors::Spans;
     let lighting = light::Lighting::for_plan(&level.map, &plan);
     for (x0, x1) in strips::strips(w, h) {
         canvas.resize((x1 - x0) * h, 0);
@@ -89,6 +102,8 @@ pub fn render_frame(
         match options.renderer {
             Renderer::Bsp => {
                 bsp::render(level, &cam, frame, &mut out, options.shade, &lighting);
+                let Frame { visplanes, inv_rows, .. } = &mut *frame;
+                visplanes.draw(&mut out, &cam, &lighting, inv_rows, &level.materials.textures);
                 if plan.masked_pass() {
                     sprites::draw(level, &cam, frame, &mut out, options.shade, &lighting, (x0, x1));
                 }

@@ -8,7 +8,7 @@ use std::f64::consts::TAU;
 use super::columns::ColumnWriter;
 use super::light::Lighting;
 use super::view::Camera;
-use crate::texture::Texture;
+use crate::texture::{Texture, TextureId};
 
 /// How a run of plane rows is painted.
 #[derive(Clone, Copy)]
@@ -16,6 +16,7 @@ pub enum PlanePaint<'a> {
     Solid(u32),
     /// A flat at `height`, lit by `light`.
     Flat {
+        id: TextureId,
         texture: &'a Texture,
         height: f64,
         light: u8,
@@ -27,11 +28,14 @@ pub enum PlanePaint<'a> {
 /// the top: the lowest fifth (hills) hangs below the horizon.
 const SKY_HORIZON: f64 = 0.8;
 
-/// Paints rows `[y0, y1)` of column `x`, whose ray has sideways slope `t`.
+/// Paints rows `[y0, y1)` of column `x`, whose ray has sideways slope `t`;
+/// `inv_rows[y]` is the inverse of row `y`'s slope (see [`super::Frame`]).
+#[allow(clippy::too_many_arguments)]
 pub fn paint_plane(
     out: &mut ColumnWriter,
     cam: &Camera,
     lighting: &Lighting,
+    inv_rows: &[f64],
     x: usize,
     (y0, y1): (i32, i32),
     t: f64,
@@ -42,17 +46,20 @@ pub fn paint_plane(
     }
     match paint {
         PlanePaint::Solid(c) => out.fill(x, y0, y1, c),
-        PlanePaint::Flat { texture, height, light } => {
+        PlanePaint::Flat { texture, height, light, .. } => {
             let ray = cam.forward + cam.right * t;
             let rise = height - cam.z;
+            let (w, h) = (texture.width as f64, texture.height as f64);
+            let (inv_w, inv_h) = (1.0 / w, 1.0 / h);
             out.fill_with(x, y0, y1, |y| {
                 // The row's ray reaches the plane after `dist` units of depth;
                 // a row on the horizon, or on the wrong side of it, never
-                // does: sample it far away rather than divide by zero.
-                let dist = (rise / cam.row_slope(y)).clamp(0.0, 1e12);
-                let p = cam.eye + ray * dist;
-                let texel = texture.wrapped(p.x.floor() as i64, (-p.y).floor() as i64);
-                lighting.tint(light, dist).apply(texel)
+                // does: sample it far away (NaN and negatives become 0).
+                let dist = rise * inv_rows[y as usize];
+                let dist = if dist >= 0.0 { dist.min(1e12) } else { 0.0 };
+                let u = wrap(cam.eye.x + ray.x * dist, w, inv_w);
+                let v = wrap(-(cam.eye.y + ray.y * dist), h, inv_h);
+                lighting.tint(light, dist).apply(texture.texels[u * texture.height + v])
             });
         }
         PlanePaint::Sky(texture) => {
@@ -67,4 +74,14 @@ pub fn paint_plane(
             });
         }
     }
+}
+
+/// `c` wrapped into `0..size` texels (`inv` is `1 / size`), without the
+/// integer division of `rem_euclid` or a call to libm's `floor`.
+#[inline]
+fn wrap(c: f64, size: f64, inv: f64) -> usize {
+    let q = c * inv;
+    let whole = q as i64 as f64;
+    let whole = if whole > q { whole - 1.0 } else { whole };
+    (((q - whole) * size) as usize).min(size as usize - 1)
 }

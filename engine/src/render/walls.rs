@@ -15,6 +15,7 @@ use super::plan::Plan;
 use super::planes::{paint_plane, PlanePaint};
 use super::shade::{ceiling_at_line, colour, plane_surfaces, wall_facing, Shade, Surface};
 use super::view::{Camera, NEAR};
+use super::visplanes::PlaneKey;
 use crate::bsp::{LineSide, Seg};
 use crate::geom::cross;
 use crate::level::Level;
@@ -129,7 +130,7 @@ fn seg_columns<'a>(
         (true, Surface::Sky, _) if plan.sky => {
             level.materials.sky.map(|t| PlanePaint::Sky(level.materials.textures.get(t)))
         }
-        (true, _, Some(t)) => Some(PlanePaint::Flat { texture: level.materials.textures.get(t), height, light }),
+        (true, _, Some(t)) => Some(PlanePaint::Flat { id: t, texture: level.materials.textures.get(t), height, light }),
         _ => None,
     };
     let planes = level.materials.sectors[seg.front_sector];
@@ -229,8 +230,14 @@ fn draw_column(cam: &Camera, lighting: &Lighting, s: &SegColumns, x: usize, fram
     let (top, bottom) = (frame.clip_top[x], frame.clip_bottom[x]);
     let ceiling_end = row(s.ceiling).clamp(top, bottom);
     let floor_start = row(s.floor).clamp(ceiling_end, bottom);
-    paint_plane(out, cam, lighting, x, (top, ceiling_end), t, s.ceiling_paint);
-    paint_plane(out, cam, lighting, x, (floor_start, bottom), t, s.floor_paint);
+    for (rows, paint) in [((top, ceiling_end), s.ceiling_paint), ((floor_start, bottom), s.floor_paint)] {
+        match paint {
+            PlanePaint::Flat { id, height, light, .. } if frame.spans => {
+                frame.visplanes.add(PlaneKey { texture: id, height, light }, x, rows.0, rows.1);
+            }
+            _ => paint_plane(out, cam, lighting, &frame.inv_rows, x, rows, t, paint),
+        }
+    }
     let wall = WallColumn { cam, lighting, x, depth, u: texture_u(s, depth, t) };
     match s.back {
         None => {

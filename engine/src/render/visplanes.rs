@@ -1,0 +1,185 @@
+//! Textured floors and ceilings as horizontal spans (Doom's visplanes).
+//!
+//! Along a screen row a horizontal plane is at one distance, so a span needs
+//! its light once and steps its texture coordinates by a constant: two adds
+//! and two predictable wraps per pixel, where the per-column alternative
+//! ([`super::planes`]) pays a distance, two wraps through float conversions
+//! and a light level per pixel. The walk records which rows of each column
+//! show which plane; after the strip's walk the planes are drawn row by row.
+//! Figures and the choice are in ARCHITECTURE.md.
+
+use super::columns::ColumnWriter;
+use super::light::Lighting;
+use super::view::Camera;
+use crate::texture::{Texture, TextureId};
+
+/// What makes two plane runs the same visplane.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct PlaneKey {
+    pub texture: TextureId,
+    pub height: f64,
+    pub light: u8,
+}
+
+/// One plane's rows per column of the strip: `top[i]..bottom[i]` for column
+/// `x0 + i` (empty when `top >= bottom`).
+#[derive(Debug)]
+pub(crate) struct Visplane {
+    key: PlaneKey,
+    top: Vec<u16>,
+    bottom: Vec<u16>,
+    min: usize,
+    max: usize,
+}
+
+/// The strip's visplanes, reused frame to frame (no static limit: a new
+/// visplane opens whenever a column of the current one is taken).
+#[derive(Debug, Default)]
+pub(crate) struct Visplanes {
+    planes: Vec<Visplane>,
+    used: usize,
+    x0: usize,
+    width: usize,
+    /// Per row, the column where the span being gathered started.
+    span_start: Vec<usize>,
+}
+
+impl Visplanes {
+    pub(crate) fn begin_strip(&mut self, x0: usize, x1: usize) {
+        self.used = 0;
+        self.x0 = x0;
+        self.width = x1 - x0;
+    }
+
+    /// Records that rows `[y0, y1)` of column `x` show the plane `key`.
+    pub(crate) fn add(&mut self, key: PlaneKey, x: usize, y0: i32, y1: i32) {
+        if y1 <= y0 {
+            return;
+        }
+        let i = x - self.x0;
+        // The latest visplane of this key, if column x is still free in it.
+        let found = self.planes[..self.used]
+            .iter()
+            .rposition(|p| p.key == key)
+            .filter(|&k| self.planes[k].top[i] >= self.planes[k].bottom[i]);
+        let k = match found {
+            Some(k) => k,
+            None => self.open(key),
+        };
+        let p = &mut self.planes[k];
+        p.top[i] = y0 as u16;
+        p.bottom[i] = y1 as u16;
+        p.min = p.min.min(i);
+        p.max = p.max.max(i);
+    }
+
+    fn open(&mut self, key: PlaneKey) -> usize {
+        if self.used == self.planes.len() {
+            self.planes.push(Visplane { key, top: Vec::new(), bottom: Vec::new(), min: 0, max: 0 });
+        }
+        let p = &mut self.planes[self.used];
+        p.key = key;
+        p.top.clear();
+        p.top.resize(self.width, u16::MAX);
+        p.bottom.clear();
+        p.bottom.resize(self.width, 0);
+        p.min = usize::MAX;
+        p.max = 0;
+        self.used += 1;
+        self.used - 1
+    }
+
+    /// Draws every visplane of the strip as horizontal spans.
+    pub(crate) fn draw(
+        &mut self,
+        out: &mut ColumnWriter,
+        cam: &Camera,
+        lighting: &Lighting,
+        inv_rows: &[f64],
+        textures: &crate::texture::TextureSet,
+    ) {
+        self.span_start.resize(cam.height, 0);
+        for k in 0..self.used {
+            let p = &self.planes[k];
+            if p.min > p.max {
+                continue;
+            }
+            let texture = textures.get(p.key.texture);
+            let span = SpanPainter { cam, lighting, inv_rows, texture, key: p.key, x0: self.x0 };
+            // Doom's R_MakeSpans: walk the columns; rows that stop being
+            // covered end a span, rows that start being covered open one.
+            let (mut t1, mut b1) = (0u16, 0u16);
+            for i in p.min..=p.max + 1 {
+                let (t2, b2) = if i <= p.max && p.top[i] < p.bottom[i] { (p.top[i], p.bottom[i]) } else { (0, 0) };
+                // Only the rows where the two columns differ matter:
+                // [t1, b1) minus [t2, b2) ends spans, the reverse opens them.
+                for y in (t1..b1.min(t2)).chain(t1.max(b2)..b1) {
+                    span.draw(out, y as i32, self.span_start[y as usize], i);
+                }
+                for y in (t2..b2.min(t1)).chain(t2.max(b1)..b2) {
+                    self.span_start[y as usize] = i;
+                }
+                (t1, b1) = (t2, b2);
+            }
+        }
+    }
+}
+
+/// Draws one plane's spans.
+struct SpanPainter<'a> {
+    cam: &'a Camera,
+    lighting: &'a Lighting,
+    inv_rows: &'a [f64],
+    texture: &'a Texture,
+    key: PlaneKey,
+    x0: usize,
+}
+
+/// Fixed-point fraction bits of the texture coordinate steppers.
+const FRAC: u32 = 16;
+
+impl SpanPainter<'_> {
+    /// Row `y`, strip columns `[i0, i1)`.
+    fn draw(&self, out: &mut ColumnWriter, y: i32, i0: usize, i1: usize) {
+        let cam = self.cam;
+        let dist = (self.key.height - cam.z) * self.inv_rows[y as usize];
+        // On or beyond the horizon the row never meets the plane: sample far.
+        let dist = if dist >= 0.0 { dist.min(1e12) } else { 0.0 };
+        let tint = self.lighting.tint(self.key.light, dist);
+        let (x0, x1) = (self.x0 + i0, self.x0 + i1);
+        // The map point under column x is eye + dist * (forward + right * t_x),
+        // and t steps by 1/focal per column.
+        let ray = cam.forward + cam.right * cam.column_slope(x0);
+        let start = cam.eye + ray * dist;
+        let step = cam.right * (dist / cam.focal);
+        let (w, h) = (self.texture.width as i64, self.texture.height as i64);
+        let one = 1i64 << FRAC;
+        let fixed = |c: f64, size: i64| -> i64 {
+            let size_f = size as f64;
+            ((c - (c / size_f).floor() * size_f) * one as f64) as i64
+        };
+        let (wf, hf) = (w << FRAC, h << FRAC);
+        let mut u = fixed(start.x, w).clamp(0, wf - 1);
+        let mut v = fixed(-start.y, h).clamp(0, hf - 1);
+        let du = (step.x * one as f64) as i64 % wf;
+        let dv = (-step.y * one as f64) as i64 % hf;
+        let texels = &self.texture.texels;
+        let height = self.texture.height;
+        out.fill_row(y, x0, x1, |_| {
+            let c = texels[(u >> FRAC) as usize * height + (v >> FRAC) as usize];
+            u += du;
+            if u >= wf {
+                u -= wf;
+            } else if u < 0 {
+                u += wf;
+            }
+            v += dv;
+            if v >= hf {
+                v -= hf;
+            } else if v < 0 {
+                v += hf;
+            }
+            tint.apply(c)
+        });
+    }
+}
