@@ -162,3 +162,26 @@ fn one_texel_wide_and_odd_sized_textures() {
         }
     }
 }
+
+#[test]
+fn a_missing_texture_is_a_load_error_naming_file_and_element() {
+    let square = [(0.0, 0.0), (0.0, 256.0), (256.0, 256.0), (256.0, 0.0)];
+    let mut source = room(&square, 160, "BRICK", vec![thing("player_start", 128.0, 128.0, 0.0)]);
+    source.lines[2].front.middle = Some("NOSUCHTEX".into());
+    source.things.push(thing("unicorn", 64.0, 64.0, 0.0));
+    let dir = std::env::temp_dir().join(format!("sightline-missing-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("missing.ron");
+    std::fs::write(&path, source.to_ron()).unwrap();
+    let err = sightline::level::open_level(&path, &BuildOptions::default()).expect_err("a missing texture");
+    let message = err.to_string();
+    for part in [path.display().to_string().as_str(), "line 2 front side middle texture", "NOSUCHTEX"] {
+        assert!(message.contains(part), "{message}");
+    }
+    // Fixed, the unknown thing kind is the next error: its sprite is missing.
+    source.lines[2].front.middle = Some("BRICK".into());
+    std::fs::write(&path, source.to_ron()).unwrap();
+    let message = sightline::level::open_level(&path, &BuildOptions::default()).expect_err("no sprite").to_string();
+    assert!(message.contains("thing 1 (kind \"unicorn\") sprite"), "{message}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
