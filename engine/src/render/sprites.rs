@@ -91,20 +91,22 @@ pub(crate) fn draw(
     for x in x0..x1 {
         let mut sprites = here.iter().filter(|s| s.x0 <= x && x < s.x1).peekable();
         let mut masked = frame.last_masked[x];
-        // Merge the two far-to-near lists by depth.
+        // Merge the two far-to-near lists by depth; at equal depth the
+        // sprite goes last, on top (see `collect`).
         loop {
             let m = (masked != NONE).then(|| frame.masked[masked as usize]);
-            match (sprites.peek(), m) {
+            let sprite_first = match (sprites.peek(), m) {
                 (None, None) => break,
-                (Some(s), m) if m.is_none_or(|m| s.depth > m.depth) => {
-                    pass.sprite_column(out, s, x);
-                    sprites.next();
-                }
-                (_, Some(m)) => {
-                    pass.masked_column(out, &m, x);
-                    masked = m.prev;
-                }
-                (Some(_), None) => unreachable!("covered by the arm above"),
+                (Some(s), Some(m)) => s.depth > m.depth,
+                (Some(_), None) => true,
+                (None, Some(_)) => false,
+            };
+            if let (true, Some(s)) = (sprite_first, sprites.peek()) {
+                pass.sprite_column(out, s, x);
+                sprites.next();
+            } else if let Some(m) = m {
+                pass.masked_column(out, &m, x);
+                masked = m.prev;
             }
         }
     }

@@ -38,6 +38,9 @@ pub(super) fn decode_png(input: impl BufRead + Seek, path: &Path) -> Result<Text
         return Err(png_error(path, format!("unexpected {:?} output", frame.bit_depth)));
     }
     let samples = frame.color_type.samples();
+    if !(1..=4).contains(&samples) {
+        return Err(png_error(path, format!("{samples} samples per pixel")));
+    }
     let (w, h) = (frame.width as usize, frame.height as usize);
     let rows = &buf[..frame.buffer_size()];
     if frame.line_size < w * samples || rows.len() < h * frame.line_size {
@@ -53,7 +56,8 @@ pub(super) fn decode_png(input: impl BufRead + Seek, path: &Path) -> Result<Text
                 [g, a] => [g, g, g, a],
                 [r, g, b] => [r, g, b, 255],
                 [r, g, b, a] => [r, g, b, a],
-                _ => unreachable!("PNG samples per pixel are 1 to 4"),
+                // Checked above: 1 to 4 samples per pixel.
+                _ => [0, 0, 0, 0],
             };
             texels[u * h + v] = u32::from_le_bytes(rgba);
         }
