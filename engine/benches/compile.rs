@@ -1,21 +1,17 @@
 //! Compile time per shipped map per splitter; prints each tree's sides_out and
 //! depth beside the timings. Run: `cargo bench -p sightline-engine --bench compile`.
 
-use std::path::PathBuf;
 use std::time::Duration;
 
+mod common;
+
+use common::shipped_maps;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use sightline::bsp::{build, BuildOptions, SplitterKind};
 use sightline::map::load_map;
 
 fn compile(c: &mut Criterion) {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../maps");
-    let mut maps: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .expect("maps directory")
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "ron"))
-        .collect();
-    maps.sort();
+    let maps = shipped_maps();
     let mut group = c.benchmark_group("compile");
     group.sample_size(10).warm_up_time(Duration::from_millis(300)).measurement_time(Duration::from_secs(2));
     for path in maps {

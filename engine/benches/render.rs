@@ -1,26 +1,17 @@
 //! Frame time per shipped map over a fixed tour, bsp against reference, at
 //! 320x200 and 1920x1080. Run: `cargo bench -p sightline-engine --bench render`.
 
-use std::path::PathBuf;
 use std::time::Duration;
 
+mod common;
+
+use common::shipped_maps;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use sightline::bsp::BuildOptions;
 use sightline::level::open_level;
 use sightline::render::{render_frame, Frame, RenderOptions, Renderer, Shade};
 use sightline::tour::tour;
 use sightline::Framebuffer;
-
-pub fn shipped_maps() -> Vec<PathBuf> {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../maps");
-    let mut maps: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .expect("maps directory")
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "ron"))
-        .collect();
-    maps.sort();
-    maps
-}
 
 fn frames(c: &mut Criterion) {
     for path in shipped_maps() {
