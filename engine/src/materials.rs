@@ -34,6 +34,8 @@ pub struct Materials {
     pub sprites: Vec<Option<TextureId>>,
     /// The panorama shown by `"SKY"` ceilings and floors, if any sector has one.
     pub sky: Option<TextureId>,
+    /// Some two-sided line has a see-through middle texture.
+    pub masked: bool,
 }
 
 #[derive(Debug, thiserror::Error)]
@@ -111,7 +113,9 @@ impl Materials {
             sprites.push(sprite);
         }
         let sky = if uses_sky { Some(get(SKY, TextureKind::Wall, "the sky".into())?) } else { None };
-        Ok(Materials { sides, sectors, sprites, sky, ..m })
+        let masked =
+            sides.iter().zip(&map.lines).any(|(s, l)| l.back.is_some() && s.iter().any(|s| s.middle.is_some()));
+        Ok(Materials { sides, sectors, sprites, sky, masked, ..m })
     }
 }
 

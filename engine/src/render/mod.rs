@@ -94,6 +94,7 @@ pub fn render_frame(
     frame.plan = plan;
     frame.spans = options.floors == Floors::Spans;
     let lighting = light::Lighting::for_plan(&level.map, &plan);
+    let oracle = (options.renderer == Renderer::Reference).then(|| reference::Reference::new(level, &cam));
     for (x0, x1) in strips::strips(w, h) {
         canvas.resize((x1 - x0) * h, 0);
         let counting = options.count_writes.then_some(counts.as_mut_slice());
@@ -108,7 +109,11 @@ pub fn render_frame(
                     sprites::draw(level, &cam, frame, &mut out, options.shade, &lighting, (x0, x1));
                 }
             }
-            Renderer::Reference => reference::render(level, &cam, x0..x1, frame, &mut out, options.shade),
+            Renderer::Reference => {
+                if let Some(oracle) = &oracle {
+                    oracle.render(x0..x1, frame, &mut out, options.shade);
+                }
+            }
         }
         frame.stats.pixels_written += out.written;
         frame.stats.masked_pixels_written += out.masked_written;

@@ -36,16 +36,10 @@ impl Plan {
     /// The plan for `level` seen with `sprites_in_view` things in view.
     pub fn new(level: &Level, sprites_in_view: usize, disabled: Disabled) -> Plan {
         let map = &level.map;
-        let masked = level
-            .materials
-            .sides
-            .iter()
-            .zip(&map.lines)
-            .any(|(sides, line)| line.back.is_some() && sides.iter().any(|s| s.middle.is_some()));
         Plan {
             sky: level.materials.sky.is_some() && !disabled.sky,
             sprites: sprites_in_view > 0 && !disabled.sprites,
-            masked: masked && !disabled.masked,
+            masked: level.materials.masked && !disabled.masked,
             diminishing: map.diminishing_light && !disabled.diminishing,
             fog: map.fog.is_some() && !disabled.fog,
         }

@@ -22,48 +22,55 @@ use crate::level::Level;
 use crate::map::Map;
 use crate::texture::Texture;
 
-/// Renders `columns` (one strip) of the frame.
-pub fn render(
-    level: &Level,
-    cam: &Camera,
-    columns: std::ops::Range<usize>,
-    frame: &mut Frame,
-    out: &mut ColumnWriter,
-    shade: Shade,
-) {
-    // Line ends in camera space (depth, sideways) and whether the line is
-    // two-sided, once per frame.
-    let ends: Vec<(DVec2, DVec2, bool)> = level
-        .map
-        .lines
-        .iter()
-        .map(|l| {
-            let (a, b) = level.map.line_points(l);
-            (cam.to_camera(a), cam.to_camera(b), l.back.is_some())
-        })
-        .collect();
-    let map = &level.map;
-    let eye_sector = map.sector_at(cam.eye);
-    let things = things_in_front(level, cam);
-    for x in columns {
-        collect_hits(cam, &ends, x, &mut frame.hits);
-        order_ties(map, eye_sector, &mut frame.hits);
-        let sprites = sprites_on_column(cam, &things, x);
-        frame.stats.walls_considered += ends.len() as u64;
-        let mut run: Option<(i32, u32)> = None;
-        for y in 0..cam.height as i32 {
-            let c = pixel_colour(level, cam, &ends, &frame.hits, &sprites, (cam.column_slope(x), y), shade);
-            match run {
-                Some((_, rc)) if rc == c => {}
-                Some((start, rc)) => {
-                    out.fill(x, start, y, rc);
-                    run = Some((y, c));
+/// The reference's per-frame set-up, shared by every strip: each line's ends
+/// in camera space (and whether it is two-sided), the eye's sector, and the
+/// things in front of the eye.
+pub struct Reference<'a> {
+    level: &'a Level,
+    cam: &'a Camera,
+    ends: Vec<(DVec2, DVec2, bool)>,
+    eye_sector: Option<usize>,
+    things: Vec<Billboard<'a>>,
+}
+
+impl<'a> Reference<'a> {
+    pub fn new(level: &'a Level, cam: &'a Camera) -> Reference<'a> {
+        let map = &level.map;
+        let ends = map
+            .lines
+            .iter()
+            .map(|l| {
+                let (a, b) = map.line_points(l);
+                (cam.to_camera(a), cam.to_camera(b), l.back.is_some())
+            })
+            .collect();
+        Reference { level, cam, ends, eye_sector: map.sector_at(cam.eye), things: things_in_front(level, cam) }
+    }
+
+    /// Renders `columns` (one strip) of the frame.
+    pub fn render(&self, columns: std::ops::Range<usize>, frame: &mut Frame, out: &mut ColumnWriter, shade: Shade) {
+        let (level, cam, ends, things) = (self.level, self.cam, &self.ends, &self.things);
+        let (map, eye_sector) = (&level.map, self.eye_sector);
+        for x in columns {
+            collect_hits(cam, ends, x, &mut frame.hits);
+            order_ties(map, eye_sector, &mut frame.hits);
+            let sprites = sprites_on_column(cam, things, x);
+            frame.stats.walls_considered += ends.len() as u64;
+            let mut run: Option<(i32, u32)> = None;
+            for y in 0..cam.height as i32 {
+                let c = pixel_colour(level, cam, ends, &frame.hits, &sprites, (cam.column_slope(x), y), shade);
+                match run {
+                    Some((_, rc)) if rc == c => {}
+                    Some((start, rc)) => {
+                        out.fill(x, start, y, rc);
+                        run = Some((y, c));
+                    }
+                    None => run = Some((y, c)),
                 }
-                None => run = Some((y, c)),
             }
-        }
-        if let Some((start, rc)) = run {
-            out.fill(x, start, cam.height as i32, rc);
+            if let Some((start, rc)) = run {
+                out.fill(x, start, cam.height as i32, rc);
+            }
         }
     }
 }
