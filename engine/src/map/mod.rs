@@ -95,6 +95,17 @@ impl Sector {
     }
 }
 
+impl Line {
+    /// The front side, or the back side when `back` (the front again on a
+    /// one-sided line, which has no other).
+    pub fn side(&self, back: bool) -> &Side {
+        match (&self.back, back) {
+            (Some(b), true) => b,
+            _ => &self.front,
+        }
+    }
+}
+
 impl Map {
     pub fn line_points(&self, line: &Line) -> (DVec2, DVec2) {
         (self.vertices[line.from], self.vertices[line.to])

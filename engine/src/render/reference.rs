@@ -244,8 +244,6 @@ fn pixel_colour(
         } else {
             (line.back.as_ref(), Some(&line.front))
         };
-        let (a, b) = map.line_points(line);
-        let facing = wall_facing(b - a);
         let wall = Surface::Wall { line: hit.line };
         // Backs of one-sided walls never reach here (see collect_hits).
         let Some(near) = near else { continue };
@@ -274,7 +272,10 @@ fn pixel_colour(
                 }
                 continue;
             }
-            _ => return colour(shade, wall, light, facing),
+            _ => {
+                let (a, b) = map.line_points(line);
+                return colour(shade, wall, light, wall_facing(b - a));
+            }
         }
     }
     for &(b, u) in sprites {

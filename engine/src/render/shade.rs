@@ -143,7 +143,7 @@ pub fn ceiling_at_line(near: &crate::map::Sector, far: Option<&crate::map::Secto
 pub fn masked_top(map: &crate::map::Map, line: &crate::map::Line, back_side: bool, texture_height: f64) -> f64 {
     let front = &map.sectors[line.front.sector];
     let back = line.back.as_ref().map_or(front, |b| &map.sectors[b.sector]);
-    let side = if back_side { line.back.as_ref().unwrap_or(&line.front) } else { &line.front };
+    let side = line.side(back_side);
     let top = if line.flags.lower_unpegged {
         front.floor.max(back.floor) + texture_height
     } else {

@@ -136,8 +136,7 @@ impl MaskedPass<'_> {
         let Some(id) = self.level.materials.sides[m.line][m.back_side as usize].middle else { return };
         let texture = self.level.materials.textures.get(id);
         let top = masked_top(map, line, m.back_side, texture.height as f64);
-        let near =
-            if m.back_side { line.back.as_ref().map_or(line.front.sector, |b| b.sector) } else { line.front.sector };
+        let near = line.side(m.back_side).sector;
         let light = map.sectors[near].light;
         let paint = match self.shade {
             Shade::Textured => Texels::Tinted(self.lighting.tint(light, m.depth)),

@@ -38,9 +38,10 @@ enum Paint<'a> {
 /// Everything about one seg that is fixed across its columns.
 struct SegColumns<'a> {
     line: usize,
-    /// The map line's `from` end and direction (`to - from`), camera space.
+    /// The map line's `from` end, direction (`to - from`) and length, camera space.
     from: DVec2,
     dir: DVec2,
+    length: f64,
     /// `cross(from, dir)`: depth at slope t is `cross_from / cross((1, t), dir)`.
     cross_from: f64,
     /// Texture column at the line's start of this side, and whether the side
@@ -55,6 +56,9 @@ struct SegColumns<'a> {
     floor_paint: PlanePaint<'a>,
     /// A see-through middle on a two-sided line, drawn later with the sprites.
     masked: bool,
+    /// Some part samples a texture column (or the masked middle will): only
+    /// then is the per-column texture coordinate worth computing.
+    needs_u: bool,
     /// The solid wall of a one-sided line, or the upper and lower walls.
     middle: Paint<'a>,
     upper: Paint<'a>,
@@ -119,7 +123,7 @@ fn seg_columns<'a>(
     let (side, textures) = match seg.side {
         LineSide::Front => (&line.front, level.materials.sides[seg.line][0]),
         // A back seg exists only on two-sided lines.
-        LineSide::Back => (line.back.as_ref().unwrap_or(&line.front), level.materials.sides[seg.line][1]),
+        LineSide::Back => (line.side(true), level.materials.sides[seg.line][1]),
     };
     let light = front.light;
     let (ceiling_surface, floor_surface) = plane_surfaces(seg.front_sector, front);
@@ -151,10 +155,12 @@ fn seg_columns<'a>(
     } else {
         (Paint::Solid(wall), Paint::Solid(wall), Paint::Solid(wall))
     };
+    let masked = plan.masked && back.is_some() && textures.middle.is_some();
     SegColumns {
         line: seg.line,
         from,
         dir,
+        length: dir.length(),
         cross_from,
         u_offset: side.x_offset,
         backwards: seg.side == LineSide::Back,
@@ -163,7 +169,8 @@ fn seg_columns<'a>(
         back: back.map(|b| (b.ceiling, b.floor)),
         ceiling_paint,
         floor_paint,
-        masked: plan.masked && back.is_some() && textures.middle.is_some(),
+        masked,
+        needs_u: masked || [middle, upper, lower].iter().any(|p| matches!(p, Paint::Textured { .. })),
         middle,
         upper,
         lower,
@@ -238,12 +245,17 @@ fn draw_column(cam: &Camera, lighting: &Lighting, s: &SegColumns, x: usize, fram
             _ => paint_plane(out, cam, lighting, &frame.inv_rows, x, rows, t, paint),
         }
     }
-    let wall = WallColumn { cam, lighting, x, depth, u: texture_u(s, depth, t) };
+    let u = if s.needs_u { texture_u(s, depth, t) } else { 0.0 };
+    let wall = WallColumn { cam, lighting, x, depth, u };
+    // Clip events only matter to the masked pass; a frame without one skips them.
+    let track = frame.plan.masked_pass();
     match s.back {
         None => {
             wall.paint(out, (ceiling_end, floor_start), s.middle);
             frame.occlusion.close(x);
-            frame.push_event(x, depth, 0, 0);
+            if track {
+                frame.push_event(x, depth, 0, 0);
+            }
         }
         Some((back_ceiling, back_floor)) => {
             // The opening is below both ceilings and above both floors.
@@ -257,9 +269,11 @@ fn draw_column(cam: &Camera, lighting: &Lighting, s: &SegColumns, x: usize, fram
                 frame.clip_top[x] = upper_end;
                 frame.clip_bottom[x] = lower_start;
             }
-            let event = frame.push_event(x, depth, upper_end, lower_start.max(upper_end));
-            if s.masked && upper_end < lower_start {
-                frame.push_masked(x, depth, s.line, s.backwards, wall.u, event);
+            if track {
+                let event = frame.push_event(x, depth, upper_end, lower_start.max(upper_end));
+                if s.masked && upper_end < lower_start {
+                    frame.push_masked(x, depth, s.line, s.backwards, wall.u, event);
+                }
             }
         }
     }
@@ -270,9 +284,8 @@ fn draw_column(cam: &Camera, lighting: &Lighting, s: &SegColumns, x: usize, fram
 #[inline]
 fn texture_u(s: &SegColumns, depth: f64, t: f64) -> f64 {
     let hit = DVec2::new(depth, depth * t);
-    let length = s.dir.length();
-    let along = (hit - s.from).dot(s.dir) / length;
-    s.u_offset + if s.backwards { length - along } else { along }
+    let along = (hit - s.from).dot(s.dir) / s.length;
+    s.u_offset + if s.backwards { s.length - along } else { along }
 }
 
 /// One column of one seg, for painting its wall parts.
