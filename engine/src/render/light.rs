@@ -25,10 +25,6 @@ pub struct Lighting {
 }
 
 impl Lighting {
-    pub fn for_map(map: &Map) -> Lighting {
-        Lighting { diminishing: map.diminishing_light, fog: map.fog }
-    }
-
     /// The light model the frame's plan allows.
     pub fn for_plan(map: &Map, plan: &super::plan::Plan) -> Lighting {
         Lighting { diminishing: plan.diminishing, fog: if plan.fog { map.fog } else { None } }

@@ -52,11 +52,6 @@ impl Occlusion {
     }
 
     #[inline]
-    pub fn is_closed(&self, x: usize) -> bool {
-        self.words[x / 64] >> (x % 64) & 1 == 1
-    }
-
-    #[inline]
     pub fn close(&mut self, x: usize) {
         let (w, bit) = (x / 64, 1u64 << (x % 64));
         if self.words[w] & bit == 0 {
