@@ -104,6 +104,8 @@ pub struct Frame {
     /// Textured planes go to `visplanes` as spans (else painted per column).
     pub(crate) spans: bool,
     pub(crate) visplanes: super::visplanes::Visplanes,
+    /// Lines that drew at least one column this frame (an automap's "seen").
+    pub(crate) seen_lines: Vec<bool>,
 }
 
 impl Frame {
@@ -175,6 +177,11 @@ impl Frame {
             e = event.prev;
         }
         (0, height)
+    }
+
+    /// Which map lines the last frame showed, indexed like `map.lines`.
+    pub fn seen_lines(&self) -> &[bool] {
+        &self.seen_lines
     }
 
     /// Writes per pixel of the last frame rendered with counting on (row-major).

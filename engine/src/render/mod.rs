@@ -82,6 +82,8 @@ pub fn render_frame(
 ) -> FrameStats {
     let cam = Camera::new(view, fb.width, fb.height);
     frame.begin(&cam, options.count_writes);
+    frame.seen_lines.clear();
+    frame.seen_lines.resize(level.map.lines.len(), false);
     // The writer borrows the canvas and counts while the pass borrows the rest.
     let mut canvas = std::mem::take(&mut frame.canvas);
     let mut counts = std::mem::take(&mut frame.counts);

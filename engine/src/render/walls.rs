@@ -107,6 +107,9 @@ pub fn draw_seg(
         x = stop;
     }
     frame.stats.walls_drawn += u64::from(drew);
+    if drew {
+        frame.seen_lines[seg.line] = true;
+    }
 }
 
 fn seg_columns<'a>(
