@@ -312,6 +312,7 @@ fn one_sector_map(rings: &[&[(f64, f64)]]) -> sightline::Map {
                 upper_unpegged: false,
                 lower_unpegged: false,
                 impassable: false,
+                door: false,
             });
         }
     }

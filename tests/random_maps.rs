@@ -398,6 +398,7 @@ pub fn generate(spec: &MapSpec) -> Generated {
                 upper_unpegged: false,
                 lower_unpegged: false,
                 impassable: false,
+                door: false,
             });
         }
     };

@@ -37,6 +37,7 @@ fn room(points: &[(f64, f64)], light: i64, wall: &str, things: Vec<ThingSource>)
                 upper_unpegged: false,
                 lower_unpegged: false,
                 impassable: false,
+                door: false,
             })
             .collect(),
         things,

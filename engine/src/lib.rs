@@ -18,6 +18,7 @@ pub mod geom;
 pub mod level;
 pub mod map;
 pub mod materials;
+pub mod play;
 pub mod render;
 pub mod texture;
 pub mod tour;

@@ -15,7 +15,7 @@ use crate::map::Map;
 /// First bytes of every compiled map.
 pub const MAGIC: &[u8] = b"SIGHTLINE-BSP\n";
 /// Bumped whenever the layout below changes; older files are refused.
-pub const VERSION: u8 = 3;
+pub const VERSION: u8 = 4;
 
 /// What the file holds. The map goes in its validated form: postcard is not
 /// self-describing, so it cannot carry the source form's skipped defaults.

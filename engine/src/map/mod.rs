@@ -59,6 +59,8 @@ pub struct LineFlags {
     pub upper_unpegged: bool,
     pub lower_unpegged: bool,
     pub impassable: bool,
+    /// Opens the back sector's ceiling when the player uses it (two-sided only).
+    pub door: bool,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -196,6 +198,7 @@ impl Map {
                     upper_unpegged: l.flags.upper_unpegged,
                     lower_unpegged: l.flags.lower_unpegged,
                     impassable: l.flags.impassable,
+                    door: l.flags.door,
                 })
                 .collect(),
             things: self

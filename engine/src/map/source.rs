@@ -61,6 +61,9 @@ pub struct LineSource {
     /// Blocks movement even when two-sided (a fence, a window).
     #[serde(default, skip_serializing_if = "is_false")]
     pub impassable: bool,
+    /// A door: using this line opens its back sector's ceiling (see `play::doors`).
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub door: bool,
 }
 
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]

@@ -1,0 +1,180 @@
+//! Demos: a map and the inputs of every tick, enough to replay a game exactly
+//! (the simulation reads nothing else). Saved as a small binary file:
+//!
+//! | Bytes | Content |
+//! | --- | --- |
+//! | 0-14 | magic `SIGHTLINE-DEMO\n` (15 bytes) |
+//! | 15 | format version, [`VERSION`] |
+//! | 16-19 | CRC-32 of every byte after these four (little-endian u32) |
+//! | 20-23 | length `N` of the map string in bytes (u32), at most [`MAX_MAP_BYTES`] |
+//! | 24-(24+N) | the map (a path or name), UTF-8 |
+//! | next 4 | tick count `T` (u32) |
+//! | rest | `T` records of 7 bytes: forward (i8), strafe (i8), flags (bit 0 run, bit 1 use), turn (f32, degrees) |
+//!
+//! Every length is checked against the bytes actually present before
+//! anything is allocated, so a corrupt file is an error, never a panic or a
+//! huge allocation.
+
+use std::path::Path;
+
+use super::input::TickInput;
+
+pub const MAGIC: &[u8] = b"SIGHTLINE-DEMO\n";
+/// Bumped whenever the layout or the simulation's meaning of an input changes.
+pub const VERSION: u8 = 1;
+/// Longest map string accepted (a path, not a map).
+pub const MAX_MAP_BYTES: u32 = 4096;
+const RECORD: usize = 7;
+const RUN: u8 = 1;
+const USE: u8 = 2;
+
+/// A recorded game.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Demo {
+    /// The map played, as the recorder named it (normally its path).
+    pub map: String,
+    /// One input per tick, from the first.
+    pub inputs: Vec<TickInput>,
+}
+
+#[derive(Debug, thiserror::Error)]
+pub enum DemoError {
+    #[error("{path}: cannot read: {error}")]
+    Read { path: String, error: std::io::Error },
+    #[error("{path}: cannot write: {error}")]
+    Write { path: String, error: std::io::Error },
+    #[error("{path}: not a Sightline demo (bad header)")]
+    Magic { path: String },
+    #[error("{path}: demo format version {found}, this build reads version {VERSION}")]
+    Version { path: String, found: u8 },
+    #[error("{path}: truncated: {what}")]
+    Truncated { path: String, what: String },
+    #[error("{path}: corrupt: {what}")]
+    Corrupt { path: String, what: String },
+    #[error("{path}: {ticks} ticks are more than a demo file holds")]
+    TooLong { path: String, ticks: usize },
+    #[error("{path}: the map name is {len} bytes, over the limit of {MAX_MAP_BYTES}")]
+    MapTooLong { path: String, len: usize },
+}
+
+impl Demo {
+    pub fn new(map: impl Into<String>) -> Demo {
+        Demo { map: map.into(), inputs: Vec::new() }
+    }
+
+    /// The file's bytes (see the module docs for the layout).
+    pub fn to_bytes(&self) -> Vec<u8> {
+        let mut body = Vec::with_capacity(8 + self.map.len() + self.inputs.len() * RECORD);
+        body.extend((self.map.len() as u32).to_le_bytes());
+        body.extend(self.map.as_bytes());
+        body.extend((self.inputs.len() as u32).to_le_bytes());
+        for input in &self.inputs {
+            let flags = if input.run { RUN } else { 0 } | if input.use_door { USE } else { 0 };
+            body.extend([input.forward as u8, input.strafe as u8, flags]);
+            body.extend(input.turn.to_le_bytes());
+        }
+        let mut bytes = MAGIC.to_vec();
+        bytes.push(VERSION);
+        bytes.extend(crc32fast::hash(&body).to_le_bytes());
+        bytes.extend(body);
+        bytes
+    }
+
+    /// Writes the demo to `path` (atomically: a temporary file, then a rename).
+    pub fn save(&self, path: &Path) -> Result<(), DemoError> {
+        if self.map.len() > MAX_MAP_BYTES as usize {
+            return Err(DemoError::MapTooLong { path: path.display().to_string(), len: self.map.len() });
+        }
+        if u32::try_from(self.inputs.len()).is_err() {
+            return Err(DemoError::TooLong { path: path.display().to_string(), ticks: self.inputs.len() });
+        }
+        crate::level::write_atomic(path, &self.to_bytes()).map_err(|e| DemoError::Write {
+            path: path.display().to_string(),
+            error: match e {
+                crate::level::LevelError::Write { error, .. } => error,
+                other => std::io::Error::other(other.to_string()),
+            },
+        })
+    }
+
+    pub fn load(path: &Path) -> Result<Demo, DemoError> {
+        let label = path.display().to_string();
+        let bytes = std::fs::read(path).map_err(|error| DemoError::Read { path: label.clone(), error })?;
+        Demo::from_bytes(&bytes, &label)
+    }
+
+    /// Decodes a demo; `label` names the file in errors.
+    pub fn from_bytes(bytes: &[u8], label: &str) -> Result<Demo, DemoError> {
+        let path = || label.to_string();
+        let truncated = |what: &str| DemoError::Truncated { path: path(), what: what.to_string() };
+        let rest = bytes.strip_prefix(MAGIC).ok_or_else(|| DemoError::Magic { path: path() })?;
+        let (&version, rest) = rest.split_first().ok_or_else(|| truncated("no version after the header"))?;
+        if version != VERSION {
+            return Err(DemoError::Version { path: path(), found: version });
+        }
+        let (checksum, body) = rest.split_first_chunk::<4>().ok_or_else(|| truncated("no checksum"))?;
+        let mut reader = Reader { bytes: body };
+        let map_len = reader.u32().ok_or_else(|| truncated("no map name length"))?;
+        if map_len > MAX_MAP_BYTES {
+            return Err(DemoError::MapTooLong { path: path(), len: map_len as usize });
+        }
+        let map = reader.take(map_len as usize).ok_or_else(|| truncated("the map name is cut short"))?;
+        let ticks = reader.u32().ok_or_else(|| truncated("no tick count"))? as usize;
+        let present = reader.bytes.len();
+        // Compare before allocating: a forged count cannot reserve memory.
+        match (ticks as u64 * RECORD as u64).cmp(&(present as u64)) {
+            std::cmp::Ordering::Greater => {
+                return Err(truncated(&format!("{ticks} ticks need {} bytes, {present} remain", ticks * RECORD)))
+            }
+            std::cmp::Ordering::Less => {
+                return Err(DemoError::Corrupt {
+                    path: path(),
+                    what: format!("{} bytes after the {ticks} ticks", present - ticks * RECORD),
+                })
+            }
+            std::cmp::Ordering::Equal => {}
+        }
+        if crc32fast::hash(body) != u32::from_le_bytes(*checksum) {
+            return Err(DemoError::Corrupt { path: path(), what: "checksum mismatch".into() });
+        }
+        let map = String::from_utf8(map.to_vec())
+            .map_err(|_| DemoError::Corrupt { path: path(), what: "the map name is not UTF-8".into() })?;
+        let mut inputs = Vec::with_capacity(ticks);
+        for (tick, r) in reader.bytes.chunks_exact(RECORD).enumerate() {
+            if r[2] & !(RUN | USE) != 0 {
+                return Err(DemoError::Corrupt {
+                    path: path(),
+                    what: format!("tick {tick}: unknown flags {:#04x}", r[2]),
+                });
+            }
+            inputs.push(TickInput {
+                forward: r[0] as i8,
+                strafe: r[1] as i8,
+                run: r[2] & RUN != 0,
+                use_door: r[2] & USE != 0,
+                turn: f32::from_le_bytes([r[3], r[4], r[5], r[6]]),
+            });
+        }
+        Ok(Demo { map, inputs })
+    }
+}
+
+/// Reads little-endian fields off the front of a byte slice.
+struct Reader<'a> {
+    bytes: &'a [u8],
+}
+
+impl<'a> Reader<'a> {
+    fn take(&mut self, n: usize) -> Option<&'a [u8]> {
+        if self.bytes.len() < n {
+            return None;
+        }
+        let (head, tail) = self.bytes.split_at(n);
+        self.bytes = tail;
+        Some(head)
+    }
+
+    fn u32(&mut self) -> Option<u32> {
+        self.take(4).map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]))
+    }
+}

@@ -1,0 +1,203 @@
+//! The player's body and its physics between collisions: turning, thrust and
+//! friction in the plane, gravity and the eye's height on the z axis.
+//!
+//! The numbers are Doom's (p_user.c, p_mobj.c, g_game.c), converted from 16.16
+//! fixed point to map units per tick, so the game feels like the one the
+//! issue asks for. Collision ([`super::collision`]) takes the velocity this
+//! module produces and moves the body along it.
+
+use glam::DVec2;
+
+use super::input::TickInput;
+use crate::geom::sin_cos_degrees;
+use crate::render::view::EYE_HEIGHT;
+
+/// The body is a circle of this radius (Doom's player radius, 16).
+pub const RADIUS: f64 = 16.0;
+/// The body is this tall: a passage needs this much headroom (Doom: 56).
+pub const HEIGHT: f64 = 56.0;
+/// The highest step the body climbs without jumping (Doom: 24).
+pub const MAX_STEP: f64 = 24.0;
+
+/// Thrust per tick while walking forward, in units per tick per tick: Doom's
+/// `forwardmove` 25 times `2048 / 65536`. With [`FRICTION`] the top speed is
+/// `thrust / (1 - friction)` = 8.33 units per tick (292 units per second).
+pub const WALK_THRUST: f64 = 25.0 / 32.0;
+/// Running doubles it (Doom's 50): 16.7 units per tick at top speed.
+pub const RUN_THRUST: f64 = 50.0 / 32.0;
+/// Strafing is a little weaker (Doom's `sidemove` 24 and 40).
+pub const WALK_STRAFE: f64 = 24.0 / 32.0;
+pub const RUN_STRAFE: f64 = 40.0 / 32.0;
+/// Velocity kept per tick on the ground (Doom's `FRICTION` 0xe800 / 0x10000).
+/// The top speed is reached to 90% in about 23 ticks (two thirds of a second),
+/// and a running player stops within about 8 units of coasting per tick.
+pub const FRICTION: f64 = 0.90625;
+/// Below this speed with no thrust the body stops dead (Doom's `STOPSPEED`,
+/// 1/16 unit per tick), so friction does not leave it creeping forever.
+pub const STOP_SPEED: f64 = 1.0 / 16.0;
+/// Speed limit in units per tick (Doom's `MAXMOVE`, 30). It must stay below
+/// `2 * RADIUS`: a body that ends every tick at least `RADIUS` from every
+/// wall then cannot have jumped across one (the straight line between two
+/// such positions, shorter than `2 * RADIUS`, cannot reach a wall).
+pub const MAX_SPEED: f64 = 30.0;
+/// Downward acceleration, units per tick per tick (Doom's `GRAVITY`, 1).
+/// Falling 96 units takes 13 ticks.
+pub const GRAVITY: f64 = 1.0;
+/// Landing faster than this (units per tick) squats the eye (Doom: 8).
+pub const SQUAT_SPEED: f64 = 8.0;
+
+const _: () = assert!(MAX_SPEED < 2.0 * RADIUS);
+
+/// The player: where the body is and how it moves.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Player {
+    /// Centre of the body's circle.
+    pub pos: DVec2,
+    /// Height of the feet.
+    pub z: f64,
+    /// View direction in degrees, counter-clockwise from +x, in `[0, 360)`.
+    pub angle: f64,
+    /// Map units per tick.
+    pub velocity: DVec2,
+    /// Vertical speed, units per tick (negative while falling).
+    pub vz: f64,
+    /// The sector under the centre.
+    pub sector: usize,
+    /// Highest floor and lowest ceiling under the whole circle: what the body
+    /// stands on and must fit under.
+    pub floor: f64,
+    pub ceiling: f64,
+    /// Eye above the feet: [`EYE_HEIGHT`] at rest, lower for a few ticks
+    /// after a step up or a hard landing (Doom's `viewheight`).
+    pub view_height: f64,
+    /// How fast `view_height` recovers (Doom's `deltaviewheight`).
+    pub view_delta: f64,
+}
+
+impl Player {
+    /// A player standing at `pos` on `floor`, under `ceiling`.
+    pub fn new(pos: DVec2, angle: f64, sector: usize, floor: f64, ceiling: f64) -> Player {
+        Player {
+            pos,
+            z: floor,
+            angle: angle.rem_euclid(360.0),
+            velocity: DVec2::ZERO,
+            vz: 0.0,
+            sector,
+            floor,
+            ceiling,
+            view_height: EYE_HEIGHT,
+            view_delta: 0.0,
+        }
+    }
+
+    /// Standing on the floor (not falling): only then do thrust and friction act.
+    pub fn on_ground(&self) -> bool {
+        self.z <= self.floor
+    }
+
+    /// The eye's height: feet plus view height, kept 4 units under the
+    /// ceiling as Doom does, so the eye never pokes through a low ceiling.
+    pub fn eye_z(&self) -> f64 {
+        (self.z + self.view_height).min(self.ceiling - 4.0).max(self.z + 1.0)
+    }
+
+    /// Turns by the input's angle (any finite amount).
+    pub fn turn(&mut self, input: &TickInput) {
+        self.angle = (self.angle + f64::from(input.turn)).rem_euclid(360.0);
+        // rem_euclid of a value just below zero can round up to 360 itself.
+        if self.angle >= 360.0 {
+            self.angle = 0.0;
+        }
+    }
+
+    /// Adds this tick's thrust (on the ground only, as in Doom: no air
+    /// control) and clamps the speed.
+    ///
+    /// Forward and sideways thrust together are limited to the forward
+    /// thrust, so moving diagonally is not faster. (Doom adds them, which
+    /// makes strafe-running 28% faster than running; that is a famous quirk,
+    /// not a feel worth keeping.)
+    pub fn thrust(&mut self, input: &TickInput) {
+        if self.on_ground() && (input.forward != 0 || input.strafe != 0) {
+            let (forward, side) = if input.run { (RUN_THRUST, RUN_STRAFE) } else { (WALK_THRUST, WALK_STRAFE) };
+            let (sin, cos) = sin_cos_degrees(self.angle);
+            let ahead = DVec2::new(cos, sin);
+            let right = DVec2::new(sin, -cos);
+            let mut push = ahead * (f64::from(input.forward) * forward) + right * (f64::from(input.strafe) * side);
+            let len = push.length();
+            if len > forward {
+                push *= forward / len;
+            }
+            self.velocity += push;
+        }
+        let speed = self.velocity.length();
+        if speed > MAX_SPEED {
+            self.velocity *= MAX_SPEED / speed;
+        }
+    }
+
+    /// Friction after the move (on the ground only); a slow body with no
+    /// thrust stops.
+    pub fn friction(&mut self, input: &TickInput) {
+        if !self.on_ground() {
+            return;
+        }
+        let idle = input.forward == 0 && input.strafe == 0;
+        if idle && self.velocity.length() < STOP_SPEED {
+            self.velocity = DVec2::ZERO;
+        } else {
+            self.velocity *= FRICTION;
+        }
+    }
+
+    /// Vertical movement once the body has moved in the plane: step up onto
+    /// a higher floor at once (the eye follows smoothly), fall under gravity
+    /// onto a lower one.
+    pub fn fall(&mut self) {
+        if self.z < self.floor {
+            // A step up (at most MAX_STEP; collision saw to that). The eye
+            // stays where it was and rises over a few ticks (Doom's P_ZMovement).
+            self.view_height -= self.floor - self.z;
+            self.view_delta = (EYE_HEIGHT - self.view_height) / 8.0;
+            self.z = self.floor;
+            self.vz = 0.0;
+        } else if self.z > self.floor {
+            // Doom starts a fall at twice gravity so stepping off a ledge is
+            // not a float.
+            self.vz = if self.vz == 0.0 { -2.0 * GRAVITY } else { self.vz - GRAVITY };
+            self.z += self.vz;
+            if self.z <= self.floor {
+                if self.vz < -SQUAT_SPEED {
+                    self.view_delta = self.vz / 8.0;
+                }
+                self.z = self.floor;
+                self.vz = 0.0;
+            }
+        } else {
+            self.vz = 0.0;
+        }
+        self.settle_view();
+    }
+
+    /// Doom's P_CalcHeight without the bob: the eye returns to its rest height.
+    fn settle_view(&mut self) {
+        self.view_height += self.view_delta;
+        if self.view_height > EYE_HEIGHT {
+            self.view_height = EYE_HEIGHT;
+            self.view_delta = 0.0;
+        }
+        if self.view_height < EYE_HEIGHT / 2.0 {
+            self.view_height = EYE_HEIGHT / 2.0;
+            if self.view_delta <= 0.0 {
+                self.view_delta = 1.0;
+            }
+        }
+        if self.view_delta != 0.0 {
+            self.view_delta += 0.25;
+            if self.view_delta == 0.0 {
+                self.view_delta = 1.0;
+            }
+        }
+    }
+}
