@@ -31,26 +31,8 @@ pub fn run(args: &CaptureArgs) -> Result<()> {
     Ok(())
 }
 
-/// `sightline` with no arguments: capture the default map from its start.
-pub fn run_default() -> Result<()> {
-    let map = default_map_path();
-    let output = PathBuf::from("sightline-capture.png");
-    let args = CaptureArgs {
-        map: map.clone(),
-        pose: None,
-        size: (640, 400),
-        renderer: Default::default(),
-        shade: Default::default(),
-        output: output.clone(),
-    };
-    run(&args)?;
-    println!("Captured {} from its player start to {}", map.display(), output.display());
-    println!("(The playable window arrives with the play issue; see README.md for `sightline capture`.)");
-    Ok(())
-}
-
 /// `maps/pillars.ron` under the current directory, else in the source tree.
-fn default_map_path() -> PathBuf {
+pub fn default_map_path() -> PathBuf {
     let here = PathBuf::from(DEFAULT_MAP);
     if here.exists() {
         return here;

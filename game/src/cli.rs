@@ -7,10 +7,18 @@ use sightline::bsp::SplitterKind;
 use sightline::render::{Renderer, Shade};
 
 #[derive(Parser)]
-#[command(name = "sightline", version, about = "A Doom-style 2.5D engine: compile maps, capture frames")]
+#[command(
+    name = "sightline",
+    version,
+    about = "A Doom-style 2.5D engine: play maps, replay demos, compile maps, capture frames",
+    args_conflicts_with_subcommands = true
+)]
 pub struct Cli {
     #[command(subcommand)]
     pub command: Option<Command>,
+    /// Without a subcommand, `sightline [MAP] [OPTIONS]` is `sightline play`.
+    #[command(flatten)]
+    pub play: PlayArgs,
 }
 
 #[derive(Subcommand)]
@@ -19,6 +27,10 @@ pub enum Command {
     Compile(CompileArgs),
     /// Render one frame headless to a PNG.
     Capture(CaptureArgs),
+    /// Play a map in a window (the default with no arguments).
+    Play(PlayArgs),
+    /// Replay a demo headless and deterministically; optionally capture frames.
+    Replay(ReplayArgs),
 }
 
 #[derive(Args)]
@@ -59,6 +71,68 @@ pub struct CaptureArgs {
     /// The PNG to write.
     #[arg(short, long)]
     pub output: PathBuf,
+}
+
+#[derive(Args)]
+pub struct PlayArgs {
+    /// A RON map or a compiled map. Default: maps/pillars.ron.
+    pub map: Option<PathBuf>,
+    /// Internal frame size, WxH; the window scales it to fit.
+    #[arg(long, default_value = "640x400", value_parser = parse_size)]
+    pub size: (usize, usize),
+    /// Initial window inner size, WxH. Default: the frame size times the
+    /// largest whole factor that fits the screen.
+    #[arg(long, value_parser = parse_size)]
+    pub window: Option<(usize, usize)>,
+    /// Present as fast as possible instead of at the display's refresh rate.
+    #[arg(long)]
+    pub no_vsync: bool,
+    /// Quit by itself after this many frames, printing the frame-loop timings.
+    #[arg(long, value_parser = clap::value_parser!(u64).range(1..))]
+    pub frames: Option<u64>,
+    /// Print the frame-loop timings (median render and upload+present) at exit.
+    #[arg(long)]
+    pub stats: bool,
+    /// bsp, reference, or raycast (grid maps only); R cycles them in the
+    /// window. Default: raycast for a grid map, else bsp.
+    #[arg(long, value_parser = parse_renderer)]
+    pub renderer: Option<Renderer>,
+    /// Record the inputs of every tick into this demo file (written at exit).
+    #[arg(long, conflicts_with = "demo")]
+    pub record: Option<PathBuf>,
+    /// Play this demo's inputs instead of the keyboard and mouse; the view
+    /// stays on its last tick when it ends.
+    #[arg(long)]
+    pub demo: Option<PathBuf>,
+    /// Start with the HUD hidden (H toggles it).
+    #[arg(long)]
+    pub no_hud: bool,
+    /// Degrees turned per mouse count while the cursor is grabbed.
+    #[arg(long, default_value_t = 0.15)]
+    pub mouse_sensitivity: f32,
+}
+
+#[derive(Args)]
+pub struct ReplayArgs {
+    /// The demo file to replay.
+    pub demo: PathBuf,
+    /// Replay on this map instead of the one the demo names.
+    #[arg(long)]
+    pub map: Option<PathBuf>,
+    /// Write a PNG of every Nth tick (tick 0, N, 2N, ... and the last) into
+    /// the directory given with -o.
+    #[arg(long, requires = "output", value_parser = clap::value_parser!(u64).range(1..))]
+    pub capture_every: Option<u64>,
+    /// Directory for the captured frames (created if missing).
+    #[arg(short, long, requires = "capture_every")]
+    pub output: Option<PathBuf>,
+    /// Size of the captured frames, WxH.
+    #[arg(long, default_value = "640x400", value_parser = parse_size)]
+    pub size: (usize, usize),
+    /// bsp, reference, or raycast (grid maps only). Default: raycast for a
+    /// grid map, else bsp.
+    #[arg(long, value_parser = parse_renderer)]
+    pub renderer: Option<Renderer>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]

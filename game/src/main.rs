@@ -1,9 +1,12 @@
-//! `sightline`: the engine's command-line front end. With no arguments it
-//! captures the default map to a PNG (the window arrives with the play issue).
+//! `sightline`: the engine's front end. With no arguments it plays the
+//! default map in a window; subcommands compile maps, capture frames headless
+//! and replay demos.
 
 mod capture;
 mod cli;
 mod compile;
+mod play;
+mod replay;
 
 use std::process::ExitCode;
 
@@ -14,7 +17,9 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Some(cli::Command::Compile(args)) => compile::run(&args),
         Some(cli::Command::Capture(args)) => capture::run(&args),
-        None => capture::run_default(),
+        Some(cli::Command::Play(args)) => play::run(&args),
+        Some(cli::Command::Replay(args)) => replay::run(&args),
+        None => play::run(&cli.play),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,0 +1,239 @@
+//! The window's event handler and the frame loop. Each redraw: wall time
+//! into whole ticks (`TickClock`), the ticks run (`Session`), the view
+//! interpolated between the last two ticks rendered into the one
+//! `Framebuffer`, the automap and HUD drawn over it, and the result
+//! presented (`Screen`). A redraw is requested again as soon as the event
+//! queue is empty, so the frame rate is the display's with vsync and as fast
+//! as rendering allows without.
+
+use std::path::Path;
+use std::time::{Duration, Instant};
+
+use anyhow::Result;
+use sightline::level::Level;
+use sightline::render::{render_frame, Frame, RenderOptions, Renderer};
+use sightline::Framebuffer;
+use winit::application::ApplicationHandler;
+use winit::event::{DeviceEvent, DeviceId, ElementState, MouseButton, WindowEvent};
+use winit::event_loop::ActiveEventLoop;
+use winit::keyboard::PhysicalKey;
+use winit::window::WindowId;
+
+use super::automap::Automap;
+use super::clock::TickClock;
+use super::hud::Hud;
+use super::input::Action;
+use super::screen::{Screen, ScreenOptions};
+use super::screenshot;
+use super::session::Session;
+use super::timings::Timings;
+
+pub struct App {
+    screen_options: ScreenOptions,
+    screen: Option<Screen>,
+    session: Session,
+    frame_limit: Option<u64>,
+    options: RenderOptions,
+    renderers: Vec<Renderer>,
+    frame: Frame,
+    fb: Framebuffer,
+    clock: TickClock,
+    hud: Hud,
+    automap: Automap,
+    pub timings: Timings,
+    grabbed: bool,
+    last_frame: Option<Instant>,
+    frames: u64,
+    /// What stopped the loop, if something went wrong.
+    pub error: Option<anyhow::Error>,
+}
+
+pub struct AppOptions {
+    pub screen: ScreenOptions,
+    pub renderer: Renderer,
+    pub frame_limit: Option<u64>,
+    pub hud: bool,
+}
+
+impl App {
+    pub fn new(session: Session, options: AppOptions) -> App {
+        let (w, h) = options.screen.frame;
+        let level = session.game.level();
+        let renderers = renderers_for(level);
+        let automap = Automap::new(&level.map);
+        App {
+            screen_options: options.screen,
+            screen: None,
+            session,
+            frame_limit: options.frame_limit,
+            options: RenderOptions { renderer: options.renderer, ..Default::default() },
+            renderers,
+            frame: Frame::new(),
+            fb: Framebuffer::new(w as usize, h as usize),
+            clock: TickClock::new(sightline::play::TICRATE),
+            hud: Hud::new(options.hud),
+            automap,
+            timings: Timings::default(),
+            grabbed: false,
+            last_frame: None,
+            frames: 0,
+            error: None,
+        }
+    }
+
+    pub fn into_session(self) -> Session {
+        self.session
+    }
+
+    fn fail(&mut self, event_loop: &ActiveEventLoop, error: anyhow::Error) {
+        self.error.get_or_insert(error);
+        event_loop.exit();
+    }
+
+    fn redraw(&mut self, event_loop: &ActiveEventLoop) -> Result<()> {
+        let now = Instant::now();
+        let interval = self.last_frame.map_or(Duration::ZERO, |t| now - t);
+        self.last_frame = Some(now);
+        let (ticks, alpha) = self.clock.advance(interval);
+        self.session.run(ticks);
+        let view = self.session.view(alpha);
+
+        let level = self.session.game.level();
+        let start = Instant::now();
+        render_frame(level, &view, &self.options, &mut self.frame, &mut self.fb);
+        let render = start.elapsed();
+        self.automap.accumulate(self.frame.seen_lines());
+        if self.automap.visible {
+            self.automap.draw(&level.map, (view.pos.x, view.pos.y), view.angle, &mut self.fb);
+        }
+        self.hud.frame(interval, render);
+        self.hud.draw(&mut self.fb, &level.map.name, self.options.renderer.name());
+
+        let Some(screen) = &mut self.screen else { return Ok(()) };
+        let start = Instant::now();
+        screen.present(&self.fb)?;
+        self.timings.push(render, start.elapsed());
+        self.frames += 1;
+        if self.frame_limit.is_some_and(|n| self.frames >= n) {
+            event_loop.exit();
+        }
+        Ok(())
+    }
+
+    fn act(&mut self, event_loop: &ActiveEventLoop, action: Action) -> Result<()> {
+        match action {
+            Action::Quit => event_loop.exit(),
+            Action::ReleaseCursor => self.grab(false),
+            Action::ToggleFullscreen => {
+                if let Some(screen) = &self.screen {
+                    screen.toggle_fullscreen();
+                }
+            }
+            Action::ToggleHud => self.hud.visible = !self.hud.visible,
+            Action::ToggleAutomap => self.automap.visible = !self.automap.visible,
+            // A screenshot that cannot be written is reported, not fatal.
+            Action::Screenshot => match screenshot::save(&self.fb, Path::new(".")) {
+                Ok(path) => println!("screenshot: {}", path.display()),
+                Err(e) => eprintln!("sightline: screenshot not saved: {e:#}"),
+            },
+            Action::CycleRenderer => {
+                let at = self.renderers.iter().position(|&r| r == self.options.renderer);
+                let next = at.map_or(0, |i| (i + 1) % self.renderers.len());
+                if let Some(&r) = self.renderers.get(next) {
+                    self.options.renderer = r;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    fn grab(&mut self, grab: bool) {
+        if let Some(screen) = &self.screen {
+            self.grabbed = screen.grab_cursor(grab);
+        }
+    }
+}
+
+/// The renderers that can draw `level`: all of them, but the ray-caster
+/// only on grid maps.
+fn renderers_for(level: &Level) -> Vec<Renderer> {
+    let _ = level;
+    Renderer::ALL.to_vec()
+}
+
+impl ApplicationHandler for App {
+    fn resumed(&mut self, event_loop: &ActiveEventLoop) {
+        if self.screen.is_some() {
+            return;
+        }
+        match Screen::open(event_loop, &self.screen_options) {
+            Ok(screen) => self.screen = Some(screen),
+            Err(e) => self.fail(event_loop, e),
+        }
+    }
+
+    fn window_event(&mut self, event_loop: &ActiveEventLoop, _id: WindowId, event: WindowEvent) {
+        let result = match event {
+            WindowEvent::CloseRequested => {
+                event_loop.exit();
+                Ok(())
+            }
+            WindowEvent::Resized(size) => match &mut self.screen {
+                Some(screen) => screen.resize(size.width, size.height),
+                None => Ok(()),
+            },
+            WindowEvent::RedrawRequested => self.redraw(event_loop),
+            WindowEvent::Focused(false) => {
+                if let Some(controls) = self.session.controls() {
+                    controls.release_all();
+                }
+                self.grab(false);
+                Ok(())
+            }
+            WindowEvent::MouseInput { state: ElementState::Pressed, button: MouseButton::Left, .. } => {
+                if !self.grabbed {
+                    self.grab(true);
+                }
+                Ok(())
+            }
+            WindowEvent::KeyboardInput { event, .. } => {
+                let PhysicalKey::Code(code) = event.physical_key else { return };
+                let down = event.state == ElementState::Pressed;
+                let action = match self.session.controls() {
+                    Some(controls) => controls.key(code, down, event.repeat),
+                    // A demo drives the player; the window keys still work.
+                    None => super::input::Controls::default().key(code, down, event.repeat),
+                };
+                match action {
+                    Some(action) => self.act(event_loop, action),
+                    None => Ok(()),
+                }
+            }
+            _ => Ok(()),
+        };
+        if let Err(e) = result {
+            self.fail(event_loop, e);
+        }
+    }
+
+    fn device_event(&mut self, _event_loop: &ActiveEventLoop, _id: DeviceId, event: DeviceEvent) {
+        if let DeviceEvent::MouseMotion { delta: (dx, _) } = event {
+            if self.grabbed {
+                if let Some(controls) = self.session.controls() {
+                    controls.mouse(dx);
+                }
+            }
+        }
+    }
+
+    fn about_to_wait(&mut self, _event_loop: &ActiveEventLoop) {
+        if let Some(screen) = &self.screen {
+            screen.window.request_redraw();
+        }
+    }
+
+    fn exiting(&mut self, _event_loop: &ActiveEventLoop) {
+        // The surface must go before the window it draws into.
+        self.screen = None;
+    }
+}

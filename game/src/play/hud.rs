@@ -1,0 +1,125 @@
+//! The heads-up display: a few lines of 8x8 text (frame time and fps, map,
+//! renderer) drawn over the finished frame, just before it is uploaded.
+
+use std::time::Duration;
+
+use font8x8::{UnicodeFonts, BASIC_FONTS};
+use sightline::framebuffer::rgb;
+use sightline::Framebuffer;
+
+/// Frame time shown as an average over this long, so the figures can be read
+/// rather than flicker with every frame.
+const SMOOTHING_WINDOW: Duration = Duration::from_millis(500);
+
+/// Glyph cell in font pixels; the font is 8x8 (font8x8's public-domain set).
+const GLYPH: usize = 8;
+
+pub struct Hud {
+    pub visible: bool,
+    window_time: Duration,
+    window_frames: u32,
+    window_render: Duration,
+    /// The figures last shown: ms per frame, frames per second, render ms.
+    shown: Option<(f64, f64, f64)>,
+}
+
+impl Hud {
+    pub fn new(visible: bool) -> Hud {
+        Hud { visible, window_time: Duration::ZERO, window_frames: 0, window_render: Duration::ZERO, shown: None }
+    }
+
+    /// Counts one frame: `interval` since the previous one, `render` of it
+    /// spent in the renderer.
+    pub fn frame(&mut self, interval: Duration, render: Duration) {
+        self.window_time += interval;
+        self.window_render += render;
+        self.window_frames += 1;
+        if self.window_time >= SMOOTHING_WINDOW {
+            let frames = f64::from(self.window_frames);
+            let secs = self.window_time.as_secs_f64();
+            self.shown =
+                Some((secs * 1000.0 / frames, frames / secs, self.window_render.as_secs_f64() * 1000.0 / frames));
+            self.window_time = Duration::ZERO;
+            self.window_render = Duration::ZERO;
+            self.window_frames = 0;
+        }
+    }
+
+    pub fn draw(&self, fb: &mut Framebuffer, map_name: &str, renderer: &str) {
+        if !self.visible {
+            return;
+        }
+        let timing = match self.shown {
+            Some((ms, fps, render)) => format!("{ms:.1} ms  {fps:.0} fps  render {render:.2} ms"),
+            None => "-- ms  -- fps".to_string(),
+        };
+        let lines = [timing, format!("{map_name}  [{renderer}]")];
+        let scale = text_scale(fb);
+        let mut y = scale * 4;
+        for line in &lines {
+            draw_text(fb, scale * 4, y, scale, line);
+            y += (GLYPH + 2) * scale;
+        }
+    }
+}
+
+/// Text grows with the frame so it stays readable at 1080p: one font pixel
+/// per screen pixel up to 400 rows, then whole multiples.
+pub fn text_scale(fb: &Framebuffer) -> usize {
+    (fb.height / 400).max(1)
+}
+
+/// Draws `text` with its top-left corner at (`x`, `y`), each font pixel
+/// `scale` screen pixels, in white over a one-pixel dark shadow so it reads on
+/// any background. Characters outside ASCII draw as `?`; whatever falls off
+/// the frame is clipped.
+pub fn draw_text(fb: &mut Framebuffer, x: usize, y: usize, scale: usize, text: &str) {
+    for (i, c) in text.chars().enumerate() {
+        let glyph = BASIC_FONTS.get(c).or_else(|| BASIC_FONTS.get('?')).unwrap_or([0; 8]);
+        let gx = x + i * GLYPH * scale;
+        draw_glyph(fb, gx + scale, y + scale, scale, &glyph, rgb(0, 0, 0));
+        draw_glyph(fb, gx, y, scale, &glyph, rgb(255, 255, 255));
+    }
+}
+
+fn draw_glyph(fb: &mut Framebuffer, x: usize, y: usize, scale: usize, glyph: &[u8; 8], colour: u32) {
+    for (row, bits) in glyph.iter().enumerate() {
+        for col in 0..GLYPH {
+            // font8x8 stores each row with bit 0 as the leftmost pixel.
+            if bits >> col & 1 == 0 {
+                continue;
+            }
+            fill_rect(fb, x + col * scale, y + row * scale, scale, scale, colour);
+        }
+    }
+}
+
+/// Fills the part of the rectangle that lies on the frame.
+pub fn fill_rect(fb: &mut Framebuffer, x: usize, y: usize, w: usize, h: usize, colour: u32) {
+    let x1 = (x + w).min(fb.width);
+    let y1 = (y + h).min(fb.height);
+    for yy in y.min(y1)..y1 {
+        let row = yy * fb.width;
+        fb.pixels[row + x.min(x1)..row + x1].fill(colour);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn text_is_clipped_and_drawn() {
+        let mut fb = Framebuffer::new(20, 10);
+        // Runs off the right and bottom edges: must clip, not panic.
+        draw_text(&mut fb, 4, 4, 1, "HUD");
+        assert!(fb.pixels.contains(&rgb(255, 255, 255)));
+        let mut hud = Hud::new(true);
+        for _ in 0..40 {
+            hud.frame(Duration::from_millis(20), Duration::from_millis(2));
+        }
+        let (ms, fps, render) = hud.shown.unwrap();
+        assert!((ms - 20.0).abs() < 1e-9 && (fps - 50.0).abs() < 1e-9 && (render - 2.0).abs() < 1e-9);
+        hud.draw(&mut Framebuffer::new(3, 3), "map", "bsp");
+    }
+}

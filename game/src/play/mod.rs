@@ -1,0 +1,112 @@
+//! `sightline play`: a map in a window. The engine renders into a
+//! `Framebuffer` exactly as it does headless; this module adds the window
+//! (winit), the GPU surface that scales the frame to it (pixels), input, and
+//! the fixed-timestep loop that drives `sightline::play::Game`.
+//!
+//! ```text
+//! keys, mouse ─▶ input::Controls ─┐            (or a demo's inputs)
+//!                                 ▼
+//! wall time ─▶ clock::TickClock ─▶ session::Session::run(ticks) ─▶ Game::tick
+//!                    │ alpha
+//!                    ▼
+//!              Game::view(alpha) ─▶ render_frame ─▶ automap, hud ─▶ screen::Screen::present
+//! ```
+
+mod app;
+mod automap;
+mod clock;
+mod hud;
+mod input;
+mod screen;
+mod screenshot;
+mod session;
+mod timings;
+
+use std::path::Path;
+
+use anyhow::{anyhow, bail, Context, Result};
+use sightline::bsp::BuildOptions;
+use sightline::level::open_level;
+use sightline::play::demo::Demo;
+use sightline::play::Game;
+use winit::event_loop::{ControlFlow, EventLoop};
+
+use crate::cli::PlayArgs;
+use app::{App, AppOptions};
+use input::Controls;
+use screen::ScreenOptions;
+use session::Session;
+
+const NO_DISPLAY_HINT: &str = "For frames without a window use `sightline capture MAP -o frame.png` \
+     (or `sightline replay DEMO --capture-every N -o DIR`).";
+
+pub fn run(args: &PlayArgs) -> Result<()> {
+    let demo = match &args.demo {
+        Some(path) => Some(Demo::load(path)?),
+        None => None,
+    };
+    let map = match (&args.map, &demo, &args.demo) {
+        (Some(map), _, _) => map.clone(),
+        (None, Some(demo), Some(demo_path)) => crate::replay::demo_map_path(&demo.map, demo_path),
+        _ => crate::capture::default_map_path(),
+    };
+    let level = open_level(&map, &BuildOptions::default())?;
+    let renderer = crate::replay::choose_renderer(args.renderer, &level, &map)?;
+    let game = Game::new(level).with_context(|| format!("{}: cannot start the game", map.display()))?;
+    let session = match demo {
+        Some(demo) => Session::demo(game, demo.inputs),
+        None => Session::live(game, Controls::new(args.mouse_sensitivity), args.record.is_some()),
+    };
+
+    check_display()?;
+    let event_loop = EventLoop::new()
+        .map_err(|e| anyhow!("cannot open a window: no display could be reached ({e}).\n{NO_DISPLAY_HINT}"))?;
+    event_loop.set_control_flow(ControlFlow::Poll);
+    let (w, h) = args.size;
+    let options = AppOptions {
+        screen: ScreenOptions {
+            title: format!("Sightline: {}", map.display()),
+            frame: (w as u32, h as u32),
+            window: args.window.map(|(w, h)| (w as u32, h as u32)),
+            vsync: !args.no_vsync,
+        },
+        renderer,
+        frame_limit: args.frames,
+        hud: !args.no_hud,
+    };
+    let mut app = App::new(session, options);
+    let ran = event_loop.run_app(&mut app);
+    if (args.frames.is_some() || args.stats) && app.timings.frames() > 0 {
+        println!("{}", app.timings.summary());
+    }
+    let error = app.error.take();
+    let mut session = app.into_session();
+    if let (Some(path), Some(inputs)) = (&args.record, session.take_recording()) {
+        save_recording(path, &map, inputs)?;
+    }
+    if let Some(e) = error {
+        return Err(e);
+    }
+    ran.map_err(|e| anyhow!("the window's event loop failed: {e}"))
+}
+
+/// Without a display server winit fails with a terse message; say what to
+/// do instead. (Only where X11 or Wayland is the way to a display.)
+fn check_display() -> Result<()> {
+    if cfg!(all(unix, not(target_os = "macos"), not(target_os = "android"), not(target_os = "ios"))) {
+        let set = |var: &str| std::env::var_os(var).is_some_and(|v| !v.is_empty());
+        if !set("DISPLAY") && !set("WAYLAND_DISPLAY") && !set("WAYLAND_SOCKET") {
+            bail!("no display to open a window on (neither DISPLAY nor WAYLAND_DISPLAY is set).\n{NO_DISPLAY_HINT}");
+        }
+    }
+    Ok(())
+}
+
+fn save_recording(path: &Path, map: &Path, inputs: Vec<sightline::play::TickInput>) -> Result<()> {
+    let ticks = inputs.len();
+    // The map as given, so a demo recorded in the repository replays there.
+    let demo = Demo { map: map.display().to_string(), inputs };
+    demo.save(path)?;
+    println!("recorded {ticks} ticks to {}", path.display());
+    Ok(())
+}

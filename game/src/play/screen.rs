@@ -1,0 +1,165 @@
+//! The window and its GPU surface: a winit window and a pixels buffer of the
+//! internal frame size, which pixels scales to the window. The game hands it
+//! finished `Framebuffer`s; this is the only place the frame leaves the CPU.
+
+use std::sync::Arc;
+
+use anyhow::{anyhow, Context, Result};
+use pixels::wgpu::Backends;
+use pixels::{Pixels, PixelsBuilder, ScalingMode, SurfaceTexture};
+use sightline::Framebuffer;
+use winit::dpi::PhysicalSize;
+use winit::event_loop::ActiveEventLoop;
+use winit::window::{CursorGrabMode, Fullscreen, Window};
+
+/// How much of the screen the first window may cover.
+const SCREEN_SHARE: f64 = 0.9;
+
+pub struct ScreenOptions {
+    pub title: String,
+    /// Internal frame size.
+    pub frame: (u32, u32),
+    /// Window inner size; `None` picks a whole multiple of the frame that fits.
+    pub window: Option<(u32, u32)>,
+    pub vsync: bool,
+}
+
+pub struct Screen {
+    pub window: Arc<Window>,
+    pixels: Pixels<'static>,
+    frame: (u32, u32),
+}
+
+impl Screen {
+    pub fn open(event_loop: &ActiveEventLoop, options: &ScreenOptions) -> Result<Screen> {
+        let (w, h) = options.window.unwrap_or_else(|| default_window_size(event_loop, options.frame));
+        let attributes = Window::default_attributes()
+            .with_title(&options.title)
+            .with_inner_size(PhysicalSize::new(w, h))
+            .with_min_inner_size(PhysicalSize::new(64, 40));
+        let window = Arc::new(event_loop.create_window(attributes).context("cannot open a window")?);
+        let size = window.inner_size();
+        // pixels panics on a zero-sized surface; a window can report one
+        // before it is mapped.
+        let surface = SurfaceTexture::new(size.width.max(1), size.height.max(1), Arc::clone(&window));
+        // Vulkan, Metal, DirectX 12, unless WGPU_BACKEND says otherwise. Not
+        // OpenGL: pixels 0.17 on Mesa's software GL was found not to present
+        // (and on a machine without Mesa's EGL finds no adapter at all),
+        // whereas software Vulkan (lavapipe) works under Xvfb.
+        let backends = Backends::from_env().unwrap_or(Backends::PRIMARY);
+        let mut pixels = PixelsBuilder::new(options.frame.0, options.frame.1, surface)
+            .wgpu_backend(backends)
+            .enable_vsync(options.vsync)
+            .build()
+            .map_err(surface_error)?;
+        pixels.set_scaling_mode(scaling_mode(options.frame, (size.width, size.height)));
+        let mut screen = Screen { window, pixels, frame: options.frame };
+        screen.resize(size.width, size.height)?;
+        Ok(screen)
+    }
+
+    /// Follows the window's new inner size (physical pixels). A zero size
+    /// (minimised) is ignored; presenting then is skipped by pixels.
+    pub fn resize(&mut self, width: u32, height: u32) -> Result<()> {
+        if width == 0 || height == 0 {
+            return Ok(());
+        }
+        self.pixels.set_scaling_mode(scaling_mode(self.frame, (width, height)));
+        self.pixels.resize_surface(width, height).map_err(|e| anyhow!("cannot resize the window surface: {e}"))
+    }
+
+    /// Uploads `fb` (the internal size) and presents it; with vsync this
+    /// waits for the display.
+    pub fn present(&mut self, fb: &Framebuffer) -> Result<()> {
+        // Framebuffer pixels hold RGBA bytes in memory order, as pixels'
+        // Rgba8UnormSrgb texture does.
+        for (dst, src) in self.pixels.frame_mut().chunks_exact_mut(4).zip(&fb.pixels) {
+            dst.copy_from_slice(&src.to_ne_bytes());
+        }
+        self.pixels.render().map_err(|e| anyhow!("cannot present the frame: {e}"))
+    }
+
+    pub fn toggle_fullscreen(&self) {
+        let next = match self.window.fullscreen() {
+            Some(_) => None,
+            None => Some(Fullscreen::Borderless(None)),
+        };
+        self.window.set_fullscreen(next);
+    }
+
+    /// Grabs (hides and holds) or releases the cursor; returns whether it is
+    /// grabbed. Locked keeps raw motion coming without the pointer moving
+    /// (Wayland, macOS); X11 offers only Confined, which is enough since
+    /// turning reads raw device motion, not the pointer position.
+    pub fn grab_cursor(&self, grab: bool) -> bool {
+        if grab {
+            let grabbed = self
+                .window
+                .set_cursor_grab(CursorGrabMode::Locked)
+                .or_else(|_| self.window.set_cursor_grab(CursorGrabMode::Confined))
+                .is_ok();
+            self.window.set_cursor_visible(!grabbed);
+            grabbed
+        } else {
+            let _ = self.window.set_cursor_grab(CursorGrabMode::None);
+            self.window.set_cursor_visible(true);
+            false
+        }
+    }
+}
+
+/// Crisp nearest-neighbour scaling when a whole multiple of the frame fills
+/// the window in one direction (the other is letterboxed either way);
+/// otherwise fill the window keeping the aspect ratio, filtered linearly.
+fn scaling_mode(frame: (u32, u32), window: (u32, u32)) -> ScalingMode {
+    let k = (window.0 / frame.0).min(window.1 / frame.1);
+    if k >= 1 && (k * frame.0 == window.0 || k * frame.1 == window.1) {
+        ScalingMode::PixelPerfect
+    } else {
+        ScalingMode::Fill
+    }
+}
+
+/// The frame times the largest whole factor that fits in 90% of the screen,
+/// at least 1.
+fn default_window_size(event_loop: &ActiveEventLoop, frame: (u32, u32)) -> (u32, u32) {
+    let monitor = event_loop.primary_monitor().or_else(|| event_loop.available_monitors().next());
+    let k = monitor.map_or(1.0, |m| {
+        let size = m.size();
+        (f64::from(size.width) * SCREEN_SHARE / f64::from(frame.0))
+            .min(f64::from(size.height) * SCREEN_SHARE / f64::from(frame.1))
+            .floor()
+    });
+    let k = (k.max(1.0) as u32).min(8);
+    (frame.0 * k, frame.1 * k)
+}
+
+/// pixels' errors, with what to install when there is no adapter. Without
+/// a Vulkan driver (or without the Vulkan loader) wgpu has no instance to
+/// make a surface with, so that shows as a surface error, not a missing
+/// adapter.
+fn surface_error(e: pixels::Error) -> anyhow::Error {
+    const SOFTWARE_VULKAN: &str = "On Debian or Ubuntu, Mesa's software Vulkan driver provides one:\n    \
+         sudo apt-get install mesa-vulkan-drivers libvulkan1\n\
+         Headless frames need no GPU: sightline capture MAP -o frame.png";
+    let detail = std::error::Error::source(&e).map(|s| format!(" ({s})")).unwrap_or_default();
+    match e {
+        pixels::Error::AdapterNotFound | pixels::Error::CreateSurface(_) | pixels::Error::DeviceNotFound(_) => {
+            anyhow!("no graphics adapter to present with (Vulkan, Metal or DirectX 12): {e}{detail}\n{SOFTWARE_VULKAN}")
+        }
+        other => anyhow!("cannot set up the window's GPU surface: {other}{detail}\n{SOFTWARE_VULKAN}"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn crisp_only_at_whole_multiples() {
+        assert!(matches!(scaling_mode((640, 400), (640, 400)), ScalingMode::PixelPerfect));
+        assert!(matches!(scaling_mode((640, 400), (1280, 1000)), ScalingMode::PixelPerfect));
+        assert!(matches!(scaling_mode((640, 400), (1920, 1080)), ScalingMode::Fill));
+        assert!(matches!(scaling_mode((640, 400), (300, 200)), ScalingMode::Fill));
+    }
+}

@@ -1,0 +1,110 @@
+//! `sightline replay`: a demo's inputs through the simulation, headless, as
+//! fast as it runs. The same demo gives the same positions and the same
+//! frames every time: the simulation is deterministic and frames are
+//! rendered from the state after whole ticks (`Game::view(1.0)`), never from
+//! wall time.
+
+use std::path::{Path, PathBuf};
+
+use anyhow::{Context, Result};
+use sightline::bsp::BuildOptions;
+use sightline::level::{open_level, write_atomic, Level};
+use sightline::play::demo::Demo;
+use sightline::play::Game;
+use sightline::render::{render_frame, Frame, RenderOptions, Renderer};
+use sightline::Framebuffer;
+
+use crate::cli::ReplayArgs;
+
+pub fn run(args: &ReplayArgs) -> Result<()> {
+    let demo = Demo::load(&args.demo)?;
+    let map = match &args.map {
+        Some(map) => map.clone(),
+        None => demo_map_path(&demo.map, &args.demo),
+    };
+    let level = open_level(&map, &BuildOptions::default())?;
+    let renderer = choose_renderer(args.renderer, &level, &map)?;
+    let mut game = Game::new(level).with_context(|| format!("{}: cannot start the game", map.display()))?;
+    let mut capture = match (args.capture_every, &args.output) {
+        (Some(every), Some(dir)) => Some(Capture::new(every, dir, args.size, renderer)?),
+        _ => None,
+    };
+    let last = demo.inputs.len() as u64;
+    if let Some(c) = &mut capture {
+        c.frame(&game, 0)?;
+    }
+    for (i, input) in demo.inputs.iter().enumerate() {
+        game.tick(input);
+        let tick = i as u64 + 1;
+        if let Some(c) = &mut capture {
+            if tick.is_multiple_of(c.every) || tick == last {
+                c.frame(&game, tick)?;
+            }
+        }
+    }
+    if let Some(c) = &capture {
+        println!("wrote {} frames to {}", c.written, c.dir.display());
+    }
+    println!("{}", position_line(&game));
+    Ok(())
+}
+
+/// Where the game stands, in full precision (shortest round-trip form), so
+/// two runs can be compared as text.
+pub fn position_line(game: &Game) -> String {
+    let p = game.player();
+    format!("tick {}: x {:?} y {:?} z {:?} angle {:?}", game.ticks(), p.pos.x, p.pos.y, p.z, p.angle)
+}
+
+/// The renderer asked for, else the level's default; an error when it
+/// cannot draw the level (the ray-caster on a sector map).
+pub fn choose_renderer(asked: Option<Renderer>, level: &Level, map: &Path) -> Result<Renderer> {
+    let _ = (level, map);
+    Ok(asked.unwrap_or_default())
+}
+
+/// The map a demo names, as given when that path exists from here, else
+/// beside the demo file.
+pub fn demo_map_path(name: &str, demo: &Path) -> PathBuf {
+    let given = PathBuf::from(name);
+    if given.exists() || given.is_absolute() {
+        return given;
+    }
+    let beside = demo.parent().unwrap_or(Path::new(".")).join(&given);
+    if beside.exists() {
+        beside
+    } else {
+        given
+    }
+}
+
+struct Capture {
+    every: u64,
+    dir: PathBuf,
+    options: RenderOptions,
+    frame: Frame,
+    fb: Framebuffer,
+    written: usize,
+}
+
+impl Capture {
+    fn new(every: u64, dir: &Path, (w, h): (usize, usize), renderer: Renderer) -> Result<Capture> {
+        std::fs::create_dir_all(dir).with_context(|| format!("{}: cannot create the directory", dir.display()))?;
+        Ok(Capture {
+            every,
+            dir: dir.to_path_buf(),
+            options: RenderOptions { renderer, ..Default::default() },
+            frame: Frame::new(),
+            fb: Framebuffer::new(w, h),
+            written: 0,
+        })
+    }
+
+    /// Renders the state after `tick` ticks to `tick-NNNNNN.png`.
+    fn frame(&mut self, game: &Game, tick: u64) -> Result<()> {
+        render_frame(game.level(), &game.view(1.0), &self.options, &mut self.frame, &mut self.fb);
+        write_atomic(&self.dir.join(format!("tick-{tick:06}.png")), &self.fb.to_png())?;
+        self.written += 1;
+        Ok(())
+    }
+}
