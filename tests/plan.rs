@@ -25,6 +25,7 @@ fn each_shipped_map_plans_exactly_what_it_uses() {
         ("stairs", &["sprites", "masked", "diminishing light"]),
         ("courtyard", &["sky", "sprites", "masked", "diminishing light", "fog"]),
         ("hall", &["sprites", "masked", "diminishing light"]),
+        ("doors", &["sprites", "diminishing light"]),
     ];
     let shipped: Vec<String> =
         shipped_maps().iter().map(|p| p.file_stem().unwrap().to_string_lossy().into_owned()).collect();

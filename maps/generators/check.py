@@ -41,11 +41,13 @@ the pairwise tests fast enough for maps with many thousands of lines.
 Also parsed and checked: the optional Map fields `diminishing_light` (true or
 false) and `fog: Some(Fog(colour: (r, g, b), distance: D))` (channels
 0..=255, D finite and > 0); the Line flags `upper_unpegged`,
-`lower_unpegged`, `impassable`; the Side offsets `x_offset`, `y_offset`.
+`lower_unpegged`, `impassable`, `door` (an error on a one-sided line); the
+Side offsets `x_offset`, `y_offset`.
 
 Warnings (not failures): coordinates not exactly representable as f32,
 unused vertices, sectors unreachable from the player start, two-sided lines
-with no vertical opening, `impassable` on a one-sided line.
+with no vertical opening (except door lines: a shut door has none),
+`impassable` on a one-sided line.
 """
 
 import math
@@ -348,7 +350,7 @@ def load_map(path, errors, warnings):
             lf = ln.fields
             for key in lf:
                 if key not in ("from", "to", "front", "back", "upper_unpegged", "lower_unpegged",
-                               "impassable"):
+                               "impassable", "door"):
                     raise RonError(f"line {k}: unknown field {key!r}")
             for key in ("from", "to", "front"):
                 if key not in lf:
@@ -367,7 +369,7 @@ def load_map(path, errors, warnings):
                 front=side(lf["front"], f"line {k} front"),
                 back=back,
                 **{key: boolean(lf[key], f"line {k} {key}") if key in lf else False
-                   for key in ("upper_unpegged", "lower_unpegged", "impassable")},
+                   for key in ("upper_unpegged", "lower_unpegged", "impassable", "door")},
             ))
         m.things = []
         for k, t in enumerate(f["things"]):
@@ -779,10 +781,12 @@ def check_map(path, textures=False):
     for k, ln in enumerate(m.lines):
         if ln["impassable"] and ln["back"] is None:
             warnings.append(f"line {k}: impassable on a one-sided line (it is solid anyway)")
+        if ln["door"] and ln["back"] is None:
+            err(f"line {k}: a door must be two-sided (its back sector is the door)")
 
     # Two-sided lines with no opening.
     for k, ln in enumerate(m.lines):
-        if ln["back"] is not None:
+        if ln["back"] is not None and not ln["door"]:
             f_, b_ = m.sectors[ln["front"]["sector"]], m.sectors[ln["back"]["sector"]]
             if max(f_["floor"], b_["floor"]) >= min(f_["ceiling"], b_["ceiling"]):
                 warnings.append(f"line {k}: two-sided line with no vertical opening")

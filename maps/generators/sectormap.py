@@ -260,7 +260,7 @@ class SectorMap:
             if ln["group"] != last_group:
                 out.append(f"        // {ln['group']}")
                 last_group = ln["group"]
-            flags = "".join(f", {k}: true" for k in ("upper_unpegged", "lower_unpegged", "impassable")
+            flags = "".join(f", {k}: true" for k in ("upper_unpegged", "lower_unpegged", "impassable", "door")
                             if ln.get(k))
             out.append(f"        Line(from: {ln['a']}, to: {ln['b']}, front: {side_text(ln['front'])}"
                        + (f", back: Some({side_text(ln['back'])})" if ln["back"] else "") + flags + "),")

@@ -65,6 +65,7 @@ pub enum Problem {
     DanglingVertex { line: usize, end: &'static str, vertex: i64, count: usize },
     DanglingSector { line: usize, side: &'static str, sector: i64, count: usize },
     BadOffset { line: usize, side: &'static str },
+    OneSidedDoor { line: usize },
     ZeroLength { line: usize },
     DuplicateLine { line: usize, first: usize },
     Crossing { line: usize, other: usize, at: DVec2 },
@@ -111,6 +112,9 @@ impl fmt::Display for Problem {
             }
             Problem::BadOffset { line, side } => {
                 write!(f, "line {line}: {side} side has a texture offset that is not finite")
+            }
+            Problem::OneSidedDoor { line } => {
+                write!(f, "line {line}: a door must be two-sided (its back sector is the door that opens)")
             }
             Problem::ZeroLength { line } => write!(f, "line {line}: has zero length"),
             Problem::DuplicateLine { line, first } => {

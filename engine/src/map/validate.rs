@@ -87,6 +87,9 @@ fn check_elements(src: &MapSource) -> Result<Map, Vec<Problem>> {
         let to = vertex("to", l.to, &mut problems);
         let front = check_side(i, "front", &l.front, sectors.len(), &mut problems);
         let back = l.back.as_ref().map(|b| check_side(i, "back", b, sectors.len(), &mut problems));
+        if l.door && back.is_none() {
+            problems.push(Problem::OneSidedDoor { line: i });
+        }
         let flags = LineFlags {
             upper_unpegged: l.upper_unpegged,
             lower_unpegged: l.lower_unpegged,

@@ -43,8 +43,8 @@ pub const TICRATE: u32 = 35;
 
 #[derive(Debug, thiserror::Error, PartialEq)]
 pub enum PlayError {
-    #[error("{map}: the player start ({x}, {y}) is not inside any sector")]
-    StartOutside { map: String, x: f64, y: f64 },
+    #[error("{map}: ({x}, {y}) is not inside any sector")]
+    Outside { map: String, x: f64, y: f64 },
 }
 
 /// What the view interpolates between ticks.
@@ -76,7 +76,7 @@ impl Game {
         let map = &level.compiled.map;
         let start = map.player_start().clone();
         if map.sector_at(start.pos).is_none() {
-            return Err(PlayError::StartOutside { map: map.name.clone(), x: start.pos.x, y: start.pos.y });
+            return Err(PlayError::Outside { map: map.name.clone(), x: start.pos.x, y: start.pos.y });
         }
         let blockmap = Blockmap::new(map);
         let doors = Doors::new(map);
@@ -146,6 +146,28 @@ impl Game {
 
     pub fn player(&self) -> &Player {
         &self.player
+    }
+
+    /// The player, to change by hand (tests, tools). The next tick works
+    /// from whatever it finds: speed is clamped to [`player::MAX_SPEED`],
+    /// and a body left overlapping a wall can move out of it but not further in.
+    pub fn player_mut(&mut self) -> &mut Player {
+        &mut self.player
+    }
+
+    /// Puts the player at `pos` looking along `angle`, standing still on the
+    /// floor there, as if it had started there.
+    pub fn teleport(&mut self, pos: DVec2, angle: f64) -> Result<(), PlayError> {
+        let map = &self.level.compiled.map;
+        if !(pos.is_finite() && angle.is_finite()) || map.sector_at(pos).is_none() {
+            return Err(PlayError::Outside { map: map.name.clone(), x: pos.x, y: pos.y });
+        }
+        let world = World { compiled: &self.level.compiled, blockmap: &self.blockmap };
+        let near = world.lines_near(&mut self.query, pos, RADIUS + 1.0);
+        let area = world.area(near, pos);
+        self.player = Player::new(pos, angle, area.sector, area.floor, area.ceiling);
+        self.previous = pose(&self.player);
+        Ok(())
     }
 
     /// Ticks run since the start.
