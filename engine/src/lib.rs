@@ -11,6 +11,9 @@
 //!
 //! `level` ties the first steps together: it opens either a source or a compiled
 //! map and hands back a [`CompiledMap`](bsp::CompiledMap) ready to render.
+//!
+//! `play` runs a level as a game: a fixed 35 Hz simulation (movement,
+//! collision, doors) from per-tick inputs, which demos record and replay.
 
 pub mod bsp;
 pub mod framebuffer;
