@@ -168,7 +168,8 @@ impl Doors {
             match door.state {
                 DoorState::Closed => continue,
                 DoorState::Opening => {
-                    door.position = (door.position + DOOR_SPEED).min(door.open);
+                    // Never down: a door the map left higher than its open height stays there.
+                    door.position = (door.position + DOOR_SPEED).min(door.open.max(door.position));
                     if door.position >= door.open {
                         door.state = DoorState::Open { wait: DOOR_WAIT };
                     }
