@@ -1,0 +1,136 @@
+//! `sightline play` and `sightline replay` through the binary, headless: the
+//! replay of a scripted demo is the same twice (position line and every
+//! captured PNG, byte for byte) and moves the player; the window refuses
+//! cleanly without a display, naming `sightline capture`; a bad map, a bad
+//! demo and a demo naming a missing map get their errors, never a panic.
+//! (The window itself is tested in a real one by `.ci/window-test`.)
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use sightline::play::{Demo, TickInput};
+
+fn shipped_map(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join("maps").join(name)
+}
+
+/// Runs `sightline args...` in `dir` with no display to reach.
+fn sightline(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_sightline"))
+        .args(args)
+        .current_dir(dir)
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .env_remove("WAYLAND_SOCKET")
+        .env("RUST_BACKTRACE", "0")
+        .output()
+        .expect("the binary runs")
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+/// Exit status 1 with every one of `mentions` in stderr and no panic.
+fn assert_refused(out: &Output, mentions: &[&str]) {
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "stderr: {stderr}");
+    assert!(!stderr.contains("panicked"), "panic: {stderr}");
+    for m in mentions {
+        assert!(stderr.contains(m), "`{m}` not in: {stderr}");
+    }
+}
+
+/// Two seconds forward, a second turning while strafing, one running back.
+fn scripted_walk() -> Vec<TickInput> {
+    let mut inputs = vec![TickInput { forward: 1, ..Default::default() }; 70];
+    inputs.extend([TickInput { strafe: 1, turn: 3.5, ..Default::default() }; 35]);
+    inputs.extend([TickInput { forward: -1, run: true, ..Default::default() }; 35]);
+    inputs
+}
+
+fn write_demo(dir: &Path, map: &Path, inputs: Vec<TickInput>) -> PathBuf {
+    let path = dir.join("walk.sldemo");
+    Demo { map: map.display().to_string(), inputs }.save(&path).expect("demo written");
+    path
+}
+
+/// Every file in `dir`, sorted, with its bytes.
+fn files(dir: &Path) -> Vec<(String, Vec<u8>)> {
+    let mut out: Vec<_> = std::fs::read_dir(dir)
+        .expect("read_dir")
+        .map(|e| {
+            let path = e.expect("entry").path();
+            (path.file_name().unwrap().to_string_lossy().into_owned(), std::fs::read(&path).expect("read"))
+        })
+        .collect();
+    out.sort();
+    out
+}
+
+#[test]
+fn replay_is_the_same_every_time_and_moves_the_player() {
+    let dir = tempfile::tempdir().unwrap();
+    let demo = write_demo(dir.path(), &shipped_map("pillars.ron"), scripted_walk());
+    let demo = demo.to_str().unwrap();
+    let mut runs = Vec::new();
+    for out_dir in ["a", "b"] {
+        let out = sightline(dir.path(), &["replay", demo, "--capture-every", "35", "-o", out_dir, "--size", "160x100"]);
+        assert!(out.status.success(), "stderr: {}", text(&out.stderr));
+        let last = text(&out.stdout).lines().last().unwrap_or_default().to_string();
+        runs.push((last, files(&dir.path().join(out_dir))));
+    }
+    assert_eq!(runs[0], runs[1], "two replays of one demo differ");
+    let (last, frames) = &runs[0];
+    let names: Vec<&str> = frames.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(names, ["tick-000000.png", "tick-000035.png", "tick-000070.png", "tick-000105.png", "tick-000140.png"]);
+    assert_ne!(frames[0].1, frames[4].1, "the view did not change");
+    assert!(last.starts_with("tick 140: x "), "final line: {last}");
+
+    // Without -o nothing is written and the same position is printed.
+    let out = sightline(dir.path(), &["replay", demo]);
+    assert_eq!(text(&out.stdout).lines().last(), Some(last.as_str()));
+}
+
+#[test]
+fn no_display_is_an_error_that_points_to_capture() {
+    let dir = tempfile::tempdir().unwrap();
+    let map = shipped_map("room.ron");
+    for args in [vec!["play", map.to_str().unwrap()], vec![map.to_str().unwrap()], vec![]] {
+        let out = sightline(dir.path(), &args);
+        assert_refused(&out, &["no display", "sightline capture"]);
+    }
+    // A display that is named but not there.
+    let out = Command::new(env!("CARGO_BIN_EXE_sightline"))
+        .args(["play", map.to_str().unwrap()])
+        .env("DISPLAY", ":7919")
+        .env_remove("WAYLAND_DISPLAY")
+        .output()
+        .expect("the binary runs");
+    assert_refused(&out, &["sightline capture"]);
+}
+
+#[test]
+fn bad_maps_and_demos_get_their_errors() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("bad.ron"), "Map(name: \"x\", vertices: [(0.0, 0.0)").unwrap();
+    // The map's error comes before any window is tried.
+    assert_refused(&sightline(dir.path(), &["play", "bad.ron"]), &["bad.ron"]);
+    assert_refused(&sightline(dir.path(), &["play", "missing.ron"]), &["missing.ron"]);
+
+    std::fs::write(dir.path().join("junk.sldemo"), b"not a demo").unwrap();
+    assert_refused(&sightline(dir.path(), &["replay", "junk.sldemo"]), &["junk.sldemo"]);
+    assert_refused(&sightline(dir.path(), &["play", "--demo", "junk.sldemo"]), &["junk.sldemo"]);
+    assert_refused(&sightline(dir.path(), &["replay", "none.sldemo"]), &["none.sldemo"]);
+
+    let demo = write_demo(dir.path(), Path::new("gone.ron"), scripted_walk());
+    assert_refused(&sightline(dir.path(), &["replay", demo.to_str().unwrap()]), &["gone.ron"]);
+    // ... unless told which map to use.
+    let room = shipped_map("room.ron");
+    let out = sightline(dir.path(), &["replay", demo.to_str().unwrap(), "--map", room.to_str().unwrap()]);
+    assert!(out.status.success(), "stderr: {}", text(&out.stderr));
+
+    // Recording and playing a demo at once makes no sense.
+    let out = sightline(dir.path(), &["play", "--demo", "a", "--record", "b"]);
+    assert_eq!(out.status.code(), Some(2), "stderr: {}", text(&out.stderr));
+}
