@@ -91,6 +91,8 @@ struct Seen {
     at_walls: usize,
     climbs: usize,
     falls: usize,
+    /// Sectors the centre has been in.
+    sectors: std::collections::BTreeSet<usize>,
 }
 
 /// Plays `inputs` on `game`, checking every rule at every tick.
@@ -159,6 +161,7 @@ fn play_checked(name: &str, game: &mut Game, inputs: &[TickInput]) -> Seen {
         seen.at_walls += usize::from(clearance < RADIUS + 1.0);
         seen.climbs += usize::from(z > z0);
         seen.falls += usize::from(z < z0);
+        seen.sectors.insert(game.player().sector);
         before = after;
     }
     seen
@@ -191,6 +194,18 @@ fn random_play_keeps_every_rule_on_every_shipped_map() {
         // The run did what it was for: travelled, and spent time against walls.
         assert!(seen.path > 50_000.0, "{name}: the player hardly moved ({seen:?})");
         assert!(seen.at_walls > TICKS / 50, "{name}: the player rarely met a wall ({seen:?})");
+    }
+    // doors.ron (sectors numbered as maps/generators/doors.py makes them):
+    // through both doors, into the pit and up its steps, round the 56-unit
+    // corridor; never onto the 40-unit dais or into the 48-unit crawlspace
+    // and the alcove behind it.
+    let (_, doors) = results.iter().find(|(name, _)| name == "doors.ron").expect("doors.ron is shipped");
+    for (sector, what) in [(3, "door 1"), (4, "door 2"), (6, "the pit"), (9, "the top pit step"), (12, "the corridor")]
+    {
+        assert!(doors.sectors.contains(&sector), "doors.ron: never in {what} (sector {sector}): {doors:?}");
+    }
+    for (sector, what) in [(11, "the dais"), (13, "the crawlspace"), (14, "the alcove")] {
+        assert!(!doors.sectors.contains(&sector), "doors.ron: got into {what} (sector {sector})");
     }
     let stepped = results.iter().filter(|(_, s)| s.climbs > 0 && s.falls > 0).count();
     assert!(stepped >= 3, "too few maps where the player both climbed and fell: {results:?}");
