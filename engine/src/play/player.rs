@@ -104,6 +104,14 @@ impl Player {
 
     /// Turns by the input's angle (any finite amount).
     pub fn turn(&mut self, input: &TickInput) {
+        // Only a hand-edited player (Game::player_mut) can hold a non-finite
+        // angle or velocity; never let one reach the geometry.
+        if !self.angle.is_finite() {
+            self.angle = 0.0;
+        }
+        if !self.velocity.is_finite() {
+            self.velocity = DVec2::ZERO;
+        }
         self.angle = (self.angle + f64::from(input.turn)).rem_euclid(360.0);
         // rem_euclid of a value just below zero can round up to 360 itself.
         if self.angle >= 360.0 {
