@@ -5,7 +5,10 @@
 use std::path::Path;
 
 use crate::bsp::{build, file, BuildOptions, CompileError, CompiledMap};
-use crate::map::{load::parse_map_bytes, MapError};
+use crate::grid::{self, FaceLines, Grid};
+use crate::map::load::{as_text, parse_map_bytes};
+use crate::map::validate::validate;
+use crate::map::MapError;
 use crate::materials::{MaterialError, Materials};
 
 #[derive(Debug, thiserror::Error)]
@@ -30,6 +33,27 @@ pub struct Level {
     pub materials: Materials,
     /// The sector each thing stands in (things do not move yet).
     pub thing_sectors: Vec<usize>,
+    /// What the ray-caster needs of a grid map.
+    pub grid: Option<GridLevel>,
+}
+
+/// A grid map's faces and doors, for the ray-caster.
+#[derive(Debug)]
+pub struct GridLevel {
+    pub faces: FaceLines,
+    /// How far each door (in [`FaceLines::doors`] order) has slid open, 0..=1.
+    pub open: Vec<f64>,
+    /// The distance field sphere tracing needs, built on first use.
+    pub field: std::sync::OnceLock<crate::render::rays::DistanceField>,
+}
+
+impl GridLevel {
+    /// The faces of `grid` (as [`grid::compile`] numbers them), doors closed.
+    pub fn new(grid: &Grid) -> GridLevel {
+        let faces = grid::compile(grid).1;
+        let open = vec![0.0; faces.doors.len()];
+        GridLevel { faces, open, field: std::sync::OnceLock::new() }
+    }
 }
 
 impl std::fmt::Debug for Level {
@@ -60,7 +84,13 @@ impl Level {
 
     pub fn new(compiled: CompiledMap, materials: Materials) -> Level {
         let thing_sectors = compiled.map.things.iter().map(|t| compiled.sector_at(t.pos)).collect();
-        Level { compiled, materials, thing_sectors }
+        let grid = compiled.grid.as_ref().map(GridLevel::new);
+        Level { compiled, materials, thing_sectors, grid }
+    }
+
+    /// The grid and its ray-casting data, for a grid map.
+    pub fn grid(&self) -> Option<(&Grid, &GridLevel)> {
+        self.compiled.grid.as_ref().zip(self.grid.as_ref())
     }
 }
 
@@ -84,6 +114,21 @@ pub fn open_compiled(path: &Path, options: &BuildOptions) -> Result<CompiledMap,
 pub fn level_from_bytes(bytes: &[u8], label: &str, options: &BuildOptions) -> Result<CompiledMap, LevelError> {
     if file::is_compiled(bytes) {
         return file::from_bytes(bytes).map_err(|message| LevelError::Compiled { path: label.to_string(), message });
+    }
+    let text = as_text(bytes, label)?;
+    if grid::is_grid_source(text) {
+        let grid = grid::parse_grid(text, label)?;
+        let map = validate(&grid::compile(&grid).0).map_err(|problems| LevelError::Compiled {
+            path: label.to_string(),
+            message: format!(
+                "the grid compiled to an invalid sector map (a bug): {}",
+                problems.first().map(ToString::to_string).unwrap_or_default()
+            ),
+        })?;
+        let mut compiled =
+            build(&map, options).map_err(|error| LevelError::Compile { path: label.to_string(), error })?;
+        compiled.grid = Some(grid);
+        return Ok(compiled);
     }
     let map = parse_map_bytes(bytes, label)?;
     build(&map, options).map_err(|error| LevelError::Compile { path: label.to_string(), error })

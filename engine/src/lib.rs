@@ -18,6 +18,7 @@
 pub mod bsp;
 pub mod framebuffer;
 pub mod geom;
+pub mod grid;
 pub mod level;
 pub mod map;
 pub mod materials;

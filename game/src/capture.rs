@@ -2,10 +2,10 @@
 
 use std::path::{Path, PathBuf};
 
-use anyhow::{Context, Result};
+use anyhow::{bail, Context, Result};
 use sightline::bsp::BuildOptions;
 use sightline::level::{check_not_input, open_level, write_atomic};
-use sightline::render::{render_frame, Frame, RenderOptions, View};
+use sightline::render::{render_frame, Frame, RenderOptions, Renderer, View};
 use sightline::Framebuffer;
 
 use crate::cli::CaptureArgs;
@@ -24,8 +24,11 @@ pub fn run(args: &CaptureArgs) -> Result<()> {
     .with_context(|| format!("{map_name}: bad pose"))?;
     let (width, height) = args.size;
     let mut fb = Framebuffer::new(width, height);
-    let options =
-        RenderOptions { renderer: args.renderer, shade: args.shade, count_writes: false, ..Default::default() };
+    let renderer = args.renderer.unwrap_or_else(|| Renderer::default_for(&level));
+    if !renderer.supports(&level) {
+        bail!("{map_name}: the {} renderer draws grid maps only; this is a sector map", renderer.name());
+    }
+    let options = RenderOptions { renderer, shade: args.shade, ray: args.ray, ..Default::default() };
     render_frame(&level, &view, &options, &mut Frame::new(), &mut fb);
     write_atomic(&args.output, &fb.to_png())?;
     Ok(())

@@ -4,6 +4,7 @@ use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand};
 use sightline::bsp::SplitterKind;
+use sightline::render::raycast::RayMethod;
 use sightline::render::{Renderer, Shade};
 
 #[derive(Parser)]
@@ -62,8 +63,14 @@ pub struct CaptureArgs {
     /// Frame size, WxH.
     #[arg(long, default_value = "640x400", value_parser = parse_size)]
     pub size: (usize, usize),
-    #[arg(long, default_value = "bsp", value_parser = parse_renderer)]
-    pub renderer: Renderer,
+    /// bsp, reference, or raycast (grid maps only). Default: raycast for a
+    /// grid map, bsp otherwise.
+    #[arg(long, value_parser = parse_renderer)]
+    pub renderer: Option<Renderer>,
+    /// How the ray-caster's rays find walls: dda (exact), march:K (a sample
+    /// every K map units) or sphere:EPS (sphere tracing to within EPS).
+    #[arg(long, default_value = "dda", value_parser = RayMethod::parse)]
+    pub ray: RayMethod,
     /// textured (default): textures, sky, light, fog; flat: lit flat colours;
     /// ids: each wall, floor and ceiling in a colour from its index.
     #[arg(long, default_value = "textured", value_parser = parse_shade)]

@@ -191,7 +191,7 @@ pub fn build(map: &Map, options: &BuildOptions) -> Result<CompiledMap, CompileEr
         depth,
         build_ms: started.elapsed().as_secs_f64() * 1e3,
     };
-    Ok(CompiledMap { map: map.clone(), bsp, stats })
+    Ok(CompiledMap { map: map.clone(), bsp, stats, grid: None })
 }
 
 /// Splits a set of segs by the line `a -> b`; returns front, back and the number of cuts.

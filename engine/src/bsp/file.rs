@@ -9,13 +9,14 @@ use serde::{Deserialize, Serialize};
 
 use super::check::check_invariants;
 use super::{Bsp, BuildStats, CompiledMap};
+use crate::grid::Grid;
 use crate::map::validate::validate;
 use crate::map::Map;
 
 /// First bytes of every compiled map.
 pub const MAGIC: &[u8] = b"SIGHTLINE-BSP\n";
 /// Bumped whenever the layout below changes; older files are refused.
-pub const VERSION: u8 = 4;
+pub const VERSION: u8 = 5;
 
 /// What the file holds. The map goes in its validated form: postcard is not
 /// self-describing, so it cannot carry the source form's skipped defaults.
@@ -24,6 +25,7 @@ struct Contents {
     map: Map,
     bsp: Bsp,
     stats: BuildStats,
+    grid: Option<Grid>,
 }
 
 pub fn is_compiled(bytes: &[u8]) -> bool {
@@ -31,7 +33,12 @@ pub fn is_compiled(bytes: &[u8]) -> bool {
 }
 
 pub fn to_bytes(compiled: &CompiledMap) -> Vec<u8> {
-    let contents = Contents { map: compiled.map.clone(), bsp: compiled.bsp.clone(), stats: compiled.stats.clone() };
+    let contents = Contents {
+        map: compiled.map.clone(),
+        bsp: compiled.bsp.clone(),
+        stats: compiled.stats.clone(),
+        grid: compiled.grid.clone(),
+    };
     // Serializing plain in-memory data into a Vec cannot fail.
     let payload = postcard::to_stdvec(&contents).unwrap_or_default();
     let mut bytes = MAGIC.to_vec();
@@ -61,5 +68,12 @@ pub fn from_bytes(bytes: &[u8]) -> Result<CompiledMap, String> {
     // A file can be well-formed and checksummed yet hand-made: hold its tree to
     // every promise the compiler makes (a few ms even for large maps).
     check_invariants(&map, &contents.bsp)?;
-    Ok(CompiledMap { map, bsp: contents.bsp, stats: contents.stats })
+    // A grid must be sound and be exactly the grid the map was compiled from.
+    if let Some(grid) = &contents.grid {
+        crate::grid::load::check(grid).map_err(|e| format!("its grid is invalid: {e}"))?;
+        if validate(&crate::grid::compile(grid).0).ok().as_ref() != Some(&map) {
+            return Err("its grid and its map disagree".into());
+        }
+    }
+    Ok(CompiledMap { map, bsp: contents.bsp, stats: contents.stats, grid: contents.grid })
 }

@@ -108,6 +108,8 @@ pub struct CompiledMap {
     pub map: Map,
     pub bsp: Bsp,
     pub stats: BuildStats,
+    /// The grid a grid map was compiled from (the ray-caster draws it).
+    pub grid: Option<crate::grid::Grid>,
 }
 
 impl Bsp {

@@ -23,6 +23,8 @@ pub enum MapError {
     Syntax { path: String, line: usize, col: usize, message: String },
     #[error("{path}: {}", list_problems(problems))]
     Invalid { path: String, problems: Vec<Problem> },
+    #[error("{path}: {}", list_problems(problems))]
+    InvalidGrid { path: String, problems: Vec<crate::grid::GridProblem> },
 }
 
 impl MapError {
@@ -35,7 +37,7 @@ impl MapError {
     }
 }
 
-fn list_problems(problems: &[Problem]) -> String {
+fn list_problems<P: fmt::Display>(problems: &[P]) -> String {
     const SHOWN: usize = 12;
     let mut text = match problems.len() {
         1 => String::new(),

@@ -52,6 +52,18 @@ impl Lighting {
     }
 }
 
+/// Doom's fake contrast (r_segs.c): walls running north-south one light step
+/// (16 of 256) brighter, walls running east-west one step darker, so that
+/// corners read without real lighting. Wolfenstein 3D gets the same effect
+/// from a darker copy of each wall texture for its north and south faces.
+pub fn fake_contrast(light: u8, runs_north_south: bool) -> u8 {
+    if runs_north_south {
+        light.saturating_add(16)
+    } else {
+        light.saturating_sub(16)
+    }
+}
+
 /// A colour transform: channels scaled by `scale / 256` (at most 1), then the
 /// fog colour, already weighted by its share, added (packed like a pixel).
 /// No channel can overflow: `c * scale / 256 + fog_c * share` stays within 255

@@ -11,6 +11,8 @@ pub mod light;
 pub mod occlusion;
 pub mod plan;
 pub mod planes;
+pub mod raycast;
+pub mod rays;
 pub mod reference;
 pub mod shade;
 pub mod sprites;
@@ -34,16 +36,35 @@ pub enum Renderer {
     Bsp,
     /// Brute-force f64 ray per column against every line: the oracle.
     Reference,
+    /// Grid ray-casting, one ray per column (grid maps only; other maps draw
+    /// as void).
+    Raycast,
 }
 
 impl Renderer {
-    pub const ALL: [Renderer; 2] = [Renderer::Bsp, Renderer::Reference];
+    pub const ALL: [Renderer; 3] = [Renderer::Bsp, Renderer::Reference, Renderer::Raycast];
 
     pub fn name(self) -> &'static str {
         match self {
             Renderer::Bsp => "bsp",
             Renderer::Reference => "reference",
+            Renderer::Raycast => "raycast",
         }
+    }
+
+    /// The renderer a level is drawn with by default: the ray-caster for a
+    /// grid map, the BSP renderer otherwise.
+    pub fn default_for(level: &Level) -> Renderer {
+        if level.grid().is_some() {
+            Renderer::Raycast
+        } else {
+            Renderer::Bsp
+        }
+    }
+
+    /// Whether this renderer can draw `level`.
+    pub fn supports(self, level: &Level) -> bool {
+        self != Renderer::Raycast || level.grid().is_some()
     }
 
     pub fn from_name(name: &str) -> Option<Renderer> {
@@ -61,6 +82,8 @@ pub struct RenderOptions {
     pub disabled: plan::Disabled,
     /// How textured floors and ceilings are drawn.
     pub floors: Floors,
+    /// How the ray-caster's rays find walls.
+    pub ray: raycast::RayMethod,
 }
 
 /// Textured floors and ceilings as horizontal spans (Doom's visplanes) or per
@@ -103,8 +126,12 @@ pub fn render_frame(
         let mut out = columns::ColumnWriter::new(&mut canvas, x0, w, h, counting);
         frame.begin_strip(x0, x1);
         match options.renderer {
-            Renderer::Bsp => {
-                bsp::render(level, &cam, frame, &mut out, options.shade, &lighting);
+            Renderer::Bsp | Renderer::Raycast => {
+                if options.renderer == Renderer::Bsp {
+                    bsp::render(level, &cam, frame, &mut out, options.shade, &lighting);
+                } else {
+                    raycast::render(level, &cam, frame, &mut out, options.shade, &lighting, options.ray, (x0, x1));
+                }
                 let Frame { visplanes, inv_rows, .. } = &mut *frame;
                 visplanes.draw(&mut out, &cam, &lighting, inv_rows, &level.materials.textures);
                 if plan.masked_pass() {

@@ -305,16 +305,35 @@ impl WallColumn<'_> {
         match paint {
             Paint::Solid(c) => out.fill(self.x, rows.0, rows.1, c),
             Paint::Textured { texture, top, light } => {
-                if rows.1 <= rows.0 {
-                    return;
-                }
-                let u = (self.u.floor() as i64).rem_euclid(texture.width as i64) as usize;
-                // Row y's ray is at height z + depth * slope(y) on the wall.
-                let height = self.cam.z + self.depth * self.cam.row_slope(rows.0);
-                let dv = self.depth / self.cam.focal;
-                let tint = self.lighting.tint(light, self.depth);
-                out.textured(self.x, rows, texture.column(u), top - height, dv, tint);
+                paint_textured(out, self.cam, self.lighting, self.x, self.depth, self.u, rows, texture, top, light);
             }
         }
     }
+}
+
+/// Paints rows `rows` of column `x` with texture column `u` of a wall at
+/// `depth` whose texel row 0 is at height `top`, lit by `light`.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+pub(crate) fn paint_textured(
+    out: &mut ColumnWriter,
+    cam: &Camera,
+    lighting: &Lighting,
+    x: usize,
+    depth: f64,
+    u: f64,
+    rows: (i32, i32),
+    texture: &Texture,
+    top: f64,
+    light: u8,
+) {
+    if rows.1 <= rows.0 {
+        return;
+    }
+    let u = (u.floor() as i64).rem_euclid(texture.width as i64) as usize;
+    // Row y's ray is at height z + depth * slope(y) on the wall.
+    let height = cam.z + depth * cam.row_slope(rows.0);
+    let dv = depth / cam.focal;
+    let tint = lighting.tint(light, depth);
+    out.textured(x, rows, texture.column(u), top - height, dv, tint);
 }
