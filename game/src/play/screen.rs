@@ -117,9 +117,9 @@ impl Screen {
 /// non-sRGB 8-bit format) the frame's bytes go through untouched: they are
 /// sRGB-encoded colours already, and an sRGB texture and surface would only
 /// decode them to linear and encode them back, per pixel, per frame. That
-/// round trip is most of the present's cost on a software rasterizer
-/// (lavapipe under Xvfb, median upload+present per frame: 7.3 -> 2.7 ms at
-/// 640x400, 50.6 -> 25.2 ms at 1920x1080). The one visible difference:
+/// round trip costs a software rasterizer dearly (lavapipe under Xvfb,
+/// median upload+present per frame: 3.1 -> 2.5 ms at 640x400, roughly
+/// 40-47 -> 30-42 ms at 1920x1080; see ARCHITECTURE.md). The one visible difference:
 /// non-integer scaling blends neighbouring pixels in sRGB rather than linear
 /// space, as Doom's own scalers did.
 fn build_pixels(
