@@ -6,7 +6,7 @@
 
 use std::path::{Path, PathBuf};
 
-use anyhow::{Context, Result};
+use anyhow::{bail, Context, Result};
 use sightline::bsp::BuildOptions;
 use sightline::level::{open_level, write_atomic, Level};
 use sightline::play::demo::Demo;
@@ -59,8 +59,11 @@ pub fn position_line(game: &Game) -> String {
 /// The renderer asked for, else the level's default; an error when it
 /// cannot draw the level (the ray-caster on a sector map).
 pub fn choose_renderer(asked: Option<Renderer>, level: &Level, map: &Path) -> Result<Renderer> {
-    let _ = (level, map);
-    Ok(asked.unwrap_or_default())
+    let renderer = asked.unwrap_or_else(|| Renderer::default_for(level));
+    if !renderer.supports(level) {
+        bail!("{}: the {} renderer draws grid maps only; this is a sector map", map.display(), renderer.name());
+    }
+    Ok(renderer)
 }
 
 /// The map a demo names, as given when that path exists from here, else

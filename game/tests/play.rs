@@ -130,6 +130,12 @@ fn bad_maps_and_demos_get_their_errors() {
     let out = sightline(dir.path(), &["replay", demo.to_str().unwrap(), "--map", room.to_str().unwrap()]);
     assert!(out.status.success(), "stderr: {}", text(&out.stderr));
 
+    // The ray-caster on a sector map.
+    let out = sightline(
+        dir.path(),
+        &["replay", demo.to_str().unwrap(), "--map", room.to_str().unwrap(), "--renderer", "raycast"],
+    );
+    assert_refused(&out, &["raycast", "grid"]);
     // Recording and playing a demo at once makes no sense.
     let out = sightline(dir.path(), &["play", "--demo", "a", "--record", "b"]);
     assert_eq!(out.status.code(), Some(2), "stderr: {}", text(&out.stderr));

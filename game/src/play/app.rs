@@ -157,8 +157,7 @@ impl App {
 /// The renderers that can draw `level`: all of them, but the ray-caster
 /// only on grid maps.
 fn renderers_for(level: &Level) -> Vec<Renderer> {
-    let _ = level;
-    Renderer::ALL.to_vec()
+    Renderer::ALL.into_iter().filter(|r| r.supports(level)).collect()
 }
 
 impl ApplicationHandler for App {
