@@ -23,9 +23,17 @@ fn frames_match_golden_images() {
         let views = tour(&level.map, 8, 11);
         // The start facing its own angle, then two seeded poses from the tour.
         for (i, view) in [views[0], views[8], views[9]].iter().take(POSES).enumerate() {
-            for shade in [Shade::Textured, Shade::Flat, Shade::Ids] {
-                let frame = render(&level, view, SIZE, Renderer::Bsp, shade);
-                let file = dir.join(format!("{stem}-{i}-{}.png", shade.name()));
+            // Grid maps also through the ray-caster, textured as players see them.
+            let raycast = level.grid().map(|_| (Renderer::Raycast, Shade::Textured));
+            let frames =
+                [Shade::Textured, Shade::Flat, Shade::Ids].map(|s| (Renderer::Bsp, s)).into_iter().chain(raycast);
+            for (renderer, shade) in frames {
+                let frame = render(&level, view, SIZE, renderer, shade);
+                let kind = match renderer {
+                    Renderer::Bsp => shade.name().to_string(),
+                    other => format!("{}-{}", other.name(), shade.name()),
+                };
+                let file = dir.join(format!("{stem}-{i}-{kind}.png"));
                 if bless {
                     std::fs::create_dir_all(&dir).unwrap();
                     std::fs::write(&file, frame.to_png()).unwrap();
@@ -36,7 +44,7 @@ fn frames_match_golden_images() {
                 });
                 let diff = difference(&frame, &golden);
                 if diff.pixels != 0 {
-                    let out = std::env::temp_dir().join(format!("golden-{stem}-{i}-{}.png", shade.name()));
+                    let out = std::env::temp_dir().join(format!("golden-{stem}-{i}-{kind}.png"));
                     std::fs::write(&out, frame.to_png()).unwrap();
                     failures.push(format!("{}: {} pixels differ (got {})", file.display(), diff.pixels, out.display()));
                 }

@@ -26,6 +26,10 @@ fn each_shipped_map_plans_exactly_what_it_uses() {
         ("courtyard", &["sky", "sprites", "masked", "diminishing light", "fog"]),
         ("hall", &["sprites", "masked", "diminishing light"]),
         ("doors", &["sprites", "diminishing light"]),
+        // Grid maps are evenly lit unless they say otherwise.
+        ("bunker", &["sprites"]),
+        ("gridmaze", &["sprites", "diminishing light"]),
+        ("diagonals", &[]),
     ];
     let shipped: Vec<String> =
         shipped_maps().iter().map(|p| p.file_stem().unwrap().to_string_lossy().into_owned()).collect();

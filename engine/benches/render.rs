@@ -22,7 +22,7 @@ fn frames(c: &mut Criterion) {
         group.sample_size(10).warm_up_time(Duration::from_millis(500)).measurement_time(Duration::from_secs(3));
         group.throughput(Throughput::Elements(views.len() as u64));
         for (w, h) in [(320, 200), (1920, 1080)] {
-            for renderer in Renderer::ALL {
+            for renderer in Renderer::ALL.into_iter().filter(|r| r.supports(&level)) {
                 let options = RenderOptions { renderer, shade: Shade::Flat, count_writes: false, ..Default::default() };
                 let mut fb = Framebuffer::new(w, h);
                 let mut frame = Frame::new();

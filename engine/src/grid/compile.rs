@@ -1,7 +1,8 @@
 //! Grid map -> sector map: one one-sided line per exposed cell face (so that
 //! `ids` shading colours a grid wall by its face in both renderers), and per
 //! door a thin sector of its own, closed (ceiling on the floor), bounded by
-//! the panel's two faces and the jamb pieces beside it.
+//! the panel's two faces (flagged `door`, so that play can open it) and the
+//! jamb pieces beside it.
 //!
 //! The open cells form sector 0; door `k` (in cell order) is sector `k + 1`.
 //! [`FaceLines`] records which line each face became, so the ray-caster
@@ -119,6 +120,10 @@ impl Builder {
     }
 
     fn line(&mut self, (a, b): (DVec2, DVec2), front: SideSource, back: Option<SideSource>) -> u32 {
+        self.line_with((a, b), front, back, false)
+    }
+
+    fn line_with(&mut self, (a, b): (DVec2, DVec2), front: SideSource, back: Option<SideSource>, door: bool) -> u32 {
         let (from, to) = (self.vertex(a), self.vertex(b));
         let n = self.lines.len() as u32;
         self.lines.push(LineSource {
@@ -129,7 +134,7 @@ impl Builder {
             upper_unpegged: false,
             lower_unpegged: false,
             impassable: false,
-            door: false,
+            door,
         });
         n
     }
@@ -188,9 +193,17 @@ pub fn compile(grid: &Grid) -> (MapSource, FaceLines) {
                         let (di, dj) = face.step();
                         grid.cell(i + di, j + dj).is_walkable()
                     });
-                    for (face, ends) in panel_faces(grid, i, j, axis).into_iter().chain(ends) {
+                    // The panel's two broad faces are `door` lines: using one opens the
+                    // door sector behind it, as on a sector map, and `play::doors` makes
+                    // it slide because the level has a grid. (Flagging them here rather
+                    // than finding grid doors apart keeps one path for "use", and the
+                    // compiled map alone stays playable: without its grid, its doors
+                    // rise like Doom's.) Panel ends without a jamb are not for using,
+                    // as Wolfenstein's doors are used from the front only.
+                    let broad = panel_faces(grid, i, j, axis).into_iter().map(|f| (f, true));
+                    for ((face, ends), is_door) in broad.chain(ends.map(|f| (f, false))) {
                         let front = SideSource { upper: Some(name.clone()), ..side(0) };
-                        faces.faces[index * 4 + face as usize] = b.line(ends, front, Some(side(door)));
+                        faces.faces[index * 4 + face as usize] = b.line_with(ends, front, Some(side(door)), is_door);
                     }
                 }
                 Cell::Empty => {}

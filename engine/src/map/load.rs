@@ -174,7 +174,7 @@ impl fmt::Display for Problem {
     }
 }
 
-/// Reads, parses and validates a sector map file.
+/// Reads, parses and validates a map file (a grid map reads as the sector map it compiles to).
 pub fn load_map(path: &Path) -> Result<Map, MapError> {
     let label = path.display().to_string();
     let bytes = std::fs::read(path).map_err(|error| MapError::Io { path: label.clone(), error })?;
@@ -186,7 +186,14 @@ pub fn parse_map(text: &str, label: &str) -> Result<Map, MapError> {
     parse_map_bytes(text.as_bytes(), label)
 }
 
+/// A grid map reads as the sector map it compiles to (see [`crate::grid`]).
 pub(crate) fn parse_map_bytes(bytes: &[u8], label: &str) -> Result<Map, MapError> {
+    let text = as_text(bytes, label)?;
+    if crate::grid::is_grid_source(text) {
+        let grid = crate::grid::parse_grid(text, label)?;
+        let source = crate::grid::compile(&grid).0;
+        return validate::validate(&source).map_err(|problems| MapError::Invalid { path: label.to_string(), problems });
+    }
     let source = parse_source(bytes, label)?;
     validate::validate(&source).map_err(|problems| MapError::Invalid { path: label.to_string(), problems })
 }

@@ -1,36 +1,81 @@
 //! Doors: the player uses a line flagged `door`, and the sector behind it
-//! opens, waits and closes (Doom's vertical door, `T_VerticalDoor`). Each tick
-//! the moving doors write their heights into the map, so the renderers draw
-//! them and collision feels them.
+//! opens, waits and closes. Each tick the moving doors write their state into
+//! the level, so the renderers draw them and collision feels them.
 //!
 //! The state machine (closed, opening, open and waiting, closing, reopening
 //! when the body is in the way) is shared by every kind of door; a kind only
-//! says what its position moves ([`DoorKind`]). A map without door lines has
-//! no [`Door`]s and pays nothing per tick.
+//! says what its position moves ([`DoorKind`]): a sector map's door raises its
+//! ceiling (Doom's `T_VerticalDoor`), a grid map's door slides its panel
+//! sideways (Wolfenstein's `DoorOpening` and `DoorClosing`, WL_ACT1.C). A map
+//! without door lines has no [`Door`]s and pays nothing per tick.
 
 use glam::DVec2;
 
 use super::blockmap::LineQuery;
 use super::collision::World;
 use crate::geom::{exact_side, sin_cos_degrees, Side};
+use crate::grid::Grid;
+use crate::level::{GridLevel, Level};
 use crate::map::Map;
 
 /// Units per tick a door moves (Doom's `VDOORSPEED`, 2): a 72-unit door opens
 /// in 36 ticks, about a second.
 pub const DOOR_SPEED: f64 = 2.0;
-/// Ticks a door stays open (Doom's `VDOORWAIT`, 150): about 4.3 s.
+/// Ticks a door stays open (Doom's `VDOORWAIT`, 150): about 4.3 s. Wolfenstein's
+/// `OPENTICS` is the same time: 300 of its 70 Hz tics.
 pub const DOOR_WAIT: u32 = 150;
 /// An open door stops this far under the lowest neighbouring ceiling (Doom's 4).
 pub const DOOR_LIP: f64 = 4.0;
 /// How far ahead of the body's centre the player can use a line (Doom's `USERANGE`, 64).
 pub const USE_RANGE: f64 = 64.0;
+/// The share of its width a sliding panel moves per tick: 1/32, so it opens
+/// in 32 ticks (0.91 s). Wolfenstein's panel moves `tics << 10` of its 0xffff
+/// per 70 Hz tic, 64 tics end to end: the same 0.91 s, and on a 64-unit cell
+/// the same 2 units per tick as [`DOOR_SPEED`]. 1/32 is exact in binary, so
+/// the position lands on 0 and 1 exactly.
+pub const SLIDE_SPEED: f64 = 1.0 / 32.0;
 
 /// What a door moves.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum DoorKind {
     /// A sector-map door: the ceiling of its sector rises from its floor.
-    /// (Grid maps' sliding doors will be a second kind here.)
     Ceiling,
+    /// A grid map's door: the panel slides into its jamb. The position is the
+    /// share slid open, 0..=1, written to [`GridLevel::open`] for the
+    /// ray-caster.
+    Slide(Slide),
+}
+
+/// Where a sliding door is in its grid, and what it does to its sector.
+///
+/// The sector is passable only while the door is fully open, as in
+/// Wolfenstein, where `DoorOpening` clears the tile's `actorat` only at 0xffff
+/// and `CloseDoor` sets it again as closing starts: the sector's ceiling is
+/// the grid's ceiling then, and on its floor otherwise. Raising it in step
+/// with the slide was rejected: collision would let the body through once the
+/// gap gave 56 units of headroom, which on a grid with a high ceiling is while
+/// most of the panel is still in the way. So the BSP renderers, which have no
+/// sliding panel, draw a grid door shut until it is fully open and open from
+/// then until it starts closing.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Slide {
+    /// The door's place in [`crate::grid::FaceLines::doors`] and [`GridLevel::open`].
+    pub index: usize,
+    /// The door's cell: its south-west and north-east corners.
+    pub cell: [DVec2; 2],
+    /// The sector's ceiling while the door is fully open (the grid's ceiling).
+    pub ceiling: f64,
+}
+
+impl Slide {
+    /// Does a body of radius `radius` at `pos` overlap (or touch) the door's
+    /// cell? Such a body holds the door open, as Wolfenstein's `CloseDoor`
+    /// refuses to shut on a player in the door's tile or straddling it. The
+    /// whole cell, not only the slab, so that a body stepping into the
+    /// doorway stops a closing panel before it reaches the slab.
+    pub fn holds(&self, pos: DVec2, radius: f64) -> bool {
+        false && pos.x == radius
+    }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -51,8 +96,9 @@ pub struct Door {
     pub sector: usize,
     pub kind: DoorKind,
     pub state: DoorState,
-    /// Position when shut and when open, and now (map units: for a
-    /// [`DoorKind::Ceiling`] door, the ceiling's height).
+    /// Position when shut and when open, and now: for a [`DoorKind::Ceiling`]
+    /// door the ceiling's height (map units), for a [`DoorKind::Slide`] door
+    /// the share of the panel slid away (0 shut, 1 open).
     pub closed: f64,
     pub open: f64,
     pub position: f64,
@@ -67,10 +113,12 @@ pub struct Doors {
 }
 
 impl Doors {
-    /// The doors of a sector map: one per distinct back sector of its door
-    /// lines. It opens to the lowest ceiling around it that is not itself a
-    /// door, less [`DOOR_LIP`] (Doom's P_FindLowestCeilingSurrounding).
-    pub fn new(map: &Map) -> Doors {
+    /// The doors of a level: one per distinct back sector of its door lines.
+    /// On a grid level a door sector is a grid door, and slides; otherwise it
+    /// opens to the lowest ceiling around it that is not itself a door, less
+    /// [`DOOR_LIP`] (Doom's P_FindLowestCeilingSurrounding).
+    pub fn new(level: &Level) -> Doors {
+        let map = &level.compiled.map;
         let mut by_line = Vec::new();
         let mut sectors: Vec<usize> = Vec::new();
         for (i, line) in map.lines.iter().enumerate() {
@@ -83,17 +131,28 @@ impl Doors {
         }
         let doors = sectors
             .iter()
-            .map(|&sector| {
-                let s = &map.sectors[sector];
-                let neighbours = neighbour_ceilings(map, sector, &sectors);
-                let top = neighbours.unwrap_or(s.ceiling) - DOOR_LIP;
-                Door {
+            .map(|&sector| match level.grid().and_then(|(grid, gl)| slide_of(grid, gl, sector)) {
+                Some(slide) => Door {
                     sector,
-                    kind: DoorKind::Ceiling,
+                    kind: DoorKind::Slide(slide),
                     state: DoorState::Closed,
-                    closed: s.floor,
-                    open: top.max(s.floor),
-                    position: s.ceiling,
+                    closed: 0.0,
+                    open: 1.0,
+                    // The compiled map's doors are shut, whatever `open` says.
+                    position: 0.0,
+                },
+                None => {
+                    let s = &map.sectors[sector];
+                    let neighbours = neighbour_ceilings(map, sector, &sectors);
+                    let top = neighbours.unwrap_or(s.ceiling) - DOOR_LIP;
+                    Door {
+                        sector,
+                        kind: DoorKind::Ceiling,
+                        state: DoorState::Closed,
+                        closed: s.floor,
+                        open: top.max(s.floor),
+                        position: s.ceiling,
+                    }
                 }
             })
             .collect();
@@ -159,17 +218,19 @@ impl Doors {
         None
     }
 
-    /// Moves every door one tick and writes the heights into `map`.
+    /// Moves every door one tick and writes its state into `level`.
     /// `in_the_way(door, position)` says whether the player's body would be
     /// caught by a door moving to `position`; a closing door then reopens
-    /// (Doom's doors do the same when they meet a thing).
-    pub fn tick(&mut self, map: &mut Map, mut in_the_way: impl FnMut(&Door, f64) -> bool) {
+    /// (Doom's doors do the same when they meet a thing, Wolfenstein's when
+    /// the player steps into the doorway).
+    pub fn tick(&mut self, level: &mut Level, mut in_the_way: impl FnMut(&Door, f64) -> bool) {
         for door in &mut self.doors {
+            let speed = door.speed();
             match door.state {
                 DoorState::Closed => continue,
                 DoorState::Opening => {
                     // Never down: a door the map left higher than its open height stays there.
-                    door.position = (door.position + DOOR_SPEED).min(door.open.max(door.position));
+                    door.position = (door.position + speed).min(door.open.max(door.position));
                     if door.position >= door.open {
                         door.state = DoorState::Open { wait: DOOR_WAIT };
                     }
@@ -179,7 +240,7 @@ impl Doors {
                     continue;
                 }
                 DoorState::Closing => {
-                    let next = (door.position - DOOR_SPEED).max(door.closed);
+                    let next = (door.position - speed).max(door.closed);
                     if in_the_way(door, next) {
                         door.state = DoorState::Opening;
                         continue;
@@ -190,17 +251,46 @@ impl Doors {
                     }
                 }
             }
-            door.apply(map);
+            door.apply(level);
         }
     }
 }
 
 impl Door {
-    fn apply(&self, map: &mut Map) {
+    fn speed(&self) -> f64 {
         match self.kind {
-            DoorKind::Ceiling => map.sectors[self.sector].ceiling = self.position,
+            DoorKind::Ceiling => DOOR_SPEED,
+            DoorKind::Slide(_) => SLIDE_SPEED,
         }
     }
+
+    fn apply(&self, level: &mut Level) {
+        let sector = &mut level.compiled.map.sectors[self.sector];
+        match self.kind {
+            DoorKind::Ceiling => sector.ceiling = self.position,
+            DoorKind::Slide(slide) => {
+                // Passable only when fully open (see [`Slide`]).
+                sector.ceiling = if self.position >= self.open { slide.ceiling } else { sector.floor };
+                if let Some(open) = level.grid.as_mut().and_then(|g| g.open.get_mut(slide.index)) {
+                    *open = self.position;
+                }
+            }
+        }
+    }
+}
+
+/// The sliding door whose sector is `sector`, if it is a grid door: door `k`
+/// of [`crate::grid::FaceLines::doors`] is sector `k + 1` (as `grid::compile`
+/// numbers them; checked against `door_sectors` rather than assumed).
+fn slide_of(grid: &Grid, gl: &GridLevel, sector: usize) -> Option<Slide> {
+    let index = sector.checked_sub(1)?;
+    let &cell = gl.faces.doors.get(index)?;
+    if gl.faces.door_sectors.get(cell).map(|&s| s as usize) != Some(sector) || gl.open.len() <= index {
+        return None;
+    }
+    let (i, j) = ((cell % grid.columns) as i64, (cell / grid.columns) as i64);
+    let corners = [DVec2::new(grid.x(i), grid.y(j)), DVec2::new(grid.x(i + 1), grid.y(j + 1))];
+    Some(Slide { index, cell: corners, ceiling: grid.ceiling })
 }
 
 /// The lowest ceiling of the sectors sharing a line with `sector`, leaving

@@ -11,6 +11,7 @@
 //! ```text
 //! input --turn, thrust--> velocity --collision::slide--> position
 //!       --friction, fall (step up, gravity)--> z --use--> doors --tick--> sector heights
+//!                                                                         (and grid panels)
 //! ```
 //!
 //! Modules: [`input`] (what a tick reads), [`player`] (the body's physics and
@@ -31,7 +32,7 @@ use crate::level::Level;
 use crate::render::View;
 use blockmap::{Blockmap, LineQuery};
 use collision::World;
-use doors::{Door, Doors};
+use doors::{Door, DoorKind, Doors};
 use player::{HEIGHT, RADIUS};
 
 pub use demo::{Demo, DemoError};
@@ -55,8 +56,8 @@ struct Pose {
     angle: f64,
 }
 
-/// A game in progress: the level (whose door sectors move), the player, and
-/// the tick count.
+/// A game in progress: the level (whose door sectors move, and on a grid map
+/// whose door panels slide), the player, and the tick count.
 pub struct Game {
     level: Level,
     player: Player,
@@ -79,7 +80,7 @@ impl Game {
             return Err(PlayError::Outside { map: map.name.clone(), x: start.pos.x, y: start.pos.y });
         }
         let blockmap = Blockmap::new(map);
-        let doors = Doors::new(map);
+        let doors = Doors::new(&level);
         let mut query = LineQuery::default();
         let world = World { compiled: &level.compiled, blockmap: &blockmap };
         let near = world.lines_near(&mut query, start.pos, RADIUS + 1.0);
@@ -116,13 +117,17 @@ impl Game {
         }
         let near = world.lines_near(query, player.pos, RADIUS + 1.0);
         world.sectors_touched(near, player.pos, touched);
-        let top = player.z + HEIGHT;
+        let (top, pos) = (player.z + HEIGHT, player.pos);
         let touched = &*touched;
-        doors.tick(&mut level.compiled.map, |door, position| touched.contains(&door.sector) && position < top);
+        doors.tick(level, |door, position| match &door.kind {
+            DoorKind::Ceiling => touched.contains(&door.sector) && position < top,
+            DoorKind::Slide(slide) => slide.holds(pos, RADIUS),
+        });
         self.ticks += 1;
     }
 
-    /// The level as it is now: door sectors at their current heights. Render this.
+    /// The level as it is now: door sectors at their current heights, grid
+    /// door panels slid as far as they are ([`crate::level::GridLevel::open`]). Render this.
     pub fn level(&self) -> &Level {
         &self.level
     }

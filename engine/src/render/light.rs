@@ -56,11 +56,13 @@ impl Lighting {
 /// (16 of 256) brighter, walls running east-west one step darker, so that
 /// corners read without real lighting. Wolfenstein 3D gets the same effect
 /// from a darker copy of each wall texture for its north and south faces.
-pub fn fake_contrast(light: u8, runs_north_south: bool) -> u8 {
-    if runs_north_south {
+pub fn fake_contrast(light: u8, direction: glam::DVec2) -> u8 {
+    if direction.x == 0.0 && direction.y != 0.0 {
         light.saturating_add(16)
-    } else {
+    } else if direction.y == 0.0 && direction.x != 0.0 {
         light.saturating_sub(16)
+    } else {
+        light
     }
 }
 

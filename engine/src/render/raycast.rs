@@ -418,7 +418,8 @@ fn draw_column(
             // Pegged as the compiled map pegs them: walls hang from the
             // ceiling, a door's texture stands on the floor.
             let top = if hit.door { setup.floor + texture.height as f64 } else { setup.ceiling };
-            let light = fake_contrast(setup.light, hit.face.is_x());
+            let run = if hit.face.is_x() { DVec2::Y } else { DVec2::X };
+            let light = fake_contrast(setup.light, run);
             paint_textured(out, cam, lighting, x, depth, hit.u, rows, texture, top, light);
         }
         None => out.fill(x, rows.0, rows.1, colour(shade, surface, setup.light, facing)),

@@ -255,3 +255,55 @@ pub(crate) fn sphere(
     }
     None
 }
+
+/// How a ray method compares with the exact traversal over some frames.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct RayAccuracy {
+    pub columns: u64,
+    /// Columns whose ray hit a different face than the exact one, or nothing.
+    pub wrong: u64,
+    /// Mean and largest difference in wall depth (map units) over the
+    /// columns that hit something.
+    pub mean_error: f64,
+    pub max_error: f64,
+    /// Cells or samples visited per column.
+    pub steps_per_column: f64,
+}
+
+impl RayAccuracy {
+    pub fn wrong_share(&self) -> f64 {
+        self.wrong as f64 / self.columns.max(1) as f64
+    }
+}
+
+/// Casts every column of every view with `method` and with the exact DDA and
+/// compares them (screen `width` columns; the height does not matter).
+pub fn accuracy(
+    level: &crate::level::Level,
+    views: &[super::View],
+    width: usize,
+    method: super::raycast::RayMethod,
+) -> RayAccuracy {
+    use super::raycast::{cast, RayMethod};
+    let mut a = RayAccuracy::default();
+    let (mut error_sum, mut hits, mut steps, mut exact_steps) = (0.0, 0u64, 0u64, 0u64);
+    for view in views {
+        let cam = Camera::new(view, width, 1);
+        for x in 0..width {
+            a.columns += 1;
+            let exact = cast(level, &cam, x, RayMethod::Dda, &mut exact_steps);
+            let approx = cast(level, &cam, x, method, &mut steps);
+            if let (Some(e), Some(c)) = (exact, approx) {
+                let error = (e.depth - c.depth).abs();
+                error_sum += error;
+                a.max_error = a.max_error.max(error);
+                hits += 1;
+            }
+            let same = matches!((exact, approx), (Some(e), Some(c)) if e.line.is_some() && e.line == c.line);
+            a.wrong += u64::from(!same);
+        }
+    }
+    a.mean_error = error_sum / hits.max(1) as f64;
+    a.steps_per_column = steps as f64 / a.columns.max(1) as f64;
+    a
+}

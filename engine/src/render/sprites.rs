@@ -139,7 +139,10 @@ impl MaskedPass<'_> {
         let near = line.side(m.back_side).sector;
         let light = map.sectors[near].light;
         let paint = match self.shade {
-            Shade::Textured => Texels::Tinted(self.lighting.tint(light, m.depth)),
+            Shade::Textured => {
+                let (from, to) = map.line_points(line);
+                Texels::Tinted(self.lighting.tint(super::light::fake_contrast(light, to - from), m.depth))
+            }
             _ => Texels::Solid(colour(self.shade, Surface::Wall { line: m.line }, light, 1.0)),
         };
         let u = (m.u.floor() as i64).rem_euclid(texture.width as i64) as usize;

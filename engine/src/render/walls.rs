@@ -10,7 +10,7 @@ use glam::DVec2;
 
 use super::columns::ColumnWriter;
 use super::frame::Frame;
-use super::light::Lighting;
+use super::light::{fake_contrast, Lighting};
 use super::plan::Plan;
 use super::planes::{paint_plane, PlanePaint};
 use super::shade::{ceiling_at_line, colour, plane_surfaces, wall_facing, Shade, Surface};
@@ -154,7 +154,7 @@ fn seg_columns<'a>(
         1.0,
     )));
     let (middle, upper, lower) = if textured {
-        wall_paints(level, line, side, &textures, front, back, wall)
+        wall_paints(level, line, side, &textures, (front, back), (wall, seg.v2 - seg.v1))
     } else {
         (Paint::Solid(wall), Paint::Solid(wall), Paint::Solid(wall))
     };
@@ -192,11 +192,10 @@ fn wall_paints<'a>(
     line: &Line,
     side: &Side,
     textures: &SideTextures,
-    front: &Sector,
-    back: Option<&Sector>,
-    flat: u32,
+    (front, back): (&Sector, Option<&Sector>),
+    (flat, direction): (u32, DVec2),
 ) -> (Paint<'a>, Paint<'a>, Paint<'a>) {
-    let light = front.light;
+    let light = fake_contrast(front.light, direction);
     let paint = |id: Option<TextureId>, top: &dyn Fn(&Texture) -> f64| match id {
         Some(id) => {
             let texture = level.materials.textures.get(id);
