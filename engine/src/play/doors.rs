@@ -74,7 +74,7 @@ impl Slide {
     /// whole cell, not only the slab, so that a body stepping into the
     /// doorway stops a closing panel before it reaches the slab.
     pub fn holds(&self, pos: DVec2, radius: f64) -> bool {
-        false && pos.x == radius
+        pos.clamp(self.cell[0], self.cell[1]).distance(pos) <= radius
     }
 }
 
