@@ -22,7 +22,7 @@ use winit::window::WindowId;
 use super::automap::Automap;
 use super::clock::TickClock;
 use super::hud::Hud;
-use super::input::Action;
+use super::input::{window_action, Action};
 use super::screen::{Screen, ScreenOptions};
 use super::screenshot;
 use super::session::Session;
@@ -201,7 +201,7 @@ impl ApplicationHandler for App {
                 let action = match self.session.controls() {
                     Some(controls) => controls.key(code, down, event.repeat),
                     // A demo drives the player; the window keys still work.
-                    None => super::input::Controls::default().key(code, down, event.repeat),
+                    None => window_action(code, down, event.repeat),
                 };
                 match action {
                     Some(action) => self.act(event_loop, action),

@@ -51,7 +51,12 @@ fn binding(key: KeyCode) -> Option<Move> {
     })
 }
 
-fn action(key: KeyCode) -> Option<Action> {
+/// The window action of a key event: fresh presses only (auto-repeat does
+/// not repeat actions).
+pub fn window_action(key: KeyCode, down: bool, repeat: bool) -> Option<Action> {
+    if !down || repeat {
+        return None;
+    }
     Some(match key {
         KeyCode::KeyQ => Action::Quit,
         KeyCode::Escape => Action::ReleaseCursor,
@@ -95,7 +100,7 @@ impl Controls {
             }
             return None;
         }
-        (down && !repeat).then(|| action(key)).flatten()
+        window_action(key, down, repeat)
     }
 
     /// Mouse motion while the cursor is grabbed.

@@ -81,13 +81,18 @@ pub fn run(args: &PlayArgs) -> Result<()> {
     }
     let error = app.error.take();
     let mut session = app.into_session();
-    if let (Some(path), Some(inputs)) = (&args.record, session.take_recording()) {
-        save_recording(path, &map, inputs)?;
-    }
+    // A window that never opened leaves nothing worth a demo file.
+    let recording = session.take_recording().filter(|inputs| error.is_none() || !inputs.is_empty());
+    let saved = match (&args.record, recording) {
+        (Some(path), Some(inputs)) => save_recording(path, &map, inputs),
+        _ => Ok(()),
+    };
+    // What stopped the window matters more than the demo that could not be saved.
     if let Some(e) = error {
         return Err(e);
     }
-    ran.map_err(|e| anyhow!("the window's event loop failed: {e}"))
+    ran.map_err(|e| anyhow!("the window's event loop failed: {e}"))?;
+    saved
 }
 
 /// Without a display server winit fails with a terse message; say what to
