@@ -2,7 +2,8 @@
 //! every shipped map (the player stays in the map, never passes a wall, and
 //! the step and headroom rules hold at every tick); directed cases (a wall
 //! from every angle at full speed, sliding, the 24/25 step, the 56/55
-//! passage, a fall, doors); demos that replay bit for bit; corrupt demo files.
+//! passage, a fall, doors, a grid map's sliding doors); demos that replay bit
+//! for bit; corrupt demo files.
 
 use glam::DVec2;
 use rand::rngs::ChaCha8Rng;
@@ -12,12 +13,13 @@ use sightline::geom::{segment_contact, Contact};
 use sightline::level::Level;
 use sightline::map::{parse_map, Map};
 use sightline::play::demo::{DemoError, MAGIC, VERSION};
-use sightline::play::doors::DoorState;
+use sightline::play::doors::{DoorKind, DoorState, DOOR_WAIT};
 use sightline::play::player::{HEIGHT, MAX_SPEED, MAX_STEP, RADIUS};
 use sightline::play::{Demo, Game, TickInput, TICRATE};
-use sightline::render::{render_frame, Frame, RenderOptions};
+use sightline::render::shade::{ids_colour, Surface};
+use sightline::render::{render_frame, Frame, RenderOptions, Renderer, Shade};
 use sightline::Framebuffer;
-use sightline_tests::{load, map_path, shipped_maps};
+use sightline_tests::{load, map_path, render, shipped_maps};
 
 fn level_from(text: &str) -> Level {
     let map = parse_map(text, "test.ron").unwrap_or_else(|e| panic!("{e}"));
@@ -206,6 +208,12 @@ fn random_play_keeps_every_rule_on_every_shipped_map() {
     }
     for (sector, what) in [(11, "the dais"), (13, "the crawlspace"), (14, "the alcove")] {
         assert!(!doors.sectors.contains(&sector), "doors.ron: got into {what} (sector {sector})");
+    }
+    // bunker.ron: through every sliding door (door k is sector k + 1), so the
+    // rules above held while grid doors opened and shut around the player.
+    let (_, bunker) = results.iter().find(|(name, _)| name == "bunker.ron").expect("bunker.ron is shipped");
+    for sector in 1..=8 {
+        assert!(bunker.sectors.contains(&sector), "bunker.ron: never through door sector {sector}: {bunker:?}");
     }
     let stepped = results.iter().filter(|(_, s)| s.climbs > 0 && s.falls > 0).count();
     assert!(stepped >= 3, "too few maps where the player both climbed and fell: {results:?}");
@@ -471,6 +479,176 @@ fn the_view_interpolates_between_ticks() {
     assert!((b.angle - 100.0).abs() < 1e-9 && (a.angle - 90.0).abs() < 1e-9 && (mid.angle - 95.0).abs() < 1e-9);
     assert_eq!(b.pos, game.player().pos);
     assert_eq!(TICRATE, 35);
+}
+
+/// bunker.ron's door east of the start room: cell (7, 11) (text row 3,
+/// column 7), jambs north and south, its panel running north-south through
+/// x = 480 (faces at 476 and 484); the open cells (6, 11) west and (8, 11)
+/// east of it. Returns where it is in `game.doors()` and in `GridLevel::open`.
+fn bunker_door(game: &Game) -> (usize, usize) {
+    let centre = DVec2::new(480.0, 736.0);
+    let found = game.doors().iter().enumerate().find_map(|(d, door)| match door.kind {
+        DoorKind::Slide(s) if s.cell[0].cmplt(centre).all() && centre.cmplt(s.cell[1]).all() => Some((d, s.index)),
+        _ => None,
+    });
+    found.expect("bunker.ron: no sliding door in cell (7, 11)")
+}
+
+fn slid(game: &Game, k: usize) -> f64 {
+    game.level().grid.as_ref().expect("a grid level").open[k]
+}
+
+/// The door's sector: ceiling minus floor (0 shut, the grid's 64 passable).
+fn door_gap(game: &Game, d: usize) -> f64 {
+    let s = &game.level().map.sectors[game.doors()[d].sector];
+    s.ceiling - s.floor
+}
+
+/// Columns of an `ids` frame showing `colour` anywhere.
+fn columns_showing(fb: &Framebuffer, colour: u32) -> Vec<usize> {
+    (0..fb.width).filter(|&x| (0..fb.height).any(|y| fb.get(x, y) == colour)).collect()
+}
+
+const WEST_OF_THE_BUNKER_DOOR: DVec2 = DVec2::new(416.0, 736.0);
+
+#[test]
+fn a_grid_door_slides_open_when_used_and_the_ray_caster_draws_it_sliding() {
+    let mut game = Game::new(load(&map_path("bunker.ron"))).unwrap_or_else(|e| panic!("{e}"));
+    let (grid, gl) = game.level().grid().expect("bunker.ron is a grid map");
+    // Every grid door is a sliding door, door k its sector k + 1.
+    assert_eq!(game.doors().len(), gl.faces.doors.len());
+    assert!(game.doors().len() >= 7, "bunker.ron has {} doors", game.doors().len());
+    for door in game.doors() {
+        let DoorKind::Slide(s) = door.kind else { panic!("sector {}: not a sliding door", door.sector) };
+        assert_eq!(door.sector, s.index + 1);
+        assert_eq!(s.ceiling, grid.ceiling);
+    }
+    let (d, k) = bunker_door(&game);
+    let panel = gl.faces.line(gl.faces.doors[k], sightline::grid::Face::West) as usize;
+    let panel_colour = ids_colour(Surface::Wall { line: panel });
+    // Shut: the body stops at its face.
+    game.teleport(WEST_OF_THE_BUNKER_DOOR, 0.0).unwrap();
+    let (x, _) = run_east(&mut game, 30);
+    assert!(x <= 476.0 - RADIUS + 1e-6, "walked through a shut door: x {x}");
+    game.teleport(WEST_OF_THE_BUNKER_DOOR, 0.0).unwrap();
+    let view = game.view(1.0);
+    let frame = |game: &Game, renderer| render(game.level(), &view, (160, 100), renderer, Shade::Ids);
+    let (shut, shut_bsp) = (frame(&game, Renderer::Raycast), frame(&game, Renderer::Bsp));
+    let door_columns = columns_showing(&shut, panel_colour);
+    assert!(door_columns.len() > 60, "the panel fills only columns {door_columns:?}");
+
+    // Used from 60 units away, it slides 1/32 of its width a tick, from the
+    // use tick on.
+    game.tick(&TickInput { use_door: true, ..IDLE });
+    assert_eq!((game.doors()[d].state, slid(&game, k)), (DoorState::Opening, 1.0 / 32.0));
+    for _ in 1..16 {
+        game.tick(&IDLE);
+    }
+    assert_eq!(slid(&game, k), 0.5);
+    assert_eq!(door_gap(&game, d), 0.0, "passable while half open");
+    // Half open: the ray-caster sees through part of the doorway, and only there.
+    let half = frame(&game, Renderer::Raycast);
+    let changed: Vec<usize> =
+        (0..half.width).filter(|&x| (0..half.height).any(|y| half.get(x, y) != shut.get(x, y))).collect();
+    assert!(changed.len() > 20, "half open, only columns {changed:?} changed");
+    assert!(changed.iter().all(|x| door_columns.contains(x)), "columns {changed:?} changed, door {door_columns:?}");
+    let still = columns_showing(&half, panel_colour);
+    assert!(!still.is_empty() && still.len() < door_columns.len(), "half the panel: columns {still:?}");
+
+    // Fully open after 32 ticks (0.91 s): passable, and no panel drawn.
+    let mut ticks = 16;
+    while game.doors()[d].state == DoorState::Opening {
+        game.tick(&IDLE);
+        ticks += 1;
+        assert!(ticks < 100, "never finished opening");
+    }
+    assert_eq!((slid(&game, k), ticks, door_gap(&game, d)), (1.0, 32, 64.0));
+    assert!(columns_showing(&frame(&game, Renderer::Raycast), panel_colour).is_empty());
+    // The BSP renderer draws it as a raised Doom door: open, so it sees past it too.
+    assert!(frame(&game, Renderer::Bsp).pixels != shut_bsp.pixels, "the BSP frame still shows the door shut");
+
+    // Walk through into the cell east of the door.
+    let (x, _) = run_east(&mut game, 20);
+    assert!(x > 512.0 + RADIUS, "did not pass the open door: x {x}");
+    ticks += 20;
+    // It waits DOOR_WAIT ticks from when it finished opening, then slides shut
+    // in 32 more, shutting its sector as it starts.
+    while ticks < 32 + DOOR_WAIT as usize {
+        game.tick(&IDLE);
+        ticks += 1;
+        assert_eq!((slid(&game, k), door_gap(&game, d)), (1.0, 64.0), "tick {ticks}: closed early");
+    }
+    assert_eq!(game.doors()[d].state, DoorState::Closing);
+    game.tick(&IDLE);
+    assert_eq!((slid(&game, k), door_gap(&game, d)), (31.0 / 32.0, 0.0));
+    for _ in 1..32 {
+        game.tick(&IDLE);
+    }
+    assert_eq!((game.doors()[d].state, slid(&game, k)), (DoorState::Closed, 0.0));
+    assert!(frame(&game, Renderer::Raycast).pixels == shut.pixels, "shut again, but drawn differently");
+    // Shut again: no way back west.
+    game.tick(&TickInput { forward: 1, run: true, turn: 180.0, ..IDLE });
+    for _ in 0..30 {
+        game.tick(&TickInput { forward: 1, run: true, ..IDLE });
+    }
+    assert!(game.player().pos.x >= 484.0 + RADIUS - 1e-6, "walked back through the shut door");
+    // From the east, the other face opens it.
+    game.tick(&TickInput { use_door: true, ..IDLE });
+    assert_eq!(game.doors()[d].state, DoorState::Opening);
+}
+
+#[test]
+fn a_grid_door_never_closes_on_the_player() {
+    let mut game = Game::new(load(&map_path("bunker.ron"))).unwrap_or_else(|e| panic!("{e}"));
+    let (d, k) = bunker_door(&game);
+    game.teleport(WEST_OF_THE_BUNKER_DOOR, 0.0).unwrap();
+    game.tick(&TickInput { use_door: true, ..IDLE });
+    for _ in 0..40 {
+        game.tick(&IDLE);
+    }
+    // Walk into the doorway, onto the slab, and stop there.
+    while game.player().pos.x < 472.0 {
+        game.tick(&TickInput { forward: 1, ..IDLE });
+    }
+    game.player_mut().velocity = DVec2::ZERO;
+    for _ in 0..30 {
+        game.tick(&IDLE);
+    }
+    let x = game.player().pos.x;
+    assert!(x > 476.0 - RADIUS && x < 484.0 + RADIUS, "not in the doorway: x {x}");
+    let mut tried = 0;
+    for tick in 0..1000 {
+        game.tick(&IDLE);
+        assert_eq!((slid(&game, k), door_gap(&game, d)), (1.0, 64.0), "tick {tick}: the door moved on the player");
+        tried += usize::from(game.doors()[d].state == DoorState::Closing);
+    }
+    assert!(tried >= 5, "the door tried to close only {tried} times in 1000 ticks");
+
+    // Back out of the cell (its west edge is x = 448) and let it start closing...
+    game.teleport(DVec2::new(428.0, 736.0), 0.0).unwrap();
+    while slid(&game, k) == 1.0 {
+        game.tick(&IDLE);
+    }
+    assert_eq!(door_gap(&game, d), 0.0, "still passable while closing");
+    // ...then step into the cell: it reopens, never shuts.
+    let mut least = slid(&game, k);
+    for _ in 0..3 {
+        game.tick(&TickInput { forward: 1, run: true, ..IDLE });
+        least = least.min(slid(&game, k));
+    }
+    assert!(game.player().pos.x > 448.0 - RADIUS, "did not reach the cell: {:?}", game.player().pos);
+    for _ in 0..100 {
+        game.tick(&IDLE);
+        least = least.min(slid(&game, k));
+    }
+    assert!(least > 0.8, "the panel came down to {least} with the player in its cell");
+    assert_eq!((slid(&game, k), door_gap(&game, d)), (1.0, 64.0), "did not reopen");
+    // Once the player has gone, it closes.
+    game.teleport(DVec2::new(352.0, 736.0), 0.0).unwrap();
+    for _ in 0..DOOR_WAIT + 40 {
+        game.tick(&IDLE);
+    }
+    assert_eq!((game.doors()[d].state, slid(&game, k), door_gap(&game, d)), (DoorState::Closed, 0.0, 0.0));
 }
 
 /// Every tick's pose, bit for bit.

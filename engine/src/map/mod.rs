@@ -59,7 +59,8 @@ pub struct LineFlags {
     pub upper_unpegged: bool,
     pub lower_unpegged: bool,
     pub impassable: bool,
-    /// Opens the back sector's ceiling when the player uses it (two-sided only).
+    /// Opens the back sector when the player uses it (two-sided only): raises its
+    /// ceiling, or on a grid map slides the door's panel.
     pub door: bool,
 }
 

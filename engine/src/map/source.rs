@@ -61,7 +61,8 @@ pub struct LineSource {
     /// Blocks movement even when two-sided (a fence, a window).
     #[serde(default, skip_serializing_if = "is_false")]
     pub impassable: bool,
-    /// A door: using this line opens its back sector's ceiling (see `play::doors`).
+    /// A door: using this line opens its back sector: raises its ceiling, or on a
+    /// grid map slides its panel (see `play::doors`).
     #[serde(default, skip_serializing_if = "is_false")]
     pub door: bool,
 }
