@@ -6,8 +6,7 @@ use std::path::Path;
 
 use crate::bsp::{build, file, BuildOptions, CompileError, CompiledMap};
 use crate::grid::{self, FaceLines, Grid};
-use crate::map::load::{as_text, parse_map_bytes};
-use crate::map::validate::validate;
+use crate::map::load::parse_any_map;
 use crate::map::MapError;
 use crate::materials::{MaterialError, Materials};
 
@@ -48,6 +47,12 @@ pub struct GridLevel {
 }
 
 impl GridLevel {
+    /// How far the door in cell `cell` has slid open, 0..=1 (0 for a cell with no door).
+    pub fn open_share(&self, cell: usize) -> f64 {
+        let door = self.faces.door_sectors[cell] as usize;
+        self.open.get(door.wrapping_sub(1)).copied().unwrap_or(0.0).clamp(0.0, 1.0)
+    }
+
     /// The faces of `grid` (as [`grid::compile`] numbers them), doors closed.
     pub fn new(grid: &Grid) -> GridLevel {
         let faces = grid::compile(grid).1;
@@ -115,23 +120,10 @@ pub fn level_from_bytes(bytes: &[u8], label: &str, options: &BuildOptions) -> Re
     if file::is_compiled(bytes) {
         return file::from_bytes(bytes).map_err(|message| LevelError::Compiled { path: label.to_string(), message });
     }
-    let text = as_text(bytes, label)?;
-    if grid::is_grid_source(text) {
-        let grid = grid::parse_grid(text, label)?;
-        let map = validate(&grid::compile(&grid).0).map_err(|problems| LevelError::Compiled {
-            path: label.to_string(),
-            message: format!(
-                "the grid compiled to an invalid sector map (a bug): {}",
-                problems.first().map(ToString::to_string).unwrap_or_default()
-            ),
-        })?;
-        let mut compiled =
-            build(&map, options).map_err(|error| LevelError::Compile { path: label.to_string(), error })?;
-        compiled.grid = Some(grid);
-        return Ok(compiled);
-    }
-    let map = parse_map_bytes(bytes, label)?;
-    build(&map, options).map_err(|error| LevelError::Compile { path: label.to_string(), error })
+    let (map, grid) = parse_any_map(bytes, label)?;
+    let mut compiled = build(&map, options).map_err(|error| LevelError::Compile { path: label.to_string(), error })?;
+    compiled.grid = grid;
+    Ok(compiled)
 }
 
 /// Writes `bytes` to `path` atomically: a temporary file beside it, then a

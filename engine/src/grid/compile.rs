@@ -51,6 +51,17 @@ pub fn face_ends(grid: &Grid, i: i64, j: i64, face: Face) -> (DVec2, DVec2) {
     }
 }
 
+/// How far `p` (on the face's line) lies along a face that starts at
+/// `from`: the texture column, as the compiled line measures it.
+pub fn along_face(face: Face, from: DVec2, p: DVec2) -> f64 {
+    match face {
+        Face::North => from.x - p.x,
+        Face::East => p.y - from.y,
+        Face::South => p.x - from.x,
+        Face::West => from.y - p.y,
+    }
+}
+
 /// The door whose jamb this face is (the face looks into a door cell whose
 /// panel ends against it), with its cell.
 pub fn jamb_of(grid: &Grid, i: i64, j: i64, face: Face) -> Option<(i64, i64, Axis)> {

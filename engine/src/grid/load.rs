@@ -274,15 +274,19 @@ fn settle_doors(grid: &mut Grid, problems: &mut Vec<GridProblem>) {
     // Two panels meeting end to end would share their end lines.
     for j in 0..grid.rows as i64 {
         for i in 0..grid.columns as i64 {
-            let side_by_side = match grid.cell(i, j) {
-                Cell::Door { axis: Axis::X, .. } => matches!(grid.cell(i + 1, j), Cell::Door { axis: Axis::X, .. }),
-                Cell::Door { axis: Axis::Y, .. } => matches!(grid.cell(i, j + 1), Cell::Door { axis: Axis::Y, .. }),
-                _ => false,
-            };
-            if side_by_side {
+            if door_beside(grid, i, j) {
                 problems.push(GridProblem::DoorsSideBySide { row: grid.rows - 1 - j as usize, column: i as usize });
             }
         }
+    }
+}
+
+/// Does the door in cell `(i, j)` have another door next along its panel?
+fn door_beside(grid: &Grid, i: i64, j: i64) -> bool {
+    match grid.cell(i, j) {
+        Cell::Door { axis: Axis::X, .. } => matches!(grid.cell(i + 1, j), Cell::Door { axis: Axis::X, .. }),
+        Cell::Door { axis: Axis::Y, .. } => matches!(grid.cell(i, j + 1), Cell::Door { axis: Axis::Y, .. }),
+        _ => false,
     }
 }
 
@@ -318,14 +322,8 @@ pub fn check(grid: &Grid) -> Result<(), String> {
                 Cell::Wall { texture } | Cell::Door { texture, .. } if usize::from(texture) >= grid.textures.len() => {
                     return Err(format!("cell ({i}, {j}) names texture {texture}, which does not exist"));
                 }
-                Cell::Door { axis, .. } => {
-                    let next = match axis {
-                        Axis::X => grid.cell(i + 1, j),
-                        Axis::Y => grid.cell(i, j + 1),
-                    };
-                    if axis != door_axis(grid, i, j) || matches!(next, Cell::Door { axis: a, .. } if a == axis) {
-                        return Err(format!("door ({i}, {j}) has the wrong axis or a door beside it"));
-                    }
+                Cell::Door { axis, .. } if axis != door_axis(grid, i, j) || door_beside(grid, i, j) => {
+                    return Err(format!("door ({i}, {j}) has the wrong axis or a door beside it"));
                 }
                 _ => {}
             }

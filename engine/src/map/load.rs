@@ -188,14 +188,21 @@ pub fn parse_map(text: &str, label: &str) -> Result<Map, MapError> {
 
 /// A grid map reads as the sector map it compiles to (see [`crate::grid`]).
 pub(crate) fn parse_map_bytes(bytes: &[u8], label: &str) -> Result<Map, MapError> {
+    parse_any_map(bytes, label).map(|(map, _)| map)
+}
+
+/// Parses and validates either kind of map text: a sector map, or a grid map
+/// with the sector map it compiles to.
+pub(crate) fn parse_any_map(bytes: &[u8], label: &str) -> Result<(Map, Option<crate::grid::Grid>), MapError> {
     let text = as_text(bytes, label)?;
+    let invalid = |problems| MapError::Invalid { path: label.to_string(), problems };
     if crate::grid::is_grid_source(text) {
         let grid = crate::grid::parse_grid(text, label)?;
-        let source = crate::grid::compile(&grid).0;
-        return validate::validate(&source).map_err(|problems| MapError::Invalid { path: label.to_string(), problems });
+        let map = validate::validate(&crate::grid::compile(&grid).0).map_err(invalid)?;
+        return Ok((map, Some(grid)));
     }
     let source = parse_source(bytes, label)?;
-    validate::validate(&source).map_err(|problems| MapError::Invalid { path: label.to_string(), problems })
+    Ok((validate::validate(&source).map_err(invalid)?, None))
 }
 
 /// Checks that `bytes` are non-empty text and returns them as `&str`.

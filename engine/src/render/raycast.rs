@@ -30,7 +30,7 @@ use super::shade::{colour, Shade, Surface, VOID};
 use super::view::{Camera, NEAR};
 use super::visplanes::PlaneKey;
 use super::walls::paint_textured;
-use crate::grid::compile::{face_ends, jamb_points, panel_ends, NO_LINE};
+use crate::grid::compile::{along_face, face_ends, jamb_points, panel_ends, NO_LINE};
 use crate::grid::{Axis, Cell, Face, Grid};
 use crate::level::{GridLevel, Level};
 use crate::texture::TextureId;
@@ -167,17 +167,7 @@ fn dda(grid: &Grid, gl: &GridLevel, cam: &Camera, x: usize, t: f64, steps: &mut 
 
 /// The hit on `face` of the wall cell `(i, j)`.
 fn wall_hit(grid: &Grid, gl: &GridLevel, cam: &Camera, x: usize, d: DVec2, (i, j): (i64, i64), face: Face) -> RayHit {
-    let eye = cam.eye;
-    let (from, _) = face_ends(grid, i, j, face);
-    // Wolfenstein's perpendicular distance: no fish-eye.
-    let depth = if face.is_x() { (from.x - eye.x) / d.x } else { (from.y - eye.y) / d.y };
-    let hit = eye + d * depth;
-    let u = match face {
-        Face::North => from.x - hit.x,
-        Face::East => hit.y - from.y,
-        Face::South => hit.x - from.x,
-        Face::West => from.y - hit.y,
-    };
+    let (depth, u) = face_hit(cam, d, face, face_ends(grid, i, j, face).0);
     let cell = grid.index(i, j);
     let mut line = gl.faces.line(cell, face);
     if let Some(points) = jamb_points(grid, i, j, face) {
@@ -252,8 +242,7 @@ fn door_hit(
     let depth = (plane - eye_across) / d_across;
     let hit = cam.eye + d * depth;
     // The panel slides towards lower coordinates; `slide` of it is gone.
-    let door = gl.faces.door_sectors[cell] as usize;
-    let slide = gl.open.get(door.wrapping_sub(1)).copied().unwrap_or(0.0).clamp(0.0, 1.0) * grid.cell_size;
+    let slide = gl.open_share(cell) * grid.cell_size;
     let (along, low) = match axis {
         Axis::X => (hit.x, grid.x(i)),
         Axis::Y => (hit.y, grid.y(j)),
@@ -304,19 +293,19 @@ fn through_end(grid: &Grid, cam: &Camera, x: usize, d: DVec2, (i, j): (i64, i64)
 
 /// The hit on the end face of a door panel (a door with no wall beside it).
 fn end_hit(grid: &Grid, gl: &GridLevel, cam: &Camera, d: DVec2, (i, j): (i64, i64), face: Face, cell: usize) -> RayHit {
-    let (from, _) = panel_ends(grid, i, j, if face.is_x() { Axis::X } else { Axis::Y })
-        [usize::from(matches!(face, Face::East | Face::North))]
-    .1;
-    let depth = if face.is_x() { (from.x - cam.eye.x) / d.x } else { (from.y - cam.eye.y) / d.y };
-    let hit = cam.eye + d * depth;
-    let u = match face {
-        Face::North => from.x - hit.x,
-        Face::East => hit.y - from.y,
-        Face::South => hit.x - from.x,
-        Face::West => from.y - hit.y,
-    };
+    let axis = if face.is_x() { Axis::X } else { Axis::Y };
+    let (from, _) = panel_ends(grid, i, j, axis)[usize::from(matches!(face, Face::East | Face::North))].1;
+    let (depth, u) = face_hit(cam, d, face, from);
     let line = gl.faces.line(cell, face);
     RayHit { line: (line != NO_LINE).then_some(line as usize), cell, face, depth, u, door: true }
+}
+
+/// Where ray `d` meets the line of `face` that starts at `from`: its
+/// perpendicular distance (Wolfenstein's, no fish-eye) and how far along the
+/// face it is.
+fn face_hit(cam: &Camera, d: DVec2, face: Face, from: DVec2) -> (f64, f64) {
+    let depth = if face.is_x() { (from.x - cam.eye.x) / d.x } else { (from.y - cam.eye.y) / d.y };
+    (depth, along_face(face, from, cam.eye + d * depth))
 }
 
 /// What a frame's columns share: the planes' paints and the sector's light.

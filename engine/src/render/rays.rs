@@ -15,7 +15,7 @@ use glam::DVec2;
 
 use super::raycast::RayHit;
 use super::view::Camera;
-use crate::grid::compile::{jamb_points, NO_LINE};
+use crate::grid::compile::{along_face, face_ends, jamb_points, NO_LINE};
 use crate::grid::{Axis, Cell, Face, Grid};
 use crate::level::GridLevel;
 
@@ -38,8 +38,7 @@ fn solid_box(grid: &Grid, gl: &GridLevel, i: i64, j: i64) -> Option<[DVec2; 2]> 
         Cell::Wall { .. } => Some([DVec2::new(x0, y0), DVec2::new(x1, y1)]),
         Cell::Door { axis, .. } => {
             let [lo, hi] = grid.door_slab(i, j, axis);
-            let door = gl.faces.door_sectors[grid.index(i, j)] as usize;
-            let open = gl.open.get(door.wrapping_sub(1)).copied().unwrap_or(0.0).clamp(0.0, 1.0);
+            let open = gl.open_share(grid.index(i, j));
             let slide = open * grid.cell_size;
             if open >= 1.0 {
                 return None;
@@ -68,13 +67,7 @@ fn box_distance(b: &[DVec2; 2], p: DVec2) -> f64 {
 fn report(grid: &Grid, gl: &GridLevel, (i, j): (i64, i64), face: Face, p: DVec2, depth: f64) -> RayHit {
     let cell = grid.index(i, j);
     let door = matches!(grid.cell(i, j), Cell::Door { .. });
-    let (x0, x1, y0, y1) = (grid.x(i), grid.x(i + 1), grid.y(j), grid.y(j + 1));
-    let u = match face {
-        Face::North => x1 - p.x,
-        Face::East => p.y - y0,
-        Face::South => p.x - x0,
-        Face::West => y1 - p.y,
-    };
+    let u = along_face(face, face_ends(grid, i, j, face).0, p);
     let mut line = gl.faces.line(cell, face);
     if let (false, Some(points)) = (door || line == NO_LINE, jamb_points(grid, i, j, face)) {
         // Pieces of a jamb, chosen by where along the face the point is.
