@@ -294,11 +294,13 @@ fn one_sector_map(rings: &[&[(f64, f64)]]) -> sightline::Map {
             light: 160,
             floor_texture: None,
             ceiling_texture: None,
+            tag: 0,
         }],
         lines: Vec::new(),
         things: vec![ThingSource { kind: sightline::map::PLAYER_START.into(), x: -128.0, y: 0.0, angle: 0.0 }],
         diminishing_light: true,
         fog: None,
+        sky: None,
     };
     for ring in rings {
         let first = source.vertices.len();
@@ -313,6 +315,7 @@ fn one_sector_map(rings: &[&[(f64, f64)]]) -> sightline::Map {
                 lower_unpegged: false,
                 impassable: false,
                 door: false,
+                trigger: None,
             });
         }
     }

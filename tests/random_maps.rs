@@ -278,7 +278,7 @@ fn height(r: &mut ChaCha8Rng, lo: f64, hi: f64, shared: &[f64]) -> f64 {
 }
 
 fn sector(floor: f64, ceiling: f64, light: i64) -> SectorSource {
-    SectorSource { floor, ceiling, light, floor_texture: None, ceiling_texture: None }
+    SectorSource { floor, ceiling, light, floor_texture: None, ceiling_texture: None, tag: 0 }
 }
 
 fn pillar_sector(r: &mut ChaCha8Rng, kind: PillarKind, room: &SectorSource) -> SectorSource {
@@ -399,6 +399,7 @@ pub fn generate(spec: &MapSpec) -> Generated {
                 lower_unpegged: false,
                 impassable: false,
                 door: false,
+                trigger: None,
             });
         }
     };
@@ -424,6 +425,7 @@ pub fn generate(spec: &MapSpec) -> Generated {
         things: vec![ThingSource { kind: PLAYER_START.into(), x: start.x, y: start.y, angle: start_angle }],
         diminishing_light: true,
         fog: None,
+        sky: None,
     };
     let map = validate(&source).unwrap_or_else(|problems| {
         panic!("generator bug: invalid map {problems:?}\nspec {spec:?}\n{}", source.to_ron())

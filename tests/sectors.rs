@@ -27,6 +27,7 @@ fn room(points: &[(f64, f64)], light: i64, wall: &str, things: Vec<ThingSource>)
             light,
             floor_texture: Some("FLOOR".into()),
             ceiling_texture: Some("CEIL".into()),
+            tag: 0,
         }],
         lines: (0..n)
             .map(|i| LineSource {
@@ -38,11 +39,13 @@ fn room(points: &[(f64, f64)], light: i64, wall: &str, things: Vec<ThingSource>)
                 lower_unpegged: false,
                 impassable: false,
                 door: false,
+                trigger: None,
             })
             .collect(),
         things,
         diminishing_light: false,
         fog: None,
+        sky: None,
     }
 }
 

@@ -26,6 +26,7 @@ pub mod play;
 pub mod render;
 pub mod texture;
 pub mod tour;
+pub mod wad;
 
 pub use bsp::CompiledMap;
 pub use framebuffer::Framebuffer;

@@ -112,7 +112,11 @@ impl Materials {
             };
             sprites.push(sprite);
         }
-        let sky = if uses_sky { Some(get(SKY, TextureKind::Wall, "the sky".into())?) } else { None };
+        let sky = match (&map.sky, uses_sky) {
+            (_, false) => None,
+            (Some(name), true) => Some(get(name, TextureKind::Wall, format!("the sky ({name})"))?),
+            (None, true) => Some(get(SKY, TextureKind::Wall, "the sky".into())?),
+        };
         let masked =
             sides.iter().zip(&map.lines).any(|(s, l)| l.back.is_some() && s.iter().any(|s| s.middle.is_some()));
         Ok(Materials { sides, sectors, sprites, sky, masked, ..m })

@@ -32,6 +32,25 @@ pub enum Command {
     Play(PlayArgs),
     /// Replay a demo headless and deterministically; optionally capture frames.
     Replay(ReplayArgs),
+    /// Import maps from a Doom WAD as RON maps, with their art as PNGs.
+    Import(ImportArgs),
+}
+
+#[derive(Args)]
+pub struct ImportArgs {
+    /// The WAD file (an IWAD such as freedoom1.wad, or a PWAD with its own art).
+    pub wad: PathBuf,
+    /// The map to import (E1M4, MAP07), or `all`.
+    #[arg(long)]
+    pub map: String,
+    /// The directory to write `<map>.ron` and the `textures/`, `flats/` and
+    /// `sprites/` folders into.
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// Also compile each map before writing it, to catch any map the
+    /// compiler would refuse.
+    #[arg(long)]
+    pub check: bool,
 }
 
 #[derive(Args)]

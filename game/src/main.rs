@@ -5,6 +5,7 @@
 mod capture;
 mod cli;
 mod compile;
+mod import;
 mod play;
 mod replay;
 
@@ -19,6 +20,7 @@ fn main() -> ExitCode {
         Some(cli::Command::Capture(args)) => capture::run(&args),
         Some(cli::Command::Play(args)) => play::run(&args),
         Some(cli::Command::Replay(args)) => replay::run(&args),
+        Some(cli::Command::Import(args)) => import::run(&args),
         None => play::run(&cli.play),
     };
     match result {

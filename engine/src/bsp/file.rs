@@ -17,8 +17,9 @@ use crate::map::Map;
 pub const MAGIC: &[u8] = b"SIGHTLINE-BSP\n";
 /// Bumped whenever the layout below changes; older files are refused.
 /// (6: a grid door's panel faces are `door` lines; a version 5 file of a grid
-/// map would otherwise fail as "its grid and its map disagree".)
-pub const VERSION: u8 = 6;
+/// map would otherwise fail as "its grid and its map disagree". 7: sector
+/// tags, line triggers and the map's sky texture.)
+pub const VERSION: u8 = 7;
 
 /// What the file holds. The map goes in its validated form: postcard is not
 /// self-describing, so it cannot carry the source form's skipped defaults.

@@ -146,6 +146,7 @@ impl Builder {
             lower_unpegged: false,
             impassable: false,
             door,
+            trigger: None,
         });
         n
     }
@@ -227,6 +228,7 @@ pub fn compile(grid: &Grid) -> (MapSource, FaceLines) {
         light: i64::from(grid.light),
         floor_texture: grid.floor_texture.clone(),
         ceiling_texture: grid.ceiling_texture.clone(),
+        tag: 0,
     };
     let mut sectors = vec![sector(grid.ceiling)];
     // A closed door: its ceiling rests on its floor.
@@ -243,6 +245,7 @@ pub fn compile(grid: &Grid) -> (MapSource, FaceLines) {
             .collect(),
         diminishing_light: grid.diminishing_light,
         fog: grid.fog.map(|f| FogSource { colour: (f.colour[0], f.colour[1], f.colour[2]), distance: f.distance }),
+        sky: None,
     };
     (source, faces)
 }

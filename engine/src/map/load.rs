@@ -58,29 +58,107 @@ fn list_problems<P: fmt::Display>(problems: &[P]) -> String {
 /// One thing wrong with a map, naming the element it concerns.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Problem {
-    Missing { what: &'static str },
-    BadVertex { vertex: usize, x: f64, y: f64 },
-    SharedPosition { vertex: usize, first: usize },
-    BadHeight { sector: usize, which: &'static str, value: f64 },
-    FloorAboveCeiling { sector: usize, floor: f64, ceiling: f64 },
-    BadLight { sector: usize, light: i64 },
-    DanglingVertex { line: usize, end: &'static str, vertex: i64, count: usize },
-    DanglingSector { line: usize, side: &'static str, sector: i64, count: usize },
-    BadOffset { line: usize, side: &'static str },
-    OneSidedDoor { line: usize },
-    ZeroLength { line: usize },
-    DuplicateLine { line: usize, first: usize },
-    Crossing { line: usize, other: usize, at: DVec2 },
-    Touching { line: usize, other: usize, at: DVec2 },
-    Overlap { line: usize, other: usize },
-    Unclosed { sector: usize, vertex: usize, into: usize, out_of: usize },
-    InsideOut { sector: usize },
-    SideMismatch { line: usize, side: &'static str, expected: Option<usize>, found: Vec<usize> },
-    NoLines { sector: usize },
-    BadThing { thing: usize },
+    Missing {
+        what: &'static str,
+    },
+    BadVertex {
+        vertex: usize,
+        x: f64,
+        y: f64,
+    },
+    SharedPosition {
+        vertex: usize,
+        first: usize,
+    },
+    BadHeight {
+        sector: usize,
+        which: &'static str,
+        value: f64,
+    },
+    FloorAboveCeiling {
+        sector: usize,
+        floor: f64,
+        ceiling: f64,
+    },
+    BadLight {
+        sector: usize,
+        light: i64,
+    },
+    /// A sector's tag or a trigger's tag outside 0..=65535.
+    BadTag {
+        element: String,
+        tag: i64,
+    },
+    DanglingVertex {
+        line: usize,
+        end: &'static str,
+        vertex: i64,
+        count: usize,
+    },
+    DanglingSector {
+        line: usize,
+        side: &'static str,
+        sector: i64,
+        count: usize,
+    },
+    BadOffset {
+        line: usize,
+        side: &'static str,
+    },
+    OneSidedDoor {
+        line: usize,
+    },
+    ZeroLength {
+        line: usize,
+    },
+    DuplicateLine {
+        line: usize,
+        first: usize,
+    },
+    Crossing {
+        line: usize,
+        other: usize,
+        at: DVec2,
+    },
+    Touching {
+        line: usize,
+        other: usize,
+        at: DVec2,
+    },
+    Overlap {
+        line: usize,
+        other: usize,
+    },
+    Unclosed {
+        sector: usize,
+        vertex: usize,
+        into: usize,
+        out_of: usize,
+    },
+    InsideOut {
+        sector: usize,
+    },
+    SideMismatch {
+        line: usize,
+        side: &'static str,
+        expected: Option<usize>,
+        found: Vec<usize>,
+    },
+    NoLines {
+        sector: usize,
+    },
+    BadThing {
+        thing: usize,
+    },
     NoPlayerStart,
-    BadFog { distance: f64 },
-    StartOutside { thing: usize, x: f64, y: f64 },
+    BadFog {
+        distance: f64,
+    },
+    StartOutside {
+        thing: usize,
+        x: f64,
+        y: f64,
+    },
 }
 
 /// Numbers print with `{:?}`, which is exact and short (`1e300`, not 301 digits).
@@ -106,6 +184,7 @@ impl fmt::Display for Problem {
             Problem::BadLight { sector, light } => {
                 write!(f, "sector {sector}: light {light} is outside 0..=255")
             }
+            Problem::BadTag { element, tag } => write!(f, "{element}: tag {tag} is outside 0..=65535"),
             Problem::DanglingVertex { line, end, vertex, count } => {
                 write!(f, "line {line}: `{end}` refers to vertex {vertex}, but the vertices are numbered 0..{count}")
             }

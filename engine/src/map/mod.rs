@@ -25,6 +25,8 @@ pub struct Map {
     pub player_start: usize,
     pub diminishing_light: bool,
     pub fog: Option<Fog>,
+    /// The texture sky surfaces show; `None` is the built-in [`SKY`].
+    pub sky: Option<String>,
 }
 
 /// Distance fog: full `colour` at `distance` map units, fading in linearly.
@@ -41,6 +43,8 @@ pub struct Sector {
     pub light: u8,
     pub floor_texture: Option<String>,
     pub ceiling_texture: Option<String>,
+    /// What [`Trigger`]s name to act on this sector; 0 is none.
+    pub tag: u16,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -52,6 +56,7 @@ pub struct Line {
     /// `None` for a solid one-sided wall.
     pub back: Option<Side>,
     pub flags: LineFlags,
+    pub trigger: Option<Trigger>,
 }
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -62,6 +67,25 @@ pub struct LineFlags {
     /// Opens the back sector when the player uses it (two-sided only): raises its
     /// ceiling, or on a grid map slides the door's panel.
     pub door: bool,
+}
+
+/// A line that opens the doors of every sector tagged `tag` (Doom's tagged
+/// door specials: walk-over and switch, once or repeatable).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Trigger {
+    pub tag: u16,
+    pub on: TriggerOn,
+    pub once: bool,
+    pub stay_open: bool,
+}
+
+/// What sets a [`Trigger`] off.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum TriggerOn {
+    /// The player uses the line, from its front (a switch).
+    Use,
+    /// The player's centre crosses the line, either way.
+    Walk,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -165,7 +189,7 @@ fn on_segment(a: DVec2, b: DVec2, p: DVec2) -> bool {
 impl Map {
     /// The RON source form of this map (what the compiled file stores).
     pub fn to_source(&self) -> source::MapSource {
-        use source::{LineSource, MapSource, SectorSource, SideSource, ThingSource};
+        use source::{LineSource, MapSource, SectorSource, SideSource, ThingSource, TriggerSource};
         let side = |s: &Side| SideSource {
             sector: s.sector as i64,
             upper: s.upper.clone(),
@@ -186,6 +210,7 @@ impl Map {
                     light: i64::from(s.light),
                     floor_texture: s.floor_texture.clone(),
                     ceiling_texture: s.ceiling_texture.clone(),
+                    tag: i64::from(s.tag),
                 })
                 .collect(),
             lines: self
@@ -200,6 +225,12 @@ impl Map {
                     lower_unpegged: l.flags.lower_unpegged,
                     impassable: l.flags.impassable,
                     door: l.flags.door,
+                    trigger: l.trigger.map(|t| TriggerSource {
+                        tag: i64::from(t.tag),
+                        on: t.on,
+                        once: t.once,
+                        stay_open: t.stay_open,
+                    }),
                 })
                 .collect(),
             things: self
@@ -211,6 +242,7 @@ impl Map {
             fog: self
                 .fog
                 .map(|f| source::FogSource { colour: (f.colour[0], f.colour[1], f.colour[2]), distance: f.distance }),
+            sky: self.sky.clone(),
         }
     }
 }

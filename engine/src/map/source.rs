@@ -23,6 +23,9 @@ pub struct MapSource {
     /// Fade to a colour with distance (default none).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub fog: Option<FogSource>,
+    /// The texture `"SKY"` ceilings and floors show (default: the built-in SKY).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sky: Option<String>,
 }
 
 /// `fog: Some(Fog(colour: (r, g, b), distance: D))`: at distance D map units
@@ -44,6 +47,9 @@ pub struct SectorSource {
     pub floor_texture: Option<String>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub ceiling_texture: Option<String>,
+    /// A number that line triggers name to act on this sector (0: none).
+    #[serde(default, skip_serializing_if = "is_zero_i64")]
+    pub tag: i64,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -65,6 +71,23 @@ pub struct LineSource {
     /// grid map slides its panel (see `play::doors`).
     #[serde(default, skip_serializing_if = "is_false")]
     pub door: bool,
+    /// Opens every sector tagged `tag` when the player uses or walks over it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub trigger: Option<TriggerSource>,
+}
+
+/// `trigger: Trigger(tag: 3, on: Walk, once: true, stay_open: false)`.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(rename = "Trigger", deny_unknown_fields)]
+pub struct TriggerSource {
+    pub tag: i64,
+    pub on: crate::map::TriggerOn,
+    /// Works only the first time (Doom's W1 and S1); else every time (WR, SR).
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub once: bool,
+    /// The doors stay open; else they close again after the wait.
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub stay_open: bool,
 }
 
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]
@@ -107,6 +130,10 @@ fn is_false(b: &bool) -> bool {
 
 fn is_zero(x: &f64) -> bool {
     *x == 0.0
+}
+
+fn is_zero_i64(x: &i64) -> bool {
+    *x == 0
 }
 
 impl MapSource {

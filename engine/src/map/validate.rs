@@ -11,7 +11,7 @@ use glam::DVec2;
 
 use super::load::Problem;
 use super::source::{MapSource, SideSource};
-use super::{Fog, Line, LineFlags, Map, Sector, Side, Thing, PLAYER_START};
+use super::{Fog, Line, LineFlags, Map, Sector, Side, Thing, Trigger, PLAYER_START};
 use crate::geom::{cross, segment_contact, Contact, MAX_COORD};
 
 /// At most this many crossing problems are listed; a map with more is a mess
@@ -65,12 +65,17 @@ fn check_elements(src: &MapSource) -> Result<Map, Vec<Problem>> {
         if !(0..=255).contains(&s.light) {
             problems.push(Problem::BadLight { sector: i, light: s.light });
         }
+        let tag = u16::try_from(s.tag).unwrap_or_else(|_| {
+            problems.push(Problem::BadTag { element: format!("sector {i}"), tag: s.tag });
+            0
+        });
         Sector {
             floor: s.floor,
             ceiling: s.ceiling,
             light: s.light.clamp(0, 255) as u8,
             floor_texture: s.floor_texture.clone(),
             ceiling_texture: s.ceiling_texture.clone(),
+            tag,
         }
     });
     let sectors: Vec<Sector> = sectors.collect();
@@ -96,7 +101,16 @@ fn check_elements(src: &MapSource) -> Result<Map, Vec<Problem>> {
             impassable: l.impassable,
             door: l.door,
         };
-        lines.push(Line { from, to, front, back, flags });
+        let trigger = l.trigger.as_ref().map(|t| Trigger {
+            tag: u16::try_from(t.tag).unwrap_or_else(|_| {
+                problems.push(Problem::BadTag { element: format!("line {i} trigger"), tag: t.tag });
+                0
+            }),
+            on: t.on,
+            once: t.once,
+            stay_open: t.stay_open,
+        });
+        lines.push(Line { from, to, front, back, flags, trigger });
     }
     let things =
         src.things.iter().map(|t| Thing { kind: t.kind.clone(), pos: DVec2::new(t.x, t.y), angle: t.angle }).collect();
@@ -121,6 +135,7 @@ fn check_elements(src: &MapSource) -> Result<Map, Vec<Problem>> {
         player_start: 0,
         diminishing_light: src.diminishing_light,
         fog,
+        sky: src.sky.clone(),
     })
 }
 

@@ -24,6 +24,11 @@ pub enum PlanePaint<'a> {
     Sky(&'a Texture),
 }
 
+/// Sky texels across a full turn, Doom's: its 256-wide skies repeat four
+/// times around (ANGLETOSKYSHIFT maps 360 degrees to 1024 columns). The
+/// built-in sky is 1024 wide, once around.
+const SKY_TEXELS_AROUND: f64 = 1024.0;
+
 /// Where the horizon sits in the sky texture, as a share of its height from
 /// the top: the lowest fifth (hills) hangs below the horizon.
 const SKY_HORIZON: f64 = 0.8;
@@ -64,7 +69,7 @@ pub fn paint_plane(
         }
         PlanePaint::Sky(texture) => {
             let (w, h) = (texture.width as f64, texture.height as f64);
-            let texels_per_radian = w / TAU;
+            let texels_per_radian = SKY_TEXELS_AROUND / TAU;
             let angle = cam.angle_radians() - t.atan();
             let u = (-angle * texels_per_radian).rem_euclid(w) as usize;
             let column = texture.column(u.min(texture.width - 1));

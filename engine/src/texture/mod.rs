@@ -94,9 +94,11 @@ impl Texture {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct TextureId(pub u32);
 
-/// What a name is looked up as: wall and flat textures live in
-/// `<map dir>/textures/`, sprites in `<map dir>/sprites/`; the procedural
-/// textures are separate per kind.
+/// What a name is looked up as: wall textures live in `<map dir>/textures/`,
+/// flats in `<map dir>/flats/` or else `textures/` (Doom keeps flats and
+/// walls in two namespaces, so an imported WAD may use one name for both),
+/// sprites in `<map dir>/sprites/`; the procedural textures are separate per
+/// kind.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum TextureKind {
     Wall,
@@ -105,11 +107,13 @@ pub enum TextureKind {
 }
 
 impl TextureKind {
-    /// The folder under a map directory that holds this kind's PNGs.
-    pub fn subdir(self) -> &'static str {
+    /// The folders under a map directory that hold this kind's PNGs, in the
+    /// order they are searched.
+    pub fn subdirs(self) -> &'static [&'static str] {
         match self {
-            TextureKind::Wall | TextureKind::Flat => "textures",
-            TextureKind::Sprite => "sprites",
+            TextureKind::Wall => &["textures"],
+            TextureKind::Flat => &["flats", "textures"],
+            TextureKind::Sprite => &["sprites"],
         }
     }
 }
@@ -254,8 +258,7 @@ fn find(name: &str, kind: TextureKind, dirs: &[PathBuf]) -> Result<Source, Textu
     }
     let lower = name.to_lowercase();
     let mut tried = Vec::new();
-    for dir in dirs {
-        let folder = dir.join(kind.subdir());
+    for folder in dirs.iter().flat_map(|dir| kind.subdirs().iter().map(|sub| dir.join(sub))) {
         for file_stem in [name, lower.as_str()] {
             let path = folder.join(format!("{file_stem}.png"));
             if tried.contains(&path) {
