@@ -467,6 +467,107 @@ fn a_door_line_must_be_two_sided() {
     assert!(err.contains("door.ron") && err.contains("line 0") && err.contains("door"), "{err}");
 }
 
+/// Rooms A (x 0..128) and B (128..256), a door sector tagged 5 (256..272)
+/// and room C beyond it. The A|B line (line 3, two-sided) carries TRIGGER;
+/// the west wall (line 0) carries SWITCH. No line is a manual door.
+const TAGGED_MAP: &str = r#"Map(name: "tagged",
+    vertices: [(0, 0), (0, 256), (128, 256), (256, 256), (256, 160), (256, 96), (256, 0), (128, 0),
+               (272, 160), (272, 96), (272, 256), (528, 256), (528, 0), (272, 0)],
+    sectors: [Sector(floor: 0, ceiling: 128, light: 160), Sector(floor: 0, ceiling: 128, light: 160),
+              Sector(floor: 0, ceiling: 0, light: 160, tag: 5), Sector(floor: 0, ceiling: 160, light: 160)],
+    lines: [
+        Line(from: 0, to: 1, front: Side(sector: 0) SWITCH), Line(from: 1, to: 2, front: Side(sector: 0)),
+        Line(from: 7, to: 0, front: Side(sector: 0)),
+        Line(from: 2, to: 7, front: Side(sector: 0), back: Side(sector: 1) TRIGGER),
+        Line(from: 2, to: 3, front: Side(sector: 1)), Line(from: 3, to: 4, front: Side(sector: 1)),
+        Line(from: 4, to: 5, front: Side(sector: 1), back: Side(sector: 2)),
+        Line(from: 5, to: 6, front: Side(sector: 1)), Line(from: 6, to: 7, front: Side(sector: 1)),
+        Line(from: 4, to: 8, front: Side(sector: 2)), Line(from: 9, to: 5, front: Side(sector: 2)),
+        Line(from: 8, to: 10, front: Side(sector: 3)), Line(from: 10, to: 11, front: Side(sector: 3)),
+        Line(from: 11, to: 12, front: Side(sector: 3)), Line(from: 12, to: 13, front: Side(sector: 3)),
+        Line(from: 13, to: 9, front: Side(sector: 3)),
+        Line(from: 9, to: 8, front: Side(sector: 3), back: Side(sector: 2)),
+    ],
+    things: [Thing(kind: "player_start", x: 64, y: 128, angle: 0)])"#;
+
+fn tagged(trigger: &str, switch: &str) -> Game {
+    game_from(&TAGGED_MAP.replace(" TRIGGER", trigger).replace(" SWITCH", switch))
+}
+
+const RUN_WEST: TickInput = TickInput { forward: -1, ..RUN_EAST };
+
+/// Ticks `input` until `done(x)` holds for the player's x (at most 200 ticks).
+fn run_until(game: &mut Game, input: &TickInput, done: impl Fn(f64) -> bool) {
+    for _ in 0..200 {
+        if done(game.player().pos.x) {
+            return;
+        }
+        game.tick(input);
+    }
+    panic!("never got there: x {}", game.player().pos.x);
+}
+
+#[test]
+fn walking_over_a_trigger_opens_the_tagged_door_once() {
+    let mut game = tagged(", trigger: Trigger(tag: 5, on: Walk, once: true)", "");
+    assert_eq!(game.doors().len(), 1);
+    assert_eq!(game.doors()[0].state, DoorState::Closed);
+    // Crossing x = 128 sets it off; the door opens, waits and closes.
+    run_east(&mut game, 12);
+    assert!(game.player().pos.x > 128.0);
+    assert_eq!(game.doors()[0].state, DoorState::Opening);
+    for _ in 0..300 {
+        game.tick(&IDLE);
+    }
+    assert_eq!((game.doors()[0].state, game.level().map.sectors[2].ceiling), (DoorState::Closed, 0.0));
+    // Once only: back over the line and across again does nothing.
+    run_until(&mut game, &RUN_WEST, |x| x < 100.0);
+    run_until(&mut game, &RUN_EAST, |x| x > 160.0);
+    assert_eq!(game.doors()[0].state, DoorState::Closed);
+}
+
+#[test]
+fn a_repeatable_trigger_works_from_either_side_and_a_stay_open_door_stays() {
+    let mut game = tagged(", trigger: Trigger(tag: 5, on: Walk, stay_open: true)", "");
+    run_east(&mut game, 8);
+    for _ in 0..400 {
+        game.tick(&IDLE);
+    }
+    assert_eq!(
+        (game.doors()[0].state, game.level().map.sectors[2].ceiling),
+        (DoorState::Open { wait: DOOR_WAIT }, 124.0)
+    );
+    let mut game = tagged(", trigger: Trigger(tag: 5, on: Walk)", "");
+    run_east(&mut game, 8);
+    for _ in 0..300 {
+        game.tick(&IDLE);
+    }
+    assert_eq!(game.doors()[0].state, DoorState::Closed);
+    run_until(&mut game, &RUN_WEST, |x| x < 100.0);
+    assert_eq!(game.doors()[0].state, DoorState::Opening, "crossing back sets it off again");
+}
+
+#[test]
+fn a_switch_opens_the_tagged_door_and_a_walk_trigger_ignores_use() {
+    let mut game = tagged("", ", trigger: Trigger(tag: 5, on: Use, once: true, stay_open: true)");
+    // Face the west wall (the switch) from 32 units: use it.
+    game.teleport(DVec2::new(32.0, 128.0), 180.0).unwrap();
+    game.tick(&TickInput { use_door: true, ..IDLE });
+    assert_eq!(game.doors()[0].state, DoorState::Opening);
+    // A walk trigger is not a switch.
+    let mut game = tagged(", trigger: Trigger(tag: 5, on: Walk)", "");
+    game.teleport(DVec2::new(100.0, 128.0), 0.0).unwrap();
+    game.tick(&TickInput { use_door: true, ..IDLE });
+    assert_eq!(game.doors()[0].state, DoorState::Closed);
+}
+
+#[test]
+fn a_trigger_tag_out_of_range_is_refused() {
+    let text = TAGGED_MAP.replace(" TRIGGER", ", trigger: Trigger(tag: 70000, on: Walk)").replace(" SWITCH", "");
+    let err = parse_map(&text, "t.ron").unwrap_err().to_string();
+    assert!(err.contains("line 3 trigger: tag 70000 is outside 0..=65535"), "{err}");
+}
+
 #[test]
 fn the_view_interpolates_between_ticks() {
     let mut game = game_from(&two_rooms((0.0, 128.0), (0.0, 128.0)));

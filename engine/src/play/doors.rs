@@ -16,7 +16,7 @@ use super::collision::World;
 use crate::geom::{exact_side, sin_cos_degrees, Side};
 use crate::grid::Grid;
 use crate::level::{GridLevel, Level};
-use crate::map::Map;
+use crate::map::{Map, Trigger, TriggerOn};
 
 /// Units per tick a door moves (Doom's `VDOORSPEED`, 2): a 72-unit door opens
 /// in 36 ticks, about a second.
@@ -102,6 +102,8 @@ pub struct Door {
     pub closed: f64,
     pub open: f64,
     pub position: f64,
+    /// Once open, stays open (the last opener was a "stay open" trigger).
+    pub stays_open: bool,
 }
 
 /// Every door of a map, and which line opens which.
@@ -110,6 +112,18 @@ pub struct Doors {
     pub doors: Vec<Door>,
     /// `(line, door)`, sorted by line.
     by_line: Vec<(usize, usize)>,
+    /// Lines with a [`Trigger`], sorted by line.
+    triggers: Vec<TriggerLine>,
+}
+
+/// A trigger line and the doors of the sectors its tag names.
+#[derive(Clone, Debug)]
+struct TriggerLine {
+    line: usize,
+    trigger: Trigger,
+    doors: Vec<usize>,
+    /// A once-only trigger that has gone off.
+    spent: bool,
 }
 
 impl Doors {
@@ -121,13 +135,24 @@ impl Doors {
         let map = &level.compiled.map;
         let mut by_line = Vec::new();
         let mut sectors: Vec<usize> = Vec::new();
+        let mut door_of = |sector: usize| {
+            sectors.iter().position(|&s| s == sector).unwrap_or_else(|| {
+                sectors.push(sector);
+                sectors.len() - 1
+            })
+        };
         for (i, line) in map.lines.iter().enumerate() {
             let Some(back) = line.back.as_ref().filter(|_| line.flags.door) else { continue };
-            let door = sectors.iter().position(|&s| s == back.sector).unwrap_or_else(|| {
-                sectors.push(back.sector);
-                sectors.len() - 1
-            });
-            by_line.push((i, door));
+            by_line.push((i, door_of(back.sector)));
+        }
+        // Tagged doors: every sector a trigger's tag names (Doom's
+        // P_FindSectorFromLineTag; tag 0 names none).
+        let mut triggers = Vec::new();
+        for (i, line) in map.lines.iter().enumerate() {
+            let Some(trigger) = line.trigger.filter(|t| t.tag != 0) else { continue };
+            let doors =
+                (0..map.sectors.len()).filter(|&s| map.sectors[s].tag == trigger.tag).map(&mut door_of).collect();
+            triggers.push(TriggerLine { line: i, trigger, doors, spent: false });
         }
         let doors = sectors
             .iter()
@@ -140,6 +165,7 @@ impl Doors {
                     open: 1.0,
                     // The compiled map's doors are shut, whatever `open` says.
                     position: 0.0,
+                    stays_open: false,
                 },
                 None => {
                     let s = &map.sectors[sector];
@@ -152,11 +178,12 @@ impl Doors {
                         closed: s.floor,
                         open: top.max(s.floor),
                         position: s.ceiling,
+                        stays_open: false,
                     }
                 }
             })
             .collect();
-        Doors { doors, by_line }
+        Doors { doors, by_line, triggers }
     }
 
     pub fn is_empty(&self) -> bool {
@@ -174,7 +201,12 @@ impl Doors {
     /// report use for every tick the key is held, and holding it should not
     /// make the door flap.
     pub fn activate(&mut self, door: usize) {
+        self.open_door(door, false);
+    }
+
+    fn open_door(&mut self, door: usize, stay: bool) {
         let d = &mut self.doors[door];
+        d.stays_open = stay;
         d.state = match d.state {
             DoorState::Open { .. } => DoorState::Open { wait: DOOR_WAIT },
             _ => DoorState::Opening,
@@ -209,6 +241,11 @@ impl Doors {
                     return Some(door);
                 }
             }
+            if exact_side(a, b, pos) == Side::Front {
+                if let Some(first) = self.fire(i, TriggerOn::Use) {
+                    return Some(first);
+                }
+            }
             let Some(back) = &line.back else { return None };
             let (f, k) = (&map.sectors[line.front.sector], &map.sectors[back.sector]);
             if f.ceiling.min(k.ceiling) <= f.floor.max(k.floor) {
@@ -216,6 +253,46 @@ impl Doors {
             }
         }
         None
+    }
+
+    /// Sets off the trigger on `line` if it goes off `on` that and is not
+    /// spent; returns the first door it opened.
+    fn fire(&mut self, line: usize, on: TriggerOn) -> Option<usize> {
+        let k = self.triggers.binary_search_by_key(&line, |t| t.line).ok()?;
+        let t = &mut self.triggers[k];
+        if t.trigger.on != on || t.spent {
+            return None;
+        }
+        t.spent = t.trigger.once;
+        let (doors, stay) = (t.doors.clone(), t.trigger.stay_open);
+        for &door in &doors {
+            self.open_door(door, stay);
+        }
+        doors.first().copied()
+    }
+
+    /// Sets off the walk-over triggers whose lines the body's centre crossed
+    /// moving from `from` to `to` (Doom's P_CrossSpecialLine: the centre
+    /// changes sides, either way).
+    pub fn walk(&mut self, world: World, query: &mut LineQuery, from: DVec2, to: DVec2) {
+        if self.triggers.iter().all(|t| t.trigger.on != TriggerOn::Walk) || from == to {
+            return;
+        }
+        let map = &world.compiled.map;
+        let near = query.run(world.blockmap, map.lines.len(), from.min(to), from.max(to));
+        let mut crossed: Vec<usize> = near
+            .iter()
+            .map(|&i| i as usize)
+            .filter(|&i| {
+                let (a, b) = map.line_points(&map.lines[i]);
+                let (s, e) = (exact_side(a, b, from), exact_side(a, b, to));
+                s != e && s != Side::On && e != Side::On && crossing(from, to, a, b).is_some()
+            })
+            .collect();
+        crossed.sort_unstable();
+        for i in crossed {
+            self.fire(i, TriggerOn::Walk);
+        }
     }
 
     /// Moves every door one tick and writes its state into `level`.
@@ -235,6 +312,7 @@ impl Doors {
                         door.state = DoorState::Open { wait: DOOR_WAIT };
                     }
                 }
+                DoorState::Open { .. } if door.stays_open => continue,
                 DoorState::Open { wait } => {
                     door.state = if wait > 1 { DoorState::Open { wait: wait - 1 } } else { DoorState::Closing };
                     continue;

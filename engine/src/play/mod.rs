@@ -100,6 +100,7 @@ impl Game {
         player.turn(&input);
         player.thrust(&input);
         let mut velocity = player.velocity;
+        let from = player.pos;
         player.pos = world.slide(query, player.pos, player.z, &mut velocity);
         player.velocity = velocity;
         let near = world.lines_near(query, player.pos, RADIUS + 1.0);
@@ -112,6 +113,7 @@ impl Game {
             self.ticks += 1;
             return;
         }
+        doors.walk(world, query, from, player.pos);
         if input.use_door {
             doors.use_ahead(world, query, player.pos, player.angle);
         }
