@@ -167,3 +167,65 @@ fn e1m4_agrees_with_the_reference() {
         &mut fb,
     );
 }
+
+/// The importer on mutated copies of the real freedoom1.wad: bytes of the
+/// directory, of E1M1's lumps and of the texture tables overwritten, the
+/// file cut short. Every case returns an error or a map, never a panic.
+/// (PROPTEST_CASES raises the count; the issue note gives a long run.)
+mod fuzz {
+    use proptest::prelude::*;
+    use sightline::wad::import::{convert, Art};
+    use sightline::wad::Wad;
+
+    fn original() -> &'static (Vec<u8>, Vec<(usize, usize)>) {
+        static ORIGINAL: std::sync::OnceLock<(Vec<u8>, Vec<(usize, usize)>)> = std::sync::OnceLock::new();
+        ORIGINAL.get_or_init(|| {
+            let bytes = std::fs::read(super::wad_path("freedoom1.wad")).unwrap();
+            let wad = Wad::from_bytes(bytes.clone(), "freedoom1.wad").unwrap();
+            // The byte ranges worth mutating: the directory, E1M1's lumps and
+            // the tables every texture goes through.
+            let table = i32::from_le_bytes(bytes[8..12].try_into().unwrap()) as usize;
+            let mut ranges = vec![(0, 12), (table, bytes.len())];
+            let e1m1 = wad.lumps.iter().position(|l| l.name == "E1M1").unwrap();
+            for l in &wad.lumps[e1m1 + 1..e1m1 + 11] {
+                ranges.push((l.offset, l.offset + l.size));
+            }
+            for name in ["PNAMES", "TEXTURE1", "PLAYPAL"] {
+                let l = &wad.lumps[wad.find(name).unwrap()];
+                ranges.push((l.offset, l.offset + l.size));
+            }
+            ranges.retain(|r| r.1 > r.0);
+            (bytes, ranges)
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(
+            std::env::var("PROPTEST_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(48)
+        ))]
+
+        #[test]
+        fn mutated_freedoom_never_panics(
+            edits in proptest::collection::vec((any::<prop::sample::Index>(), any::<prop::sample::Index>(), any::<u8>()), 1..12),
+            cut in proptest::option::weighted(0.1, any::<prop::sample::Index>()),
+        ) {
+            let (original, ranges) = original();
+            let mut bytes = original.clone();
+            for (range, at, value) in edits {
+                let (a, b) = ranges[range.index(ranges.len())];
+                bytes[a + at.index(b - a)] = value;
+            }
+            if let Some(cut) = cut {
+                bytes.truncate(cut.index(bytes.len()));
+            }
+            let Ok(wad) = Wad::from_bytes(bytes, "fuzz.wad") else { return Ok(()) };
+            let (Ok(art), Ok(map)) = (Art::read(&wad), wad.map("E1M1")) else { return Ok(()) };
+            if let Ok(c) = convert(&wad, &map, &art) {
+                let _ = sightline::map::validate::validate(&c.source);
+                for t in &c.walls {
+                    let _ = sightline::wad::art::compose(&wad, &art.textures[t], &art.palette);
+                }
+            }
+        }
+    }
+}

@@ -630,10 +630,11 @@ pub fn write_art<'a>(
     Ok(written)
 }
 
-/// Re-frames a sprite so its origin is the middle of the bottom edge.
-fn stand_on_origin(image: &Image) -> Image {
+/// Re-frames a sprite so its origin is the middle of the bottom edge (at
+/// most 4096 by 4096: an origin far outside the picture crops it).
+pub(crate) fn stand_on_origin(image: &Image) -> Image {
     let (w, h) = (image.width as i32, image.height as i32);
-    let half = image.left.max(w - image.left).clamp(1, 4096);
+    let half = image.left.max(w - image.left).clamp(1, 2048);
     let height = if image.top > 0 { image.top.min(4096) } else { h };
     let (width, dx) = (2 * half, half - image.left);
     let mut out = Image {

@@ -1,8 +1,10 @@
 //! WAD reading on small hand-built WADs: the happy path, and every kind of
 //! corruption the reader must turn into an error naming the lump.
 
-use super::art::{picture, Palette};
-use super::import::{convert, sky_of, Art};
+use proptest::prelude::*;
+
+use super::art::{flat, picture, Palette};
+use super::import::{convert, sky_of, stand_on_origin, Art};
 use super::*;
 
 /// Builds a WAD from `(name, bytes)` lumps, directory at the end.
@@ -244,4 +246,67 @@ fn a_texture_not_in_texture1_is_named() {
     let art = Art::read(&w).unwrap();
     let m = message(convert(&w, &w.map("E1M1").unwrap(), &art));
     assert!(m.contains("E1M1/SIDEDEFS") && m.contains("linedef 0") && m.contains("\"NOPE\""), "{m}");
+}
+
+/// `default` cases, or PROPTEST_CASES when set (for long fuzzing runs).
+fn cases(default: u32) -> u32 {
+    std::env::var("PROPTEST_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(default)
+}
+
+/// Everything the importer does with a WAD's bytes, short of writing files:
+/// whatever the bytes, it must return (an error or a map), never panic.
+fn exercise(bytes: Vec<u8>) {
+    let Ok(wad) = Wad::from_bytes(bytes, "fuzz.wad") else { return };
+    let art = Art::read(&wad);
+    for name in wad.map_names() {
+        let (Ok(m), Ok(art)) = (wad.map(&name), &art) else { continue };
+        if let Ok(c) = convert(&wad, &m, art) {
+            let _ = crate::map::validate::validate(&c.source);
+            for t in &c.walls {
+                let _ = art::compose(&wad, &art.textures[t], &art.palette);
+            }
+        }
+    }
+    if let Ok(art) = &art {
+        for &f in art.flats.values() {
+            let _ = flat(wad.bytes(f), &art.palette);
+        }
+        for &s in art.sprites.values() {
+            if let Ok(p) = picture(wad.bytes(s), &art.palette) {
+                stand_on_origin(&p);
+            }
+        }
+    }
+}
+
+proptest! {
+    // Cases per run: PROPTEST_CASES overrides (the long run in the issue note
+    // used 200000).
+    #![proptest_config(ProptestConfig::with_cases(cases(512)))]
+
+    #[test]
+    fn random_bytes_never_panic(bytes in proptest::collection::vec(any::<u8>(), 0..512), iwad in any::<bool>()) {
+        // Half the cases start with a valid magic so the directory code runs.
+        let mut bytes = bytes;
+        if iwad && bytes.len() >= 4 {
+            bytes[..4].copy_from_slice(b"PWAD");
+        }
+        exercise(bytes);
+    }
+
+    #[test]
+    fn mutated_wads_never_panic(
+        edits in proptest::collection::vec((any::<prop::sample::Index>(), any::<u8>()), 1..16),
+        cut in proptest::option::of(any::<prop::sample::Index>()),
+    ) {
+        let mut bytes = build(b"IWAD", &square_room());
+        for (at, value) in edits {
+            let k = at.index(bytes.len());
+            bytes[k] = value;
+        }
+        if let Some(cut) = cut {
+            bytes.truncate(cut.index(bytes.len()));
+        }
+        exercise(bytes);
+    }
 }
