@@ -11,6 +11,7 @@ pub mod light;
 pub mod occlusion;
 pub mod plan;
 pub mod planes;
+pub mod precision;
 pub mod raycast;
 pub mod rays;
 pub mod reference;
