@@ -34,6 +34,8 @@ pub enum Command {
     Replay(ReplayArgs),
     /// Import maps from a Doom WAD as RON maps, with their art as PNGs.
     Import(ImportArgs),
+    /// Time the renderer headless.
+    Bench(BenchArgs),
 }
 
 #[derive(Args)]
@@ -51,6 +53,40 @@ pub struct ImportArgs {
     /// compiler would refuse.
     #[arg(long)]
     pub check: bool,
+}
+
+/// `sightline bench STUDY ...`: each study is a subcommand of its own.
+#[derive(Args)]
+pub struct BenchArgs {
+    #[command(subcommand)]
+    pub command: BenchCommand,
+}
+
+#[derive(Subcommand)]
+pub enum BenchCommand {
+    /// Time render_frame over a map's things tour (the player start, then
+    /// every thing's position looking eight ways).
+    Tour(BenchTourArgs),
+}
+
+#[derive(Args)]
+pub struct BenchTourArgs {
+    /// A RON map or a compiled map.
+    pub map: PathBuf,
+    /// Frame size, WxH.
+    #[arg(long, default_value = "320x200", value_parser = parse_size)]
+    pub size: (usize, usize),
+    /// bsp, reference, or raycast (grid maps only). Default: raycast for a
+    /// grid map, bsp otherwise.
+    #[arg(long, value_parser = parse_renderer)]
+    pub renderer: Option<Renderer>,
+    /// Timed passes over the tour, after one untimed warm-up pass. Default:
+    /// enough for about three seconds.
+    #[arg(long, value_parser = clap::value_parser!(u64).range(1..100_000))]
+    pub repeat: Option<u64>,
+    /// Also print the figures as one JSON object on the last line.
+    #[arg(long)]
+    pub json: bool,
 }
 
 #[derive(Args)]

@@ -1,7 +1,8 @@
 //! `sightline`: the engine's front end. With no arguments it plays the
-//! default map in a window; subcommands compile maps, capture frames headless
-//! and replay demos.
+//! default map in a window; subcommands compile maps, capture frames headless,
+//! replay demos and time the renderer.
 
+mod bench;
 mod capture;
 mod cli;
 mod compile;
@@ -21,6 +22,7 @@ fn main() -> ExitCode {
         Some(cli::Command::Play(args)) => play::run(&args),
         Some(cli::Command::Replay(args)) => replay::run(&args),
         Some(cli::Command::Import(args)) => import::run(&args),
+        Some(cli::Command::Bench(args)) => bench::run(&args),
         None => play::run(&cli.play),
     };
     match result {

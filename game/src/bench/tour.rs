@@ -1,0 +1,122 @@
+//! `sightline bench tour MAP`: the frame time of one map over its things tour
+//! (`sightline::tour::things_tour`: the player start, then every thing's
+//! position looking eight ways). One untimed pass warms caches and the
+//! allocations; then every frame of `--repeat` passes is timed on its own,
+//! `render_frame` only (no PNG, no window). Prints a short table, and with
+//! `--json` one JSON object as the last line of stdout.
+
+use std::time::{Duration, Instant};
+
+use anyhow::{bail, Result};
+use sightline::bsp::BuildOptions;
+use sightline::level::open_level;
+use sightline::render::{render_frame, Frame, RenderOptions, View};
+use sightline::tour::things_tour;
+use sightline::Framebuffer;
+
+use crate::cli::BenchTourArgs;
+
+/// Without `--repeat`, passes enough to time about this long.
+const TARGET: Duration = Duration::from_secs(3);
+/// ... but at least this many passes and at most this many frames.
+const MIN_PASSES: usize = 3;
+const MAX_FRAMES: usize = 200_000;
+
+pub fn run(args: &BenchTourArgs) -> Result<()> {
+    let level = open_level(&args.map, &BuildOptions::default())?;
+    let renderer = crate::replay::choose_renderer(args.renderer, &level, &args.map)?;
+    let views = things_tour(&level.map);
+    if views.is_empty() {
+        bail!("{}: no pose of the tour lies inside a sector", args.map.display());
+    }
+    let (width, height) = args.size;
+    let options = RenderOptions { renderer, ..Default::default() };
+    let mut frame = Frame::new();
+    let mut fb = Framebuffer::new(width, height);
+    let mut render = |view: &View| {
+        let start = Instant::now();
+        render_frame(&level, view, &options, &mut frame, &mut fb);
+        start.elapsed()
+    };
+
+    let warm_up: Duration = views.iter().map(&mut render).sum();
+    let passes = args.repeat.map(|n| n as usize).unwrap_or_else(|| {
+        let per_pass = warm_up.as_secs_f64().max(1e-6);
+        let fit = (TARGET.as_secs_f64() / per_pass).ceil() as usize;
+        fit.clamp(MIN_PASSES, (MAX_FRAMES / views.len()).max(1))
+    });
+    let mut times = Vec::with_capacity(passes * views.len());
+    for _ in 0..passes {
+        times.extend(views.iter().map(&mut render));
+    }
+
+    let summary = Summary::of(&mut times);
+    let size = format!("{width}x{height}");
+    println!("map       {} ({} poses x {passes} passes)", args.map.display(), views.len());
+    println!("renderer  {} at {size}", renderer.name());
+    println!("frames    {}", summary.frames);
+    println!("median    {:.4} ms ({:.0} fps)", summary.median_ms, summary.fps_median());
+    println!("p95       {:.4} ms", summary.p95_ms);
+    println!("mean      {:.4} ms", summary.mean_ms);
+    if args.json {
+        let json = serde_json::json!({
+            "map": args.map.display().to_string(),
+            "size": size,
+            "renderer": renderer.name(),
+            "frames": summary.frames,
+            "passes": passes,
+            "median_ms": summary.median_ms,
+            "p95_ms": summary.p95_ms,
+            "mean_ms": summary.mean_ms,
+            "fps_median": summary.fps_median(),
+        });
+        println!("{json}");
+    }
+    Ok(())
+}
+
+/// Order statistics of the frame times.
+#[derive(Debug, PartialEq)]
+struct Summary {
+    frames: usize,
+    median_ms: f64,
+    p95_ms: f64,
+    mean_ms: f64,
+}
+
+impl Summary {
+    /// Sorts `times` in place. The median of an even count is the mean of
+    /// the middle two; p95 is the nearest-rank value (the smallest time at or
+    /// above 95% of the frames).
+    fn of(times: &mut [Duration]) -> Summary {
+        times.sort_unstable();
+        let ms = |d: Duration| d.as_secs_f64() * 1000.0;
+        let n = times.len();
+        if n == 0 {
+            return Summary { frames: 0, median_ms: f64::NAN, p95_ms: f64::NAN, mean_ms: f64::NAN };
+        }
+        let median = if n % 2 == 0 { (ms(times[n / 2 - 1]) + ms(times[n / 2])) / 2.0 } else { ms(times[n / 2]) };
+        let rank = (n * 95).div_ceil(100).max(1);
+        let mean = times.iter().map(|&d| ms(d)).sum::<f64>() / n as f64;
+        Summary { frames: n, median_ms: median, p95_ms: ms(times[rank - 1]), mean_ms: mean }
+    }
+
+    fn fps_median(&self) -> f64 {
+        1000.0 / self.median_ms
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn order_statistics() {
+        let mut times: Vec<Duration> = (1..=20).rev().map(Duration::from_millis).collect();
+        let s = Summary::of(&mut times);
+        assert_eq!((s.frames, s.median_ms, s.p95_ms, s.mean_ms), (20, 10.5, 19.0, 10.5));
+        let mut one = [Duration::from_millis(4)];
+        assert_eq!(Summary::of(&mut one).p95_ms, 4.0);
+        assert!(Summary::of(&mut []).median_ms.is_nan());
+    }
+}

@@ -1,0 +1,54 @@
+//! `sightline bench tour` through the binary: it runs from the repository
+//! root on a shipped map and its last line of stdout is one JSON object with
+//! the figures a script reads; without `--json` there is no JSON line.
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn sightline(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_sightline"))
+        .args(args)
+        .current_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join(".."))
+        .env("RUST_BACKTRACE", "0")
+        .output()
+        .expect("the binary runs")
+}
+
+fn stdout_of(out: &Output) -> String {
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "exit {:?}, stderr: {stderr}", out.status.code());
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+#[test]
+fn bench_tour_ends_with_a_json_line() {
+    let out = sightline(&["bench", "tour", "maps/pillars.ron", "--size", "64x40", "--repeat", "1", "--json"]);
+    let stdout = stdout_of(&out);
+    let last = stdout.lines().last().expect("some output");
+    let json: serde_json::Value = serde_json::from_str(last).unwrap_or_else(|e| panic!("{e}: {last}"));
+    // pillars.ron has 8 things, the player start among them: 1 + 8 * 8 poses.
+    assert_eq!(json["frames"], 65, "{json}");
+    assert_eq!(json["size"], "64x40");
+    assert_eq!(json["renderer"], "bsp");
+    assert_eq!(json["map"], "maps/pillars.ron");
+    for key in ["median_ms", "p95_ms", "mean_ms", "fps_median"] {
+        let v = json[key].as_f64().unwrap_or_else(|| panic!("{key} missing: {json}"));
+        assert!(v.is_finite() && v > 0.0, "{key} = {v}");
+    }
+    assert!(json["p95_ms"].as_f64() >= json["median_ms"].as_f64());
+}
+
+#[test]
+fn bench_tour_without_json_prints_only_the_table() {
+    let out = sightline(&["bench", "tour", "maps/room.ron", "--size", "32x20", "--repeat", "1"]);
+    let stdout = stdout_of(&out);
+    assert!(stdout.contains("median"), "{stdout}");
+    assert!(!stdout.contains('{'), "{stdout}");
+}
+
+#[test]
+fn bench_tour_refuses_a_missing_map() {
+    let out = sightline(&["bench", "tour", "maps/no-such-map.ron", "--repeat", "1"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("no-such-map.ron"));
+}
