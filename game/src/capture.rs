@@ -28,7 +28,8 @@ pub fn run(args: &CaptureArgs) -> Result<()> {
     if !renderer.supports(&level) {
         bail!("{map_name}: the {} renderer draws grid maps only; this is a sector map", renderer.name());
     }
-    let options = RenderOptions { renderer, shade: args.shade, ray: args.ray, ..Default::default() };
+    let options =
+        RenderOptions { renderer, shade: args.shade, ray: args.ray, threads: args.threads, ..Default::default() };
     render_frame(&level, &view, &options, &mut Frame::new(), &mut fb);
     write_atomic(&args.output, &fb.to_png())?;
     Ok(())

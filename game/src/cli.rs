@@ -84,6 +84,10 @@ pub struct BenchTourArgs {
     /// enough for about three seconds.
     #[arg(long, value_parser = clap::value_parser!(u64).range(1..100_000))]
     pub repeat: Option<u64>,
+    /// Threads drawing each frame (its strips in parallel; the frame is the
+    /// same for any count). Default: the machine's available parallelism.
+    #[arg(long, default_value_t = available_threads(), value_parser = parse_threads)]
+    pub threads: usize,
     /// Also print the figures as one JSON object on the last line.
     #[arg(long)]
     pub json: bool,
@@ -130,6 +134,10 @@ pub struct CaptureArgs {
     /// ids: each wall, floor and ceiling in a colour from its index.
     #[arg(long, default_value = "textured", value_parser = parse_shade)]
     pub shade: Shade,
+    /// Threads drawing each frame (its strips in parallel; the frame is the
+    /// same for any count). Default: the machine's available parallelism.
+    #[arg(long, default_value_t = available_threads(), value_parser = parse_threads)]
+    pub threads: usize,
     /// The PNG to write.
     #[arg(short, long)]
     pub output: PathBuf,
@@ -159,6 +167,10 @@ pub struct PlayArgs {
     /// window. Default: raycast for a grid map, else bsp.
     #[arg(long, value_parser = parse_renderer)]
     pub renderer: Option<Renderer>,
+    /// Threads drawing each frame (its strips in parallel; the frame is the
+    /// same for any count). Default: the machine's available parallelism.
+    #[arg(long, default_value_t = available_threads(), value_parser = parse_threads)]
+    pub threads: usize,
     /// Record the inputs of every tick into this demo file (written at exit).
     #[arg(long, conflicts_with = "demo")]
     pub record: Option<PathBuf>,
@@ -195,6 +207,10 @@ pub struct ReplayArgs {
     /// grid map, else bsp.
     #[arg(long, value_parser = parse_renderer)]
     pub renderer: Option<Renderer>,
+    /// Threads drawing each frame (its strips in parallel; the frame is the
+    /// same for any count). Default: the machine's available parallelism.
+    #[arg(long, default_value_t = available_threads(), value_parser = parse_threads)]
+    pub threads: usize,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -242,6 +258,22 @@ pub fn parse_pose(s: &str) -> Result<Pose, String> {
     Ok(Pose { x: values[0], y: values[1], angle: values[2], z: values.get(3).copied() })
 }
 
+/// Most threads a frame may be drawn with.
+const MAX_THREADS: usize = 256;
+
+/// The machine's available parallelism (1 when it cannot be told).
+pub fn available_threads() -> usize {
+    std::thread::available_parallelism().map_or(1, |n| n.get()).min(MAX_THREADS)
+}
+
+fn parse_threads(s: &str) -> Result<usize, String> {
+    s.trim()
+        .parse::<usize>()
+        .ok()
+        .filter(|n| (1..=MAX_THREADS).contains(n))
+        .ok_or_else(|| format!("threads `{s}` is not a whole number in 1..={MAX_THREADS}"))
+}
+
 fn parse_splitter(s: &str) -> Result<SplitterKind, String> {
     SplitterKind::from_name(s).ok_or_else(|| {
         let names: Vec<_> = SplitterKind::ALL.iter().map(|k| k.name()).collect();
@@ -274,5 +306,8 @@ mod tests {
         assert_eq!(parse_pose("1,-2,90,50").map(|p| (p.y, p.z)), Ok((-2.0, Some(50.0))));
         assert!(parse_pose("1,2").is_err());
         assert!(parse_pose("1,2,nan").is_err());
+        assert_eq!(parse_threads("3"), Ok(3));
+        assert!(parse_threads("0").is_err() && parse_threads("two").is_err());
+        assert!(available_threads() >= 1);
     }
 }

@@ -25,8 +25,9 @@ pub fn run(args: &ReplayArgs) -> Result<()> {
     let level = open_level(&map, &BuildOptions::default())?;
     let renderer = choose_renderer(args.renderer, &level, &map)?;
     let mut game = Game::new(level).with_context(|| format!("{}: cannot start the game", map.display()))?;
+    let options = RenderOptions { renderer, threads: args.threads, ..Default::default() };
     let mut capture = match (args.capture_every, &args.output) {
-        (Some(every), Some(dir)) => Some(Capture::new(every, dir, args.size, renderer)?),
+        (Some(every), Some(dir)) => Some(Capture::new(every, dir, args.size, options)?),
         _ => None,
     };
     let last = demo.inputs.len() as u64;
@@ -91,12 +92,12 @@ struct Capture {
 }
 
 impl Capture {
-    fn new(every: u64, dir: &Path, (w, h): (usize, usize), renderer: Renderer) -> Result<Capture> {
+    fn new(every: u64, dir: &Path, (w, h): (usize, usize), options: RenderOptions) -> Result<Capture> {
         std::fs::create_dir_all(dir).with_context(|| format!("{}: cannot create the directory", dir.display()))?;
         Ok(Capture {
             every,
             dir: dir.to_path_buf(),
-            options: RenderOptions { renderer, ..Default::default() },
+            options,
             frame: Frame::new(),
             fb: Framebuffer::new(w, h),
             written: 0,

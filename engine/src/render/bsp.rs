@@ -4,24 +4,16 @@
 //! their segs to [`super::walls`].
 
 use super::columns::ColumnWriter;
-use super::frame::Frame;
-use super::light::Lighting;
+use super::frame::{Scene, StripFrame};
 use super::shade::{Shade, Surface, VOID};
 use super::view::Camera;
 use super::walls::draw_seg;
 use crate::bsp::{Child, Node};
 use crate::geom::{front_distance, Aabb};
-use crate::level::Level;
 
-pub fn render(
-    level: &Level,
-    cam: &Camera,
-    frame: &mut Frame,
-    out: &mut ColumnWriter,
-    shade: Shade,
-    lighting: &Lighting,
-) {
-    let bsp = &level.bsp;
+/// Walks the tree for the strip `frame` was readied for.
+pub(crate) fn render(scene: &Scene, frame: &mut StripFrame, out: &mut ColumnWriter) {
+    let (cam, bsp) = (scene.cam, &scene.level.bsp);
     frame.stack.push((bsp.root, None));
     while let Some((child, bbox)) = frame.stack.pop() {
         if frame.occlusion.all_closed() {
@@ -45,7 +37,7 @@ pub fn render(
                 frame.stats.leaves_visited += 1;
                 let leaf = &bsp.leaves[i];
                 for seg in bsp.leaf_segs(leaf) {
-                    draw_seg(level, cam, seg, frame, out, shade, lighting);
+                    draw_seg(scene, seg, frame, out);
                     if frame.occlusion.all_closed() {
                         break;
                     }
@@ -53,7 +45,7 @@ pub fn render(
             }
         }
     }
-    fill_void(frame, out, shade);
+    fill_void(frame, out, scene.shade);
 }
 
 /// Which child of `node` is nearer the eye: `false` for the front, `true` for the back.
@@ -75,7 +67,7 @@ fn near_side(node: &Node, cam: &Camera) -> bool {
 
 /// Columns still open after the walk look out of the map: paint them void, so
 /// that every pixel is still written exactly once.
-fn fill_void(frame: &mut Frame, out: &mut ColumnWriter, shade: Shade) {
+fn fill_void(frame: &mut StripFrame, out: &mut ColumnWriter, shade: Shade) {
     let colour = if shade == Shade::Ids { super::shade::ids_colour(Surface::Void) } else { VOID };
     let width = frame.occlusion.width();
     let mut x = 0;
@@ -91,7 +83,7 @@ fn fill_void(frame: &mut Frame, out: &mut ColumnWriter, shade: Shade) {
 /// Could anything inside `bbox` still show? Projects the box's silhouette (the
 /// two corners that bound it as seen from the eye, as Doom's R_CheckBBox picks
 /// them) and asks the occlusion array about the columns between.
-fn box_visible(cam: &Camera, bbox: &Aabb, frame: &Frame) -> bool {
+fn box_visible(cam: &Camera, bbox: &Aabb, frame: &StripFrame) -> bool {
     // Within a unit of the box, call it visible: the silhouette argument below
     // needs the eye clear of the box by much more than NEAR.
     let grown = Aabb { min: bbox.min - 1.0, max: bbox.max + 1.0 };

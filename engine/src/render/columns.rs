@@ -9,15 +9,13 @@
 //! maze frame (measurements in ARCHITECTURE.md).
 
 use super::light::Tint;
-use crate::framebuffer::Framebuffer;
 
 pub struct ColumnWriter<'a> {
     /// Column-major strip: pixel (x, y) is `canvas[(x - x0) * height + y]`.
     canvas: &'a mut [u32],
     x0: usize,
     height: usize,
-    width: usize,
-    /// Per-pixel write counts (row-major, whole frame), when asked for.
+    /// Per-pixel write counts, laid out like the canvas, when asked for.
     counts: Option<&'a mut [u16]>,
     pub written: u64,
     /// Pixels the masked pass wrote over the opaque pass (not in `counts`).
@@ -25,9 +23,10 @@ pub struct ColumnWriter<'a> {
 }
 
 impl<'a> ColumnWriter<'a> {
-    /// A writer for columns `[x0, x0 + canvas.len() / height)` of a `width` x `height` frame.
-    pub fn new(canvas: &'a mut [u32], x0: usize, width: usize, height: usize, counts: Option<&'a mut [u16]>) -> Self {
-        ColumnWriter { canvas, x0, height, width, counts, written: 0, masked_written: 0 }
+    /// A writer for columns `[x0, x0 + canvas.len() / height)` of a frame
+    /// `height` rows tall; `counts`, if given, is as long as the canvas.
+    pub fn new(canvas: &'a mut [u32], x0: usize, height: usize, counts: Option<&'a mut [u16]>) -> Self {
+        ColumnWriter { canvas, x0, height, counts, written: 0, masked_written: 0 }
     }
 
     /// Fills rows `[y0, y1)` of column `x`. Empty and inverted runs write nothing;
@@ -48,7 +47,8 @@ impl<'a> ColumnWriter<'a> {
         let (y0, y1) = (y0 as usize, y1 as usize);
         self.written += (y1 - y0) as u64;
         if let Some(counts) = self.counts.as_deref_mut() {
-            for c in counts[y0 * self.width + x..].iter_mut().step_by(self.width).take(y1 - y0) {
+            let base = (x - self.x0) * self.height;
+            for c in &mut counts[base + y0..base + y1] {
                 *c = c.saturating_add(1);
             }
         }
@@ -67,7 +67,7 @@ impl ColumnWriter<'_> {
         }
         self.written += (x1 - x0) as u64;
         if let Some(counts) = self.counts.as_deref_mut() {
-            for c in &mut counts[y * self.width + x0..y * self.width + x1] {
+            for c in counts[start..].iter_mut().step_by(self.height).take(x1 - x0) {
                 *c = c.saturating_add(1);
             }
         }
@@ -122,12 +122,13 @@ impl ColumnWriter<'_> {
     }
 }
 
-/// Copies a column-major strip canvas of columns `[x0, x1)` into the framebuffer.
-pub fn present_strip(canvas: &[u32], x0: usize, x1: usize, fb: &mut Framebuffer) {
-    let (w, h) = (fb.width, fb.height);
-    for (y, row) in fb.pixels.chunks_exact_mut(w).enumerate() {
-        for (i, p) in row[x0..x1].iter_mut().enumerate() {
-            *p = canvas[i * h + y];
+/// Copies a column-major strip canvas `height` rows tall into `rows`, the
+/// strip's piece of each row of the destination, top to bottom (pixels, or
+/// write counts).
+pub fn present_strip<'a, T: Copy + 'a>(canvas: &[T], height: usize, rows: impl Iterator<Item = &'a mut [T]>) {
+    for (y, row) in rows.enumerate() {
+        for (i, p) in row.iter_mut().enumerate() {
+            *p = canvas[i * height + y];
         }
     }
 }

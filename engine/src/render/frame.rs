@@ -1,13 +1,24 @@
-//! Per-frame state, owned in one struct and cleared (not reallocated) each
-//! frame: the occlusion bits, the per-column clip bounds, scratch lists, and
-//! the frame's statistics.
+//! Per-frame state, owned and cleared (not reallocated) each frame. Two
+//! kinds: what the whole frame shares, read by every strip ([`Frame`]'s
+//! tables and sprite list, lent out as a [`Scene`]), and what one strip's
+//! walk writes ([`StripFrame`]: occlusion bits, clip bounds, visplanes, clip
+//! events, the canvas). `Frame` keeps one `StripFrame` per worker thread, so
+//! strips can be drawn in parallel, each by whichever worker is free.
 
+use super::light::Lighting;
 use super::occlusion::Occlusion;
+use super::parallel::Pool;
+use super::plan::Plan;
+use super::shade::Shade;
+use super::sprites::VisSprite;
 use super::view::Camera;
+use super::visplanes::Visplanes;
 use crate::bsp::Child;
 use crate::geom::Aabb;
+use crate::level::Level;
 
-/// What one frame cost, for benchmarks and the overdraw tests.
+/// What one frame cost, for benchmarks and the overdraw tests. With several
+/// strips (and threads) these are sums over the strips.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct FrameStats {
     pub pixels_written: u64,
@@ -30,6 +41,19 @@ impl FrameStats {
     /// Pixels written per screen pixel.
     pub fn overdraw(&self, width: usize, height: usize) -> f64 {
         self.pixels_written as f64 / (width * height).max(1) as f64
+    }
+}
+
+impl std::ops::AddAssign for FrameStats {
+    fn add_assign(&mut self, o: FrameStats) {
+        self.pixels_written += o.pixels_written;
+        self.nodes_visited += o.nodes_visited;
+        self.subtrees_culled += o.subtrees_culled;
+        self.leaves_visited += o.leaves_visited;
+        self.walls_considered += o.walls_considered;
+        self.walls_drawn += o.walls_drawn;
+        self.masked_pixels_written += o.masked_pixels_written;
+        self.sprites_in_view += o.sprites_in_view;
     }
 }
 
@@ -72,38 +96,47 @@ pub(crate) struct Hit {
     pub from_front: bool,
 }
 
-#[derive(Debug, Default)]
-pub struct Frame {
-    pub(crate) occlusion: Occlusion,
-    /// First open row of each column.
-    pub(crate) clip_top: Vec<i32>,
-    /// One past the last open row of each column.
-    pub(crate) clip_bottom: Vec<i32>,
+/// What every strip of one frame reads and none writes: set up once per
+/// frame by `render_frame`, shared by all workers.
+#[derive(Clone, Copy)]
+pub(crate) struct Scene<'a> {
+    pub level: &'a Level,
+    pub cam: &'a Camera,
+    pub shade: Shade,
+    pub lighting: Lighting,
+    /// What the frame does (see [`super::plan`]).
+    pub plan: Plan,
+    /// Textured planes go to the visplanes as spans (else painted per column).
+    pub spans: bool,
     /// Slope of each column's ray.
-    pub(crate) slopes: Vec<f64>,
+    pub slopes: &'a [f64],
     /// Inverse of each row's slope: a plane `rise` above the eye is
     /// `rise * inv_rows[y]` away along row `y`'s ray.
-    pub(crate) inv_rows: Vec<f64>,
-    pub(crate) stack: Vec<(Child, Option<Aabb>)>,
-    pub(crate) hits: Vec<Hit>,
-    /// Column-major canvas of the strip being drawn (see [`super::columns`]).
-    pub(crate) canvas: Vec<u32>,
-    /// Clip events of all columns, and each column's latest (deepest).
-    pub(crate) events: Vec<ClipEvent>,
-    pub(crate) last_event: Vec<u32>,
-    /// Masked middles to draw, and each column's latest entry.
-    pub(crate) masked: Vec<MaskedColumn>,
-    pub(crate) last_masked: Vec<u32>,
+    pub inv_rows: &'a [f64],
     /// Things in view, far to near (see [`super::sprites`]).
-    pub(crate) sprites: Vec<super::sprites::VisSprite>,
+    pub sprites: &'a [VisSprite],
+}
+
+/// The frame as the caller keeps it: the shared tables, the totals of the
+/// last frame, and the per-worker strip states and threads.
+#[derive(Debug, Default)]
+pub struct Frame {
+    /// Slope of each column's ray, and inverse slope of each row's (see [`Scene`]).
+    pub(crate) slopes: Vec<f64>,
+    pub(crate) inv_rows: Vec<f64>,
+    /// Things in view, far to near.
+    pub(crate) sprites: Vec<VisSprite>,
+    /// The strips `[x0, x1)` of this frame.
+    pub(crate) strips: Vec<(usize, usize)>,
+    /// One strip state per worker; `workers[0]` is the calling thread's.
+    pub(crate) workers: Vec<StripFrame>,
+    /// The threads besides the caller's, kept across frames (see [`super::parallel`]).
+    pub(crate) pool: Pool,
     /// Writes per pixel (row-major), kept only when counting was asked for.
     pub(crate) counts: Vec<u16>,
     pub stats: FrameStats,
     /// What the last frame did (see [`super::plan`]).
-    pub plan: super::plan::Plan,
-    /// Textured planes go to `visplanes` as spans (else painted per column).
-    pub(crate) spans: bool,
-    pub(crate) visplanes: super::visplanes::Visplanes,
+    pub plan: Plan,
     /// Lines that drew at least one column this frame (an automap's "seen").
     pub(crate) seen_lines: Vec<bool>,
 }
@@ -113,40 +146,118 @@ impl Frame {
         Frame::default()
     }
 
-    /// Resets everything for a new frame of `cam`'s size.
-    pub(crate) fn begin(&mut self, cam: &Camera, count_writes: bool) {
+    /// Resets the shared state for a new frame of `cam`'s size, and readies
+    /// `workers` strip states.
+    pub(crate) fn begin(&mut self, cam: &Camera, count_writes: bool, workers: usize) {
         let (w, h) = (cam.width, cam.height);
-        self.occlusion.reset(w);
-        self.clip_top.clear();
-        self.clip_top.resize(w, 0);
-        self.clip_bottom.clear();
-        self.clip_bottom.resize(w, h as i32);
         self.slopes.clear();
         self.slopes.extend((0..w).map(|x| cam.column_slope(x)));
         self.inv_rows.clear();
         self.inv_rows.extend((0..h as i32).map(|y| 1.0 / cam.row_slope(y)));
-        self.stack.clear();
-        self.hits.clear();
-        self.events.clear();
-        self.last_event.clear();
-        self.last_event.resize(w, NONE);
-        self.masked.clear();
-        self.last_masked.clear();
-        self.last_masked.resize(w, NONE);
         self.sprites.clear();
         self.counts.clear();
         if count_writes {
             self.counts.resize(w * h, 0);
         }
         self.stats = FrameStats::default();
+        if self.workers.len() < workers {
+            self.workers.resize_with(workers, StripFrame::default);
+        }
     }
 
-    /// Restricts the next pass to columns `[x0, x1)`; clip bounds there are
-    /// already reset by [`Frame::begin`] and untouched by other strips.
-    pub(crate) fn begin_strip(&mut self, x0: usize, x1: usize) {
-        self.occlusion.reset_to_strip(self.clip_top.len(), x0, x1);
+    /// Adds up what the first `workers` strip states did this frame.
+    pub(crate) fn gather(&mut self, workers: usize, lines: usize) {
+        self.seen_lines.clear();
+        self.seen_lines.resize(lines, false);
+        for worker in &self.workers[..workers] {
+            self.stats += worker.stats;
+            for (seen, &s) in self.seen_lines.iter_mut().zip(&worker.seen_lines) {
+                *seen |= s;
+            }
+        }
+    }
+
+    /// Which map lines the last frame showed, indexed like `map.lines`.
+    pub fn seen_lines(&self) -> &[bool] {
+        &self.seen_lines
+    }
+
+    /// Writes per pixel of the last frame rendered with counting on (row-major).
+    pub fn write_counts(&self) -> &[u16] {
+        &self.counts
+    }
+}
+
+/// One worker's state, for the strip it is drawing: the walk's occlusion
+/// bits and clip bounds, the strip's visplanes, clip events and masked
+/// middles, its canvas, and what its strips cost.
+#[derive(Debug, Default)]
+pub(crate) struct StripFrame {
+    pub(crate) occlusion: Occlusion,
+    /// First open row of each column (whole-screen width, so columns keep
+    /// their screen index; only the strip's columns are reset and used).
+    pub(crate) clip_top: Vec<i32>,
+    /// One past the last open row of each column.
+    pub(crate) clip_bottom: Vec<i32>,
+    pub(crate) stack: Vec<(Child, Option<Aabb>)>,
+    pub(crate) hits: Vec<Hit>,
+    /// Column-major canvas of the strip being drawn (see [`super::columns`]),
+    /// and its write counts when counting.
+    pub(crate) canvas: Vec<u32>,
+    pub(crate) counts: Vec<u16>,
+    /// Clip events of the strip's columns, and each column's latest (deepest).
+    pub(crate) events: Vec<ClipEvent>,
+    pub(crate) last_event: Vec<u32>,
+    /// Masked middles to draw, and each column's latest entry.
+    pub(crate) masked: Vec<MaskedColumn>,
+    pub(crate) last_masked: Vec<u32>,
+    /// Sprites (indices into [`Scene::sprites`]) that reach into the strip.
+    pub(crate) here: Vec<u32>,
+    pub(crate) visplanes: Visplanes,
+    /// What this worker's strips cost, and the lines they showed.
+    pub(crate) stats: FrameStats,
+    pub(crate) seen_lines: Vec<bool>,
+}
+
+impl StripFrame {
+    /// Forgets the last frame: no strips drawn yet, no lines seen.
+    pub(crate) fn begin_frame(&mut self, width: usize, lines: usize) {
+        self.stats = FrameStats::default();
+        self.seen_lines.clear();
+        self.seen_lines.resize(lines, false);
+        for v in [&mut self.clip_top, &mut self.clip_bottom] {
+            if v.len() != width {
+                v.clear();
+                v.resize(width, 0);
+            }
+        }
+        for v in [&mut self.last_event, &mut self.last_masked] {
+            if v.len() != width {
+                v.clear();
+                v.resize(width, NONE);
+            }
+        }
+    }
+
+    /// Readies columns `[x0, x1)` of a `height`-row screen for a walk that
+    /// sees only them.
+    pub(crate) fn begin_strip(&mut self, x0: usize, x1: usize, height: usize, count_writes: bool) {
+        let width = self.clip_top.len();
+        self.occlusion.reset_to_strip(width, x0, x1);
+        self.clip_top[x0..x1].fill(0);
+        self.clip_bottom[x0..x1].fill(height as i32);
+        self.last_event[x0..x1].fill(NONE);
+        self.last_masked[x0..x1].fill(NONE);
+        self.events.clear();
+        self.masked.clear();
         self.visplanes.begin_strip(x0, x1);
         self.stack.clear();
+        self.hits.clear();
+        self.canvas.resize((x1 - x0) * height, 0);
+        self.counts.clear();
+        if count_writes {
+            self.counts.resize((x1 - x0) * height, 0);
+        }
     }
 
     /// Records that beyond `depth`, column `x` shows only rows `[top, bottom)`.
@@ -177,15 +288,5 @@ impl Frame {
             e = event.prev;
         }
         (0, height)
-    }
-
-    /// Which map lines the last frame showed, indexed like `map.lines`.
-    pub fn seen_lines(&self) -> &[bool] {
-        &self.seen_lines
-    }
-
-    /// Writes per pixel of the last frame rendered with counting on (row-major).
-    pub fn write_counts(&self) -> &[u16] {
-        &self.counts
     }
 }

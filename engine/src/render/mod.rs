@@ -1,14 +1,18 @@
 //! Rendering a frame: a [`View`] of a compiled map into a [`Framebuffer`].
 //!
 //! [`render_frame`] is the recipe: bind the view to the screen, reset the
-//! per-frame state, run the chosen visibility pass, which writes every pixel
-//! exactly once through the shared [`columns::ColumnWriter`].
+//! per-frame state, find the sprites in view and plan the frame, then per
+//! strip of the screen (on one thread or several, see [`parallel`]) run the
+//! chosen visibility pass, which writes every pixel exactly once through the
+//! shared [`columns::ColumnWriter`], the strip's floors and ceilings and its
+//! masked pass, and copy the strip into the framebuffer.
 
 pub mod bsp;
 pub mod columns;
 pub mod frame;
 pub mod light;
 pub mod occlusion;
+pub mod parallel;
 pub mod plan;
 pub mod planes;
 pub mod precision;
@@ -23,6 +27,7 @@ pub mod visplanes;
 pub mod walls;
 
 pub use frame::{Frame, FrameStats};
+use frame::{Scene, StripFrame};
 pub use shade::Shade;
 pub use view::{Camera, View};
 
@@ -73,7 +78,7 @@ impl Renderer {
     }
 }
 
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug)]
 pub struct RenderOptions {
     pub renderer: Renderer,
     pub shade: Shade,
@@ -85,6 +90,24 @@ pub struct RenderOptions {
     pub floors: Floors,
     /// How the ray-caster's rays find walls.
     pub ray: raycast::RayMethod,
+    /// Threads drawing the frame's strips: 1 (or 0) draws them one after
+    /// another on the calling thread; more start a pool kept in the [`Frame`]
+    /// (see [`parallel`]). The frame is the same whatever the count.
+    pub threads: usize,
+}
+
+impl Default for RenderOptions {
+    fn default() -> RenderOptions {
+        RenderOptions {
+            renderer: Renderer::default(),
+            shade: Shade::default(),
+            count_writes: false,
+            disabled: plan::Disabled::default(),
+            floors: Floors::default(),
+            ray: raycast::RayMethod::default(),
+            threads: 1,
+        }
+    }
 }
 
 /// Textured floors and ceilings as horizontal spans (Doom's visplanes) or per
@@ -105,51 +128,105 @@ pub fn render_frame(
     fb: &mut Framebuffer,
 ) -> FrameStats {
     let cam = Camera::new(view, fb.width, fb.height);
-    frame.begin(&cam, options.count_writes);
-    frame.seen_lines.clear();
-    frame.seen_lines.resize(level.map.lines.len(), false);
-    // The writer borrows the canvas and counts while the pass borrows the rest.
-    let mut canvas = std::mem::take(&mut frame.canvas);
-    let mut counts = std::mem::take(&mut frame.counts);
     let (w, h) = (cam.width, cam.height);
+    let threads = options.threads.max(1);
+    frame.begin(&cam, options.count_writes, threads);
     if !options.disabled.sprites {
-        sprites::collect(level, &cam, frame);
+        sprites::collect(level, &cam, &mut frame.sprites);
     }
-    frame.stats.sprites_in_view = frame.sprites.len() as u64;
     let plan = plan::Plan::new(level, frame.sprites.len(), options.disabled);
     frame.plan = plan;
-    frame.spans = options.floors == Floors::Spans;
-    let lighting = light::Lighting::for_plan(&level.map, &plan);
+    frame.strips.clear();
+    frame.strips.extend(strips::strips(w, h, threads));
     let oracle = (options.renderer == Renderer::Reference).then(|| reference::Reference::new(level, &cam));
-    for (x0, x1) in strips::strips(w, h) {
-        canvas.resize((x1 - x0) * h, 0);
-        let counting = options.count_writes.then_some(counts.as_mut_slice());
-        let mut out = columns::ColumnWriter::new(&mut canvas, x0, w, h, counting);
-        frame.begin_strip(x0, x1);
-        match options.renderer {
-            Renderer::Bsp | Renderer::Raycast => {
-                if options.renderer == Renderer::Bsp {
-                    bsp::render(level, &cam, frame, &mut out, options.shade, &lighting);
-                } else {
-                    raycast::render(level, &cam, frame, &mut out, options.shade, &lighting, options.ray, (x0, x1));
-                }
-                let Frame { visplanes, inv_rows, .. } = &mut *frame;
-                visplanes.draw(&mut out, &cam, &lighting, inv_rows, &level.materials.textures);
-                if plan.masked_pass() {
-                    sprites::draw(level, &cam, frame, &mut out, options.shade, &lighting, (x0, x1));
-                }
+    let Frame { slopes, inv_rows, sprites, strips, workers, pool, counts, .. } = frame;
+    let scene = Scene {
+        level,
+        cam: &cam,
+        shade: options.shade,
+        lighting: light::Lighting::for_plan(&level.map, &plan),
+        plan,
+        spans: options.floors == Floors::Spans,
+        slopes,
+        inv_rows,
+        sprites,
+    };
+    let lines = level.map.lines.len();
+    let draw = |strip: &mut StripFrame, (x0, x1)| draw_strip(&scene, options, oracle.as_ref(), strip, (x0, x1));
+    let pool = if threads > 1 && strips.len() > 1 { pool.get(threads - 1) } else { None };
+    let used = match pool {
+        None => {
+            let strip = &mut workers[0];
+            strip.begin_frame(w, lines);
+            for &(x0, x1) in strips.iter() {
+                draw(strip, (x0, x1));
+                columns::present_strip(&strip.canvas, h, fb.pixels.chunks_exact_mut(w).map(|r| &mut r[x0..x1]));
+                columns::present_strip(&strip.counts, h, counts.chunks_exact_mut(w).map(|r| &mut r[x0..x1]));
             }
-            Renderer::Reference => {
-                if let Some(oracle) = &oracle {
-                    oracle.render(x0..x1, frame, &mut out, options.shade);
-                }
+            1
+        }
+        Some(pool) => {
+            let used = threads.min(strips.len());
+            for strip in &mut workers[..used] {
+                strip.begin_frame(w, lines);
+            }
+            let rows = parallel::split_rows(&mut fb.pixels, w, strips);
+            let mut count_rows = parallel::split_rows(counts, w, strips).into_iter();
+            let jobs = strips
+                .iter()
+                .zip(rows)
+                .map(|(&(x0, x1), rows)| parallel::Job { x0, x1, rows, counts: count_rows.next().unwrap_or_default() })
+                .collect();
+            parallel::run(pool, &mut workers[..used], jobs, &|strip, job| {
+                draw(strip, (job.x0, job.x1));
+                columns::present_strip(&strip.canvas, h, job.rows.into_iter());
+                columns::present_strip(&strip.counts, h, job.counts.into_iter());
+            });
+            used
+        }
+    };
+    frame.gather(used, lines);
+    frame.stats.sprites_in_view = frame.sprites.len() as u64;
+    frame.stats
+}
+
+/// Draws columns `[x0, x1)` into `strip`'s canvas: the visibility pass, then
+/// the strip's visplanes, then the masked pass.
+fn draw_strip(
+    scene: &Scene,
+    options: &RenderOptions,
+    oracle: Option<&reference::Reference>,
+    strip: &mut StripFrame,
+    (x0, x1): (usize, usize),
+) {
+    let h = scene.cam.height;
+    strip.begin_strip(x0, x1, h, options.count_writes);
+    // The writer borrows the canvas and counts while the pass borrows the rest.
+    let mut canvas = std::mem::take(&mut strip.canvas);
+    let mut counts = std::mem::take(&mut strip.counts);
+    let counting = options.count_writes.then_some(counts.as_mut_slice());
+    let mut out = columns::ColumnWriter::new(&mut canvas, x0, h, counting);
+    match options.renderer {
+        Renderer::Bsp | Renderer::Raycast => {
+            if options.renderer == Renderer::Bsp {
+                bsp::render(scene, strip, &mut out);
+            } else {
+                raycast::render(scene, strip, &mut out, options.ray, (x0, x1));
+            }
+            let cam = scene.cam;
+            strip.visplanes.draw(&mut out, cam, &scene.lighting, scene.inv_rows, &scene.level.materials.textures);
+            if scene.plan.masked_pass() {
+                sprites::draw(scene, strip, &mut out, (x0, x1));
             }
         }
-        frame.stats.pixels_written += out.written;
-        frame.stats.masked_pixels_written += out.masked_written;
-        columns::present_strip(&canvas, x0, x1, fb);
+        Renderer::Reference => {
+            if let Some(oracle) = oracle {
+                oracle.render(x0..x1, strip, &mut out, options.shade);
+            }
+        }
     }
-    frame.canvas = canvas;
-    frame.counts = counts;
-    frame.stats
+    strip.stats.pixels_written += out.written;
+    strip.stats.masked_pixels_written += out.masked_written;
+    strip.canvas = canvas;
+    strip.counts = counts;
 }

@@ -22,8 +22,8 @@
 use glam::DVec2;
 
 use super::columns::ColumnWriter;
-use super::frame::Frame;
-use super::light::{fake_contrast, Lighting};
+use super::frame::{Scene, StripFrame};
+use super::light::fake_contrast;
 use super::planes::{paint_plane, PlanePaint};
 use super::rays;
 use super::shade::{colour, Shade, Surface, VOID};
@@ -320,15 +320,13 @@ struct Setup<'a> {
 /// Draws columns `[x0, x1)` of a grid level.
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn render(
-    level: &Level,
-    cam: &Camera,
-    frame: &mut Frame,
+    scene: &Scene,
+    frame: &mut StripFrame,
     out: &mut ColumnWriter,
-    shade: Shade,
-    lighting: &Lighting,
     method: RayMethod,
     (x0, x1): (usize, usize),
 ) {
+    let (level, cam, shade) = (scene.level, scene.cam, scene.shade);
     let h = cam.height as i32;
     if level.grid().is_none() {
         for x in x0..x1 {
@@ -357,36 +355,26 @@ pub(crate) fn render(
         let hit = cast(level, cam, x, method, &mut steps);
         frame.stats.walls_considered += 1;
         match hit {
-            Some(hit) => draw_column(level, cam, lighting, shade, &setup, &hit, x, frame, out),
+            Some(hit) => draw_column(scene, &setup, &hit, x, frame, out),
             None => out.fill(x, 0, h, VOID),
         }
     }
     frame.stats.nodes_visited += steps;
 }
 
-#[allow(clippy::too_many_arguments)]
-fn draw_column(
-    level: &Level,
-    cam: &Camera,
-    lighting: &Lighting,
-    shade: Shade,
-    setup: &Setup,
-    hit: &RayHit,
-    x: usize,
-    frame: &mut Frame,
-    out: &mut ColumnWriter,
-) {
+fn draw_column(scene: &Scene, setup: &Setup, hit: &RayHit, x: usize, frame: &mut StripFrame, out: &mut ColumnWriter) {
+    let (level, cam, lighting, shade) = (scene.level, scene.cam, &scene.lighting, scene.shade);
     let h = cam.height as i32;
     let depth = if hit.depth.is_finite() { hit.depth.max(NEAR) } else { NEAR };
     let ceiling_end = cam.first_row_at_or_below(depth, setup.ceiling);
     let floor_start = cam.first_row_at_or_below(depth, setup.floor).max(ceiling_end);
-    let t = frame.slopes[x];
+    let t = scene.slopes[x];
     for (rows, paint) in [((0, ceiling_end), setup.ceiling_paint), ((floor_start, h), setup.floor_paint)] {
         match paint {
-            PlanePaint::Flat { id, height, light, .. } if frame.spans => {
+            PlanePaint::Flat { id, height, light, .. } if scene.spans => {
                 frame.visplanes.add(PlaneKey { texture: id, height, light }, x, rows.0, rows.1);
             }
-            _ => paint_plane(out, cam, lighting, &frame.inv_rows, x, rows, t, paint),
+            _ => paint_plane(out, cam, lighting, scene.inv_rows, x, rows, t, paint),
         }
     }
     let rows = (ceiling_end, floor_start);
@@ -416,7 +404,7 @@ fn draw_column(
     if let Some(line) = hit.line {
         frame.seen_lines[line] = true;
     }
-    if frame.plan.masked_pass() {
+    if scene.plan.masked_pass() {
         frame.push_event(x, depth, 0, 0);
     }
 }

@@ -14,7 +14,7 @@
 use glam::DVec2;
 
 use super::columns::ColumnWriter;
-use super::frame::{Frame, Hit};
+use super::frame::{Hit, StripFrame};
 use super::shade::{ceiling_at_line, colour, masked_top, plane_surfaces, wall_facing, Shade, Surface};
 use super::view::{Camera, NEAR};
 use crate::geom::cross;
@@ -48,7 +48,13 @@ impl<'a> Reference<'a> {
     }
 
     /// Renders `columns` (one strip) of the frame.
-    pub fn render(&self, columns: std::ops::Range<usize>, frame: &mut Frame, out: &mut ColumnWriter, shade: Shade) {
+    pub(crate) fn render(
+        &self,
+        columns: std::ops::Range<usize>,
+        frame: &mut StripFrame,
+        out: &mut ColumnWriter,
+        shade: Shade,
+    ) {
         let (level, cam, ends, things) = (self.level, self.cam, &self.ends, &self.things);
         let (map, eye_sector) = (&level.map, self.eye_sector);
         for x in columns {

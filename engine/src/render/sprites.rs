@@ -9,8 +9,7 @@
 //! renderer uses the same predicates, so `ids` frames agree.
 
 use super::columns::ColumnWriter;
-use super::frame::{Frame, NONE};
-use super::light::Lighting;
+use super::frame::{Scene, StripFrame, NONE};
 use super::shade::{colour, ids_colour, masked_top, Shade, Surface};
 use super::view::{Camera, NEAR};
 use crate::level::Level;
@@ -32,9 +31,9 @@ pub(crate) struct VisSprite {
     pub x1: usize,
 }
 
-/// Finds the things in view and sorts them far to near.
-pub(crate) fn collect(level: &Level, cam: &Camera, frame: &mut Frame) {
-    frame.sprites.clear();
+/// Finds the things in view and sorts them far to near, into `sprites`.
+pub(crate) fn collect(level: &Level, cam: &Camera, sprites: &mut Vec<VisSprite>) {
+    sprites.clear();
     for (thing, t) in level.map.things.iter().enumerate() {
         let Some(texture) = level.materials.sprites[thing] else { continue };
         let q = cam.to_camera(t.pos);
@@ -50,46 +49,31 @@ pub(crate) fn collect(level: &Level, cam: &Camera, frame: &mut Frame) {
             continue;
         }
         let sector = &level.map.sectors[level.thing_sectors[thing]];
-        frame.sprites.push(VisSprite {
-            thing,
-            depth: q.x,
-            left,
-            floor: sector.floor,
-            light: sector.light,
-            texture,
-            x0,
-            x1,
-        });
+        sprites.push(VisSprite { thing, depth: q.x, left, floor: sector.floor, light: sector.light, texture, x0, x1 });
     }
     // Far to near. At equal depth the lower-numbered thing is drawn last, on
     // top, and a sprite goes over a masked middle: the reference walks near
     // to far and lets the first it meets win, in that same order.
-    frame.sprites.sort_by(|a, b| b.depth.total_cmp(&a.depth).then(b.thing.cmp(&a.thing)));
+    sprites.sort_by(|a, b| b.depth.total_cmp(&a.depth).then(b.thing.cmp(&a.thing)));
 }
 
 /// What every masked column draw needs to know.
 struct MaskedPass<'a> {
-    level: &'a Level,
+    scene: &'a Scene<'a>,
     cam: &'a Camera,
-    frame: &'a Frame,
-    shade: Shade,
-    lighting: &'a Lighting,
+    frame: &'a StripFrame,
 }
 
 /// Draws sprites and masked middles over columns `[x0, x1)`, far to near per column.
-pub(crate) fn draw(
-    level: &Level,
-    cam: &Camera,
-    frame: &Frame,
-    out: &mut ColumnWriter,
-    shade: Shade,
-    lighting: &Lighting,
-    (x0, x1): (usize, usize),
-) {
-    let pass = MaskedPass { level, cam, frame, shade, lighting };
-    let here: Vec<&VisSprite> = frame.sprites.iter().filter(|s| s.x0 < x1 && s.x1 > x0).collect();
+pub(crate) fn draw(scene: &Scene, frame: &mut StripFrame, out: &mut ColumnWriter, (x0, x1): (usize, usize)) {
+    frame.here.clear();
+    let reach = scene.sprites.iter().enumerate().filter(|(_, s)| s.x0 < x1 && s.x1 > x0);
+    frame.here.extend(reach.map(|(i, _)| i as u32));
+    let frame = &*frame;
+    let pass = MaskedPass { scene, cam: scene.cam, frame };
     for x in x0..x1 {
-        let mut sprites = here.iter().filter(|s| s.x0 <= x && x < s.x1).peekable();
+        let mut sprites =
+            frame.here.iter().map(|&i| &scene.sprites[i as usize]).filter(|s| s.x0 <= x && x < s.x1).peekable();
         let mut masked = frame.last_masked[x];
         // Merge the two far-to-near lists by depth; at equal depth the
         // sprite goes last, on top (see `collect`).
@@ -114,16 +98,16 @@ pub(crate) fn draw(
 
 impl MaskedPass<'_> {
     fn sprite_column(&self, out: &mut ColumnWriter, s: &VisSprite, x: usize) {
-        let texture = self.level.materials.textures.get(s.texture);
-        let u = self.frame.slopes[x] * s.depth - s.left;
+        let texture = self.scene.level.materials.textures.get(s.texture);
+        let u = self.scene.slopes[x] * s.depth - s.left;
         if !(0.0..texture.width as f64).contains(&u) {
             return;
         }
         let top = s.floor + texture.height as f64;
-        let paint = match self.shade {
+        let paint = match self.scene.shade {
             Shade::Ids => Texels::Solid(ids_colour(Surface::Thing { thing: s.thing })),
-            Shade::Flat => Texels::Solid(colour(self.shade, Surface::Thing { thing: s.thing }, s.light, 1.0)),
-            Shade::Textured => Texels::Tinted(self.lighting.tint(s.light, s.depth)),
+            Shade::Flat => Texels::Solid(colour(Shade::Flat, Surface::Thing { thing: s.thing }, s.light, 1.0)),
+            Shade::Textured => Texels::Tinted(self.scene.lighting.tint(s.light, s.depth)),
         };
         let cam = self.cam;
         let rows = (cam.first_row_at_or_below(s.depth, top), cam.first_row_at_or_below(s.depth, s.floor));
@@ -131,19 +115,20 @@ impl MaskedPass<'_> {
     }
 
     fn masked_column(&self, out: &mut ColumnWriter, m: &super::frame::MaskedColumn, x: usize) {
-        let map = &self.level.map;
+        let level = self.scene.level;
+        let map = &level.map;
         let line = &map.lines[m.line];
-        let Some(id) = self.level.materials.sides[m.line][m.back_side as usize].middle else { return };
-        let texture = self.level.materials.textures.get(id);
+        let Some(id) = level.materials.sides[m.line][m.back_side as usize].middle else { return };
+        let texture = level.materials.textures.get(id);
         let top = masked_top(map, line, m.back_side, texture.height as f64);
         let near = line.side(m.back_side).sector;
         let light = map.sectors[near].light;
-        let paint = match self.shade {
+        let paint = match self.scene.shade {
             Shade::Textured => {
                 let (from, to) = map.line_points(line);
-                Texels::Tinted(self.lighting.tint(super::light::fake_contrast(light, to - from), m.depth))
+                Texels::Tinted(self.scene.lighting.tint(super::light::fake_contrast(light, to - from), m.depth))
             }
-            _ => Texels::Solid(colour(self.shade, Surface::Wall { line: m.line }, light, 1.0)),
+            shade => Texels::Solid(colour(shade, Surface::Wall { line: m.line }, light, 1.0)),
         };
         let u = (m.u.floor() as i64).rem_euclid(texture.width as i64) as usize;
         let bottom = top - texture.height as f64;

@@ -16,11 +16,17 @@ const STRIP_BYTES: usize = 256 * 1024;
 /// pixels), so neighbouring strips never share a line.
 const ALIGN: usize = 16;
 
-/// The strips `[x0, x1)` covering `width` columns of a frame `height` rows tall.
-pub fn strips(width: usize, height: usize) -> impl Iterator<Item = (usize, usize)> {
+/// The strips `[x0, x1)` covering `width` columns of a frame `height` rows
+/// tall, and at least `workers` of them when the width allows, so that each
+/// worker thread has one even where a single strip would fit in cache
+/// (320x200). Every strip but the last is a multiple of 16 columns wide; the
+/// last takes the rest (a sliver of a strip would cost a walk of its own).
+pub fn strips(width: usize, height: usize, workers: usize) -> impl Iterator<Item = (usize, usize)> {
     let fit = STRIP_BYTES / (height.max(1) * 4);
-    let step = (fit / ALIGN * ALIGN).max(ALIGN);
-    (0..width).step_by(step).map(move |x0| (x0, (x0 + step).min(width)))
+    let share = width / workers.max(1);
+    let step = (fit.min(share) / ALIGN * ALIGN).max(ALIGN);
+    let count = if width == 0 { 0 } else { (width / step).max(1) };
+    (0..count).map(move |i| (i * step, if i + 1 == count { width } else { (i + 1) * step }))
 }
 
 #[cfg(test)]
@@ -29,12 +35,20 @@ mod tests {
 
     #[test]
     fn strips_cover_the_screen_once() {
-        for (w, h) in [(320, 200), (1920, 1080), (7, 3), (16384, 1)] {
-            let s: Vec<_> = strips(w, h).collect();
-            assert_eq!(s.first().map(|s| s.0), Some(0));
-            assert_eq!(s.last().map(|s| s.1), Some(w));
-            assert!(s.windows(2).all(|p| p[0].1 == p[1].0));
+        for (w, h) in [(320, 200), (321, 200), (1920, 1080), (7, 3), (16384, 1)] {
+            for workers in 1..=5 {
+                let s: Vec<_> = strips(w, h, workers).collect();
+                assert_eq!(s.first().map(|s| s.0), Some(0));
+                assert_eq!(s.last().map(|s| s.1), Some(w));
+                assert!(s.windows(2).all(|p| p[0].1 == p[1].0 && p[0].1 % ALIGN == 0));
+                assert!(s.len() >= workers.min(w.div_ceil(ALIGN)), "{w}x{h}, {workers} workers: {s:?}");
+            }
         }
-        assert_eq!(strips(320, 200).count(), 1, "small frames are one strip");
+        assert_eq!(strips(320, 200, 1).count(), 1, "small frames are one strip");
+        assert_eq!(strips(320, 200, 2).collect::<Vec<_>>(), [(0, 160), (160, 320)]);
+        assert_eq!(strips(321, 200, 2).collect::<Vec<_>>(), [(0, 160), (160, 321)]);
+        assert_eq!(strips(321, 200, 1).collect::<Vec<_>>(), [(0, 321)]);
+        assert_eq!(strips(0, 200, 2).count(), 0);
+        assert_eq!(strips(1920, 1080, 1).count(), strips(1920, 1080, 4).count(), "big frames have strips to spare");
     }
 }

@@ -148,9 +148,12 @@ impl SpanPainter<'_> {
         let tint = self.lighting.tint(self.key.light, dist);
         let (x0, x1) = (self.x0 + i0, self.x0 + i1);
         // The map point under column x is eye + dist * (forward + right * t_x),
-        // and t steps by 1/focal per column.
-        let ray = cam.forward + cam.right * cam.column_slope(x0);
-        let start = cam.eye + ray * dist;
+        // and t steps by 1/focal per column. Every span of the row steps from
+        // the same anchor, the point under column 0, so a pixel's texel
+        // depends on its position alone, not on where its span began: the
+        // same however the screen is cut into strips or the plane into spans.
+        let ray = cam.forward + cam.right * cam.column_slope(0);
+        let anchor = cam.eye + ray * dist;
         let step = cam.right * (dist / cam.focal);
         let (w, h) = (self.texture.width as i64, self.texture.height as i64);
         let one = 1i64 << FRAC;
@@ -159,10 +162,11 @@ impl SpanPainter<'_> {
             ((c - (c / size_f).floor() * size_f) * one as f64) as i64
         };
         let (wf, hf) = (w << FRAC, h << FRAC);
-        let mut u = fixed(start.x, w).clamp(0, wf - 1);
-        let mut v = fixed(-start.y, h).clamp(0, hf - 1);
         let du = (step.x * one as f64) as i64 % wf;
         let dv = (-step.y * one as f64) as i64 % hf;
+        let columns = x0 as i64;
+        let mut u = (fixed(anchor.x, w).clamp(0, wf - 1) + columns * du).rem_euclid(wf);
+        let mut v = (fixed(-anchor.y, h).clamp(0, hf - 1) + columns * dv).rem_euclid(hf);
         let texels = &self.texture.texels;
         let height = self.texture.height;
         out.fill_row(y, x0, x1, |_| {

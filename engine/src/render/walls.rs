@@ -9,7 +9,7 @@
 use glam::DVec2;
 
 use super::columns::ColumnWriter;
-use super::frame::Frame;
+use super::frame::{Scene, StripFrame};
 use super::light::{fake_contrast, Lighting};
 use super::plan::Plan;
 use super::planes::{paint_plane, PlanePaint};
@@ -65,16 +65,9 @@ struct SegColumns<'a> {
     lower: Paint<'a>,
 }
 
-pub fn draw_seg(
-    level: &Level,
-    cam: &Camera,
-    seg: &Seg,
-    frame: &mut Frame,
-    out: &mut ColumnWriter,
-    shade: Shade,
-    lighting: &Lighting,
-) {
+pub(crate) fn draw_seg(scene: &Scene, seg: &Seg, frame: &mut StripFrame, out: &mut ColumnWriter) {
     frame.stats.walls_considered += 1;
+    let (level, cam) = (scene.level, scene.cam);
     let map = &level.map;
     let line = &map.lines[seg.line];
     // Facing and depth come from the whole map line in camera space, in the
@@ -95,13 +88,13 @@ pub fn draw_seg(
     let Some((x0, x1)) = cam.project_span(cam.to_camera(seg.v1), cam.to_camera(seg.v2)) else {
         return;
     };
-    let cols = seg_columns(level, seg, line, (from, dir, cross_from), shade, &frame.plan);
+    let cols = seg_columns(level, seg, line, (from, dir, cross_from), scene.shade, &scene.plan);
     let mut drew = false;
     let mut x = x0;
     while let Some(start) = frame.occlusion.next_open(x, x1) {
         let stop = frame.occlusion.next_closed(start, x1);
         for col in start..stop {
-            draw_column(cam, lighting, &cols, col, frame, out);
+            draw_column(scene, &cols, col, frame, out);
         }
         drew = true;
         x = stop;
@@ -230,8 +223,9 @@ fn wall_paints<'a>(
 }
 
 #[inline]
-fn draw_column(cam: &Camera, lighting: &Lighting, s: &SegColumns, x: usize, frame: &mut Frame, out: &mut ColumnWriter) {
-    let t = frame.slopes[x];
+fn draw_column(scene: &Scene, s: &SegColumns, x: usize, frame: &mut StripFrame, out: &mut ColumnWriter) {
+    let (cam, lighting) = (scene.cam, &scene.lighting);
+    let t = scene.slopes[x];
     let depth = s.cross_from / cross(DVec2::new(1.0, t), s.dir);
     // Columns inside the near-clipped span are at depth >= NEAR up to rounding.
     let depth = if depth.is_finite() { depth.max(NEAR) } else { NEAR };
@@ -241,16 +235,16 @@ fn draw_column(cam: &Camera, lighting: &Lighting, s: &SegColumns, x: usize, fram
     let floor_start = row(s.floor).clamp(ceiling_end, bottom);
     for (rows, paint) in [((top, ceiling_end), s.ceiling_paint), ((floor_start, bottom), s.floor_paint)] {
         match paint {
-            PlanePaint::Flat { id, height, light, .. } if frame.spans => {
+            PlanePaint::Flat { id, height, light, .. } if scene.spans => {
                 frame.visplanes.add(PlaneKey { texture: id, height, light }, x, rows.0, rows.1);
             }
-            _ => paint_plane(out, cam, lighting, &frame.inv_rows, x, rows, t, paint),
+            _ => paint_plane(out, cam, lighting, scene.inv_rows, x, rows, t, paint),
         }
     }
     let u = if s.needs_u { texture_u(s, depth, t) } else { 0.0 };
     let wall = WallColumn { cam, lighting, x, depth, u };
     // Clip events only matter to the masked pass; a frame without one skips them.
-    let track = frame.plan.masked_pass();
+    let track = scene.plan.masked_pass();
     match s.back {
         None => {
             wall.paint(out, (ceiling_end, floor_start), s.middle);

@@ -30,7 +30,7 @@ pub fn run(args: &BenchTourArgs) -> Result<()> {
         bail!("{}: no pose of the tour lies inside a sector", args.map.display());
     }
     let (width, height) = args.size;
-    let options = RenderOptions { renderer, ..Default::default() };
+    let options = RenderOptions { renderer, threads: args.threads, ..Default::default() };
     let mut frame = Frame::new();
     let mut fb = Framebuffer::new(width, height);
     let mut render = |view: &View| {
@@ -53,7 +53,7 @@ pub fn run(args: &BenchTourArgs) -> Result<()> {
     let summary = Summary::of(&mut times);
     let size = format!("{width}x{height}");
     println!("map       {} ({} poses x {passes} passes)", args.map.display(), views.len());
-    println!("renderer  {} at {size}", renderer.name());
+    println!("renderer  {} at {size}, {} thread(s)", renderer.name(), args.threads);
     println!("frames    {}", summary.frames);
     println!("median    {:.4} ms ({:.0} fps)", summary.median_ms, summary.fps_median());
     println!("p95       {:.4} ms", summary.p95_ms);
@@ -63,6 +63,7 @@ pub fn run(args: &BenchTourArgs) -> Result<()> {
             "map": args.map.display().to_string(),
             "size": size,
             "renderer": renderer.name(),
+            "threads": args.threads,
             "frames": summary.frames,
             "passes": passes,
             "median_ms": summary.median_ms,
@@ -95,7 +96,8 @@ impl Summary {
         if n == 0 {
             return Summary { frames: 0, median_ms: f64::NAN, p95_ms: f64::NAN, mean_ms: f64::NAN };
         }
-        let median = if n % 2 == 0 { (ms(times[n / 2 - 1]) + ms(times[n / 2])) / 2.0 } else { ms(times[n / 2]) };
+        let median =
+            if n.is_multiple_of(2) { (ms(times[n / 2 - 1]) + ms(times[n / 2])) / 2.0 } else { ms(times[n / 2]) };
         let rank = (n * 95).div_ceil(100).max(1);
         let mean = times.iter().map(|&d| ms(d)).sum::<f64>() / n as f64;
         Summary { frames: n, median_ms: median, p95_ms: ms(times[rank - 1]), mean_ms: mean }

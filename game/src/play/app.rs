@@ -51,6 +51,8 @@ pub struct App {
 pub struct AppOptions {
     pub screen: ScreenOptions,
     pub renderer: Renderer,
+    /// Threads drawing each frame.
+    pub threads: usize,
     pub frame_limit: Option<u64>,
     pub hud: bool,
 }
@@ -66,7 +68,7 @@ impl App {
             screen: None,
             session,
             frame_limit: options.frame_limit,
-            options: RenderOptions { renderer: options.renderer, ..Default::default() },
+            options: RenderOptions { renderer: options.renderer, threads: options.threads, ..Default::default() },
             renderers,
             frame: Frame::new(),
             fb: Framebuffer::new(w as usize, h as usize),

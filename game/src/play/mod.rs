@@ -71,6 +71,7 @@ pub fn run(args: &PlayArgs) -> Result<()> {
             vsync: !args.no_vsync,
         },
         renderer,
+        threads: args.threads,
         frame_limit: args.frames,
         hud: !args.no_hud,
     };
