@@ -24,6 +24,7 @@ pub mod map;
 pub mod materials;
 pub mod play;
 pub mod render;
+pub mod study;
 pub mod texture;
 pub mod tour;
 pub mod wad;

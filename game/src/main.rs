@@ -9,6 +9,8 @@ mod compile;
 mod import;
 mod play;
 mod replay;
+mod report;
+mod suite;
 
 use std::process::ExitCode;
 
