@@ -131,6 +131,17 @@ proptest! {
                             "{} renderer, {}: pixels_written; {}", renderer.name(), what, saved(&spec, &g)
                         );
                     }
+                    // Painter's and the z-buffer: no panic, every pixel written.
+                    for renderer in [Renderer::Painter, Renderer::Zbuffer] {
+                        let options = RenderOptions { renderer, shade: Shade::Ids, count_writes: true, ..Default::default() };
+                        let mut fb = Framebuffer::new(size.0, size.1);
+                        let mut frame = Frame::new();
+                        render_frame(&level, view, &options, &mut frame, &mut fb);
+                        prop_assert!(
+                            frame.write_counts().iter().all(|&c| c >= 1),
+                            "{} renderer, {}: a pixel never written; {}", renderer.name(), what, saved(&spec, &g)
+                        );
+                    }
                 }
             }
         }

@@ -76,8 +76,9 @@ pub struct BenchTourArgs {
     /// Frame size, WxH.
     #[arg(long, default_value = "320x200", value_parser = parse_size)]
     pub size: (usize, usize),
-    /// bsp, reference, or raycast (grid maps only). Default: raycast for a
-    /// grid map, bsp otherwise.
+    /// bsp, reference, raycast (grid maps only), painter or zbuffer (the
+    /// visibility study's overwriting renderers, no sprites or masked
+    /// middles). Default: raycast for a grid map, bsp otherwise.
     #[arg(long, value_parser = parse_renderer)]
     pub renderer: Option<Renderer>,
     /// Timed passes over the tour, after one untimed warm-up pass. Default:
@@ -122,8 +123,9 @@ pub struct CaptureArgs {
     /// Frame size, WxH.
     #[arg(long, default_value = "640x400", value_parser = parse_size)]
     pub size: (usize, usize),
-    /// bsp, reference, or raycast (grid maps only). Default: raycast for a
-    /// grid map, bsp otherwise.
+    /// bsp, reference, raycast (grid maps only), painter or zbuffer (the
+    /// visibility study's overwriting renderers, no sprites or masked
+    /// middles). Default: raycast for a grid map, bsp otherwise.
     #[arg(long, value_parser = parse_renderer)]
     pub renderer: Option<Renderer>,
     /// How the ray-caster's rays find walls: dda (exact), march:K (a sample
@@ -163,8 +165,8 @@ pub struct PlayArgs {
     /// Print the frame-loop timings (median render and upload+present) at exit.
     #[arg(long)]
     pub stats: bool,
-    /// bsp, reference, or raycast (grid maps only); R cycles them in the
-    /// window. Default: raycast for a grid map, else bsp.
+    /// bsp, reference, raycast (grid maps only), painter or zbuffer; R
+    /// cycles them in the window. Default: raycast for a grid map, else bsp.
     #[arg(long, value_parser = parse_renderer)]
     pub renderer: Option<Renderer>,
     /// Threads drawing each frame (its strips in parallel; the frame is the
@@ -203,8 +205,9 @@ pub struct ReplayArgs {
     /// Size of the captured frames, WxH.
     #[arg(long, default_value = "640x400", value_parser = parse_size)]
     pub size: (usize, usize),
-    /// bsp, reference, or raycast (grid maps only). Default: raycast for a
-    /// grid map, else bsp.
+    /// bsp, reference, raycast (grid maps only), painter or zbuffer (the
+    /// visibility study's overwriting renderers, no sprites or masked
+    /// middles). Default: raycast for a grid map, else bsp.
     #[arg(long, value_parser = parse_renderer)]
     pub renderer: Option<Renderer>,
     /// Threads drawing each frame (its strips in parallel; the frame is the

@@ -56,7 +56,7 @@ pub(crate) fn render(scene: &Scene, frame: &mut StripFrame, out: &mut ColumnWrit
 /// ray runs along the line. The screen's half-open rule gives that column to
 /// what starts at the ray, as if the ray were an infinitesimal step to its
 /// right: the front side when the ray runs `a -> b`, the back when `b -> a`.
-fn near_side(node: &Node, cam: &Camera) -> bool {
+pub(crate) fn near_side(node: &Node, cam: &Camera) -> bool {
     let d = front_distance(node.a, node.b, cam.eye);
     if d == 0.0 {
         (node.b - node.a).dot(cam.forward) < 0.0

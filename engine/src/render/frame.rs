@@ -217,6 +217,8 @@ pub(crate) struct StripFrame {
     /// What this worker's strips cost, and the lines they showed.
     pub(crate) stats: FrameStats,
     pub(crate) seen_lines: Vec<bool>,
+    /// Depth buffer and scratch canvas of the z-buffer renderer (study only).
+    pub(crate) zbuffer: super::zbuffer::Buffers,
 }
 
 impl StripFrame {

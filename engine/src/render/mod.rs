@@ -12,6 +12,7 @@ pub mod columns;
 pub mod frame;
 pub mod light;
 pub mod occlusion;
+pub mod painter;
 pub mod parallel;
 pub mod plan;
 pub mod planes;
@@ -25,6 +26,7 @@ pub mod strips;
 pub mod view;
 pub mod visplanes;
 pub mod walls;
+pub mod zbuffer;
 
 pub use frame::{Frame, FrameStats};
 use frame::{Scene, StripFrame};
@@ -45,17 +47,32 @@ pub enum Renderer {
     /// Grid ray-casting, one ray per column (grid maps only; other maps draw
     /// as void).
     Raycast,
+    /// Painter's algorithm: the BSP walked far side first, every facing seg
+    /// drawn whole over what is there (no occlusion; see [`painter`]).
+    Painter,
+    /// Every map line drawn, in map order, through a per-pixel depth buffer
+    /// (no BSP at all; see [`zbuffer`]).
+    Zbuffer,
 }
 
 impl Renderer {
-    pub const ALL: [Renderer; 3] = [Renderer::Bsp, Renderer::Reference, Renderer::Raycast];
+    pub const ALL: [Renderer; 5] =
+        [Renderer::Bsp, Renderer::Reference, Renderer::Raycast, Renderer::Painter, Renderer::Zbuffer];
 
     pub fn name(self) -> &'static str {
         match self {
             Renderer::Bsp => "bsp",
             Renderer::Reference => "reference",
             Renderer::Raycast => "raycast",
+            Renderer::Painter => "painter",
+            Renderer::Zbuffer => "zbuffer",
         }
+    }
+
+    /// Whether the opaque pass writes every pixel exactly once. Painter's and
+    /// the z-buffer overwrite by design: that overdraw is what they measure.
+    pub fn writes_each_pixel_once(self) -> bool {
+        !matches!(self, Renderer::Painter | Renderer::Zbuffer)
     }
 
     /// The renderer a level is drawn with by default: the ray-caster for a
@@ -224,6 +241,8 @@ fn draw_strip(
                 oracle.render(x0..x1, strip, &mut out, options.shade);
             }
         }
+        Renderer::Painter => painter::render(scene, strip, &mut out, (x0, x1)),
+        Renderer::Zbuffer => zbuffer::render(scene, strip, &mut out, (x0, x1)),
     }
     strip.stats.pixels_written += out.written;
     strip.stats.masked_pixels_written += out.masked_written;

@@ -8,6 +8,7 @@
 
 pub mod precision;
 pub mod rays;
+pub mod visibility;
 
 use std::time::Instant;
 
