@@ -35,7 +35,8 @@ pub struct SuiteArgs {
 
 /// The studies, in report order: `(id, run)`.
 type Run = fn(&[(String, &Level)], &Settings, &mut dyn FnMut(&str)) -> Study;
-const STUDIES: [(&str, Run); 2] = [("precision", study::precision::run), ("rays", study::rays::run)];
+const STUDIES: [(&str, Run); 3] =
+    [("rays", study::rays::run), ("bsp", study::bsp::run), ("precision", study::precision::run)];
 
 pub fn run(args: &SuiteArgs) -> Result<()> {
     let started = Instant::now();

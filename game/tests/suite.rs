@@ -1,0 +1,79 @@
+//! `sightline bench --quick`: the study suite CI runs, checked for sane
+//! numbers, not for speed (timings are in the report, never asserted).
+
+use std::path::Path;
+use std::process::Command;
+
+use serde_json::Value;
+
+fn run_quick() -> (Value, String, tempfile::TempDir) {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let out = tempfile::tempdir().unwrap();
+    let doc = out.path().join("doc.md");
+    let status = Command::new(env!("CARGO_BIN_EXE_sightline"))
+        .current_dir(&root)
+        .args(["bench", "--quick", "--out"])
+        .arg(out.path().join("report"))
+        .arg("--doc")
+        .arg(&doc)
+        .status()
+        .unwrap();
+    assert!(status.success(), "bench --quick failed");
+    let dir = out.path().join("report");
+    let json: Value = serde_json::from_str(&std::fs::read_to_string(dir.join("results.json")).unwrap()).unwrap();
+    let report = std::fs::read_to_string(dir.join("report.md")).unwrap();
+    assert_eq!(std::fs::read_to_string(&doc).unwrap().lines().next(), report.lines().next());
+    (json, report, out)
+}
+
+fn study<'a>(json: &'a Value, id: &str) -> &'a Value {
+    json.as_array().unwrap().iter().find(|s| s["id"] == id).unwrap_or_else(|| panic!("no study {id}"))
+}
+
+/// The rows of table `name` in `study` as maps from column to value.
+fn rows(study: &Value, name: &str) -> Vec<std::collections::HashMap<String, Value>> {
+    let table = study["tables"].as_array().unwrap().iter().find(|t| t["name"] == name).unwrap();
+    let columns: Vec<String> =
+        table["columns"].as_array().unwrap().iter().map(|c| c.as_str().unwrap().to_string()).collect();
+    table["rows"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| columns.iter().cloned().zip(r.as_array().unwrap().iter().cloned()).collect())
+        .collect()
+}
+
+#[test]
+fn quick_bench_reports_every_study_with_sane_numbers() {
+    let (json, report, out) = run_quick();
+    for id in ["precision", "rays"] {
+        let s = study(&json, id);
+        assert!(!s["conclusions"].as_array().unwrap().is_empty(), "{id} draws no conclusion");
+        for plot in s["plots"].as_array().unwrap() {
+            let svg = out.path().join("report").join(format!("{}.svg", plot["name"].as_str().unwrap()));
+            let text = std::fs::read_to_string(&svg).unwrap_or_else(|e| panic!("{}: {e}", svg.display()));
+            assert!(text.contains("<svg") && text.contains("polyline"), "{} is not a line chart", svg.display());
+            assert!(report.contains(&format!("{}.svg", plot["name"].as_str().unwrap())));
+        }
+    }
+    // Precision: f64 relative to the eye agrees with the exact answer at
+    // every distance, out to 1e7; f32 absolute does not, that far out.
+    let precision = rows(study(&json, "precision"), "precision-summary");
+    for r in &precision {
+        let wrong = r["disagreeing columns (%)"].as_f64().unwrap();
+        match r["numbers"].as_str().unwrap() {
+            "f64 relative (default)" => assert_eq!(wrong, 0.0, "{r:?}"),
+            "f32 absolute" if r["offset"].as_f64().unwrap() >= 1e7 => assert!(wrong > 0.0, "{r:?}"),
+            _ => {}
+        }
+    }
+    // Rays: the exact DDA is never wrong; marching with the largest step is.
+    let rays = rows(study(&json, "rays"), "rays");
+    assert!(rays.iter().filter(|r| r["method"] == "dda").all(|r| r["wrong share"].as_f64() == Some(0.0)));
+    let coarsest = rays
+        .iter()
+        .filter(|r| r["method"] == "march")
+        .max_by(|a, b| a["parameter (cells)"].as_f64().unwrap().total_cmp(&b["parameter (cells)"].as_f64().unwrap()))
+        .expect("march rows");
+    assert!(coarsest["wrong share"].as_f64().unwrap() > 0.0, "{coarsest:?}");
+}
