@@ -34,6 +34,9 @@ pub enum Command {
     Replay(ReplayArgs),
     /// Import maps from a Doom WAD as RON maps, with their art as PNGs.
     Import(ImportArgs),
+    /// Measure what accuracy costs: the study suite, written as a report with
+    /// tables and plots.
+    Bench(crate::suite::SuiteArgs),
 }
 
 #[derive(Args)]

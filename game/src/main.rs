@@ -23,6 +23,7 @@ fn main() -> ExitCode {
         Some(cli::Command::Play(args)) => play::run(&args),
         Some(cli::Command::Replay(args)) => replay::run(&args),
         Some(cli::Command::Import(args)) => import::run(&args),
+        Some(cli::Command::Bench(args)) => suite::run(&args),
         None => play::run(&cli.play),
     };
     match result {
