@@ -34,7 +34,8 @@ pub enum Command {
     Replay(ReplayArgs),
     /// Import maps from a Doom WAD as RON maps, with their art as PNGs.
     Import(ImportArgs),
-    /// Time the renderer headless.
+    /// Measure what accuracy costs: the study suite, written as a report with
+    /// tables and plots; or `bench tour MAP` to time the renderer headless.
     Bench(BenchArgs),
 }
 
@@ -55,11 +56,15 @@ pub struct ImportArgs {
     pub check: bool,
 }
 
-/// `sightline bench STUDY ...`: each study is a subcommand of its own.
+/// `sightline bench [MAP...] --out DIR`: the study suite; `sightline bench
+/// tour MAP`: the frame-time benchmark.
 #[derive(Args)]
+#[command(args_conflicts_with_subcommands = true, subcommand_negates_reqs = true)]
 pub struct BenchArgs {
     #[command(subcommand)]
-    pub command: BenchCommand,
+    pub command: Option<BenchCommand>,
+    #[command(flatten)]
+    pub suite: crate::suite::SuiteArgs,
 }
 
 #[derive(Subcommand)]

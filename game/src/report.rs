@@ -133,6 +133,8 @@ fn draw(plot: &Plot, path: &Path) -> Result<()> {
         .y_desc(plot.y_label.as_str())
         .x_label_formatter(&label(plot.log_x))
         .y_label_formatter(&label(plot.log_y))
+        .bold_line_style(RGBColor(210, 210, 210))
+        .light_line_style(RGBColor(240, 240, 240))
         .draw()
         .map_err(err)?;
     for (k, (name, points)) in series.into_iter().enumerate() {

@@ -35,8 +35,12 @@ pub struct SuiteArgs {
 
 /// The studies, in report order: `(id, run)`.
 type Run = fn(&[(String, &Level)], &Settings, &mut dyn FnMut(&str)) -> Study;
-const STUDIES: [(&str, Run); 3] =
-    [("visibility", study::visibility::run), ("precision", study::precision::run), ("rays", study::rays::run)];
+const STUDIES: [(&str, Run); 4] = [
+    ("visibility", study::visibility::run),
+    ("rays", study::rays::run),
+    ("bsp", study::bsp::run),
+    ("precision", study::precision::run),
+];
 
 pub fn run(args: &SuiteArgs) -> Result<()> {
     let started = Instant::now();

@@ -8,6 +8,7 @@ use std::time::Instant;
 
 use glam::DVec2;
 
+use super::exhaustive::{ExhaustiveSplitter, EXHAUSTIVE_LIMIT};
 use super::split::{CostSplitter, RandomSplitter, Splitter, SplitterKind};
 use super::{Bsp, BuildStats, Child, CompiledMap, Leaf, LineSide, Node, Seg};
 use crate::geom::{line_intersection, Aabb};
@@ -37,6 +38,8 @@ pub enum CompileError {
         at.x, at.y
     )]
     MixedLeaf { a: usize, b: usize, at: DVec2 },
+    #[error("the exhaustive splitter takes at most {limit} sides (the search is exponential); this map has {sides}")]
+    TooLargeForExhaustive { sides: usize, limit: usize },
 }
 
 /// A seg under construction and the input side it was cut from.
@@ -151,6 +154,10 @@ pub fn build(map: &Map, options: &BuildOptions) -> Result<CompiledMap, CompileEr
     let mut splitter: Box<dyn Splitter> = match options.splitter {
         SplitterKind::Random => Box::new(RandomSplitter::new(sides_in, options.seed)),
         SplitterKind::Cost => Box::new(CostSplitter::new(map.lines.len())),
+        SplitterKind::Exhaustive if sides_in > EXHAUSTIVE_LIMIT => {
+            return Err(CompileError::TooLargeForExhaustive { sides: sides_in, limit: EXHAUSTIVE_LIMIT })
+        }
+        SplitterKind::Exhaustive => Box::new(ExhaustiveSplitter::new(map)),
     };
     let mut bsp = Bsp { root: Child::Leaf(0), nodes: Vec::new(), leaves: Vec::new(), segs: Vec::new() };
     let (mut splits, mut depth) = (0, 0);

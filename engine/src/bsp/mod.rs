@@ -13,6 +13,7 @@
 
 pub mod build;
 pub mod check;
+pub mod exhaustive;
 pub mod file;
 pub mod split;
 

@@ -23,15 +23,19 @@ pub enum SplitterKind {
     /// line, the cost model of Doom-era node builders (ZDBSP, AJBSP).
     #[default]
     Cost,
+    /// The smallest autopartition, by trying them all (small maps only: see
+    /// [`super::exhaustive`]).
+    Exhaustive,
 }
 
 impl SplitterKind {
-    pub const ALL: [SplitterKind; 2] = [SplitterKind::Random, SplitterKind::Cost];
+    pub const ALL: [SplitterKind; 3] = [SplitterKind::Random, SplitterKind::Cost, SplitterKind::Exhaustive];
 
     pub fn name(self) -> &'static str {
         match self {
             SplitterKind::Random => "random",
             SplitterKind::Cost => "cost",
+            SplitterKind::Exhaustive => "exhaustive",
         }
     }
 

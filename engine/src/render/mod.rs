@@ -155,7 +155,8 @@ pub fn render_frame(
     frame.plan = plan;
     frame.strips.clear();
     frame.strips.extend(strips::strips(w, h, threads));
-    let oracle = (options.renderer == Renderer::Reference).then(|| reference::Reference::new(level, &cam));
+    let oracle = (options.renderer == Renderer::Reference)
+        .then(|| reference::Reference::new(level, &cam).leaving_out(options.disabled));
     let Frame { slopes, inv_rows, sprites, strips, workers, pool, counts, .. } = frame;
     let scene = Scene {
         level,

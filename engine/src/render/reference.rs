@@ -31,6 +31,8 @@ pub struct Reference<'a> {
     ends: Vec<(DVec2, DVec2, bool)>,
     eye_sector: Option<usize>,
     things: Vec<Billboard<'a>>,
+    /// See-through middles are drawn (not disabled).
+    masked: bool,
 }
 
 impl<'a> Reference<'a> {
@@ -44,7 +46,24 @@ impl<'a> Reference<'a> {
                 (cam.to_camera(a), cam.to_camera(b), l.back.is_some())
             })
             .collect();
-        Reference { level, cam, ends, eye_sector: map.sector_at(cam.eye), things: things_in_front(level, cam) }
+        Reference {
+            level,
+            cam,
+            ends,
+            eye_sector: map.sector_at(cam.eye),
+            things: things_in_front(level, cam),
+            masked: true,
+        }
+    }
+
+    /// Leaves out the effects `disabled` names that the reference draws:
+    /// things (sprites) and see-through middles, as the other renderers do.
+    pub fn leaving_out(mut self, disabled: super::plan::Disabled) -> Reference<'a> {
+        if disabled.sprites {
+            self.things.clear();
+        }
+        self.masked &= !disabled.masked;
+        self
     }
 
     /// Renders `columns` (one strip) of the frame.
@@ -64,7 +83,15 @@ impl<'a> Reference<'a> {
             frame.stats.walls_considered += ends.len() as u64;
             let mut run: Option<(i32, u32)> = None;
             for y in 0..cam.height as i32 {
-                let c = pixel_colour(level, cam, ends, &frame.hits, &sprites, (cam.column_slope(x), y), shade);
+                let c = pixel_colour(
+                    level,
+                    cam,
+                    ends,
+                    &frame.hits,
+                    &sprites,
+                    (cam.column_slope(x), y),
+                    (shade, self.masked),
+                );
                 match run {
                     Some((_, rc)) if rc == c => {}
                     Some((start, rc)) => {
@@ -226,7 +253,7 @@ fn pixel_colour(
     hits: &[Hit],
     sprites: &[(&Billboard, usize)],
     (t, y): (f64, i32),
-    shade: Shade,
+    (shade, masked): (Shade, bool),
 ) -> u32 {
     let map = &level.map;
     let mut sprites = sprites.iter().peekable();
@@ -267,7 +294,7 @@ fn pixel_colour(
             Some(back) if above(back.floor) && !above(back.ceiling) => {
                 // Through the opening, unless a see-through middle covers it here.
                 let side = usize::from(!hit.from_front);
-                if let Some(id) = level.materials.sides[hit.line][side].middle {
+                if let Some(id) = level.materials.sides[hit.line][side].middle.filter(|_| masked) {
                     let texture = level.materials.textures.get(id);
                     let top = masked_top(map, line, !hit.from_front, texture.height as f64);
                     let u = masked_u(&ends[hit.line], near.x_offset, hit, t);

@@ -6,6 +6,7 @@
 //! report, the CSV/JSON and the plots (it holds the plotting crate), so the
 //! engine stays headless and free of presentation.
 
+pub mod bsp;
 pub mod precision;
 pub mod rays;
 pub mod visibility;
@@ -140,4 +141,23 @@ pub fn median_ms(runs: usize, mut f: impl FnMut()) -> f64 {
         .collect();
     times.sort_by(f64::total_cmp);
     times[times.len() / 2]
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn the_exhaustive_search_is_never_beaten_on_small_rooms() {
+        use crate::bsp::{build, BuildOptions, SplitterKind};
+        for k in 1..=5 {
+            let map = super::bsp::pillars(k, 7);
+            let best = build(&map, &BuildOptions { splitter: SplitterKind::Exhaustive, seed: 0 }).unwrap();
+            let cost = build(&map, &BuildOptions { splitter: SplitterKind::Cost, seed: 0 }).unwrap();
+            assert!(best.stats.sides_out <= cost.stats.sides_out, "{k}: {:?} {:?}", best.stats, cost.stats);
+            for seed in 0..8 {
+                let random = build(&map, &BuildOptions { splitter: SplitterKind::Random, seed }).unwrap();
+                assert!(best.stats.sides_out <= random.stats.sides_out);
+            }
+            crate::bsp::check::check_invariants(&best.map, &best.bsp).unwrap();
+        }
+    }
 }

@@ -1,7 +1,7 @@
-//! `sightline bench`: timing the engine headless, one study per subcommand.
-//! `bench tour` times `render_frame` over a fixed tour of one map; further
-//! studies (a suite over many maps writing a report) sit beside it as
-//! subcommands of their own.
+//! `sightline bench`: measuring the engine headless. Without a subcommand it
+//! runs the study suite over many maps and writes a report (see
+//! [`crate::suite`]); `bench tour` times `render_frame` over a fixed tour of
+//! one map.
 
 mod tour;
 
@@ -11,6 +11,7 @@ use crate::cli::{BenchArgs, BenchCommand};
 
 pub fn run(args: &BenchArgs) -> Result<()> {
     match &args.command {
-        BenchCommand::Tour(tour) => tour::run(tour),
+        Some(BenchCommand::Tour(tour)) => tour::run(tour),
+        None => crate::suite::run(&args.suite),
     }
 }
