@@ -25,8 +25,10 @@ pub struct SuiteArgs {
     #[arg(long)]
     pub quick: bool,
     /// Directory for report.md, results.json, the CSV tables and SVG plots.
-    #[arg(long)]
-    pub out: PathBuf,
+    // Required, but an `Option`: beside `bench tour` (a subcommand, which
+    // lifts the requirement) clap must be able to leave it unset.
+    #[arg(long, required = true)]
+    pub out: Option<PathBuf>,
     /// Also write the report as this markdown file, its images pointing into
     /// --out (how docs/accuracy.md is made).
     #[arg(long)]
@@ -43,6 +45,7 @@ const STUDIES: [(&str, Run); 4] = [
 ];
 
 pub fn run(args: &SuiteArgs) -> Result<()> {
+    let out = args.out.as_deref().context("--out DIR is required")?;
     let started = Instant::now();
     let paths = if args.maps.is_empty() { shipped_maps()? } else { args.maps.clone() };
     let mut levels = Vec::with_capacity(paths.len());
@@ -76,7 +79,7 @@ pub fn run(args: &SuiteArgs) -> Result<()> {
         args.size.0,
         args.size.1,
         if args.quick { " --quick" } else { "" },
-        args.out.display(),
+        out.display(),
         args.doc.as_ref().map_or(String::new(), |d| format!(" --doc {}", d.display()))
     );
     let heading = format!(
@@ -88,15 +91,15 @@ pub fn run(args: &SuiteArgs) -> Result<()> {
         std::thread::available_parallelism().map_or(1, |n| n.get()),
         levels.iter().map(|(n, _)| n.as_str()).collect::<Vec<_>>().join(", ")
     );
-    crate::report::write(&studies, &args.out, &heading)?;
+    crate::report::write(&studies, out, &heading)?;
     if let Some(doc) = &args.doc {
-        let prefix = relative_dir(doc, &args.out);
+        let prefix = relative_dir(doc, out);
         std::fs::write(doc, crate::report::markdown(&studies, &heading, &prefix))
             .with_context(|| format!("{}: cannot write", doc.display()))?;
     }
     println!(
         "{}: report.md, results.json, CSV tables and SVG plots ({:.0} s)",
-        args.out.display(),
+        out.display(),
         started.elapsed().as_secs_f64()
     );
     Ok(())
