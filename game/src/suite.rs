@@ -37,11 +37,12 @@ pub struct SuiteArgs {
 
 /// The studies, in report order: `(id, run)`.
 type Run = fn(&[(String, &Level)], &Settings, &mut dyn FnMut(&str)) -> Study;
-const STUDIES: [(&str, Run); 4] = [
+const STUDIES: [(&str, Run); 5] = [
     ("visibility", study::visibility::run),
     ("rays", study::rays::run),
     ("bsp", study::bsp::run),
     ("precision", study::precision::run),
+    ("sampling", study::sampling::run),
 ];
 
 pub fn run(args: &SuiteArgs) -> Result<()> {

@@ -20,13 +20,25 @@ pub struct ColumnWriter<'a> {
     pub written: u64,
     /// Pixels the masked pass wrote over the opaque pass (not in `counts`).
     pub masked_written: u64,
+    /// How textures are sampled (the sampling study's switches).
+    pub sampling: Sampling,
+}
+
+/// Texture sampling other than the default, for the sampling study: bilinear
+/// filtering on walls and flats, and affine (screen-linear) texture
+/// coordinates on floors and ceilings drawn per column. The defaults are
+/// Doom's: nearest texels, perspective-correct everywhere.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Sampling {
+    pub bilinear: bool,
+    pub affine_planes: bool,
 }
 
 impl<'a> ColumnWriter<'a> {
     /// A writer for columns `[x0, x0 + canvas.len() / height)` of a frame
     /// `height` rows tall; `counts`, if given, is as long as the canvas.
     pub fn new(canvas: &'a mut [u32], x0: usize, height: usize, counts: Option<&'a mut [u16]>) -> Self {
-        ColumnWriter { canvas, x0, height, counts, written: 0, masked_written: 0 }
+        ColumnWriter { canvas, x0, height, counts, written: 0, masked_written: 0, sampling: Sampling::default() }
     }
 
     /// Fills rows `[y0, y1)` of column `x`. Empty and inverted runs write nothing;

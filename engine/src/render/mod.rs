@@ -105,6 +105,9 @@ pub struct RenderOptions {
     pub disabled: plan::Disabled,
     /// How textured floors and ceilings are drawn.
     pub floors: Floors,
+    /// Texture sampling other than Doom's nearest, perspective-correct
+    /// default (the sampling study; affine applies to per-column floors).
+    pub sampling: columns::Sampling,
     /// How the ray-caster's rays find walls.
     pub ray: raycast::RayMethod,
     /// Threads drawing the frame's strips: 1 (or 0) draws them one after
@@ -123,6 +126,7 @@ impl Default for RenderOptions {
             floors: Floors::default(),
             ray: raycast::RayMethod::default(),
             threads: 1,
+            sampling: columns::Sampling::default(),
         }
     }
 }
@@ -224,6 +228,7 @@ fn draw_strip(
     let mut counts = std::mem::take(&mut strip.counts);
     let counting = options.count_writes.then_some(counts.as_mut_slice());
     let mut out = columns::ColumnWriter::new(&mut canvas, x0, h, counting);
+    out.sampling = options.sampling;
     match options.renderer {
         Renderer::Bsp | Renderer::Raycast => {
             if options.renderer == Renderer::Bsp {

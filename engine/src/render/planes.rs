@@ -56,6 +56,39 @@ pub fn paint_plane(
             let rise = height - cam.z;
             let (w, h) = (texture.width as f64, texture.height as f64);
             let (inv_w, inv_h) = (1.0 / w, 1.0 / h);
+            let point = |y: i32| {
+                let dist = rise * inv_rows[y as usize];
+                let dist = if dist >= 0.0 { dist.min(1e12) } else { 0.0 };
+                (cam.eye.x + ray.x * dist, -(cam.eye.y + ray.y * dist), dist)
+            };
+            if out.sampling.affine_planes || out.sampling.bilinear {
+                // Affine: the exact map points at the run's two ends, and
+                // texture coordinates linear in screen rows between them
+                // (the light too), as renderers without a divide per pixel did.
+                let (first, last) = (point(y0), point(y1 - 1));
+                let span = f64::from((y1 - 1 - y0).max(1));
+                let affine = out.sampling.affine_planes;
+                let bilinear = out.sampling.bilinear;
+                out.fill_with(x, y0, y1, |y| {
+                    let (u, v, dist) = if affine {
+                        let s = f64::from(y - y0) / span;
+                        (
+                            first.0 + (last.0 - first.0) * s,
+                            first.1 + (last.1 - first.1) * s,
+                            first.2 + (last.2 - first.2) * s,
+                        )
+                    } else {
+                        point(y)
+                    };
+                    let c = if bilinear {
+                        texture.bilinear(u, v)
+                    } else {
+                        texture.texels[wrap(u, w, inv_w) * texture.height + wrap(v, h, inv_h)]
+                    };
+                    lighting.tint(light, dist).apply(c)
+                });
+                return;
+            }
             out.fill_with(x, y0, y1, |y| {
                 // The row's ray reaches the plane after `dist` units of depth;
                 // a row on the horizon, or on the wrong side of it, never

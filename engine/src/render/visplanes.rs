@@ -155,6 +155,14 @@ impl SpanPainter<'_> {
         let ray = cam.forward + cam.right * cam.column_slope(0);
         let anchor = cam.eye + ray * dist;
         let step = cam.right * (dist / cam.focal);
+        if out.sampling.bilinear {
+            let texture = self.texture;
+            out.fill_row(y, x0, x1, |x| {
+                let p = anchor + step * x as f64;
+                tint.apply(texture.bilinear(p.x, -p.y))
+            });
+            return;
+        }
         let (w, h) = (self.texture.width as i64, self.texture.height as i64);
         let one = 1i64 << FRAC;
         let fixed = |c: f64, size: i64| -> i64 {

@@ -323,10 +323,18 @@ pub(crate) fn paint_textured(
     if rows.1 <= rows.0 {
         return;
     }
+    let exact_u = u;
     let u = (u.floor() as i64).rem_euclid(texture.width as i64) as usize;
     // Row y's ray is at height z + depth * slope(y) on the wall.
     let height = cam.z + depth * cam.row_slope(rows.0);
     let dv = depth / cam.focal;
     let tint = lighting.tint(light, depth);
+    if out.sampling.bilinear {
+        out.fill_with(x, rows.0, rows.1, |y| {
+            let v = top - height + f64::from(y - rows.0) * dv;
+            tint.apply(texture.bilinear(exact_u, v))
+        });
+        return;
+    }
     out.textured(x, rows, texture.column(u), top - height, dv, tint);
 }

@@ -9,6 +9,7 @@
 pub mod bsp;
 pub mod precision;
 pub mod rays;
+pub mod sampling;
 pub mod visibility;
 
 use std::time::Instant;

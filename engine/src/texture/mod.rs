@@ -88,6 +88,27 @@ impl Texture {
         let v = v.rem_euclid(self.height as i64) as usize;
         self.texels[u * self.height + v]
     }
+
+    /// Bilinear filtering at texture coordinates `(u, v)` (texel `i` covers
+    /// `[i, i + 1)`, so texel centres are at `i + 0.5`), wrapping at the
+    /// edges: the four nearest texels, weighted by closeness, per channel.
+    /// Only the sampling study uses it; the renderer samples nearest, as Doom.
+    pub fn bilinear(&self, u: f64, v: f64) -> u32 {
+        let (u, v) = (u - 0.5, v - 0.5);
+        let (u0, v0) = (u.floor(), v.floor());
+        let (fu, fv) = (u - u0, v - v0);
+        // Saturating casts: NaN becomes 0 and huge values clamp; both wrap in range.
+        let (iu, iv) = (u0 as i64, v0 as i64);
+        let texel = |du: i64, dv: i64| self.wrapped(iu.wrapping_add(du), iv.wrapping_add(dv)).to_le_bytes();
+        let (a, b, c, d) = (texel(0, 0), texel(1, 0), texel(0, 1), texel(1, 1));
+        let mut out = [0u8; 4];
+        for k in 0..4 {
+            let top = f64::from(a[k]) + (f64::from(b[k]) - f64::from(a[k])) * fu;
+            let bottom = f64::from(c[k]) + (f64::from(d[k]) - f64::from(c[k])) * fu;
+            out[k] = (top + (bottom - top) * fv).round().clamp(0.0, 255.0) as u8;
+        }
+        u32::from_le_bytes(out)
+    }
 }
 
 /// An index into a [`TextureSet`].
