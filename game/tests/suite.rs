@@ -46,7 +46,7 @@ fn rows(study: &Value, name: &str) -> Vec<std::collections::HashMap<String, Valu
 #[test]
 fn quick_bench_reports_every_study_with_sane_numbers() {
     let (json, report, out) = run_quick();
-    for id in ["visibility", "precision", "rays"] {
+    for id in ["visibility", "rays", "bsp", "precision", "sampling"] {
         let s = study(&json, id);
         assert!(!s["conclusions"].as_array().unwrap().is_empty(), "{id} draws no conclusion");
         for plot in s["plots"].as_array().unwrap() {
@@ -94,4 +94,26 @@ fn quick_bench_reports_every_study_with_sane_numbers() {
         }
     }
     assert!(visibility.iter().any(|r| r["map"] == "maze" && r["renderer"] == "painter"), "no maze row");
+}
+
+#[test]
+fn quick_bench_bsp_and_sampling_numbers_are_sane() {
+    let (json, _, _out) = run_quick();
+    // The exhaustive search is never beaten on the maps it can search.
+    let bsp = rows(study(&json, "bsp"), "bsp");
+    let maps: std::collections::BTreeSet<String> =
+        bsp.iter().filter(|r| r["splitter"] == "exhaustive").map(|r| r["map"].as_str().unwrap().to_string()).collect();
+    assert!(!maps.is_empty(), "no map was searched exhaustively");
+    for map in &maps {
+        let out = |r: &std::collections::HashMap<String, Value>| r["sides out"].as_f64().unwrap();
+        let best = bsp.iter().find(|r| r["map"] == map.as_str() && r["splitter"] == "exhaustive").map(out).unwrap();
+        assert!(bsp.iter().filter(|r| r["map"] == map.as_str()).all(|r| out(r) >= best), "{map}");
+    }
+    // Sampling: the default differs from itself nowhere; bilinear and affine
+    // change the picture.
+    let sampling = rows(study(&json, "sampling"), "sampling-summary");
+    let differing =
+        |name: &str| sampling.iter().find(|r| r["sampling"] == name).unwrap()["pixels differing (%)"].as_f64().unwrap();
+    assert_eq!(differing("nearest, spans (default)"), 0.0);
+    assert!(differing("bilinear") > 1.0 && differing("affine planes") > 1.0);
 }
