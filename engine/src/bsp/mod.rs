@@ -18,6 +18,8 @@ pub mod build;
 pub mod check;
 pub mod exhaustive;
 pub mod file;
+pub mod lines;
+pub mod rollout;
 pub mod split;
 
 use glam::DVec2;

@@ -4,15 +4,14 @@
 //! least one seg lies behind it or is cut by it. When no candidate divides, the
 //! set is convex and becomes a leaf.
 
-use std::collections::HashMap;
-
 use rand::rngs::ChaCha8Rng;
 use rand::seq::SliceRandom;
 use rand::SeedableRng;
 
 use super::blocks::Blocks;
 use super::build::{Class, Partition, WorkSeg};
-use super::LineSide;
+use super::lines::LineTable;
+use super::rollout::Rollout;
 use crate::map::Map;
 
 /// The splitters `sightline compile --splitter NAME` offers.
@@ -25,7 +24,10 @@ pub enum SplitterKind {
     /// than cut off empty cells, which changes no split.
     Random,
     /// Minimizes `splits * split_weight + |front - back|` over every candidate
-    /// line, the cost model of Doom-era node builders (ZDBSP, AJBSP).
+    /// line, the cost model of Doom-era node builders (ZDBSP, AJBSP), with
+    /// splits weighted 128; at nodes of at most 64 segs where every line
+    /// splits something, follows the 4 cheapest through the greedy subtree
+    /// below them and takes the one that splits least in total (a rollout).
     #[default]
     Cost,
     /// The smallest autopartition, by trying them all (small maps only: see
@@ -122,46 +124,57 @@ impl Splitter for RandomSplitter {
 /// freedoom1, and slower (deeper trees).
 pub const SPLIT_WEIGHT: usize = 128;
 
+/// Nodes of at most this many segs choose by rollout (see `rollout.rs`)
+/// when every candidate splits something. Extra segs on freedoom1 /
+/// freedoom2 and total build ms on freedoom1 (bsp_tune, median of 3, busy
+/// 2-core VM), by this bound and [`ROLLOUT_CANDIDATES`]:
+///
+/// | below | 2 candidates | 4 | 8 |
+/// |---|---|---|---|
+/// | (none: greedy) | 9.41 / 10.17 %, 276 ms | | |
+/// | 32 | 9.05 / 9.73, 321 | 8.81 / 9.43, 313 | 8.71 / 9.24, 345 |
+/// | 64 | 8.92 / 9.58, 344 | 8.60 / 9.16, 390 | 8.44 / 8.89, 503 |
+/// | 128 | 8.83 / 9.45, 442 | 8.45 / 8.98, 660 | 8.26 / 8.68, 818 |
+///
+/// Rolling out even when a candidate splits nothing gained 0.13 points on
+/// freedoom1 (64 and 4: 8.46 %) for half again the time.
+pub const ROLLOUT_BELOW: usize = 64;
+
+/// How many candidates of least cost a rollout follows (see [`ROLLOUT_BELOW`]).
+pub const ROLLOUT_CANDIDATES: usize = 4;
+
 pub struct CostSplitter {
     pub split_weight: usize,
-    /// Per map line, its collinear group: lines on one infinite line give one
-    /// partition, so only the first seg of each group is tried at a node.
-    group: Vec<u32>,
+    lines: LineTable,
     /// `seen[group] == stamp` when the group was already tried at this node.
     seen: Vec<u32>,
     stamp: u32,
-    /// Per map line, its partition for a front seg and for a back seg.
-    parts: Vec<[Partition; 2]>,
     blocks: Blocks,
+    rollout: Rollout,
 }
 
 impl CostSplitter {
     pub fn new(map: &Map) -> Self {
-        let group = collinear_groups(map);
-        let groups = group.iter().max().map_or(0, |&g| g as usize + 1);
-        let parts = (0..map.lines.len())
-            .map(|l| [LineSide::Front, LineSide::Back].map(|side| Partition::of_side(map, l, side)))
-            .collect();
+        let lines = LineTable::new(map);
         CostSplitter {
             split_weight: SPLIT_WEIGHT,
-            group,
-            seen: vec![0; groups],
+            seen: vec![0; lines.groups],
             stamp: 0,
-            parts,
             blocks: Blocks::default(),
+            rollout: Rollout::new(lines.groups),
+            lines,
         }
     }
-}
 
-impl Splitter for CostSplitter {
-    fn pick(&mut self, _map: &Map, segs: &[WorkSeg]) -> Option<usize> {
+    /// The candidate of least cost, every candidate tried.
+    fn greedy(&mut self, segs: &[WorkSeg]) -> Option<usize> {
         self.stamp += 1;
         self.blocks.rebuild(segs);
         let w = self.split_weight;
         let cost = |t: &Tally| t.splits * w + t.front.abs_diff(t.back);
         let mut best: Option<(usize, usize)> = None;
         for (c, s) in segs.iter().enumerate() {
-            let g = self.group[s.seg.line] as usize;
+            let g = self.lines.group(s.seg.line);
             if self.seen[g] == self.stamp {
                 continue;
             }
@@ -172,8 +185,7 @@ impl Splitter for CostSplitter {
             // cost, the candidate cannot win.
             let give_up =
                 |t: &Tally, left: usize| t.splits * w + t.front.abs_diff(t.back).saturating_sub(left) >= bound;
-            let part = &self.parts[s.seg.line][(s.seg.side == LineSide::Back) as usize];
-            let Some(t) = self.blocks.tally(part, give_up) else {
+            let Some(t) = self.blocks.tally(self.lines.part_of(&s.seg), give_up) else {
                 continue;
             };
             if t.divides() && cost(&t) < bound {
@@ -184,53 +196,12 @@ impl Splitter for CostSplitter {
     }
 }
 
-/// Numbers each map line's infinite line, collinear lines alike, whichever
-/// way they run. Lines with integer end points (every Doom map) are keyed
-/// exactly by their equation `a x + b y = c` reduced by the gcd; any other
-/// line is a group of its own (no collinear candidate is then skipped, which
-/// costs time, never correctness).
-pub fn collinear_groups(map: &Map) -> Vec<u32> {
-    let mut ids: HashMap<(i64, i64, i64), u32> = HashMap::new();
-    let mut next = 0u32;
-    let mut fresh = || {
-        next += 1;
-        next - 1
-    };
-    let mut group = Vec::with_capacity(map.lines.len());
-    for line in &map.lines {
-        let (p, q) = map.line_points(line);
-        let g = match line_equation(p, q) {
-            Some(key) => *ids.entry(key).or_insert_with(&mut fresh),
-            None => fresh(),
-        };
-        group.push(g);
+impl Splitter for CostSplitter {
+    fn pick(&mut self, _map: &Map, segs: &[WorkSeg]) -> Option<usize> {
+        if segs.len() <= ROLLOUT_BELOW {
+            self.rollout.pick(&self.lines, segs, self.split_weight, ROLLOUT_CANDIDATES)
+        } else {
+            self.greedy(segs)
+        }
     }
-    group
-}
-
-/// The reduced integer equation of the line through `p` and `q`, when both are
-/// integral within ±2^24 (so that every product below is exact).
-fn line_equation(p: glam::DVec2, q: glam::DVec2) -> Option<(i64, i64, i64)> {
-    let limit = crate::geom::MAX_COORD;
-    if [p.x, p.y, q.x, q.y].iter().any(|v| v.fract() != 0.0 || v.abs() > limit) {
-        return None;
-    }
-    let (px, py, qx, qy) = (p.x as i64, p.y as i64, q.x as i64, q.y as i64);
-    let (mut a, mut b) = (qy - py, px - qx);
-    let g = gcd(a.unsigned_abs(), b.unsigned_abs()) as i64;
-    if g == 0 {
-        return None;
-    }
-    (a, b) = (a / g, b / g);
-    if a < 0 || (a == 0 && b < 0) {
-        (a, b) = (-a, -b);
-    }
-    Some((a, b, a * px + b * py))
-}
-
-fn gcd(mut a: u64, mut b: u64) -> u64 {
-    while b != 0 {
-        (a, b) = (b, a % b);
-    }
-    a
 }
