@@ -145,3 +145,6 @@ impl CompiledMap {
         self.bsp.leaves[self.bsp.leaf_at(p)].sector
     }
 }
+
+#[cfg(test)]
+mod tests;
