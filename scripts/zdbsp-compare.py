@@ -163,9 +163,9 @@ def sightline_binary():
     return binary
 
 
-def time_zdbsp(wad, out):
+def time_zdbsp(wad, out, options=()):
     started = time.perf_counter()
-    run_quiet(["zdbsp", "-o", str(out), str(wad)])
+    run_quiet(["zdbsp", *options, "-o", str(out), str(wad)])
     return time.perf_counter() - started
 
 
@@ -237,10 +237,13 @@ def main():
         maps = sorted((tmp / "maps").glob("*.ron"))
         if not maps:
             sys.exit(f"{wad}: the importer wrote no maps")
-        zd_times, our = [], {b: [] for b in builders}
+        zd_times, zd_nodes_times, our = [], [], {b: [] for b in builders}
         for run in range(args.runs):
             print(f"run {run + 1}/{args.runs}", file=sys.stderr)
             zd_times.append(time_zdbsp(wad, tmp / "zdbsp.wad"))
+            # Without blockmap (-b) and leaving the reject as it was (-E):
+            # nearly all that is left is reading, the nodes, and writing.
+            zd_nodes_times.append(time_zdbsp(wad, tmp / "zdbsp-nodes.wad", ("-b", "-E")))
             for b in builders:
                 our[b].append(compile_all(binary, maps, b[0], b[1], tmp / "out.slbsp"))
         zdbsp_rows = wad_rows(tmp / "zdbsp.wad")
@@ -259,6 +262,8 @@ def main():
 
     zd_ms = 1e3 * statistics.median(zd_times)
     summary_row("zdbsp (defaults, whole process)", zdbsp_rows, zd_ms, zd_ms)
+    zd_nodes_ms = 1e3 * statistics.median(zd_nodes_times)
+    summary_row("zdbsp -b -E (no blockmap or reject)", zdbsp_rows, zd_nodes_ms, zd_nodes_ms)
     summary_row("shipped nodes", shipped_rows, None, None)
     details = []
     details += per_map_table("zdbsp", zdbsp_rows, "")
@@ -280,7 +285,8 @@ def main():
 
     head = [f"# BSP builders on {wad.name}", "",
             f"{len(maps)} maps; medians of {args.runs} interleaved runs. ZDBSP's time is its whole",
-            "process on the whole WAD (nodes, blockmap, reject, I/O); ours is the summed `build_ms`",
+            "process on the whole WAD (nodes, blockmap, reject, I/O; with `-b -E` it builds no",
+            "blockmap and keeps the reject, same nodes); ours is the summed `build_ms`",
             "(tree build only), with the wall clock of the whole compile loop (one process per map,",
             "RON parsing, file writing) beside it. Extra % is segs / sides_in - 1 against each",
             "builder's own input: our importer drops lines that draw and block nothing, so our",
