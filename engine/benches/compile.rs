@@ -1,9 +1,10 @@
 //! Compile time per map per splitter: every shipped map, and one Freedoom map
-//! (freedoom1's E1M5, its largest: 9,800 sides) imported from the WAD. Prints
-//! each tree's sides_out and depth beside the timings. Run:
+//! (freedoom1's E1M5, its largest: 9,800 sides) imported from the WAD; the
+//! exhaustive splitter only on maps it accepts. Prints each tree's sides_out
+//! and depth beside the timings. Run:
 //! `cargo bench -p sightline-engine --bench compile`. The Freedoom bench
-//! needs the WAD (Debian: freedoom) at `/usr/share/games/doom/freedoom1.wad`
-//! or at `$FREEDOOM1_WAD`, and fails if it is missing.
+//! needs freedoom1.wad (Debian: freedoom) in `/usr/share/games/doom` or in
+//! `$SIGHTLINE_DOOM_DIR`, as tests/freedoom.rs does, and fails if it is missing.
 
 use std::path::PathBuf;
 use std::time::Duration;
@@ -12,6 +13,7 @@ mod common;
 
 use common::shipped_maps;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use sightline::bsp::exhaustive::EXHAUSTIVE_LIMIT;
 use sightline::bsp::{build, BuildOptions, SplitterKind};
 use sightline::map::load_map;
 use sightline::map::validate::validate;
@@ -32,7 +34,11 @@ fn compile(c: &mut Criterion) {
     let mut group = c.benchmark_group("compile");
     group.sample_size(10).warm_up_time(Duration::from_millis(300)).measurement_time(Duration::from_secs(2));
     for (name, map) in &maps {
+        let sides: usize = map.lines.iter().map(|l| 1 + l.back.is_some() as usize).sum();
         for splitter in SplitterKind::ALL {
+            if splitter == SplitterKind::Exhaustive && sides > EXHAUSTIVE_LIMIT {
+                continue;
+            }
             let options = BuildOptions { splitter, seed: 1 };
             let s = build(map, &options).expect("compiles").stats;
             eprintln!(
@@ -51,10 +57,11 @@ fn compile(c: &mut Criterion) {
 
 /// Freedoom's E1M5, imported as `sightline import` does.
 fn freedoom_map() -> Map {
-    let path = std::env::var_os("FREEDOOM1_WAD")
-        .map_or_else(|| PathBuf::from("/usr/share/games/doom/freedoom1.wad"), PathBuf::from);
+    let dir =
+        std::env::var_os("SIGHTLINE_DOOM_DIR").map_or_else(|| PathBuf::from("/usr/share/games/doom"), PathBuf::from);
+    let path = dir.join("freedoom1.wad");
     let wad = Wad::open(&path).unwrap_or_else(|e| {
-        panic!("{e}\nthe compile bench needs Freedoom's freedoom1.wad (Debian: apt install freedoom), or FREEDOOM1_WAD=path")
+        panic!("{e}\nthe compile bench needs Freedoom (apt-get install freedoom) or SIGHTLINE_DOOM_DIR=dir")
     });
     let art = Art::read(&wad).unwrap_or_else(|e| panic!("{e}"));
     let raw = wad.map(FREEDOOM_MAP).unwrap_or_else(|e| panic!("{e}"));

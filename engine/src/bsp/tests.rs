@@ -1,6 +1,6 @@
 //! The compiler's own tests: tallies over blocks agree with the seg-by-seg
-//! tally, the cost splitter is deterministic, and (on demand) every Freedoom
-//! map compiles to a tree that `check` accepts with every splitter.
+//! tally, the cost splitter is deterministic, and every Freedoom map compiles
+//! to a tree that `check` accepts with the cost and random splitters.
 
 use glam::DVec2;
 use proptest::prelude::*;
@@ -68,16 +68,19 @@ fn cost_splitter_is_deterministic() {
 }
 
 /// Every map of Freedoom's two IWADs, imported and compiled with each
-/// splitter, passes `check`. Needs the WADs (Debian: freedoom), so it runs on
-/// demand: `cargo test --release -p sightline-engine -- --ignored freedoom`.
+/// heuristic splitter, passes `check` (tests/freedoom.rs renders and plays
+/// them; this holds the trees to every invariant). The WADs are a fixture:
+/// Debian's freedoom package, or `SIGHTLINE_DOOM_DIR`.
 #[test]
-#[ignore = "needs /usr/share/games/doom/freedoom{1,2}.wad; run with --ignored"]
 fn freedoom_maps_compile_to_valid_trees() {
     use crate::wad::import::{convert, Art};
     use crate::wad::Wad;
+    let dir = std::env::var_os("SIGHTLINE_DOOM_DIR")
+        .map_or_else(|| std::path::PathBuf::from("/usr/share/games/doom"), std::path::PathBuf::from);
     for file in ["freedoom1.wad", "freedoom2.wad"] {
-        let path = std::path::Path::new("/usr/share/games/doom").join(file);
-        let wad = Wad::open(&path).unwrap_or_else(|e| panic!("{e} (install Freedoom: apt install freedoom)"));
+        let path = dir.join(file);
+        let wad = Wad::open(&path)
+            .unwrap_or_else(|e| panic!("{e}: install Freedoom (apt-get install freedoom) or set SIGHTLINE_DOOM_DIR"));
         let art = Art::read(&wad).unwrap_or_else(|e| panic!("{e}"));
         for name in wad.map_names() {
             let raw = wad.map(&name).unwrap_or_else(|e| panic!("{e}"));
