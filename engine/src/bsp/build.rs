@@ -59,23 +59,71 @@ pub enum Class {
     Split(bool),
 }
 
-/// Classifies `seg` against the partition line `a -> b` (front is its right).
-pub fn classify(a: DVec2, b: DVec2, seg: &Seg) -> Class {
-    let d = b - a;
-    let normal = DVec2::new(d.y, -d.x) / d.length();
-    let d1 = (seg.v1 - a).dot(normal);
-    let d2 = (seg.v2 - a).dot(normal);
-    let (on1, on2) = (d1.abs() < ON_EPSILON, d2.abs() < ON_EPSILON);
-    if on1 && on2 {
-        // Collinear: it goes where its own front faces.
-        return if (seg.v2 - seg.v1).dot(d) > 0.0 { Class::Front } else { Class::Back };
+/// A partition line `a -> b` with its unit normal, so that classifying a seg
+/// costs two dot products.
+#[derive(Clone, Copy, Debug)]
+pub struct Partition {
+    pub a: DVec2,
+    pub b: DVec2,
+    /// Unit normal pointing to the front (the right of `a -> b`).
+    normal: DVec2,
+}
+
+impl Partition {
+    pub fn new(a: DVec2, b: DVec2) -> Self {
+        let d = b - a;
+        Partition { a, b, normal: DVec2::new(d.y, -d.x) / d.length() }
     }
-    if d1 > -ON_EPSILON && d2 > -ON_EPSILON {
-        Class::Front
-    } else if d1 < ON_EPSILON && d2 < ON_EPSILON {
-        Class::Back
-    } else {
-        Class::Split(d1 > 0.0)
+
+    /// The whole map line of `seg`, in the seg's direction. The line's own end
+    /// points, not the piece's: a piece's ends are rounded cut points, and a
+    /// short piece would tilt the partition by their rounding over the map.
+    pub fn of_seg(map: &Map, seg: &Seg) -> Self {
+        Partition::of_side(map, seg.line, seg.side)
+    }
+
+    /// The whole line `line` in the direction of its side `side`.
+    pub fn of_side(map: &Map, line: usize, side: LineSide) -> Self {
+        let (from, to) = map.line_points(&map.lines[line]);
+        match side {
+            LineSide::Front => Partition::new(from, to),
+            LineSide::Back => Partition::new(to, from),
+        }
+    }
+
+    pub fn normal(&self) -> DVec2 {
+        self.normal
+    }
+
+    /// Signed distance of `p`, positive in front. (Written out, not `dot`, so
+    /// that `Blocks::tally` can repeat the exact arithmetic.)
+    #[inline]
+    pub fn distance(&self, p: DVec2) -> f64 {
+        (p.x - self.a.x) * self.normal.x + (p.y - self.a.y) * self.normal.y
+    }
+
+    pub fn classify(&self, seg: &Seg) -> Class {
+        self.classify_ends(seg.v1, seg.v2)
+    }
+
+    /// Where the seg `v1 -> v2` falls; points within `ON_EPSILON` count as on
+    /// the line, and a seg on it goes where its own front faces.
+    #[inline]
+    pub fn classify_ends(&self, v1: DVec2, v2: DVec2) -> Class {
+        let (d1, d2) = (self.distance(v1), self.distance(v2));
+        let (on1, on2) = (d1.abs() < ON_EPSILON, d2.abs() < ON_EPSILON);
+        if on1 && on2 {
+            let dir = self.b - self.a;
+            let facing = (v2.x - v1.x) * dir.x + (v2.y - v1.y) * dir.y > 0.0;
+            return if facing { Class::Front } else { Class::Back };
+        }
+        if d1 > -ON_EPSILON && d2 > -ON_EPSILON {
+            Class::Front
+        } else if d1 < ON_EPSILON && d2 < ON_EPSILON {
+            Class::Back
+        } else {
+            Class::Split(d1 > 0.0)
+        }
     }
 }
 
@@ -84,9 +132,9 @@ pub fn classify(a: DVec2, b: DVec2, seg: &Seg) -> Class {
 /// The cut point is intersected against the seg's whole map line, always in the
 /// line's own direction, so the front and back sides of a two-sided line are
 /// cut at bit-identical points and their pieces project to identical columns.
-fn split(map: &Map, seg: &Seg, a: DVec2, b: DVec2) -> (Seg, Seg) {
+fn split(map: &Map, seg: &Seg, p: &Partition) -> (Seg, Seg) {
     let (from, to) = map.line_points(&map.lines[seg.line]);
-    let cut = line_intersection(from, to, a, b);
+    let cut = line_intersection(from, to, p.a, p.b);
     let first = Seg { v2: cut, ..seg.clone() };
     let second = Seg { v1: cut, offset: seg.offset + cut.distance(seg.v1), ..seg.clone() };
     (first, second)
@@ -149,11 +197,13 @@ struct Work {
 /// Compiles `map` into a BSP with the chosen splitter.
 pub fn build(map: &Map, options: &BuildOptions) -> Result<CompiledMap, CompileError> {
     let started = Instant::now();
-    let segs = initial_segs(map);
+    let mut segs = initial_segs(map);
     let sides_in = segs.len();
+    // Partitioning keeps the order, so every node's segs stay in kd order.
+    super::blocks::kd_order(&mut segs);
     let mut splitter: Box<dyn Splitter> = match options.splitter {
         SplitterKind::Random => Box::new(RandomSplitter::new(sides_in, options.seed)),
-        SplitterKind::Cost => Box::new(CostSplitter::new(map.lines.len())),
+        SplitterKind::Cost => Box::new(CostSplitter::new(map)),
         SplitterKind::Exhaustive if sides_in > EXHAUSTIVE_LIMIT => {
             return Err(CompileError::TooLargeForExhaustive { sides: sides_in, limit: EXHAUSTIVE_LIMIT })
         }
@@ -163,18 +213,18 @@ pub fn build(map: &Map, options: &BuildOptions) -> Result<CompiledMap, CompileEr
     let (mut splits, mut depth) = (0, 0);
     let mut stack = vec![Work { segs, slot: Slot::Root, depth: 0 }];
     while let Some(work) = stack.pop() {
-        let child = match splitter.pick(&work.segs) {
+        let child = match splitter.pick(map, &work.segs) {
             None => {
                 depth = depth.max(work.depth);
                 Child::Leaf(make_leaf(&mut bsp, work.segs)?)
             }
             Some(c) => {
-                let (a, b) = (work.segs[c].seg.v1, work.segs[c].seg.v2);
-                let (front, back, cuts) = partition(map, work.segs, a, b);
+                let p = Partition::of_seg(map, &work.segs[c].seg);
+                let (front, back, cuts) = partition(map, work.segs, &p);
                 splits += cuts;
                 let index = bsp.nodes.len();
                 let bbox = [bbox_of(&front), bbox_of(&back)];
-                bsp.nodes.push(Node { a, b, children: [Child::Leaf(0); 2], bbox });
+                bsp.nodes.push(Node { a: p.a, b: p.b, children: [Child::Leaf(0); 2], bbox });
                 for (k, segs) in [(1, back), (0, front)] {
                     stack.push(Work { segs, slot: Slot::Child(index, k), depth: work.depth + 1 });
                 }
@@ -201,16 +251,16 @@ pub fn build(map: &Map, options: &BuildOptions) -> Result<CompiledMap, CompileEr
     Ok(CompiledMap { map: map.clone(), bsp, stats, grid: None })
 }
 
-/// Splits a set of segs by the line `a -> b`; returns front, back and the number of cuts.
-fn partition(map: &Map, segs: Vec<WorkSeg>, a: DVec2, b: DVec2) -> (Vec<WorkSeg>, Vec<WorkSeg>, usize) {
+/// Splits a set of segs by `p`; returns front, back and the number of cuts.
+fn partition(map: &Map, segs: Vec<WorkSeg>, p: &Partition) -> (Vec<WorkSeg>, Vec<WorkSeg>, usize) {
     let (mut front, mut back, mut cuts) = (Vec::new(), Vec::new(), 0);
     for w in segs {
-        match classify(a, b, &w.seg) {
+        match p.classify(&w.seg) {
             Class::Front => front.push(w),
             Class::Back => back.push(w),
             Class::Split(start_in_front) => {
                 cuts += 1;
-                let (first, second) = split(map, &w.seg, a, b);
+                let (first, second) = split(map, &w.seg, p);
                 let (f, k) = if start_in_front { (first, second) } else { (second, first) };
                 front.push(WorkSeg { seg: f, source: w.source });
                 back.push(WorkSeg { seg: k, source: w.source });

@@ -15,10 +15,11 @@ use std::collections::HashMap;
 
 use glam::DVec2;
 
-use super::build::{classify, Class, WorkSeg};
+use super::build::{Class, Partition, WorkSeg};
 use super::split::Splitter;
 use super::Seg;
 use crate::geom::line_intersection;
+use crate::map::Map;
 
 /// The most input sides the exhaustive splitter accepts.
 pub const EXHAUSTIVE_LIMIT: usize = 24;
@@ -34,7 +35,7 @@ pub struct ExhaustiveSplitter {
 }
 
 impl ExhaustiveSplitter {
-    pub fn new(map: &crate::map::Map) -> Self {
+    pub fn new(map: &Map) -> Self {
         ExhaustiveSplitter { lines: map.lines.iter().map(|l| map.line_points(l)).collect(), memo: HashMap::new() }
     }
 
@@ -48,8 +49,13 @@ impl ExhaustiveSplitter {
                 continue;
             }
             tried.push(segs[c].line);
-            let (a, b) = (segs[c].v1, segs[c].v2);
-            let (front, back) = self.partition(segs, a, b);
+            // The line the build will partition by: the seg's whole map line.
+            let (from, to) = self.lines[segs[c].line];
+            let p = match segs[c].side {
+                super::LineSide::Front => Partition::new(from, to),
+                super::LineSide::Back => Partition::new(to, from),
+            };
+            let (front, back) = self.partition(segs, &p);
             if back.is_empty() && front.len() == segs.len() {
                 continue; // divides nothing
             }
@@ -84,15 +90,15 @@ impl ExhaustiveSplitter {
         n
     }
 
-    fn partition(&self, segs: &[Seg], a: DVec2, b: DVec2) -> (Vec<Seg>, Vec<Seg>) {
+    fn partition(&self, segs: &[Seg], p: &Partition) -> (Vec<Seg>, Vec<Seg>) {
         let (mut front, mut back) = (Vec::new(), Vec::new());
         for s in segs {
-            match classify(a, b, s) {
+            match p.classify(s) {
                 Class::Front => front.push(s.clone()),
                 Class::Back => back.push(s.clone()),
                 Class::Split(start_in_front) => {
                     let (from, to) = self.lines[s.line];
-                    let cut = line_intersection(from, to, a, b);
+                    let cut = line_intersection(from, to, p.a, p.b);
                     let first = Seg { v2: cut, ..s.clone() };
                     let second = Seg { v1: cut, ..s.clone() };
                     let (f, k) = if start_in_front { (first, second) } else { (second, first) };
@@ -106,7 +112,7 @@ impl ExhaustiveSplitter {
 }
 
 impl Splitter for ExhaustiveSplitter {
-    fn pick(&mut self, segs: &[WorkSeg]) -> Option<usize> {
+    fn pick(&mut self, _map: &Map, segs: &[WorkSeg]) -> Option<usize> {
         let plain: Vec<Seg> = segs.iter().map(|w| w.seg.clone()).collect();
         self.solve(&plain).1
     }

@@ -1,8 +1,10 @@
 //! The compiled map: a wall-segment BSP over a validated [`Map`].
 //!
 //! [`build`] makes it (an autopartition: every partition line is the line of
-//! one of the map's segments), [`file`] stores and loads it, [`check`] verifies
-//! its invariants. The renderers walk [`Bsp`] front to back.
+//! one of the map's segments) with a heuristic from [`split`], which tallies
+//! candidate lines over the kd-tree of [`blocks`]; [`file`] stores and loads
+//! it, [`check`] verifies its invariants. The renderers walk [`Bsp`] front to
+//! back.
 //!
 //! Invariants of a compiled map:
 //! - every input side (one per side of each line) appears in `segs` exactly
@@ -11,10 +13,13 @@
 //! - every leaf's segs bound one convex cell, all facing into it, and all have
 //!   the leaf's sector in front.
 
+pub mod blocks;
 pub mod build;
 pub mod check;
 pub mod exhaustive;
 pub mod file;
+pub mod lines;
+pub mod rollout;
 pub mod split;
 
 use glam::DVec2;
@@ -140,3 +145,6 @@ impl CompiledMap {
         self.bsp.leaves[self.bsp.leaf_at(p)].sector
     }
 }
+
+#[cfg(test)]
+mod tests;
