@@ -11,7 +11,7 @@ use super::parallel::Pool;
 use super::plan::Plan;
 use super::shade::Shade;
 use super::sprites::VisSprite;
-use super::view::Camera;
+use super::view::{Camera, Rows};
 use super::visplanes::Visplanes;
 use crate::bsp::Child;
 use crate::geom::Aabb;
@@ -110,6 +110,8 @@ pub(crate) struct Scene<'a> {
     pub spans: bool,
     /// Slope of each column's ray.
     pub slopes: &'a [f64],
+    /// Each row's slope, for the row predicates.
+    pub rows: Rows<'a>,
     /// Inverse of each row's slope: a plane `rise` above the eye is
     /// `rise * inv_rows[y]` away along row `y`'s ray.
     pub inv_rows: &'a [f64],
@@ -121,8 +123,9 @@ pub(crate) struct Scene<'a> {
 /// last frame, and the per-worker strip states and threads.
 #[derive(Debug, Default)]
 pub struct Frame {
-    /// Slope of each column's ray, and inverse slope of each row's (see [`Scene`]).
+    /// Slope of each column's ray, slope of each row's and its inverse (see [`Scene`]).
     pub(crate) slopes: Vec<f64>,
+    pub(crate) row_slopes: Vec<f64>,
     pub(crate) inv_rows: Vec<f64>,
     /// Things in view, far to near.
     pub(crate) sprites: Vec<VisSprite>,
@@ -152,8 +155,10 @@ impl Frame {
         let (w, h) = (cam.width, cam.height);
         self.slopes.clear();
         self.slopes.extend((0..w).map(|x| cam.column_slope(x)));
+        self.row_slopes.clear();
+        self.row_slopes.extend(cam.row_slopes());
         self.inv_rows.clear();
-        self.inv_rows.extend((0..h as i32).map(|y| 1.0 / cam.row_slope(y)));
+        self.inv_rows.extend(self.row_slopes.iter().map(|s| 1.0 / s));
         self.sprites.clear();
         self.counts.clear();
         if count_writes {
@@ -211,8 +216,6 @@ pub(crate) struct StripFrame {
     /// Masked middles to draw, and each column's latest entry.
     pub(crate) masked: Vec<MaskedColumn>,
     pub(crate) last_masked: Vec<u32>,
-    /// Sprites (indices into [`Scene::sprites`]) that reach into the strip.
-    pub(crate) here: Vec<u32>,
     pub(crate) visplanes: Visplanes,
     /// What this worker's strips cost, and the lines they showed.
     pub(crate) stats: FrameStats,
@@ -276,19 +279,5 @@ impl StripFrame {
         let index = self.masked.len() as u32;
         self.masked.push(MaskedColumn { depth, line, back_side, u, event, prev: self.last_masked[x] });
         self.last_masked[x] = index;
-    }
-
-    /// Rows `[top, bottom)` of column `x` through which something at `depth`
-    /// can be seen: the window of the last clip event nearer than it.
-    pub(crate) fn window(&self, x: usize, depth: f64, height: i32) -> (i32, i32) {
-        let mut e = self.last_event[x];
-        while e != NONE {
-            let event = &self.events[e as usize];
-            if event.depth < depth {
-                return (event.top, event.bottom);
-            }
-            e = event.prev;
-        }
-        (0, height)
     }
 }

@@ -161,7 +161,7 @@ pub fn render_frame(
     frame.strips.extend(strips::strips(w, h, threads));
     let oracle = (options.renderer == Renderer::Reference)
         .then(|| reference::Reference::new(level, &cam).leaving_out(options.disabled));
-    let Frame { slopes, inv_rows, sprites, strips, workers, pool, counts, .. } = frame;
+    let Frame { slopes, row_slopes, inv_rows, sprites, strips, workers, pool, counts, .. } = frame;
     let scene = Scene {
         level,
         cam: &cam,
@@ -170,6 +170,7 @@ pub fn render_frame(
         plan,
         spans: options.floors == Floors::Spans,
         slopes,
+        rows: view::Rows { cam: &cam, slopes: row_slopes },
         inv_rows,
         sprites,
     };

@@ -6,8 +6,7 @@
 use std::f64::consts::TAU;
 
 use super::columns::ColumnWriter;
-use super::light::Lighting;
-use super::view::Camera;
+use super::frame::Scene;
 use crate::texture::{Texture, TextureId};
 
 /// How a run of plane rows is painted.
@@ -33,14 +32,10 @@ const SKY_TEXELS_AROUND: f64 = 1024.0;
 /// the top: the lowest fifth (hills) hangs below the horizon.
 const SKY_HORIZON: f64 = 0.8;
 
-/// Paints rows `[y0, y1)` of column `x`, whose ray has sideways slope `t`;
-/// `inv_rows[y]` is the inverse of row `y`'s slope (see [`super::Frame`]).
-#[allow(clippy::too_many_arguments)]
-pub fn paint_plane(
+/// Paints rows `[y0, y1)` of column `x`, whose ray has sideways slope `t`.
+pub(crate) fn paint_plane(
     out: &mut ColumnWriter,
-    cam: &Camera,
-    lighting: &Lighting,
-    inv_rows: &[f64],
+    scene: &Scene,
     x: usize,
     (y0, y1): (i32, i32),
     t: f64,
@@ -49,6 +44,7 @@ pub fn paint_plane(
     if y1 <= y0 {
         return;
     }
+    let (cam, lighting, inv_rows) = (scene.cam, &scene.lighting, scene.inv_rows);
     match paint {
         PlanePaint::Solid(c) => out.fill(x, y0, y1, c),
         PlanePaint::Flat { texture, height, light, .. } => {
@@ -106,8 +102,10 @@ pub fn paint_plane(
             let angle = cam.angle_radians() - t.atan();
             let u = (-angle * texels_per_radian).rem_euclid(w) as usize;
             let column = texture.column(u.min(texture.width - 1));
+            let slopes = scene.rows.slopes;
             out.fill_with(x, y0, y1, |y| {
-                let v = h * SKY_HORIZON + (f64::from(y) + 0.5 - cam.cy) / cam.focal * texels_per_radian;
+                // `-slope(y)` is `(y + 0.5 - cy) / focal` to the bit.
+                let v = h * SKY_HORIZON + -slopes[y as usize] * texels_per_radian;
                 column[(v.max(0.0) as usize).min(texture.height - 1)]
             });
         }

@@ -29,7 +29,7 @@ use super::rays;
 use super::shade::{colour, Shade, Surface, VOID};
 use super::view::{Camera, NEAR};
 use super::visplanes::PlaneKey;
-use super::walls::paint_textured;
+use super::walls::WallColumn;
 use crate::grid::compile::{along_face, face_ends, jamb_points, panel_ends, NO_LINE};
 use crate::grid::{Axis, Cell, Face, Grid};
 use crate::level::{GridLevel, Level};
@@ -363,18 +363,19 @@ pub(crate) fn render(
 }
 
 fn draw_column(scene: &Scene, setup: &Setup, hit: &RayHit, x: usize, frame: &mut StripFrame, out: &mut ColumnWriter) {
-    let (level, cam, lighting, shade) = (scene.level, scene.cam, &scene.lighting, scene.shade);
+    let (level, cam, shade) = (scene.level, scene.cam, scene.shade);
     let h = cam.height as i32;
     let depth = if hit.depth.is_finite() { hit.depth.max(NEAR) } else { NEAR };
-    let ceiling_end = cam.first_row_at_or_below(depth, setup.ceiling);
-    let floor_start = cam.first_row_at_or_below(depth, setup.floor).max(ceiling_end);
+    let scale = cam.focal / depth;
+    let ceiling_end = scene.rows.first_at_or_below(depth, scale, setup.ceiling);
+    let floor_start = scene.rows.first_at_or_below(depth, scale, setup.floor).max(ceiling_end);
     let t = scene.slopes[x];
     for (rows, paint) in [((0, ceiling_end), setup.ceiling_paint), ((floor_start, h), setup.floor_paint)] {
         match paint {
             PlanePaint::Flat { id, height, light, .. } if scene.spans => {
                 frame.visplanes.add(PlaneKey { texture: id, height, light }, x, rows.0, rows.1);
             }
-            _ => paint_plane(out, cam, lighting, scene.inv_rows, x, rows, t, paint),
+            _ => paint_plane(out, scene, x, rows, t, paint),
         }
     }
     let rows = (ceiling_end, floor_start);
@@ -397,7 +398,7 @@ fn draw_column(scene: &Scene, setup: &Setup, hit: &RayHit, x: usize, frame: &mut
             let top = if hit.door { setup.floor + texture.height as f64 } else { setup.ceiling };
             let run = if hit.face.is_x() { DVec2::Y } else { DVec2::X };
             let light = fake_contrast(setup.light, run);
-            paint_textured(out, cam, lighting, x, depth, hit.u, rows, texture, top, light);
+            WallColumn { scene, x, depth, u: hit.u }.textured(out, rows, texture, top, light);
         }
         None => out.fill(x, rows.0, rows.1, colour(shade, surface, setup.light, facing)),
     }

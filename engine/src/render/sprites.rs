@@ -9,7 +9,7 @@
 //! renderer uses the same predicates, so `ids` frames agree.
 
 use super::columns::ColumnWriter;
-use super::frame::{Scene, StripFrame, NONE};
+use super::frame::{ClipEvent, Scene, StripFrame, NONE};
 use super::shade::{colour, ids_colour, masked_top, Shade, Surface};
 use super::view::{Camera, NEAR};
 use crate::level::Level;
@@ -61,48 +61,55 @@ pub(crate) fn collect(level: &Level, cam: &Camera, sprites: &mut Vec<VisSprite>)
 struct MaskedPass<'a> {
     scene: &'a Scene<'a>,
     cam: &'a Camera,
-    frame: &'a StripFrame,
+    /// The strip's clip events, and each column's deepest.
+    events: &'a [ClipEvent],
+    last_event: &'a [u32],
 }
 
-/// Draws sprites and masked middles over columns `[x0, x1)`, far to near per column.
+/// Draws sprites and masked middles over columns `[x0, x1)`, far to near per
+/// column.
+///
+/// Sprite by sprite, far to near (Doom's R_DrawMasked order): before a
+/// sprite's column, the column's masked middles at or beyond its depth are
+/// drawn, so each column still receives its sprites and middles merged far to
+/// near; the middles nearer than every sprite come last. At equal depth the
+/// sprite goes last, on top (see `collect`). Walking each column's list of
+/// sprites instead cost a test of every sprite in the strip per column: 16%
+/// of an E1M4 frame at 320x200 (288 things).
 pub(crate) fn draw(scene: &Scene, frame: &mut StripFrame, out: &mut ColumnWriter, (x0, x1): (usize, usize)) {
-    frame.here.clear();
-    let reach = scene.sprites.iter().enumerate().filter(|(_, s)| s.x0 < x1 && s.x1 > x0);
-    frame.here.extend(reach.map(|(i, _)| i as u32));
-    let frame = &*frame;
-    let pass = MaskedPass { scene, cam: scene.cam, frame };
-    for x in x0..x1 {
-        let mut sprites =
-            frame.here.iter().map(|&i| &scene.sprites[i as usize]).filter(|s| s.x0 <= x && x < s.x1).peekable();
-        let mut masked = frame.last_masked[x];
-        // Merge the two far-to-near lists by depth; at equal depth the
-        // sprite goes last, on top (see `collect`).
-        loop {
-            let m = (masked != NONE).then(|| frame.masked[masked as usize]);
-            let sprite_first = match (sprites.peek(), m) {
-                (None, None) => break,
-                (Some(s), Some(m)) => s.depth > m.depth,
-                (Some(_), None) => true,
-                (None, Some(_)) => false,
-            };
-            if let (true, Some(s)) = (sprite_first, sprites.peek()) {
-                pass.sprite_column(out, s, x);
-                sprites.next();
-            } else if let Some(m) = m {
-                pass.masked_column(out, &m, x);
-                masked = m.prev;
-            }
+    // Each column's next masked middle to draw, deepest first: the walk's
+    // list heads, consumed in place (the next strip resets them).
+    let StripFrame { last_masked: next, masked, events, last_event, .. } = frame;
+    let pass = MaskedPass { scene, cam: scene.cam, events, last_event };
+    let mut drain = |out: &mut ColumnWriter, x: usize, depth: f64| {
+        while let Some(m) = (next[x] != NONE).then(|| &masked[next[x] as usize]).filter(|m| m.depth >= depth) {
+            pass.masked_column(out, m, x);
+            next[x] = m.prev;
         }
+    };
+    for s in scene.sprites.iter().filter(|s| s.x0 < x1 && s.x1 > x0) {
+        let sprite = pass.sprite(s);
+        for x in s.x0.max(x0)..s.x1.min(x1) {
+            drain(out, x, s.depth);
+            pass.sprite_column(out, s, &sprite, x);
+        }
+    }
+    for x in x0..x1 {
+        drain(out, x, f64::NEG_INFINITY);
     }
 }
 
+/// What is the same in every column of one sprite.
+struct SpriteColumns<'a> {
+    texture: &'a Texture,
+    top: f64,
+    rows: (i32, i32),
+    paint: Texels,
+}
+
 impl MaskedPass<'_> {
-    fn sprite_column(&self, out: &mut ColumnWriter, s: &VisSprite, x: usize) {
+    fn sprite<'t>(&'t self, s: &VisSprite) -> SpriteColumns<'t> {
         let texture = self.scene.level.materials.textures.get(s.texture);
-        let u = self.scene.slopes[x] * s.depth - s.left;
-        if !(0.0..texture.width as f64).contains(&u) {
-            return;
-        }
         let top = s.floor + texture.height as f64;
         let paint = match self.scene.shade {
             Shade::Ids => Texels::Solid(ids_colour(Surface::Thing { thing: s.thing })),
@@ -111,7 +118,15 @@ impl MaskedPass<'_> {
         };
         let cam = self.cam;
         let rows = (cam.first_row_at_or_below(s.depth, top), cam.first_row_at_or_below(s.depth, s.floor));
-        self.put_texels(out, x, s.depth, rows, (texture, u as usize, top), paint);
+        SpriteColumns { texture, top, rows, paint }
+    }
+
+    fn sprite_column(&self, out: &mut ColumnWriter, s: &VisSprite, c: &SpriteColumns, x: usize) {
+        let u = self.scene.slopes[x] * s.depth - s.left;
+        if !(0.0..c.texture.width as f64).contains(&u) {
+            return;
+        }
+        self.put_texels(out, x, s.depth, c.rows, (c.texture, u as usize, c.top), c.paint);
     }
 
     fn masked_column(&self, out: &mut ColumnWriter, m: &super::frame::MaskedColumn, x: usize) {
@@ -132,9 +147,9 @@ impl MaskedPass<'_> {
         };
         let u = (m.u.floor() as i64).rem_euclid(texture.width as i64) as usize;
         let bottom = top - texture.height as f64;
-        let cam = self.cam;
-        let rows = (cam.first_row_at_or_below(m.depth, top), cam.first_row_at_or_below(m.depth, bottom));
-        let event = self.frame.events[m.event as usize];
+        let (rows, scale) = (self.scene.rows, self.cam.focal / m.depth);
+        let rows = (rows.first_at_or_below(m.depth, scale, top), rows.first_at_or_below(m.depth, scale, bottom));
+        let event = self.events[m.event as usize];
         let rows = (rows.0.max(event.top), rows.1.min(event.bottom));
         self.put_texels(out, x, m.depth, rows, (texture, u, top), paint);
     }
@@ -152,10 +167,10 @@ impl MaskedPass<'_> {
         paint: Texels,
     ) {
         let cam = self.cam;
-        let (open_top, open_bottom) = self.frame.window(x, depth, cam.height as i32);
+        let (open_top, open_bottom) = self.window(x, depth, cam.height as i32);
         let column = texture.column(u.min(texture.width - 1));
         for y in rows.0.max(open_top)..rows.1.min(open_bottom) {
-            let v = top - (cam.z + depth * cam.row_slope(y));
+            let v = top - (cam.z + depth * self.scene.rows.slopes[y as usize]);
             let texel = column[(v.max(0.0) as usize).min(texture.height - 1)];
             if texel >> 24 == 0 {
                 continue;
@@ -166,6 +181,22 @@ impl MaskedPass<'_> {
             };
             out.put_masked(x, y, c);
         }
+    }
+}
+
+impl MaskedPass<'_> {
+    /// Rows `[top, bottom)` of column `x` through which something at `depth`
+    /// can be seen: the window of the last clip event nearer than it.
+    fn window(&self, x: usize, depth: f64, height: i32) -> (i32, i32) {
+        let mut e = self.last_event[x];
+        while e != NONE {
+            let event = &self.events[e as usize];
+            if event.depth < depth {
+                return (event.top, event.bottom);
+            }
+            e = event.prev;
+        }
+        (0, height)
     }
 }
 

@@ -150,6 +150,11 @@ impl Camera {
         y
     }
 
+    /// Every row's slope ([`Self::row_slope`]), top to bottom.
+    pub fn row_slopes(&self) -> impl Iterator<Item = f64> + '_ {
+        (0..self.height as i32).map(|y| self.row_slope(y))
+    }
+
     /// Columns `[x0, x1)` covered by the segment `a -> b` (camera coordinates),
     /// after clipping it to depth >= [`NEAR`]. The segment must face the viewer
     /// (viewer on its right), so that `a` projects left of `b`.
@@ -166,6 +171,45 @@ impl Camera {
         let x0 = self.first_column_at_or_right(a);
         let x1 = self.first_column_at_or_right(b);
         (x0 < x1).then_some((x0, x1))
+    }
+}
+
+/// The row predicates of a [`Camera`] with every row's slope looked up in a
+/// table made once a frame (`slopes[y] == cam.row_slope(y)`, the same
+/// numbers, so the same answers): in the walk's per-column row searches a
+/// multiply and an add instead of a division per row tried.
+#[derive(Clone, Copy)]
+pub(crate) struct Rows<'a> {
+    pub cam: &'a Camera,
+    pub slopes: &'a [f64],
+}
+
+impl Rows<'_> {
+    /// [`Camera::row_above`].
+    #[inline]
+    pub fn above(&self, y: i32, depth: f64, height: f64) -> bool {
+        self.cam.z + depth * self.slopes[y as usize] > height
+    }
+
+    /// [`Camera::first_row_at_or_below`], with `scale = focal / depth`
+    /// (computed once per column) for the first guess. The guess's rounding
+    /// does not matter: `above` is monotone in `y`, so the search ends on the
+    /// same row from any start.
+    #[inline]
+    pub fn first_at_or_below(&self, depth: f64, scale: f64, height: f64) -> i32 {
+        let cam = self.cam;
+        let sy = cam.cy - (height - cam.z) * scale;
+        // NaN clamps to NaN and casts to 0: harmless, never UB. The cast
+        // truncates a value in 0..=height, so it is within one of the ceil
+        // (which is a libm call on baseline x86-64).
+        let mut y = (sy - 0.5).clamp(0.0, cam.height as f64) as i32;
+        while y > 0 && !self.above(y - 1, depth, height) {
+            y -= 1;
+        }
+        while y < cam.height as i32 && self.above(y, depth, height) {
+            y += 1;
+        }
+        y
     }
 }
 

@@ -10,11 +10,11 @@ use glam::DVec2;
 
 use super::columns::ColumnWriter;
 use super::frame::{Scene, StripFrame};
-use super::light::{fake_contrast, Lighting};
+use super::light::fake_contrast;
 use super::plan::Plan;
 use super::planes::{paint_plane, PlanePaint};
 use super::shade::{ceiling_at_line, colour, plane_surfaces, wall_facing, Shade, Surface};
-use super::view::{Camera, NEAR};
+use super::view::NEAR;
 use super::visplanes::PlaneKey;
 use crate::bsp::{LineSide, Seg};
 use crate::geom::cross;
@@ -224,12 +224,12 @@ fn wall_paints<'a>(
 
 #[inline]
 fn draw_column(scene: &Scene, s: &SegColumns, x: usize, frame: &mut StripFrame, out: &mut ColumnWriter) {
-    let (cam, lighting) = (scene.cam, &scene.lighting);
     let t = scene.slopes[x];
     let depth = s.cross_from / cross(DVec2::new(1.0, t), s.dir);
     // Columns inside the near-clipped span are at depth >= NEAR up to rounding.
     let depth = if depth.is_finite() { depth.max(NEAR) } else { NEAR };
-    let row = |height: f64| cam.first_row_at_or_below(depth, height);
+    let scale = scene.cam.focal / depth;
+    let row = |height: f64| scene.rows.first_at_or_below(depth, scale, height);
     let (top, bottom) = (frame.clip_top[x], frame.clip_bottom[x]);
     let ceiling_end = row(s.ceiling).clamp(top, bottom);
     let floor_start = row(s.floor).clamp(ceiling_end, bottom);
@@ -238,11 +238,11 @@ fn draw_column(scene: &Scene, s: &SegColumns, x: usize, frame: &mut StripFrame, 
             PlanePaint::Flat { id, height, light, .. } if scene.spans => {
                 frame.visplanes.add(PlaneKey { texture: id, height, light }, x, rows.0, rows.1);
             }
-            _ => paint_plane(out, cam, lighting, scene.inv_rows, x, rows, t, paint),
+            _ => paint_plane(out, scene, x, rows, t, paint),
         }
     }
     let u = if s.needs_u { texture_u(s, depth, t) } else { 0.0 };
-    let wall = WallColumn { cam, lighting, x, depth, u };
+    let wall = WallColumn { scene, x, depth, u };
     // Clip events only matter to the masked pass; a frame without one skips them.
     let track = scene.plan.masked_pass();
     match s.back {
@@ -284,57 +284,44 @@ fn texture_u(s: &SegColumns, depth: f64, t: f64) -> f64 {
     s.u_offset + if s.backwards { s.length - along } else { along }
 }
 
-/// One column of one seg, for painting its wall parts.
-struct WallColumn<'a> {
-    cam: &'a Camera,
-    lighting: &'a Lighting,
-    x: usize,
-    depth: f64,
-    u: f64,
+/// One screen column of a wall at `depth`, showing texture column `u`
+/// (before wrapping), for painting its parts.
+pub(crate) struct WallColumn<'a> {
+    pub scene: &'a Scene<'a>,
+    pub x: usize,
+    pub depth: f64,
+    pub u: f64,
 }
 
 impl WallColumn<'_> {
     fn paint(&self, out: &mut ColumnWriter, rows: (i32, i32), paint: Paint) {
         match paint {
             Paint::Solid(c) => out.fill(self.x, rows.0, rows.1, c),
-            Paint::Textured { texture, top, light } => {
-                paint_textured(out, self.cam, self.lighting, self.x, self.depth, self.u, rows, texture, top, light);
-            }
+            Paint::Textured { texture, top, light } => self.textured(out, rows, texture, top, light),
         }
     }
-}
 
-/// Paints rows `rows` of column `x` with texture column `u` of a wall at
-/// `depth` whose texel row 0 is at height `top`, lit by `light`.
-#[allow(clippy::too_many_arguments)]
-#[inline]
-pub(crate) fn paint_textured(
-    out: &mut ColumnWriter,
-    cam: &Camera,
-    lighting: &Lighting,
-    x: usize,
-    depth: f64,
-    u: f64,
-    rows: (i32, i32),
-    texture: &Texture,
-    top: f64,
-    light: u8,
-) {
-    if rows.1 <= rows.0 {
-        return;
+    /// Paints rows `rows` from `texture`, whose texel row 0 is at height
+    /// `top`, lit by `light`.
+    #[inline]
+    pub(crate) fn textured(&self, out: &mut ColumnWriter, rows: (i32, i32), texture: &Texture, top: f64, light: u8) {
+        if rows.1 <= rows.0 {
+            return;
+        }
+        let (scene, depth) = (self.scene, self.depth);
+        let u = (self.u.floor() as i64).rem_euclid(texture.width as i64) as usize;
+        // Row y's ray is at height z + depth * slope(y) on the wall.
+        let height = scene.cam.z + depth * scene.rows.slopes[rows.0 as usize];
+        let dv = depth / scene.cam.focal;
+        let tint = scene.lighting.tint(light, depth);
+        if out.sampling.bilinear {
+            let exact_u = self.u;
+            out.fill_with(self.x, rows.0, rows.1, |y| {
+                let v = top - height + f64::from(y - rows.0) * dv;
+                tint.apply(texture.bilinear(exact_u, v))
+            });
+            return;
+        }
+        out.textured(self.x, rows, texture.column(u), top - height, dv, tint);
     }
-    let exact_u = u;
-    let u = (u.floor() as i64).rem_euclid(texture.width as i64) as usize;
-    // Row y's ray is at height z + depth * slope(y) on the wall.
-    let height = cam.z + depth * cam.row_slope(rows.0);
-    let dv = depth / cam.focal;
-    let tint = lighting.tint(light, depth);
-    if out.sampling.bilinear {
-        out.fill_with(x, rows.0, rows.1, |y| {
-            let v = top - height + f64::from(y - rows.0) * dv;
-            tint.apply(texture.bilinear(exact_u, v))
-        });
-        return;
-    }
-    out.textured(x, rows, texture.column(u), top - height, dv, tint);
 }
