@@ -125,8 +125,13 @@ fn conclude(summary: &Table, offsets: &[f64]) -> Vec<String> {
                 offsets[n - 1]
             ),
             Some(d) => format!(
-                "{}: first disagrees {d:e} units out, {:.3}% of columns at {:e} ({mean_ms:.4} ms per frame).",
+                "{}: first disagrees {}, {:.3}% of columns at {:e} units ({mean_ms:.4} ms per frame).",
                 numbers.name(),
+                if d == 0.0 {
+                    "already at the origin (poses at fractional positions round)".to_string()
+                } else {
+                    format!("{d:e} units out")
+                },
                 wrong[rows.end - 1],
                 offsets[n - 1]
             ),
