@@ -209,6 +209,19 @@ def per_map_table(title, rows, time_unit):
     return lines
 
 
+def side_by_side(everyone):
+    """One row per map: each builder's extra %, then each of ours' build ms."""
+    ours = [(n, rows) for n, rows in everyone if any(r.get("time") is not None for r in rows.values())]
+    head = ["map"] + [n for n, _ in everyone] + [f"{n} ms" for n, _ in ours]
+    lines = ["| " + " | ".join(head) + " |", "|---|" + "---:|" * (len(head) - 1)]
+    maps = sorted(set.intersection(*(set(rows) for _, rows in everyone)))
+    for m in maps:
+        cells = [f"{100.0 * (rows[m]['sides_out'] / rows[m]['sides_in'] - 1.0):.1f}" for _, rows in everyone]
+        cells += [f"{rows[m]['time']:.1f}" for _, rows in ours]
+        lines.append(f"| {m} | " + " | ".join(cells) + " |")
+    return lines
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--wad", default=DEFAULT_WAD)
@@ -260,6 +273,7 @@ def main():
                        f"{sum(r['nodes'] for r in rows.values())} | "
                        f"{max(r['depth'] for r in rows.values())} | {t} | {w} |")
 
+    everyone = [("zdbsp", zdbsp_rows), ("shipped", shipped_rows)]
     zd_ms = 1e3 * statistics.median(zd_times)
     summary_row("zdbsp (defaults, whole process)", zdbsp_rows, zd_ms, zd_ms)
     zd_nodes_ms = 1e3 * statistics.median(zd_nodes_times)
@@ -279,6 +293,7 @@ def main():
         total_ms = statistics.median(sum(s["build_ms"] for s in r[0].values()) for r in runs)
         wall_ms = 1e3 * statistics.median(r[1] for r in runs)
         summary_row(f"sightline {name}", rows, total_ms, wall_ms)
+        everyone.append((name, rows))
         details += per_map_table(f"sightline {name}", rows, "ms")
         if splitter == "random":
             random_extras.append(extra(rows))
@@ -295,7 +310,8 @@ def main():
     if random_extras:
         text += [f"random autopartition, mean extra over {len(random_extras)} seeds: "
                  f"{statistics.mean(random_extras):.1f} %", ""]
-    text += ["## Per map", ""] + details
+    text += ["## Per map", "", "Extra segs, % (ours against our sides_in), and build ms of ours:", ""]
+    text += side_by_side(everyone) + [""] + details
     report = "\n".join(text)
     out_md.write_text(report + "\n")
     print(report)
