@@ -1,12 +1,14 @@
 //! Real levels: every map of Freedoom's two IWADs (Debian package
-//! `freedoom`) imported, validated, compiled, rendered from a tour of poses
-//! and played, with every door line tried. The WADs are a fixture: when they
+//! `freedoom`) imported, validated, compiled with each heuristic splitter to
+//! a tree `bsp::check` accepts, rendered from a tour of poses and played,
+//! with every door line tried. The WADs are a fixture: when they
 //! are missing the tests fail and say how to install them.
 
 use std::path::{Path, PathBuf};
 
 use glam::DVec2;
-use sightline::bsp::BuildOptions;
+use sightline::bsp::check::check_invariants;
+use sightline::bsp::{build, BuildOptions, SplitterKind};
 use sightline::geom::{exact_side, Side};
 use sightline::level::open_level;
 use sightline::map::validate::validate;
@@ -166,6 +168,33 @@ fn e1m4_agrees_with_the_reference() {
         &mut Frame::new(),
         &mut fb,
     );
+}
+
+/// Every map of both IWADs, compiled with the cost and the random splitter,
+/// gives a tree `check_invariants` accepts (the tests above render and play
+/// the default build; this holds the trees of both splitters to every
+/// invariant). Moved here from the engine's bsp tests to sit with the other
+/// tests that need the WADs.
+#[test]
+fn freedoom_maps_compile_to_valid_trees() {
+    for file in ["freedoom1.wad", "freedoom2.wad"] {
+        let wad = Wad::open(&wad_path(file)).unwrap_or_else(|e| panic!("{e}"));
+        let art = Art::read(&wad).unwrap_or_else(|e| panic!("{e}"));
+        for name in wad.map_names() {
+            let raw = wad.map(&name).unwrap_or_else(|e| panic!("{e}"));
+            let converted = convert(&wad, &raw, &art).unwrap_or_else(|e| panic!("{e}"));
+            let map = validate(&converted.source).unwrap_or_else(|problems| panic!("{file} {name}: {problems:?}"));
+            for options in [
+                BuildOptions { splitter: SplitterKind::Cost, seed: 0 },
+                BuildOptions { splitter: SplitterKind::Random, seed: 1 },
+            ] {
+                let compiled = build(&map, &options).unwrap_or_else(|e| panic!("{file} {name}: {e}"));
+                if let Err(e) = check_invariants(&compiled.map, &compiled.bsp) {
+                    panic!("{file} {name} with {}: {e}", options.splitter.name());
+                }
+            }
+        }
+    }
 }
 
 /// The importer on mutated copies of the real freedoom1.wad: bytes of the

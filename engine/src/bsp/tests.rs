@@ -1,13 +1,13 @@
 //! The compiler's own tests: tallies over blocks agree with the seg-by-seg
-//! tally, the cost splitter is deterministic, and every Freedoom map compiles
-//! to a tree that `check` accepts with the cost and random splitters.
+//! tally, and the cost splitter is deterministic. (That every Freedoom map
+//! compiles to a tree `check` accepts is in tests/freedoom.rs, beside the
+//! other tests that need the WADs.)
 
 use glam::DVec2;
 use proptest::prelude::*;
 
 use super::blocks::{kd_order, Blocks};
 use super::build::{Partition, WorkSeg};
-use super::check::check_invariants;
 use super::split::{tally, Tally};
 use super::{build, BuildOptions, LineSide, Seg, SplitterKind};
 
@@ -65,37 +65,4 @@ fn cost_splitter_is_deterministic() {
     let map = shipped("nasty.ron");
     let options = BuildOptions { splitter: SplitterKind::Cost, seed: 0 };
     assert_eq!(build(&map, &options).unwrap().bsp, build(&map, &options).unwrap().bsp);
-}
-
-/// Every map of Freedoom's two IWADs, imported and compiled with each
-/// heuristic splitter, passes `check` (tests/freedoom.rs renders and plays
-/// them; this holds the trees to every invariant). The WADs are a fixture:
-/// Debian's freedoom package, or `SIGHTLINE_DOOM_DIR`.
-#[test]
-fn freedoom_maps_compile_to_valid_trees() {
-    use crate::wad::import::{convert, Art};
-    use crate::wad::Wad;
-    let dir = std::env::var_os("SIGHTLINE_DOOM_DIR")
-        .map_or_else(|| std::path::PathBuf::from("/usr/share/games/doom"), std::path::PathBuf::from);
-    for file in ["freedoom1.wad", "freedoom2.wad"] {
-        let path = dir.join(file);
-        let wad = Wad::open(&path)
-            .unwrap_or_else(|e| panic!("{e}: install Freedoom (apt-get install freedoom) or set SIGHTLINE_DOOM_DIR"));
-        let art = Art::read(&wad).unwrap_or_else(|e| panic!("{e}"));
-        for name in wad.map_names() {
-            let raw = wad.map(&name).unwrap_or_else(|e| panic!("{e}"));
-            let converted = convert(&wad, &raw, &art).unwrap_or_else(|e| panic!("{e}"));
-            let map = crate::map::validate::validate(&converted.source)
-                .unwrap_or_else(|problems| panic!("{file} {name}: {problems:?}"));
-            for options in [
-                BuildOptions { splitter: SplitterKind::Cost, seed: 0 },
-                BuildOptions { splitter: SplitterKind::Random, seed: 1 },
-            ] {
-                let compiled = build(&map, &options).unwrap_or_else(|e| panic!("{file} {name}: {e}"));
-                if let Err(e) = check_invariants(&compiled.map, &compiled.bsp) {
-                    panic!("{file} {name} with {}: {e}", options.splitter.name());
-                }
-            }
-        }
-    }
 }
