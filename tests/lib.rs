@@ -1,5 +1,5 @@
-//! Shared support for the workspace tests: the shipped maps, rendering a pose
-//! through both renderers, and comparing frames.
+//! Shared support for the workspace tests: the shipped maps, Freedoom's
+//! WADs, rendering a pose through both renderers, and comparing frames.
 
 use std::path::{Path, PathBuf};
 
@@ -8,6 +8,8 @@ use sightline::bsp::BuildOptions;
 use sightline::level::{open_level, Level};
 use sightline::render::{render_frame, Frame, RenderOptions, Renderer, Shade, View};
 use sightline::Framebuffer;
+
+pub mod freedoom_wads;
 
 /// The repository root.
 pub fn root() -> PathBuf {

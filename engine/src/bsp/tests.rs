@@ -1,7 +1,7 @@
 //! The compiler's own tests: tallies over blocks agree with the seg-by-seg
 //! tally, and the cost splitter is deterministic. (That every Freedoom map
 //! compiles to a tree `check` accepts is in tests/freedoom.rs, beside the
-//! other tests that need the WADs.)
+//! other tests that need the WADs and the build script that skips them.)
 
 use glam::DVec2;
 use proptest::prelude::*;
