@@ -26,12 +26,24 @@ pub enum LevelError {
     OverwriteInput { path: String },
 }
 
-/// A map ready to render: its geometry and BSP, and its materials.
+/// A map ready to render: its geometry and BSP, its materials, and the
+/// state play changes and the renderers draw (sector heights and light in
+/// `compiled.map`, the tick, which things are there).
 pub struct Level {
     pub compiled: CompiledMap,
     pub materials: Materials,
     /// The sector each thing stands in (things do not move yet).
     pub thing_sectors: Vec<usize>,
+    /// Whether each thing is drawn: a thing not on the game's skill, or
+    /// picked up, is not. All are, until a game says otherwise.
+    pub thing_shown: Vec<bool>,
+    /// Ticks since play began: scrolling walls are drawn scrolled by it.
+    pub time: u64,
+    /// Per sector, the lines with it on either side, in line order (Doom's
+    /// `sector->lines`): the neighbour searches of the world's movers walk them.
+    pub sector_lines: Vec<Vec<u32>>,
+    /// Per sector, the middle of its bounding box (where its sounds come from).
+    pub sector_centres: Vec<glam::DVec2>,
     /// What the ray-caster needs of a grid map.
     pub grid: Option<GridLevel>,
 }
@@ -88,9 +100,24 @@ impl Level {
     }
 
     pub fn new(compiled: CompiledMap, materials: Materials) -> Level {
-        let thing_sectors = compiled.map.things.iter().map(|t| compiled.sector_at(t.pos)).collect();
+        let map = &compiled.map;
+        let thing_sectors = map.things.iter().map(|t| compiled.sector_at(t.pos)).collect();
+        let thing_shown = vec![true; map.things.len()];
+        let mut sector_lines = vec![Vec::new(); map.sectors.len()];
+        let mut boxes = vec![crate::geom::Aabb::EMPTY; map.sectors.len()];
+        for (i, line) in map.lines.iter().enumerate() {
+            let (a, b) = map.line_points(line);
+            let mut sides = vec![line.front.sector];
+            sides.extend(line.back.as_ref().map(|b| b.sector).filter(|&s| s != line.front.sector));
+            for s in sides {
+                sector_lines[s].push(i as u32);
+                boxes[s].include(a);
+                boxes[s].include(b);
+            }
+        }
+        let sector_centres = boxes.iter().map(|b| (b.min + b.max) / 2.0).collect();
         let grid = compiled.grid.as_ref().map(GridLevel::new);
-        Level { compiled, materials, thing_sectors, grid }
+        Level { compiled, materials, thing_sectors, thing_shown, time: 0, sector_lines, sector_centres, grid }
     }
 
     /// The grid and its ray-casting data, for a grid map.

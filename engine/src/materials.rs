@@ -3,9 +3,11 @@
 //! indexes directly. A name that resolves to nothing is an error naming the
 //! element that uses it.
 
+use std::collections::{BTreeSet, HashMap};
 use std::path::PathBuf;
 
 use crate::map::{Map, Side, PLAYER_START, SKY};
+use crate::texture::animdefs::AnimDefs;
 use crate::texture::{TextureError, TextureId, TextureKind, TextureSet};
 
 /// The textures of one side of a line.
@@ -36,6 +38,23 @@ pub struct Materials {
     pub sky: Option<TextureId>,
     /// Some two-sided line has a see-through middle texture.
     pub masked: bool,
+    /// Per texture id, the texture drawn in its place now: itself, or the
+    /// current frame of its animation ([`Self::side`] and [`Self::plane`]
+    /// apply it; `play::world::animation` advances it).
+    pub translation: Vec<TextureId>,
+    /// The animations whose textures the map uses, with every frame resolved.
+    pub animations: Vec<Animated>,
+    /// Switch textures the map uses: each with its partner and its place in
+    /// the switch list (Doom swaps the first part of a side that matches,
+    /// in list order).
+    pub switches: HashMap<TextureId, (TextureId, usize)>,
+}
+
+/// An animation's frames, as texture ids.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Animated {
+    pub frames: Vec<TextureId>,
+    pub tics: u32,
 }
 
 #[derive(Debug, thiserror::Error)]
@@ -119,7 +138,77 @@ impl Materials {
         };
         let masked =
             sides.iter().zip(&map.lines).any(|(s, l)| l.back.is_some() && s.iter().any(|s| s.middle.is_some()));
-        Ok(Materials { sides, sectors, sprites, sky, masked, ..m })
+        let mut m = Materials { sides, sectors, sprites, sky, masked, ..m };
+        m.add_animations(map, dirs, AnimDefs::doom());
+        Ok(m)
+    }
+
+    /// Resolves the frames of every animation, and the partner of every
+    /// switch, whose textures the map uses. An animation with a frame that
+    /// resolves to nothing, or a switch without its partner, is left still
+    /// (as Doom leaves out an animation whose textures a WAD lacks).
+    fn add_animations(&mut self, map: &Map, dirs: &[PathBuf], defs: &AnimDefs) {
+        let mut walls = BTreeSet::new();
+        let mut flats = BTreeSet::new();
+        for line in &map.lines {
+            for side in std::iter::once(&line.front).chain(&line.back) {
+                walls.extend(
+                    [&side.upper, &side.middle, &side.lower].into_iter().flatten().map(|n| n.to_ascii_uppercase()),
+                );
+            }
+        }
+        for s in &map.sectors {
+            flats.extend([&s.floor_texture, &s.ceiling_texture].into_iter().flatten().map(|n| n.to_ascii_uppercase()));
+        }
+        for (list, kind, used) in
+            [(&defs.flats, TextureKind::Flat, &flats), (&defs.textures, TextureKind::Wall, &walls)]
+        {
+            for anim in list {
+                if !anim.frames.iter().any(|f| used.contains(&f.to_ascii_uppercase())) {
+                    continue;
+                }
+                let frames: Result<Vec<TextureId>, _> =
+                    anim.frames.iter().map(|f| self.textures.resolve(f, kind, dirs)).collect();
+                if let Ok(frames) = frames {
+                    self.animations.push(Animated { frames, tics: anim.tics });
+                }
+            }
+        }
+        for (k, s) in defs.switches.iter().enumerate() {
+            if !walls.contains(&s.off.to_ascii_uppercase()) && !walls.contains(&s.on.to_ascii_uppercase()) {
+                continue;
+            }
+            let (Ok(off), Ok(on)) = (
+                self.textures.resolve(&s.off, TextureKind::Wall, dirs),
+                self.textures.resolve(&s.on, TextureKind::Wall, dirs),
+            ) else {
+                continue;
+            };
+            self.switches.insert(off, (on, k));
+            self.switches.insert(on, (off, k));
+        }
+        self.translation = (0..self.textures.len() as u32).map(TextureId).collect();
+    }
+
+    /// What is drawn for `id` now (its animation's current frame).
+    #[inline]
+    pub fn current(&self, id: TextureId) -> TextureId {
+        self.translation.get(id.0 as usize).copied().unwrap_or(id)
+    }
+
+    /// The textures side `k` (0 front, 1 back) of `line` shows now.
+    #[inline]
+    pub fn side(&self, line: usize, k: usize) -> SideTextures {
+        let s = self.sides[line][k];
+        let t = |id: Option<TextureId>| id.map(|id| self.current(id));
+        SideTextures { upper: t(s.upper), middle: t(s.middle), lower: t(s.lower) }
+    }
+
+    /// The floor and ceiling textures `sector` shows now.
+    #[inline]
+    pub fn plane(&self, sector: usize) -> SectorTextures {
+        let s = self.sectors[sector];
+        SectorTextures { floor: s.floor.map(|id| self.current(id)), ceiling: s.ceiling.map(|id| self.current(id)) }
     }
 }
 

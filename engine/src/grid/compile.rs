@@ -137,17 +137,7 @@ impl Builder {
     fn line_with(&mut self, (a, b): (DVec2, DVec2), front: SideSource, back: Option<SideSource>, door: bool) -> u32 {
         let (from, to) = (self.vertex(a), self.vertex(b));
         let n = self.lines.len() as u32;
-        self.lines.push(LineSource {
-            from,
-            to,
-            front,
-            back,
-            upper_unpegged: false,
-            lower_unpegged: false,
-            impassable: false,
-            door,
-            trigger: None,
-        });
+        self.lines.push(LineSource { from, to, front, back, door, ..LineSource::default() });
         n
     }
 }
@@ -228,7 +218,7 @@ pub fn compile(grid: &Grid) -> (MapSource, FaceLines) {
         light: i64::from(grid.light),
         floor_texture: grid.floor_texture.clone(),
         ceiling_texture: grid.ceiling_texture.clone(),
-        tag: 0,
+        ..SectorSource::default()
     };
     let mut sectors = vec![sector(grid.ceiling)];
     // A closed door: its ceiling rests on its floor.
@@ -238,14 +228,10 @@ pub fn compile(grid: &Grid) -> (MapSource, FaceLines) {
         vertices: b.vertices,
         sectors,
         lines: b.lines,
-        things: grid
-            .things
-            .iter()
-            .map(|t| ThingSource { kind: t.kind.clone(), x: t.pos.x, y: t.pos.y, angle: t.angle })
-            .collect(),
+        things: grid.things.iter().map(|t| ThingSource::new(&t.kind, t.pos.x, t.pos.y, t.angle)).collect(),
         diminishing_light: grid.diminishing_light,
         fog: grid.fog.map(|f| FogSource { colour: (f.colour[0], f.colour[1], f.colour[2]), distance: f.distance }),
-        sky: None,
+        ..MapSource::default()
     };
     (source, faces)
 }

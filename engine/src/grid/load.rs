@@ -190,7 +190,7 @@ pub fn validate(src: &GridMapSource) -> Result<Grid, Vec<GridProblem>> {
                 // The axis is settled below, once all neighbours are known.
                 CellSource::Door { texture } => Cell::Door { texture: textures.index[texture.as_str()], axis: Axis::X },
                 CellSource::Thing { kind } => {
-                    things.push(Thing { kind: kind.clone(), pos, angle: 0.0 });
+                    things.push(Thing::new(kind, pos, 0.0));
                     Cell::Empty
                 }
                 CellSource::PlayerStart { angle } => {
@@ -201,7 +201,7 @@ pub fn validate(src: &GridMapSource) -> Result<Grid, Vec<GridProblem>> {
                         Some(first) => problems.push(GridProblem::SecondPlayerStart { row: r, column: c, first }),
                         None => start = Some((r, c)),
                     }
-                    things.push(Thing { kind: PLAYER_START.to_string(), pos, angle: *angle });
+                    things.push(Thing::new(PLAYER_START, pos, *angle));
                     Cell::Empty
                 }
                 CellSource::Empty => Cell::Empty,

@@ -159,6 +159,40 @@ pub enum Problem {
         x: f64,
         y: f64,
     },
+    /// A special's or a sector's parameter out of range: `element` names
+    /// it ("line 4 lift special", "sector 2").
+    BadSpecial {
+        element: String,
+        message: String,
+    },
+    BadVersion {
+        version: i64,
+    },
+    /// A special acts on a tag no sector has.
+    TagMatchesNothing {
+        element: String,
+        tag: u16,
+    },
+    /// A special with no tag acts on the sector behind its line; this line has none.
+    NoBackSector {
+        element: String,
+    },
+    /// A door locked with a key no thing in the map gives.
+    MissingKey {
+        element: String,
+        colour: &'static str,
+    },
+    /// A teleporter whose tagged sectors hold no teleport destination.
+    NoTeleportDestination {
+        element: String,
+        tag: u16,
+    },
+    /// A version-2 thing kind that is not in the thing table.
+    UnknownThing {
+        thing: usize,
+        kind: String,
+        nearest: Option<String>,
+    },
 }
 
 /// Numbers print with `{:?}`, which is exact and short (`1e300`, not 301 digits).
@@ -248,6 +282,35 @@ impl fmt::Display for Problem {
             }
             Problem::StartOutside { thing, x, y } => {
                 write!(f, "thing {thing}: the player start ({x:?}, {y:?}) is not inside any sector")
+            }
+            Problem::BadSpecial { element, message } => write!(f, "{element}: {message}"),
+            Problem::BadVersion { version } => write!(
+                f,
+                "version {version}: this build reads map format versions 1 and 2 (version 2 names things by type)"
+            ),
+            Problem::TagMatchesNothing { element, tag } => {
+                write!(f, "{element}: acts on sectors tagged {tag}, but no sector has tag {tag}")
+            }
+            Problem::NoBackSector { element } => write!(
+                f,
+                "{element}: with no tag it acts on the sector behind the line, but the line has no back side; \
+                 give it a tag or a back side"
+            ),
+            Problem::MissingKey { element, colour } => write!(
+                f,
+                "{element}: the door needs the {colour} key, but no thing in the map is a {colour} card or skull"
+            ),
+            Problem::NoTeleportDestination { element, tag } => write!(
+                f,
+                "{element}: teleports to a destination in a sector tagged {tag}, \
+                 but none of those sectors holds a \"teleport_destination\" thing"
+            ),
+            Problem::UnknownThing { thing, kind, nearest } => {
+                write!(f, "thing {thing}: no thing type is named {kind:?}")?;
+                match nearest {
+                    Some(n) => write!(f, "; did you mean {n:?}?"),
+                    None => write!(f, " (the types are listed in engine/data/things.ron)"),
+                }
             }
         }
     }

@@ -5,17 +5,23 @@
 //! closed, and every sector is enclosed. The BSP compiler takes it from here.
 
 pub mod load;
+pub mod semantics;
 pub mod source;
+pub mod special;
+pub mod things;
 pub mod validate;
 
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
 
 pub use load::{load_map, parse_map, MapError, Problem};
+pub use special::{Action, Activation, LineSpecial, SectorSpecial, SkillBand, Who};
 
 /// A validated sector map. Built only by [`validate::validate`].
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Map {
+    /// The source's format version (1 or 2; see [`source::MapSource::version`]).
+    pub version: u8,
     pub name: String,
     pub vertices: Vec<DVec2>,
     pub sectors: Vec<Sector>,
@@ -27,6 +33,16 @@ pub struct Map {
     pub fog: Option<Fog>,
     /// The texture sky surfaces show; `None` is the built-in [`SKY`].
     pub sky: Option<String>,
+    /// Lines that only set off specials (no sides, not in the BSP).
+    pub trigger_lines: Vec<TriggerLine>,
+}
+
+/// A line that only sets off its special: it draws and blocks nothing.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct TriggerLine {
+    pub from: usize,
+    pub to: usize,
+    pub special: LineSpecial,
 }
 
 /// Distance fog: full `colour` at `distance` map units, fading in linearly.
@@ -43,8 +59,15 @@ pub struct Sector {
     pub light: u8,
     pub floor_texture: Option<String>,
     pub ceiling_texture: Option<String>,
-    /// What [`Trigger`]s name to act on this sector; 0 is none.
+    /// What line specials name to act on this sector; 0 is none.
     pub tag: u16,
+    pub special: SectorSpecial,
+    /// Light its floor and ceiling from these sectors instead (Boom's light
+    /// transfers); `None` is its own.
+    pub floor_light: Option<usize>,
+    pub ceiling_light: Option<usize>,
+    /// Pushes bodies standing on the floor, units per tick per tick.
+    pub carry: Option<special::Scroll>,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -56,7 +79,7 @@ pub struct Line {
     /// `None` for a solid one-sided wall.
     pub back: Option<Side>,
     pub flags: LineFlags,
-    pub trigger: Option<Trigger>,
+    pub special: Option<LineSpecial>,
 }
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -64,22 +87,11 @@ pub struct LineFlags {
     pub upper_unpegged: bool,
     pub lower_unpegged: bool,
     pub impassable: bool,
-    /// Opens the back sector when the player uses it (two-sided only): raises its
-    /// ceiling, or on a grid map slides the door's panel.
-    pub door: bool,
+    /// See-through middles drawn half transparent.
+    pub translucent: bool,
 }
 
-/// A line that opens the doors of every sector tagged `tag` (Doom's tagged
-/// door specials: walk-over and switch, once or repeatable).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
-pub struct Trigger {
-    pub tag: u16,
-    pub on: TriggerOn,
-    pub once: bool,
-    pub stay_open: bool,
-}
-
-/// What sets a [`Trigger`] off.
+/// What sets a version-1 `trigger` off.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum TriggerOn {
     /// The player uses the line, from its front (a switch).
@@ -96,6 +108,8 @@ pub struct Side {
     pub lower: Option<String>,
     pub x_offset: f64,
     pub y_offset: f64,
+    /// Texture scrolling per tick (zero: none).
+    pub scroll: special::Scroll,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -104,6 +118,39 @@ pub struct Thing {
     pub pos: DVec2,
     /// Degrees, counter-clockwise from +x.
     pub angle: f64,
+    /// Appears on these skill bands: `[easy, medium, hard]`.
+    pub skills: [bool; 3],
+    pub ambush: bool,
+    /// Only in multiplayer games.
+    pub multiplayer: bool,
+    pub not_in: Vec<GameMode>,
+}
+
+/// A multiplayer mode, for things left out of it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum GameMode {
+    Deathmatch,
+    Coop,
+}
+
+impl Thing {
+    /// A thing on every skill, in every mode.
+    pub fn new(kind: &str, pos: DVec2, angle: f64) -> Thing {
+        Thing {
+            kind: kind.to_string(),
+            pos,
+            angle,
+            skills: [true; 3],
+            ambush: false,
+            multiplayer: false,
+            not_in: Vec::new(),
+        }
+    }
+
+    /// Is it in a single-player game at `skill` (1..=5)?
+    pub fn in_single_player(&self, skill: u8) -> bool {
+        !self.multiplayer && self.skills[special::SkillBand::of_skill(skill) as usize]
+    }
 }
 
 /// Thing kind that marks where the player begins.
@@ -168,6 +215,26 @@ impl Map {
         crossings.iter().position(|c| c % 2 == 1)
     }
 
+    /// The sectors at `p`: the one containing it, or the sectors of every
+    /// line it lies on (a point on a line touches both sides).
+    pub fn sectors_near(&self, p: DVec2) -> Vec<usize> {
+        if let Some(s) = self.sector_at(p) {
+            return vec![s];
+        }
+        let mut out: Vec<usize> = self
+            .lines
+            .iter()
+            .filter(|l| {
+                let (a, b) = self.line_points(l);
+                crate::geom::exact_side(a, b, p) == crate::geom::Side::On && on_segment(a, b, p)
+            })
+            .flat_map(|l| std::iter::once(l.front.sector).chain(l.back.as_ref().map(|b| b.sector)))
+            .collect();
+        out.sort_unstable();
+        out.dedup();
+        out
+    }
+
     /// Distance from `p` to the nearest line.
     pub fn distance_to_nearest_line(&self, p: DVec2) -> f64 {
         self.lines
@@ -188,8 +255,13 @@ fn on_segment(a: DVec2, b: DVec2, p: DVec2) -> bool {
 
 impl Map {
     /// The RON source form of this map (what the compiled file stores).
+    /// Version 1's `door` and `trigger` come back as the `special`s they
+    /// were read as.
     pub fn to_source(&self) -> source::MapSource {
-        use source::{LineSource, MapSource, SectorSource, SideSource, ThingSource, TriggerSource};
+        use source::{
+            FogSource, LineSource, LineSpecialSource, MapSource, SectorSource, SideSource, ThingSource,
+            TriggerLineSource,
+        };
         let side = |s: &Side| SideSource {
             sector: s.sector as i64,
             upper: s.upper.clone(),
@@ -197,8 +269,17 @@ impl Map {
             lower: s.lower.clone(),
             x_offset: s.x_offset,
             y_offset: s.y_offset,
+            scroll: (s.scroll != special::Scroll::default()).then_some(s.scroll),
+        };
+        let special = |s: &LineSpecial| LineSpecialSource {
+            on: s.on,
+            repeat: s.repeat,
+            by: s.by,
+            tag: i64::from(s.tag),
+            action: s.action.clone(),
         };
         MapSource {
+            version: i64::from(self.version),
             name: self.name.clone(),
             vertices: self.vertices.iter().map(|v| (v.x, v.y)).collect(),
             sectors: self
@@ -211,6 +292,10 @@ impl Map {
                     floor_texture: s.floor_texture.clone(),
                     ceiling_texture: s.ceiling_texture.clone(),
                     tag: i64::from(s.tag),
+                    special: s.special,
+                    floor_light: s.floor_light.map(|k| k as i64),
+                    ceiling_light: s.ceiling_light.map(|k| k as i64),
+                    carry: s.carry,
                 })
                 .collect(),
             lines: self
@@ -224,25 +309,39 @@ impl Map {
                     upper_unpegged: l.flags.upper_unpegged,
                     lower_unpegged: l.flags.lower_unpegged,
                     impassable: l.flags.impassable,
-                    door: l.flags.door,
-                    trigger: l.trigger.map(|t| TriggerSource {
-                        tag: i64::from(t.tag),
-                        on: t.on,
-                        once: t.once,
-                        stay_open: t.stay_open,
-                    }),
+                    door: false,
+                    trigger: None,
+                    special: l.special.as_ref().map(special),
+                    translucent: l.flags.translucent,
                 })
                 .collect(),
             things: self
                 .things
                 .iter()
-                .map(|t| ThingSource { kind: t.kind.clone(), x: t.pos.x, y: t.pos.y, angle: t.angle })
+                .map(|t| ThingSource {
+                    kind: t.kind.clone(),
+                    x: t.pos.x,
+                    y: t.pos.y,
+                    angle: t.angle,
+                    skills: special::SkillBand::ALL.into_iter().filter(|&b| t.skills[b as usize]).collect(),
+                    ambush: t.ambush,
+                    multiplayer: t.multiplayer,
+                    not_in: t.not_in.clone(),
+                })
                 .collect(),
             diminishing_light: self.diminishing_light,
-            fog: self
-                .fog
-                .map(|f| source::FogSource { colour: (f.colour[0], f.colour[1], f.colour[2]), distance: f.distance }),
+            fog: self.fog.map(|f| FogSource { colour: (f.colour[0], f.colour[1], f.colour[2]), distance: f.distance }),
             sky: self.sky.clone(),
+            trigger_lines: self
+                .trigger_lines
+                .iter()
+                .map(|t| TriggerLineSource { from: t.from as i64, to: t.to as i64, special: special(&t.special) })
+                .collect(),
         }
+    }
+
+    /// The sectors whose tag is `tag` (none for tag 0), in index order.
+    pub fn sectors_tagged(&self, tag: u16) -> impl Iterator<Item = usize> + '_ {
+        self.sectors.iter().enumerate().filter(move |(_, s)| tag != 0 && s.tag == tag).map(|(i, _)| i)
     }
 }

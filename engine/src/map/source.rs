@@ -8,9 +8,17 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::special::{Action, Activation, Scroll, SectorSpecial, SkillBand, Who};
+
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[serde(rename = "Map", deny_unknown_fields)]
+/// `Default` is an empty version-1 map, for generators to fill in.
 pub struct MapSource {
+    /// The format version: 1 (the default) or 2. In version 2 a thing's
+    /// `kind` names a thing type (`"imp"`, `"blue_card"`), checked against
+    /// the thing table; in version 1 it names the sprite drawn.
+    #[serde(default = "version_1", skip_serializing_if = "is_version_1")]
+    pub version: i64,
     pub name: String,
     pub vertices: Vec<(f64, f64)>,
     pub sectors: Vec<SectorSource>,
@@ -26,6 +34,38 @@ pub struct MapSource {
     /// The texture `"SKY"` ceilings and floors show (default: the built-in SKY).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub sky: Option<String>,
+    /// Lines that only set off specials: they draw nothing, block nothing,
+    /// have no sides, and may cross anything (Doom's invisible walk-over
+    /// lines).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub trigger_lines: Vec<TriggerLineSource>,
+}
+
+/// `TriggerLine(from: 4, to: 9, special: LineSpecial(...))`: its front is
+/// its right-hand side, as for any line.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(rename = "TriggerLine", deny_unknown_fields)]
+pub struct TriggerLineSource {
+    pub from: i64,
+    pub to: i64,
+    pub special: LineSpecialSource,
+}
+
+/// `special: LineSpecial(on: Walk, tag: 3, action: Lift())`.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(rename = "LineSpecial", deny_unknown_fields)]
+pub struct LineSpecialSource {
+    pub on: Activation,
+    /// Works every time; else only the first (Doom's R and 1 lines).
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub repeat: bool,
+    #[serde(default, skip_serializing_if = "is_players")]
+    pub by: Who,
+    /// The sectors acted on: those with this tag; 0 (the default) is the
+    /// sector behind the line.
+    #[serde(default, skip_serializing_if = "is_zero_i64")]
+    pub tag: i64,
+    pub action: Action,
 }
 
 /// `fog: Some(Fog(colour: (r, g, b), distance: D))`: at distance D map units
@@ -37,7 +77,7 @@ pub struct FogSource {
     pub distance: f64,
 }
 
-#[derive(Clone, Debug, Serialize, Deserialize)]
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
 #[serde(rename = "Sector", deny_unknown_fields)]
 pub struct SectorSource {
     pub floor: f64,
@@ -47,12 +87,25 @@ pub struct SectorSource {
     pub floor_texture: Option<String>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub ceiling_texture: Option<String>,
-    /// A number that line triggers name to act on this sector (0: none).
+    /// A number that line specials name to act on this sector (0: none).
     #[serde(default, skip_serializing_if = "is_zero_i64")]
     pub tag: i64,
+    /// Light effect, damage, secret, door timer.
+    #[serde(default, skip_serializing_if = "SectorSpecial::is_none")]
+    pub special: SectorSpecial,
+    /// The floor (or ceiling) is lit as this other sector is (Boom's light
+    /// transfer lines 213 and 261), following its changes.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub floor_light: Option<i64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ceiling_light: Option<i64>,
+    /// Bodies standing on the floor are pushed this much a tick (Boom's
+    /// conveyors, line 252).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub carry: Option<Scroll>,
 }
 
-#[derive(Clone, Debug, Serialize, Deserialize)]
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
 #[serde(rename = "Line", deny_unknown_fields)]
 pub struct LineSource {
     pub from: i64,
@@ -71,9 +124,16 @@ pub struct LineSource {
     /// grid map slides its panel (see `play::doors`).
     #[serde(default, skip_serializing_if = "is_false")]
     pub door: bool,
-    /// Opens every sector tagged `tag` when the player uses or walks over it.
+    /// Version 1's tagged doors: opens every sector tagged `tag` when the
+    /// player uses or walks over the line (the same as a door `special`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub trigger: Option<TriggerSource>,
+    /// What the line does in play.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub special: Option<LineSpecialSource>,
+    /// Its see-through middle textures are drawn half transparent (Boom's 260).
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub translucent: bool,
 }
 
 /// `trigger: Trigger(tag: 3, on: Walk, once: true, stay_open: false)`.
@@ -104,6 +164,9 @@ pub struct SideSource {
     pub x_offset: f64,
     #[serde(default, skip_serializing_if = "is_zero")]
     pub y_offset: f64,
+    /// Scrolls its textures by this much a tick (Doom's 48, Boom's scrollers).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub scroll: Option<Scroll>,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -114,6 +177,71 @@ pub struct ThingSource {
     pub y: f64,
     #[serde(default)]
     pub angle: f64,
+    /// The skill levels it appears on (default: all).
+    #[serde(default = "all_skills", skip_serializing_if = "is_all_skills")]
+    pub skills: Vec<SkillBand>,
+    /// A monster that waits, deaf, until it sees the player (Doom's ambush flag).
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub ambush: bool,
+    /// Appears only in multiplayer games.
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub multiplayer: bool,
+    /// Left out of these multiplayer modes (Boom's flags).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub not_in: Vec<super::GameMode>,
+}
+
+impl Default for MapSource {
+    fn default() -> MapSource {
+        MapSource {
+            version: 1,
+            name: String::new(),
+            vertices: Vec::new(),
+            sectors: Vec::new(),
+            lines: Vec::new(),
+            things: Vec::new(),
+            diminishing_light: true,
+            fog: None,
+            sky: None,
+            trigger_lines: Vec::new(),
+        }
+    }
+}
+
+impl ThingSource {
+    /// A thing on every skill level, in every mode.
+    pub fn new(kind: &str, x: f64, y: f64, angle: f64) -> ThingSource {
+        ThingSource {
+            kind: kind.to_string(),
+            x,
+            y,
+            angle,
+            skills: all_skills(),
+            ambush: false,
+            multiplayer: false,
+            not_in: Vec::new(),
+        }
+    }
+}
+
+fn version_1() -> i64 {
+    1
+}
+
+fn is_version_1(v: &i64) -> bool {
+    *v == 1
+}
+
+fn all_skills() -> Vec<SkillBand> {
+    SkillBand::ALL.to_vec()
+}
+
+fn is_all_skills(s: &[SkillBand]) -> bool {
+    SkillBand::ALL.iter().all(|b| s.contains(b))
+}
+
+fn is_players(w: &Who) -> bool {
+    *w == Who::Players
 }
 
 fn yes() -> bool {

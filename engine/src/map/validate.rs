@@ -10,8 +10,9 @@ use std::collections::HashMap;
 use glam::DVec2;
 
 use super::load::Problem;
-use super::source::{MapSource, SideSource};
-use super::{Fog, Line, LineFlags, Map, Sector, Side, Thing, Trigger, PLAYER_START};
+use super::source::{LineSource, LineSpecialSource, MapSource, SideSource, ThingSource};
+use super::special::{Action, Activation, DoorKind, LineSpecial, SkillBand, Who};
+use super::{Fog, Line, LineFlags, Map, Sector, Side, Thing, TriggerLine, TriggerOn, PLAYER_START};
 use crate::geom::{cross, segment_contact, Contact, MAX_COORD};
 
 /// At most this many crossing problems are listed; a map with more is a mess
@@ -24,14 +25,23 @@ pub fn validate(src: &MapSource) -> Result<Map, Vec<Problem>> {
     if !problems.is_empty() {
         return Err(problems);
     }
-    match find_player_start(&map) {
-        Ok(start) => Ok(Map { player_start: start, ..map }),
+    let map = match find_player_start(&map) {
+        Ok(start) => Map { player_start: start, ..map },
         Err(p) => {
             problems.push(p);
-            Err(problems)
+            return Err(problems);
         }
+    };
+    let problems = super::semantics::check(&map);
+    if problems.is_empty() {
+        Ok(map)
+    } else {
+        Err(problems)
     }
 }
+
+/// Highest format version this build reads.
+pub const MAX_VERSION: i64 = 2;
 
 fn in_range(x: f64) -> bool {
     x.is_finite() && x.abs() <= MAX_COORD
@@ -69,6 +79,41 @@ fn check_elements(src: &MapSource) -> Result<Map, Vec<Problem>> {
             problems.push(Problem::BadTag { element: format!("sector {i}"), tag: s.tag });
             0
         });
+        if let Some(d) = s.special.damage {
+            if d.every == 0 || d.amount > 1000 {
+                problems.push(Problem::BadSpecial {
+                    element: format!("sector {i}"),
+                    message: format!(
+                        "damage {} every {} ticks: the amount must be 0..=1000 and every at least 1",
+                        d.amount, d.every
+                    ),
+                });
+            }
+        }
+        let mut light_from = |which: &str, k: Option<i64>| {
+            let k = k?;
+            let ok = usize::try_from(k).ok().filter(|&k| k < src.sectors.len());
+            if ok.is_none() {
+                problems.push(Problem::BadSpecial {
+                    element: format!("sector {i}"),
+                    message: format!(
+                        "{which} refers to sector {k}, but the sectors are numbered 0..{}",
+                        src.sectors.len()
+                    ),
+                });
+            }
+            ok
+        };
+        let floor_light = light_from("floor_light", s.floor_light);
+        let ceiling_light = light_from("ceiling_light", s.ceiling_light);
+        if let Some(c) = s.carry {
+            if !(c.x.is_finite() && c.y.is_finite() && c.x.abs() <= 64.0 && c.y.abs() <= 64.0) {
+                problems.push(Problem::BadSpecial {
+                    element: format!("sector {i}"),
+                    message: format!("carry ({:?}, {:?}) must be finite and at most 64 units a tick", c.x, c.y),
+                });
+            }
+        }
         Sector {
             floor: s.floor,
             ceiling: s.ceiling,
@@ -76,6 +121,10 @@ fn check_elements(src: &MapSource) -> Result<Map, Vec<Problem>> {
             floor_texture: s.floor_texture.clone(),
             ceiling_texture: s.ceiling_texture.clone(),
             tag,
+            special: s.special,
+            floor_light,
+            ceiling_light,
+            carry: s.carry,
         }
     });
     let sectors: Vec<Sector> = sectors.collect();
@@ -99,21 +148,36 @@ fn check_elements(src: &MapSource) -> Result<Map, Vec<Problem>> {
             upper_unpegged: l.upper_unpegged,
             lower_unpegged: l.lower_unpegged,
             impassable: l.impassable,
-            door: l.door,
+            translucent: l.translucent,
         };
-        let trigger = l.trigger.as_ref().map(|t| Trigger {
-            tag: u16::try_from(t.tag).unwrap_or_else(|_| {
-                problems.push(Problem::BadTag { element: format!("line {i} trigger"), tag: t.tag });
-                0
-            }),
-            on: t.on,
-            once: t.once,
-            stay_open: t.stay_open,
-        });
-        lines.push(Line { from, to, front, back, flags, trigger });
+        let special = line_special(i, l, &mut problems);
+        lines.push(Line { from, to, front, back, flags, special });
     }
-    let things =
-        src.things.iter().map(|t| Thing { kind: t.kind.clone(), pos: DVec2::new(t.x, t.y), angle: t.angle }).collect();
+    let mut trigger_lines = Vec::with_capacity(src.trigger_lines.len());
+    for (i, t) in src.trigger_lines.iter().enumerate() {
+        let element = format!("trigger line {i}");
+        let mut vertex = |v: i64| {
+            let ok = usize::try_from(v).ok().filter(|&v| v < vertices.len());
+            if ok.is_none() {
+                problems.push(Problem::BadSpecial {
+                    element: element.clone(),
+                    message: format!("refers to vertex {v}, but the vertices are numbered 0..{}", vertices.len()),
+                });
+            }
+            ok.unwrap_or(0)
+        };
+        let (from, to) = (vertex(t.from), vertex(t.to));
+        if from == to && !problems.iter().any(|p| matches!(p, Problem::BadSpecial { element: e, .. } if *e == element))
+        {
+            problems.push(Problem::BadSpecial { element: element.clone(), message: "has zero length".into() });
+        }
+        let special = special_of(&element, &t.special, &mut problems);
+        trigger_lines.push(TriggerLine { from, to, special });
+    }
+    if !(1..=MAX_VERSION).contains(&src.version) {
+        problems.push(Problem::BadVersion { version: src.version });
+    }
+    let things = src.things.iter().map(thing_of).collect();
     if !problems.is_empty() {
         return Err(problems);
     }
@@ -127,6 +191,7 @@ fn check_elements(src: &MapSource) -> Result<Map, Vec<Problem>> {
         return Err(problems);
     }
     Ok(Map {
+        version: src.version as u8,
         name: src.name.clone(),
         vertices,
         sectors,
@@ -136,7 +201,125 @@ fn check_elements(src: &MapSource) -> Result<Map, Vec<Problem>> {
         diminishing_light: src.diminishing_light,
         fog,
         sky: src.sky.clone(),
+        trigger_lines,
     })
+}
+
+fn thing_of(t: &ThingSource) -> Thing {
+    Thing {
+        kind: t.kind.clone(),
+        pos: DVec2::new(t.x, t.y),
+        angle: t.angle,
+        skills: SkillBand::ALL.map(|b| t.skills.contains(&b)),
+        ambush: t.ambush,
+        multiplayer: t.multiplayer,
+        not_in: t.not_in.clone(),
+    }
+}
+
+/// A line's special: its `special`, or version 1's `door` or `trigger`
+/// read as the special they are (at most one of the three).
+fn line_special(i: usize, l: &LineSource, problems: &mut Vec<Problem>) -> Option<LineSpecial> {
+    let element = format!("line {i}");
+    let given = [l.door, l.trigger.is_some(), l.special.is_some()].iter().filter(|&&b| b).count();
+    if given > 1 {
+        problems.push(Problem::BadSpecial {
+            element,
+            message: "give at most one of `door`, `trigger` and `special`".into(),
+        });
+        return None;
+    }
+    if l.door {
+        // Doom's DR door: used from either face, monsters too.
+        return Some(LineSpecial {
+            on: Activation::Use,
+            repeat: true,
+            by: Who::Anyone,
+            tag: 0,
+            action: Action::Door {
+                kind: DoorKind::Raise,
+                speed: super::special::DOOR_SPEED,
+                wait: super::special::DOOR_WAIT,
+                key: None,
+            },
+        });
+    }
+    if let Some(t) = &l.trigger {
+        let tag = u16::try_from(t.tag).unwrap_or_else(|_| {
+            problems.push(Problem::BadTag { element: format!("line {i} trigger"), tag: t.tag });
+            0
+        });
+        let kind = if t.stay_open { DoorKind::Open } else { DoorKind::Raise };
+        return Some(LineSpecial {
+            on: match t.on {
+                TriggerOn::Use => Activation::Use,
+                TriggerOn::Walk => Activation::Walk,
+            },
+            repeat: !t.once,
+            by: Who::Players,
+            tag,
+            action: Action::Door {
+                kind,
+                speed: super::special::DOOR_SPEED,
+                wait: super::special::DOOR_WAIT,
+                key: None,
+            },
+        });
+    }
+    l.special.as_ref().map(|s| special_of(&element, s, problems))
+}
+
+/// Checks a special's numbers (tag in range, speeds and heights finite and
+/// sensible) and returns its validated form.
+fn special_of(element: &str, s: &LineSpecialSource, problems: &mut Vec<Problem>) -> LineSpecial {
+    let tag = u16::try_from(s.tag).unwrap_or_else(|_| {
+        problems.push(Problem::BadTag { element: format!("{element} special"), tag: s.tag });
+        0
+    });
+    let mut bad = |message: String| {
+        problems.push(Problem::BadSpecial { element: format!("{element} {} special", s.action.name()), message })
+    };
+    // Speeds up to MAX_SPEED units a tick; anything faster is a typo.
+    const MAX_SPEED: f64 = 1024.0;
+    const MAX_WAIT: u32 = 35 * 60 * 60;
+    let speed_ok = |v: f64| v.is_finite() && v > 0.0 && v <= MAX_SPEED;
+    let mut speed = |v: f64| {
+        if !speed_ok(v) {
+            bad(format!("speed {v:?} must be above 0 and at most {MAX_SPEED} units a tick"));
+        }
+    };
+    match &s.action {
+        Action::Door { speed: v, .. }
+        | Action::Lift { speed: v, .. }
+        | Action::PerpetualLift { speed: v, .. }
+        | Action::Crusher { speed: v, .. }
+        | Action::Donut { speed: v } => speed(*v),
+        Action::Floor { speed: v, offset, .. } | Action::Ceiling { speed: v, offset, .. } => {
+            speed(*v);
+            if !(offset.is_finite() && offset.abs() <= MAX_COORD) {
+                bad(format!("offset {offset:?} is not finite within the supported range"));
+            }
+        }
+        Action::Stairs { step, speed: v, .. } => {
+            speed(*v);
+            if !(step.is_finite() && *step != 0.0 && step.abs() <= 4096.0) {
+                bad(format!("step {step:?} must be finite, not 0, and at most 4096"));
+            }
+        }
+        _ => {}
+    }
+    let mut bad = |message: String| {
+        problems.push(Problem::BadSpecial { element: format!("{element} {} special", s.action.name()), message })
+    };
+    match &s.action {
+        Action::Door { wait, .. } | Action::Lift { wait, .. } | Action::PerpetualLift { wait, .. }
+            if *wait > MAX_WAIT =>
+        {
+            bad(format!("wait {wait} is more than an hour ({MAX_WAIT} ticks)"))
+        }
+        _ => {}
+    }
+    LineSpecial { on: s.on, repeat: s.repeat, by: s.by, tag, action: s.action.clone() }
 }
 
 fn check_side(line: usize, side: &'static str, s: &SideSource, sectors: usize, problems: &mut Vec<Problem>) -> Side {
@@ -147,6 +330,13 @@ fn check_side(line: usize, side: &'static str, s: &SideSource, sectors: usize, p
     if !s.x_offset.is_finite() || !s.y_offset.is_finite() {
         problems.push(Problem::BadOffset { line, side });
     }
+    let scroll = s.scroll.unwrap_or_default();
+    if !(scroll.x.is_finite() && scroll.y.is_finite() && scroll.x.abs() <= 1024.0 && scroll.y.abs() <= 1024.0) {
+        problems.push(Problem::BadSpecial {
+            element: format!("line {line} {side} side"),
+            message: format!("scroll ({:?}, {:?}) must be finite and at most 1024 units a tick", scroll.x, scroll.y),
+        });
+    }
     Side {
         sector: sector.unwrap_or(0),
         upper: s.upper.clone(),
@@ -154,6 +344,7 @@ fn check_side(line: usize, side: &'static str, s: &SideSource, sectors: usize, p
         lower: s.lower.clone(),
         x_offset: s.x_offset,
         y_offset: s.y_offset,
+        scroll,
     }
 }
 

@@ -28,12 +28,28 @@ pub struct Blockmap {
 }
 
 impl Blockmap {
+    /// The map's lines (its walls), numbered as in `map.lines`.
     pub fn new(map: &Map) -> Blockmap {
+        Blockmap::of_segments(&map.vertices, map.lines.iter().map(|l| map.line_points(l)))
+    }
+
+    /// The map's trigger lines, numbered as in `map.trigger_lines`.
+    pub fn of_trigger_lines(map: &Map) -> Blockmap {
+        let points = map.trigger_lines.iter().map(|t| (map.vertices[t.from], map.vertices[t.to]));
+        Blockmap::of_segments(&map.vertices, points)
+    }
+
+    /// Segments numbered in the order given, over a grid covering `points`
+    /// (which must include every segment's ends).
+    fn of_segments(points: &[DVec2], segments: impl Iterator<Item = (DVec2, DVec2)>) -> Blockmap {
         let mut min = DVec2::INFINITY;
         let mut max = DVec2::NEG_INFINITY;
-        for v in &map.vertices {
+        for v in points {
             min = min.min(*v);
             max = max.max(*v);
+        }
+        if points.is_empty() {
+            (min, max) = (DVec2::ZERO, DVec2::ZERO);
         }
         let extent = (max - min).max_element().max(1.0);
         let cell = CELL.max(extent / MAX_CELLS_PER_AXIS as f64);
@@ -42,8 +58,7 @@ impl Blockmap {
         let rows = ((max.y - min.y) / cell) as usize + 1;
         let mut cells: Vec<Vec<u32>> = vec![Vec::new(); columns * rows];
         let grid = Blockmap { origin: min, cell, columns, rows, starts: Vec::new(), lines: Vec::new() };
-        for (i, line) in map.lines.iter().enumerate() {
-            let (a, b) = map.line_points(line);
+        for (i, (a, b)) in segments.enumerate() {
             let (x0, x1, y0, y1) = grid.cell_range(a.min(b), a.max(b));
             for cy in y0..y1 {
                 for cx in x0..x1 {

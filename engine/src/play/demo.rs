@@ -7,9 +7,11 @@
 //! | 15 | format version, [`VERSION`] |
 //! | 16-19 | CRC-32 of every byte after these four (little-endian u32) |
 //! | 20-23 | length `N` of the map string in bytes (u32), at most [`MAX_MAP_BYTES`] |
-//! | 24-(24+N) | the map (a path or name), UTF-8 |
+//! | 24-(24+N) | the map (a path, or `WAD:MAP`), UTF-8 |
+//! | next 1 | skill, 1 to 5 |
+//! | next 8 | the game's random seed (u64) |
 //! | next 4 | tick count `T` (u32) |
-//! | rest | `T` records of 7 bytes: forward (i8), strafe (i8), flags (bit 0 run, bit 1 use), turn (f32, degrees) |
+//! | rest | `T` records of 7 bytes: forward (i8), strafe (i8), flags (bit 0 run, bit 1 use, bit 2 fire), turn (f32, degrees) |
 //!
 //! Every length is checked against the bytes actually present before
 //! anything is allocated, so a corrupt file is an error, never a panic or a
@@ -21,18 +23,26 @@ use super::input::TickInput;
 
 pub const MAGIC: &[u8] = b"SIGHTLINE-DEMO\n";
 /// Bumped whenever the layout or the simulation's meaning of an input changes.
-pub const VERSION: u8 = 1;
+/// Version 2: skill and seed in the header, fire, and use acting once per
+/// press (the world's machinery came with it, so version 1 games would not
+/// replay the same).
+pub const VERSION: u8 = 2;
 /// Longest map string accepted (a path, not a map).
 pub const MAX_MAP_BYTES: u32 = 4096;
 const RECORD: usize = 7;
 const RUN: u8 = 1;
 const USE: u8 = 2;
+const FIRE: u8 = 4;
 
 /// A recorded game.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Demo {
     /// The map played, as the recorder named it (normally its path).
     pub map: String,
+    /// The skill played on, 1 to 5.
+    pub skill: u8,
+    /// The game's random seed.
+    pub seed: u64,
     /// One input per tick, from the first.
     pub inputs: Vec<TickInput>,
 }
@@ -59,7 +69,7 @@ pub enum DemoError {
 
 impl Demo {
     pub fn new(map: impl Into<String>) -> Demo {
-        Demo { map: map.into(), inputs: Vec::new() }
+        Demo { map: map.into(), skill: crate::play::DEFAULT_SKILL, seed: 0, inputs: Vec::new() }
     }
 
     /// The file's bytes (see the module docs for the layout).
@@ -67,9 +77,13 @@ impl Demo {
         let mut body = Vec::with_capacity(8 + self.map.len() + self.inputs.len() * RECORD);
         body.extend((self.map.len() as u32).to_le_bytes());
         body.extend(self.map.as_bytes());
+        body.push(self.skill);
+        body.extend(self.seed.to_le_bytes());
         body.extend((self.inputs.len() as u32).to_le_bytes());
         for input in &self.inputs {
-            let flags = if input.run { RUN } else { 0 } | if input.use_door { USE } else { 0 };
+            let flags = if input.run { RUN } else { 0 }
+                | if input.use_line { USE } else { 0 }
+                | if input.fire { FIRE } else { 0 };
             body.extend([input.forward as u8, input.strafe as u8, flags]);
             body.extend(input.turn.to_le_bytes());
         }
@@ -119,6 +133,9 @@ impl Demo {
             return Err(DemoError::MapTooLong { path: path(), len: map_len as usize });
         }
         let map = reader.take(map_len as usize).ok_or_else(|| truncated("the map name is cut short"))?;
+        let skill = reader.take(1).ok_or_else(|| truncated("no skill"))?[0];
+        let seed = reader.take(8).ok_or_else(|| truncated("no seed"))?;
+        let seed = u64::from_le_bytes(seed.try_into().unwrap_or_default());
         let ticks = reader.u32().ok_or_else(|| truncated("no tick count"))? as usize;
         let present = reader.bytes.len();
         // Compare before allocating: a forged count cannot reserve memory.
@@ -139,9 +156,12 @@ impl Demo {
         }
         let map = String::from_utf8(map.to_vec())
             .map_err(|_| DemoError::Corrupt { path: path(), what: "the map name is not UTF-8".into() })?;
+        if !(1..=5).contains(&skill) {
+            return Err(DemoError::Corrupt { path: path(), what: format!("skill {skill} is not 1 to 5") });
+        }
         let mut inputs = Vec::with_capacity(ticks);
         for (tick, r) in reader.bytes.chunks_exact(RECORD).enumerate() {
-            if r[2] & !(RUN | USE) != 0 {
+            if r[2] & !(RUN | USE | FIRE) != 0 {
                 return Err(DemoError::Corrupt {
                     path: path(),
                     what: format!("tick {tick}: unknown flags {:#04x}", r[2]),
@@ -151,11 +171,12 @@ impl Demo {
                 forward: r[0] as i8,
                 strafe: r[1] as i8,
                 run: r[2] & RUN != 0,
-                use_door: r[2] & USE != 0,
+                use_line: r[2] & USE != 0,
+                fire: r[2] & FIRE != 0,
                 turn: f32::from_le_bytes([r[3], r[4], r[5], r[6]]),
             });
         }
-        Ok(Demo { map, inputs })
+        Ok(Demo { map, skill, seed, inputs })
     }
 }
 

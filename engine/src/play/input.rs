@@ -16,8 +16,12 @@ pub struct TickInput {
     /// Degrees to turn this tick, counter-clockwise positive (keys or mouse).
     pub turn: f32,
     pub run: bool,
-    /// Use (open a door) was pressed during this tick.
-    pub use_door: bool,
+    /// Use (open a door, press a switch) was held or pressed during this tick;
+    /// it acts once per press.
+    pub use_line: bool,
+    /// Fire was held or pressed during this tick (until weapons come, a shot
+    /// only sets off the lines it crosses); it acts once per press.
+    pub fire: bool,
 }
 
 impl TickInput {
@@ -28,7 +32,8 @@ impl TickInput {
             strafe: self.strafe.clamp(-1, 1),
             turn: if self.turn.is_finite() { self.turn } else { 0.0 },
             run: self.run,
-            use_door: self.use_door,
+            use_line: self.use_line,
+            fire: self.fire,
         }
     }
 }

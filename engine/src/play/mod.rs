@@ -1,39 +1,56 @@
-//! Play: the game simulation, headless. A [`Game`] owns a [`Level`] and the
-//! player, and advances in fixed ticks of 1/[`TICRATE`] s from one
-//! [`TickInput`] each; the window (in `game/`) accumulates real time into
-//! ticks and draws [`Game::view`] between them. Nothing here reads a clock,
-//! iterates a hash map or draws a random number, so the same inputs give the
-//! same game, bit for bit ([`demo`] relies on it).
+//! Play: the game simulation, headless. A [`Game`] owns a [`Level`], the
+//! player and the world's machinery, and advances in fixed ticks of
+//! 1/[`TICRATE`] s from one [`TickInput`] each; the window (in `game/`)
+//! accumulates real time into ticks and draws [`Game::view`] between them.
+//! Nothing here reads a clock or iterates a hash map, and every random
+//! choice comes from the game's one seeded generator ([`random`]), so the
+//! same seed and inputs give the same game, bit for bit ([`demo`] relies on
+//! it).
 //!
-//! One tick, in order (Doom's P_PlayerThink, P_XYMovement, P_ZMovement, then
-//! the sector thinkers):
+//! One tick, in order (Doom's P_PlayerThink, the player's P_MobjThinker,
+//! then the other thinkers and P_UpdateSpecials):
 //!
 //! ```text
-//! input --turn, thrust--> velocity --collision::slide--> position
-//!       --friction, fall (step up, gravity)--> z --use--> doors --tick--> sector heights
-//!                                                                         (and grid panels)
+//! input --turn, thrust--> velocity --collision::slide--> position --walk triggers (trace)
+//!       --friction, fall--> z --use, fire (trace)--> line specials
+//!       --sector under the feet (damage, secret)--> pickups --world thinkers--> sector heights,
+//!         light, switch textures --animation--> texture frames
 //! ```
 //!
 //! Modules: [`input`] (what a tick reads), [`player`] (the body's physics and
 //! constants), [`blockmap`] (lines by grid cell), [`collision`] (sweeping the
-//! body's circle against lines), [`doors`] (door state machines), [`demo`]
-//! (recorded inputs, saved and loaded).
+//! body's circle against lines), [`trace`] (what a move, a use or a shot
+//! crosses), [`world`] (the level's machinery: specials and thinkers),
+//! [`pickups`] (keys), [`events`] (sounds and messages out), [`random`],
+//! [`demo`] (recorded inputs, saved and loaded).
 
 pub mod blockmap;
 pub mod collision;
 pub mod demo;
-pub mod doors;
+pub mod events;
 pub mod input;
+pub mod pickups;
 pub mod player;
+pub mod random;
+pub mod trace;
+pub mod world;
 
 use glam::DVec2;
 
+use crate::geom::sin_cos_degrees;
 use crate::level::Level;
+use crate::map::special::Activation;
+use crate::map::things::{ThingFlag, ThingTypes};
 use crate::render::View;
 use blockmap::{Blockmap, LineQuery};
-use collision::World;
-use doors::{Door, DoorKind, Doors};
+use collision::World as Collision;
+use events::{sound, Event, Origin};
+use pickups::Pickup;
 use player::{HEIGHT, RADIUS};
+use random::GameRng;
+use trace::{Lines, Scratch};
+use world::specials::{activate, Activator};
+use world::{Bodies, Ctx, Exit, SpecialLine, World};
 
 pub use demo::{Demo, DemoError};
 pub use input::TickInput;
@@ -41,11 +58,46 @@ pub use player::Player;
 
 /// Simulation ticks per second (Doom's `TICRATE`).
 pub const TICRATE: u32 = 35;
+/// The skill a game has unless told otherwise: Doom's 3, "Hurt Me Plenty".
+pub const DEFAULT_SKILL: u8 = 3;
+/// How far ahead of the body's centre the player can use a line (Doom's `USERANGE`, 64).
+pub const USE_RANGE: f64 = 64.0;
+/// How far a shot reaches (Doom's `MISSILERANGE`, 2048).
+pub const SHOT_RANGE: f64 = 2048.0;
+/// A shot leaves the body this far above the feet (Doom: half the height plus 8).
+pub const SHOT_HEIGHT: f64 = HEIGHT / 2.0 + 8.0;
 
 #[derive(Debug, thiserror::Error, PartialEq)]
 pub enum PlayError {
     #[error("{map}: ({x}, {y}) is not inside any sector")]
     Outside { map: String, x: f64, y: f64 },
+    #[error("skill {0} is not 1 to 5")]
+    Skill(u8),
+}
+
+/// How a game is set up.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct GameOptions {
+    /// 1 to 5, as Doom's: things appear by their skill flags.
+    pub skill: u8,
+    /// The seed of the game's random generator.
+    pub seed: u64,
+}
+
+impl Default for GameOptions {
+    fn default() -> GameOptions {
+        GameOptions { skill: DEFAULT_SKILL, seed: 0 }
+    }
+}
+
+/// The level's tallies, as the intermission shows them: found and total.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Stats {
+    pub kills: (u32, u32),
+    pub items: (u32, u32),
+    pub secrets: (u32, u32),
+    /// Ticks played.
+    pub ticks: u64,
 }
 
 /// What the view interpolates between ticks.
@@ -56,80 +108,246 @@ struct Pose {
     angle: f64,
 }
 
-/// A game in progress: the level (whose door sectors move, and on a grid map
-/// whose door panels slide), the player, and the tick count.
+/// A game in progress on one level.
 pub struct Game {
     level: Level,
     player: Player,
-    doors: Doors,
+    world: World,
     blockmap: Blockmap,
+    triggers: Blockmap,
     query: LineQuery,
-    /// Sectors the body overlaps (scratch for the doors).
+    scratch: Scratch,
+    /// Sectors the body overlaps (scratch).
     touched: Vec<usize>,
+    pickups: Vec<Pickup>,
+    rng: GameRng,
+    events: Vec<Event>,
+    exit: Option<Exit>,
+    options: GameOptions,
+    /// Monsters and items to count at the intermission (what the actors
+    /// issue will let the player kill and pick up).
+    totals: (u32, u32),
     /// The pose at the start of the last tick.
     previous: Pose,
     ticks: u64,
 }
 
 impl Game {
-    /// A game on `level` with the player at the map's player start.
+    /// A game on `level` at the default skill, with the player at the map's player start.
     pub fn new(level: Level) -> Result<Game, PlayError> {
+        Game::with_options(level, GameOptions::default())
+    }
+
+    pub fn with_options(mut level: Level, options: GameOptions) -> Result<Game, PlayError> {
+        if !(1..=5).contains(&options.skill) {
+            return Err(PlayError::Skill(options.skill));
+        }
         let map = &level.compiled.map;
         let start = map.player_start().clone();
         if map.sector_at(start.pos).is_none() {
             return Err(PlayError::Outside { map: map.name.clone(), x: start.pos.x, y: start.pos.y });
         }
-        let blockmap = Blockmap::new(map);
-        let doors = Doors::new(&level);
+        let types = ThingTypes::doom();
+        let mut totals = (0, 0);
+        for (i, t) in map.things.iter().enumerate() {
+            let shown = t.in_single_player(options.skill);
+            level.thing_shown[i] = shown;
+            if let Some(ty) = types.get(&t.kind).filter(|_| shown && map.version >= 2) {
+                totals.0 += u32::from(ty.has(ThingFlag::CountKill));
+                totals.1 += u32::from(ty.has(ThingFlag::CountItem));
+            }
+        }
+        level.time = 0;
+        let blockmap = Blockmap::new(&level.compiled.map);
+        let triggers = Blockmap::of_trigger_lines(&level.compiled.map);
+        let mut rng = GameRng::new(options.seed);
+        let world = World::new(&mut level, &mut rng);
+        let pickups = pickups::pickups(&level);
         let mut query = LineQuery::default();
-        let world = World { compiled: &level.compiled, blockmap: &blockmap };
-        let near = world.lines_near(&mut query, start.pos, RADIUS + 1.0);
-        let area = world.area(near, start.pos);
+        let collision = Collision { compiled: &level.compiled, blockmap: &blockmap };
+        let near = collision.lines_near(&mut query, start.pos, RADIUS + 1.0);
+        let area = collision.area(near, start.pos);
         let player = Player::new(start.pos, start.angle, area.sector, area.floor, area.ceiling);
         let previous = pose(&player);
-        Ok(Game { level, player, doors, blockmap, query, touched: Vec::new(), previous, ticks: 0 })
+        Ok(Game {
+            level,
+            player,
+            world,
+            blockmap,
+            triggers,
+            query,
+            scratch: Scratch::default(),
+            touched: Vec::new(),
+            pickups,
+            rng,
+            events: Vec::new(),
+            exit: None,
+            options,
+            totals,
+            previous,
+            ticks: 0,
+        })
     }
 
-    /// Advances the game by one tick of 1/[`TICRATE`] s.
+    /// Advances the game by one tick of 1/[`TICRATE`] s. After the level
+    /// has ended ([`Game::exit`]) ticks do nothing.
     pub fn tick(&mut self, input: &TickInput) {
-        let input = input.sanitized();
-        self.previous = pose(&self.player);
-        let Game { level, player, doors, blockmap, query, touched, .. } = self;
-        let world = World { compiled: &level.compiled, blockmap };
-
-        player.turn(&input);
-        player.thrust(&input);
-        let mut velocity = player.velocity;
-        let from = player.pos;
-        player.pos = world.slide(query, player.pos, player.z, &mut velocity);
-        player.velocity = velocity;
-        let near = world.lines_near(query, player.pos, RADIUS + 1.0);
-        let area = world.area(near, player.pos);
-        (player.sector, player.floor, player.ceiling) = (area.sector, area.floor, area.ceiling);
-        player.friction(&input);
-        player.fall();
-
-        if doors.is_empty() {
-            self.ticks += 1;
+        self.events.clear();
+        if self.exit.is_some() {
             return;
         }
-        doors.walk(world, query, from, player.pos);
-        if input.use_door {
-            doors.use_ahead(world, query, player.pos, player.angle);
+        let input = input.sanitized();
+        self.previous = pose(&self.player);
+        let from = self.player.pos;
+        self.move_player(&input);
+        let to = self.player.pos;
+        self.walk_triggers(from, to);
+        let use_pressed = input.use_line && !self.player.use_held;
+        let fire_pressed = input.fire && !self.player.fire_held;
+        (self.player.use_held, self.player.fire_held) = (input.use_line, input.fire);
+        if !self.player.dead() && self.player.freeze == 0 {
+            if use_pressed {
+                self.use_lines();
+            }
+            if fire_pressed {
+                self.shoot();
+            }
         }
-        let near = world.lines_near(query, player.pos, RADIUS + 1.0);
-        world.sectors_touched(near, player.pos, touched);
-        let (top, pos) = (player.z + HEIGHT, player.pos);
-        let touched = &*touched;
-        doors.tick(level, |door, position| match &door.kind {
-            DoorKind::Ceiling => touched.contains(&door.sector) && position < top,
-            DoorKind::Slide(slide) => slide.holds(pos, RADIUS),
-        });
+        if self.player.pos != to {
+            // A teleport: do not draw the way between.
+            self.previous = pose(&self.player);
+        }
+        self.run_world();
         self.ticks += 1;
+        self.level.time = self.ticks;
     }
 
-    /// The level as it is now: door sectors at their current heights, grid
-    /// door panels slid as far as they are ([`crate::level::GridLevel::open`]). Render this.
+    /// Turn, thrust, move, friction, fall (or, dead, sink).
+    fn move_player(&mut self, input: &TickInput) {
+        let Game { level, player, blockmap, query, .. } = self;
+        let collision = Collision { compiled: &level.compiled, blockmap };
+        if player.dead() {
+            player.sink();
+        } else if player.freeze > 0 {
+            player.freeze -= 1;
+        } else {
+            player.turn(input);
+            player.thrust(input);
+        }
+        let mut velocity = player.velocity;
+        player.pos = collision.slide(query, player.pos, player.z, &mut velocity);
+        player.velocity = velocity;
+        let near = collision.lines_near(query, player.pos, RADIUS + 1.0);
+        let area = collision.area(near, player.pos);
+        (player.sector, player.floor, player.ceiling) = (area.sector, area.floor, area.ceiling);
+        let idle = if player.dead() || player.freeze > 0 { &TickInput::default() } else { input };
+        player.friction(idle);
+        player.fall();
+    }
+
+    /// A context for the world's specials and thinkers.
+    fn ctx(&mut self) -> (&mut World, Ctx<'_>) {
+        let Game { level, player, world, blockmap, query, touched, rng, events, exit, ticks, .. } = self;
+        let bodies = Bodies { player, touched, blockmap, query };
+        (world, Ctx { level, bodies, rng, time: *ticks, events, exit })
+    }
+
+    /// The lines with walk specials the body's centre crossed.
+    fn walk_triggers(&mut self, from: DVec2, to: DVec2) {
+        if self.player.dead() {
+            return;
+        }
+        let lines = Lines { map: &self.level.compiled.map, walls: &self.blockmap, triggers: &self.triggers };
+        let crossed = lines.crossed(&mut self.scratch, from, to);
+        for c in crossed {
+            let (world, mut ctx) = self.ctx();
+            activate(world, &mut ctx, c.line, Activation::Walk, Activator::Player, c.from_front);
+        }
+    }
+
+    /// Uses the first line ahead, within [`USE_RANGE`], that has a use
+    /// special (Doom's P_UseLines): from its front it goes off; a wall with
+    /// no opening stops the search first ("no way" sound). Unlike vanilla
+    /// Doom, lines with other specials (walk lines) do not stop it.
+    fn use_lines(&mut self) {
+        let (sin, cos) = sin_cos_degrees(self.player.angle);
+        let from = self.player.pos;
+        let to = from + DVec2::new(cos, sin) * USE_RANGE;
+        let lines = Lines { map: &self.level.compiled.map, walls: &self.blockmap, triggers: &self.triggers };
+        let crossings = lines.along(&mut self.scratch, from, to);
+        for c in crossings {
+            if let Some(special) = self.world.special(&self.level, c.line) {
+                if special.on == Activation::Use {
+                    if c.from_front {
+                        let (world, mut ctx) = self.ctx();
+                        activate(world, &mut ctx, c.line, Activation::Use, Activator::Player, true);
+                    }
+                    return;
+                }
+            }
+            if let SpecialLine::Wall(i) = c.line {
+                if !self.opening(i).is_some_and(|(bottom, top)| top > bottom) {
+                    self.events.push(sound("noway", Origin::Player));
+                    return;
+                }
+            }
+        }
+    }
+
+    /// A shot straight ahead (Doom's P_LineAttack without a target to aim
+    /// at): every line with a shoot special it crosses goes off; it stops at
+    /// a wall, or where an opening's floor or ceiling is in its way.
+    fn shoot(&mut self) {
+        let (sin, cos) = sin_cos_degrees(self.player.angle);
+        let from = self.player.pos;
+        let to = from + DVec2::new(cos, sin) * SHOT_RANGE;
+        let z = self.player.z + SHOT_HEIGHT;
+        let lines = Lines { map: &self.level.compiled.map, walls: &self.blockmap, triggers: &self.triggers };
+        let crossings = lines.along(&mut self.scratch, from, to);
+        for c in crossings {
+            let (world, mut ctx) = self.ctx();
+            activate(world, &mut ctx, c.line, Activation::Shoot, Activator::Player, c.from_front);
+            if let SpecialLine::Wall(i) = c.line {
+                match self.opening(i) {
+                    Some((bottom, top)) if bottom <= z && z <= top => {}
+                    _ => return,
+                }
+            }
+        }
+    }
+
+    /// The opening of wall `i` (the higher floor and lower ceiling of its
+    /// sides), `None` for a one-sided wall.
+    fn opening(&self, i: usize) -> Option<(f64, f64)> {
+        let map = &self.level.compiled.map;
+        let line = &map.lines[i];
+        let back = line.back.as_ref()?;
+        let (f, b) = (&map.sectors[line.front.sector], &map.sectors[back.sector]);
+        Some((f.floor.max(b.floor), f.ceiling.min(b.ceiling)))
+    }
+
+    /// The sector under the feet, pickups, then every thinker and the animations.
+    fn run_world(&mut self) {
+        let collision = Collision { compiled: &self.level.compiled, blockmap: &self.blockmap };
+        let near = collision.lines_near(&mut self.query, self.player.pos, RADIUS + 1.0);
+        collision.sectors_touched(near, self.player.pos, &mut self.touched);
+        // Conveyors (Boom's 252) push a body standing on their floor.
+        for &s in &self.touched {
+            let sector = &self.level.compiled.map.sectors[s];
+            if let Some(c) = sector.carry.filter(|_| self.player.z <= sector.floor) {
+                self.player.velocity += DVec2::new(c.x, c.y);
+            }
+        }
+        let (world, mut ctx) = self.ctx();
+        world::sectors::player_in_sector(world, &mut ctx);
+        pickups::touch(&mut self.pickups, &mut self.level, &mut self.player, &mut self.events);
+        let (world, mut ctx) = self.ctx();
+        world.tick(&mut ctx);
+    }
+
+    /// The level as it is now: sectors at their current heights and light,
+    /// switches and animations as they show, grid door panels slid as far as
+    /// they are. Render this.
     pub fn level(&self) -> &Level {
         &self.level
     }
@@ -163,16 +381,18 @@ impl Game {
     }
 
     /// Puts the player at `pos` looking along `angle`, standing still on the
-    /// floor there, as if it had started there.
+    /// floor there, as if it had started there (health and keys are kept).
     pub fn teleport(&mut self, pos: DVec2, angle: f64) -> Result<(), PlayError> {
         let map = &self.level.compiled.map;
         if !(pos.is_finite() && angle.is_finite()) || map.sector_at(pos).is_none() {
             return Err(PlayError::Outside { map: map.name.clone(), x: pos.x, y: pos.y });
         }
-        let world = World { compiled: &self.level.compiled, blockmap: &self.blockmap };
-        let near = world.lines_near(&mut self.query, pos, RADIUS + 1.0);
-        let area = world.area(near, pos);
-        self.player = Player::new(pos, angle, area.sector, area.floor, area.ceiling);
+        let collision = Collision { compiled: &self.level.compiled, blockmap: &self.blockmap };
+        let near = collision.lines_near(&mut self.query, pos, RADIUS + 1.0);
+        let area = collision.area(near, pos);
+        self.player.teleport_to(pos, angle, area, 0);
+        self.player.view_height = crate::render::view::EYE_HEIGHT;
+        self.player.view_delta = 0.0;
         self.previous = pose(&self.player);
         Ok(())
     }
@@ -182,9 +402,33 @@ impl Game {
         self.ticks
     }
 
-    /// The map's doors and their states (empty on a map without doors).
-    pub fn doors(&self) -> &[Door] {
-        &self.doors.doors
+    /// The world's machinery: its thinkers at work.
+    pub fn world(&self) -> &World {
+        &self.world
+    }
+
+    /// What happened on the last tick: sounds and messages.
+    pub fn events(&self) -> &[Event] {
+        &self.events
+    }
+
+    /// How the level ended, once it has.
+    pub fn exit(&self) -> Option<Exit> {
+        self.exit
+    }
+
+    pub fn options(&self) -> GameOptions {
+        self.options
+    }
+
+    /// Kills, items and secrets found of the level's totals, and the time.
+    pub fn stats(&self) -> Stats {
+        Stats {
+            kills: (0, self.totals.0),
+            items: (0, self.totals.1),
+            secrets: (self.world.secrets.1, self.world.secrets.0),
+            ticks: self.ticks,
+        }
     }
 }
 

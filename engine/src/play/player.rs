@@ -8,8 +8,11 @@
 
 use glam::DVec2;
 
+use super::collision::Area;
 use super::input::TickInput;
 use crate::geom::sin_cos_degrees;
+use crate::map::special::KeyColour;
+use crate::map::things::KeyForm;
 use crate::render::view::EYE_HEIGHT;
 
 /// The body is a circle of this radius (Doom's player radius, 16).
@@ -48,6 +51,18 @@ pub const SQUAT_SPEED: f64 = 8.0;
 
 const _: () = assert!(MAX_SPEED < 2.0 * RADIUS);
 
+/// Health at the start (Doom's 100).
+pub const START_HEALTH: i32 = 100;
+/// A dead player's eye sinks to this height above the floor (Doom's 6).
+pub const DEAD_EYE: f64 = 6.0;
+
+/// A key the player holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub struct Key {
+    pub colour: KeyColour,
+    pub form: KeyForm,
+}
+
 /// The player: where the body is and how it moves.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Player {
@@ -72,6 +87,17 @@ pub struct Player {
     pub view_height: f64,
     /// How fast `view_height` recovers (Doom's `deltaviewheight`).
     pub view_delta: f64,
+    /// At 0 or below the player is dead.
+    pub health: i32,
+    /// Keys picked up, in the order found.
+    pub keys: Vec<Key>,
+    /// Ticks left during which input is ignored (after a teleport: Doom's
+    /// `reactiontime`).
+    pub freeze: u32,
+    /// Use and fire were held on the last tick: each acts once per press,
+    /// as Doom's `usedown` makes use.
+    pub use_held: bool,
+    pub fire_held: bool,
 }
 
 impl Player {
@@ -88,7 +114,41 @@ impl Player {
             ceiling,
             view_height: EYE_HEIGHT,
             view_delta: 0.0,
+            health: START_HEALTH,
+            keys: Vec::new(),
+            freeze: 0,
+            use_held: false,
+            fire_held: false,
         }
+    }
+
+    pub fn dead(&self) -> bool {
+        self.health <= 0
+    }
+
+    /// Loses `amount` health (at least nothing; death at 0).
+    pub fn hurt(&mut self, amount: i32) {
+        if !self.dead() {
+            self.health = (self.health - amount.max(0)).max(0);
+        }
+    }
+
+    /// Puts the body at `pos` facing `angle`, still, on the floor of `area`,
+    /// unable to move for `freeze` ticks. Health and keys are kept.
+    pub fn teleport_to(&mut self, pos: DVec2, angle: f64, area: Area, freeze: u32) {
+        self.pos = pos;
+        self.angle = angle.rem_euclid(360.0);
+        self.velocity = DVec2::ZERO;
+        self.vz = 0.0;
+        (self.sector, self.floor, self.ceiling) = (area.sector, area.floor, area.ceiling);
+        self.z = area.floor;
+        self.freeze = freeze;
+    }
+
+    /// A dead player's eye sinks towards [`DEAD_EYE`], a unit a tick (Doom's P_DeathThink).
+    pub fn sink(&mut self) {
+        self.view_height = (self.view_height - 1.0).max(DEAD_EYE);
+        self.view_delta = 0.0;
     }
 
     /// Standing on the floor (not falling): only then do thrust and friction act.
@@ -190,6 +250,9 @@ impl Player {
 
     /// Doom's P_CalcHeight without the bob: the eye returns to its rest height.
     fn settle_view(&mut self) {
+        if self.dead() {
+            return;
+        }
         self.view_height += self.view_delta;
         if self.view_height > EYE_HEIGHT {
             self.view_height = EYE_HEIGHT;

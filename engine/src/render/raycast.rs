@@ -336,7 +336,7 @@ pub(crate) fn render(
     }
     // The open cells are sector 0; its planes are every column's planes.
     let sector = &level.map.sectors[0];
-    let textures = level.materials.sectors[0];
+    let textures = level.materials.plane(0);
     let plane = |surface, height, texture: Option<TextureId>| match (shade, texture) {
         (Shade::Textured, Some(id)) => {
             PlanePaint::Flat { id, texture: level.materials.textures.get(id), height, light: sector.light }
@@ -383,7 +383,7 @@ fn draw_column(scene: &Scene, setup: &Setup, hit: &RayHit, x: usize, frame: &mut
     // Wolfenstein shades east and west faces apart from north and south ones.
     let facing = if hit.face.is_x() { 1.0 } else { 0.8 };
     let texture = hit.line.filter(|_| shade == Shade::Textured).and_then(|line| {
-        let side = level.materials.sides[line][0];
+        let side = level.materials.side(line, 0);
         if hit.door {
             side.upper
         } else {

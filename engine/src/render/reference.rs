@@ -15,7 +15,9 @@ use glam::DVec2;
 
 use super::columns::ColumnWriter;
 use super::frame::{Hit, StripFrame};
-use super::shade::{ceiling_at_line, colour, masked_top, plane_surfaces, wall_facing, Shade, Surface};
+use super::shade::{
+    ceiling_at_line, colour, masked_top, plane_lights, plane_surfaces, side_offsets, wall_facing, Shade, Surface,
+};
 use super::view::{Camera, NEAR};
 use crate::geom::cross;
 use crate::level::Level;
@@ -200,7 +202,7 @@ struct Billboard<'a> {
 fn things_in_front<'a>(level: &'a Level, cam: &Camera) -> Vec<Billboard<'a>> {
     let mut out = Vec::new();
     for (thing, t) in level.map.things.iter().enumerate() {
-        let Some(id) = level.materials.sprites[thing] else { continue };
+        let Some(id) = level.materials.sprites[thing].filter(|_| level.thing_shown[thing]) else { continue };
         let q = cam.to_camera(t.pos);
         if q.x < NEAR {
             continue;
@@ -283,21 +285,22 @@ fn pixel_colour(
         let sector = &map.sectors[near.sector];
         let far_sector = far.map(|f| &map.sectors[f.sector]);
         let light = sector.light;
+        let (ceiling_light, floor_light) = plane_lights(map, sector);
         let (ceiling, floor) = plane_surfaces(near.sector, sector);
         if above(ceiling_at_line(sector, far_sector)) {
-            return colour(shade, ceiling, light, 1.0);
+            return colour(shade, ceiling, ceiling_light, 1.0);
         }
         if !above(sector.floor) {
-            return colour(shade, floor, light, 1.0);
+            return colour(shade, floor, floor_light, 1.0);
         }
         match far_sector {
             Some(back) if above(back.floor) && !above(back.ceiling) => {
                 // Through the opening, unless a see-through middle covers it here.
                 let side = usize::from(!hit.from_front);
-                if let Some(id) = level.materials.sides[hit.line][side].middle.filter(|_| masked) {
+                if let Some(id) = level.materials.side(hit.line, side).middle.filter(|_| masked) {
                     let texture = level.materials.textures.get(id);
-                    let top = masked_top(map, line, !hit.from_front, texture.height as f64);
-                    let u = masked_u(&ends[hit.line], near.x_offset, hit, t);
+                    let top = masked_top(map, line, !hit.from_front, texture.height as f64, level.time);
+                    let u = masked_u(&ends[hit.line], side_offsets(near, level.time).0, hit, t);
                     let u = (u.floor() as i64).rem_euclid(texture.width as i64) as usize;
                     if texel_at(cam, texture, u, top, hit.depth, y).is_some() {
                         return colour(shade, wall, light, 1.0);

@@ -140,7 +140,13 @@ pub fn ceiling_at_line(near: &crate::map::Sector, far: Option<&crate::map::Secto
 /// seen from its front (`back_side == false`) or back. Doom's rule: it hangs
 /// from the lower of the two ceilings, or with `lower_unpegged` stands on the
 /// higher of the two floors; it is drawn once, not tiled.
-pub fn masked_top(map: &crate::map::Map, line: &crate::map::Line, back_side: bool, texture_height: f64) -> f64 {
+pub fn masked_top(
+    map: &crate::map::Map,
+    line: &crate::map::Line,
+    back_side: bool,
+    texture_height: f64,
+    time: u64,
+) -> f64 {
     let front = &map.sectors[line.front.sector];
     let back = line.back.as_ref().map_or(front, |b| &map.sectors[b.sector]);
     let side = line.side(back_side);
@@ -149,5 +155,19 @@ pub fn masked_top(map: &crate::map::Map, line: &crate::map::Line, back_side: boo
     } else {
         front.ceiling.min(back.ceiling)
     };
-    top + side.y_offset
+    top + side_offsets(side, time).1
+}
+
+/// A side's texture offsets at tick `time`: its own, plus its scrolling
+/// that many ticks on.
+pub fn side_offsets(side: &crate::map::Side, time: u64) -> (f64, f64) {
+    let t = time as f64;
+    (side.x_offset + side.scroll.x * t, side.y_offset + side.scroll.y * t)
+}
+
+/// The light a sector's ceiling and floor are drawn with: its own, or the
+/// sector's each takes its light from (Boom's light transfers).
+pub fn plane_lights(map: &crate::map::Map, sector: &crate::map::Sector) -> (u8, u8) {
+    let from = |s: Option<usize>| s.map_or(sector.light, |s| map.sectors[s].light);
+    (from(sector.ceiling_light), from(sector.floor_light))
 }

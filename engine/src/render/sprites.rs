@@ -35,7 +35,7 @@ pub(crate) struct VisSprite {
 pub(crate) fn collect(level: &Level, cam: &Camera, sprites: &mut Vec<VisSprite>) {
     sprites.clear();
     for (thing, t) in level.map.things.iter().enumerate() {
-        let Some(texture) = level.materials.sprites[thing] else { continue };
+        let Some(texture) = level.materials.sprites[thing].filter(|_| level.thing_shown[thing]) else { continue };
         let q = cam.to_camera(t.pos);
         if q.x < NEAR {
             continue;
@@ -133,9 +133,9 @@ impl MaskedPass<'_> {
         let level = self.scene.level;
         let map = &level.map;
         let line = &map.lines[m.line];
-        let Some(id) = level.materials.sides[m.line][m.back_side as usize].middle else { return };
+        let Some(id) = level.materials.side(m.line, m.back_side as usize).middle else { return };
         let texture = level.materials.textures.get(id);
-        let top = masked_top(map, line, m.back_side, texture.height as f64);
+        let top = masked_top(map, line, m.back_side, texture.height as f64, level.time);
         let near = line.side(m.back_side).sector;
         let light = map.sectors[near].light;
         let paint = match self.scene.shade {

@@ -13,7 +13,7 @@ use super::frame::{Scene, StripFrame};
 use super::light::fake_contrast;
 use super::plan::Plan;
 use super::planes::{paint_plane, PlanePaint};
-use super::shade::{ceiling_at_line, colour, plane_surfaces, wall_facing, Shade, Surface};
+use super::shade::{ceiling_at_line, colour, plane_lights, plane_surfaces, side_offsets, wall_facing, Shade, Surface};
 use super::view::NEAR;
 use super::visplanes::PlaneKey;
 use crate::bsp::{LineSide, Seg};
@@ -117,35 +117,28 @@ fn seg_columns<'a>(
     let front = &map.sectors[seg.front_sector];
     let back = seg.back_sector.map(|b| &map.sectors[b]);
     let (side, textures) = match seg.side {
-        LineSide::Front => (&line.front, level.materials.sides[seg.line][0]),
+        LineSide::Front => (&line.front, level.materials.side(seg.line, 0)),
         // A back seg exists only on two-sided lines.
-        LineSide::Back => (line.side(true), level.materials.sides[seg.line][1]),
+        LineSide::Back => (line.side(true), level.materials.side(seg.line, 1)),
     };
     let light = front.light;
+    let (ceiling_light, floor_light) = plane_lights(map, front);
     let (ceiling_surface, floor_surface) = plane_surfaces(seg.front_sector, front);
     let wall = colour(shade, Surface::Wall { line: seg.line }, light, wall_facing(seg.v2 - seg.v1));
     let ceiling = ceiling_at_line(front, back);
     let textured = shade == Shade::Textured;
-    let plane = |surface, height, texture: Option<TextureId>| match (textured, surface, texture) {
+    let plane = |surface, height, texture: Option<TextureId>, light: u8| match (textured, surface, texture) {
         (true, Surface::Sky, _) if plan.sky => {
             level.materials.sky.map(|t| PlanePaint::Sky(level.materials.textures.get(t)))
         }
         (true, _, Some(t)) => Some(PlanePaint::Flat { id: t, texture: level.materials.textures.get(t), height, light }),
         _ => None,
     };
-    let planes = level.materials.sectors[seg.front_sector];
-    let ceiling_paint = plane(ceiling_surface, front.ceiling, planes.ceiling).unwrap_or(PlanePaint::Solid(colour(
-        shade,
-        ceiling_surface,
-        light,
-        1.0,
-    )));
-    let floor_paint = plane(floor_surface, front.floor, planes.floor).unwrap_or(PlanePaint::Solid(colour(
-        shade,
-        floor_surface,
-        light,
-        1.0,
-    )));
+    let planes = level.materials.plane(seg.front_sector);
+    let ceiling_paint = plane(ceiling_surface, front.ceiling, planes.ceiling, ceiling_light)
+        .unwrap_or(PlanePaint::Solid(colour(shade, ceiling_surface, ceiling_light, 1.0)));
+    let floor_paint = plane(floor_surface, front.floor, planes.floor, floor_light)
+        .unwrap_or(PlanePaint::Solid(colour(shade, floor_surface, floor_light, 1.0)));
     let (middle, upper, lower) = if textured {
         wall_paints(level, line, side, &textures, (front, back), (wall, seg.v2 - seg.v1))
     } else {
@@ -158,7 +151,7 @@ fn seg_columns<'a>(
         dir,
         length: dir.length(),
         cross_from,
-        u_offset: side.x_offset,
+        u_offset: side_offsets(side, level.time).0,
         backwards: seg.side == LineSide::Back,
         ceiling,
         floor: front.floor,
@@ -192,7 +185,7 @@ fn wall_paints<'a>(
     let paint = |id: Option<TextureId>, top: &dyn Fn(&Texture) -> f64| match id {
         Some(id) => {
             let texture = level.materials.textures.get(id);
-            Paint::Textured { texture, top: top(texture) + side.y_offset, light }
+            Paint::Textured { texture, top: top(texture) + side_offsets(side, level.time).1, light }
         }
         None => Paint::Solid(flat),
     };

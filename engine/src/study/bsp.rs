@@ -176,12 +176,7 @@ pub(crate) fn pillars(k: usize, seed: u64) -> Map {
         from: from as i64,
         to: to as i64,
         front: side(0),
-        back: None,
-        upper_unpegged: false,
-        lower_unpegged: false,
-        impassable: false,
-        door: false,
-        trigger: None,
+        ..LineSource::default()
     };
     let mut lines: Vec<LineSource> = (0..4).map(|i| line(i, (i + 1) % 4)).collect();
     let mut slots: Vec<usize> = (0..16).filter(|&s| s != 0).collect();
@@ -203,19 +198,10 @@ pub(crate) fn pillars(k: usize, seed: u64) -> Map {
     let source = MapSource {
         name: format!("room with {k} pillars"),
         vertices,
-        sectors: vec![SectorSource {
-            floor: 0.0,
-            ceiling: 128.0,
-            light: 192,
-            floor_texture: None,
-            ceiling_texture: None,
-            tag: 0,
-        }],
+        sectors: vec![SectorSource { floor: 0.0, ceiling: 128.0, light: 192, ..SectorSource::default() }],
         lines,
-        things: vec![ThingSource { kind: crate::map::PLAYER_START.into(), x: 8.0, y: 8.0, angle: 45.0 }],
-        diminishing_light: true,
-        fog: None,
-        sky: None,
+        things: vec![ThingSource::new(crate::map::PLAYER_START, 8.0, 8.0, 45.0)],
+        ..MapSource::default()
     };
     // Built from fixed shapes in free slots: valid by construction.
     validate(&source).unwrap_or_else(|p| unreachable!("generated room is invalid: {p:?}"))

@@ -8,6 +8,7 @@
 //! contiguous slice stays in cache, where row-major storage would stride by the
 //! texture's width on every texel.
 
+pub mod animdefs;
 mod decode;
 pub mod procedural;
 

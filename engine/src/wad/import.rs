@@ -193,6 +193,7 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
                 lower: texture(&s.lower, "lower")?,
                 x_offset: f64::from(s.x_offset),
                 y_offset: f64::from(s.y_offset),
+                scroll: None,
             })
         };
         let front = side(right, "right")?;
@@ -208,6 +209,7 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
             impassable: l.flags & flags::BLOCKING != 0,
             door,
             trigger,
+            ..LineSource::default()
         };
         match duplicate {
             None => lines.push(line),
@@ -262,6 +264,7 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
             floor_texture: flat(&s.floor_flat, "floor")?,
             ceiling_texture: flat(&s.ceiling_flat, "ceiling")?,
             tag: i64::from(s.tag),
+            ..SectorSource::default()
         });
     }
     for line in &mut lines {
@@ -279,7 +282,7 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
         if t.kind == 1 {
             starts += 1;
             // The player start goes first: the validator takes the first.
-            things.insert(0, ThingSource { kind: PLAYER_START.to_string(), x, y, angle });
+            things.insert(0, ThingSource::new(PLAYER_START, x, y, angle));
             continue;
         }
         const MEDIUM: u16 = 0x0002;
@@ -291,7 +294,7 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
             continue;
         };
         sprites.insert(sprite.clone());
-        things.push(ThingSource { kind: sprite.to_ascii_lowercase(), x, y, angle });
+        things.push(ThingSource::new(&sprite.to_ascii_lowercase(), x, y, angle));
     }
     if starts == 0 {
         return Err(wad.error(&format!("{}/THINGS", map.name), "no player 1 start (thing type 1)"));
@@ -327,7 +330,7 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
         walls.insert(sky.clone());
     }
     let mut source =
-        MapSource { name: map.name.clone(), vertices, sectors, lines, things, diminishing_light: true, fog: None, sky };
+        MapSource { name: map.name.clone(), vertices, sectors, lines, things, sky, ..MapSource::default() };
     reassign_misplaced_lines(&mut source, &mut repairs);
     Ok(Converted { source, walls, flats, sprites, repairs })
 }

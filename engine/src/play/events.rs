@@ -1,0 +1,30 @@
+//! What the simulation tells the world outside it each tick: sounds to play
+//! and messages to show. The simulation never touches a device; the window,
+//! the audio thread and the tests read the same events.
+
+use glam::DVec2;
+
+/// Where a sound comes from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Origin {
+    /// The listener itself (centred, full volume).
+    Player,
+    /// A sector's middle (doors, lifts, floors: Doom's `soundorg`).
+    Sector(usize),
+    /// A point in the map.
+    At(DVec2),
+}
+
+/// One thing that happened this tick.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Event {
+    /// A sound, by Doom's name without its `DS` prefix (`doropn`, `pstart`).
+    Sound { sound: &'static str, origin: Origin },
+    /// A line of text for the player ("Picked up a blue keycard.").
+    Message(String),
+}
+
+/// Shorthand for a sound event.
+pub fn sound(sound: &'static str, origin: Origin) -> Event {
+    Event::Sound { sound, origin }
+}

@@ -1,0 +1,107 @@
+//! The one plane mover (Doom's T_MovePlane): every door, lift, floor,
+//! ceiling, crusher, stair step and donut moves a sector's floor or ceiling
+//! through [`move_plane`], which also settles the bodies over the sector
+//! (Doom's P_ChangeSector): a body on the floor rides it, a body under a
+//! lowering ceiling is pushed down, and a body that no longer fits either
+//! stops the plane or, when the plane crushes, is hurt while it keeps going.
+
+use super::Ctx;
+use crate::play::player::{HEIGHT, RADIUS};
+
+/// Which plane of a sector moves.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Plane {
+    Floor,
+    Ceiling,
+}
+
+/// What one tick of movement came to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Moved {
+    /// Moved by its speed, not there yet.
+    Ok,
+    /// A body is in the way: the plane stayed put (or, crushing, moved
+    /// into it anyway).
+    Crushed,
+    /// Reached its destination this tick.
+    Arrived,
+}
+
+/// Damage a crushing plane does to a body that does not fit, every fourth
+/// tick (Doom's PIT_ChangeSector: 10 when `leveltime & 3` is 0).
+pub const CRUSH_DAMAGE: i32 = 10;
+
+/// Moves `plane` of `sector` one tick towards `dest` at `speed` (units per
+/// tick), `up` or down. A plane never passes `dest`, and one already at or
+/// past it has arrived (Doom would snap it back to `dest`). When a body no longer
+/// fits over the sector, a plane that does not `crush` goes back where it
+/// was; one that crushes stays (Doom keeps a crushing plane moving into
+/// bodies, and the crush hurts them). Only a floor going up or a ceiling
+/// going down can squeeze a body.
+pub fn move_plane(ctx: &mut Ctx, sector: usize, plane: Plane, speed: f64, dest: f64, crush: bool, up: bool) -> Moved {
+    let before = height(ctx, sector, plane);
+    if (up && dest <= before) || (!up && dest >= before) {
+        return Moved::Arrived;
+    }
+    let arrived = if up { before + speed >= dest } else { before - speed <= dest };
+    let next = match (arrived, up) {
+        (true, _) => dest,
+        (false, true) => before + speed,
+        (false, false) => before - speed,
+    };
+    let squeezes = (plane == Plane::Floor) == up;
+    set_height(ctx, sector, plane, next);
+    let fits = settle_bodies(ctx, sector, crush);
+    if fits {
+        return if arrived { Moved::Arrived } else { Moved::Ok };
+    }
+    if arrived || !crush || !squeezes {
+        // Doom puts the plane back whenever the last step would not fit,
+        // and when a non-crushing plane meets a body.
+        set_height(ctx, sector, plane, before);
+        settle_bodies(ctx, sector, false);
+    }
+    Moved::Crushed
+}
+
+fn height(ctx: &Ctx, sector: usize, plane: Plane) -> f64 {
+    let s = &ctx.level.compiled.map.sectors[sector];
+    match plane {
+        Plane::Floor => s.floor,
+        Plane::Ceiling => s.ceiling,
+    }
+}
+
+fn set_height(ctx: &mut Ctx, sector: usize, plane: Plane, h: f64) {
+    let s = &mut ctx.level.compiled.map.sectors[sector];
+    match plane {
+        Plane::Floor => s.floor = h,
+        Plane::Ceiling => s.ceiling = h,
+    }
+}
+
+/// Doom's P_ChangeSector for the bodies over `sector`: each is re-clipped
+/// to the floor and ceiling under it (on the floor: it rides the floor;
+/// else a low ceiling pushes it down), and one that no longer fits is hurt
+/// when `crush`. Returns whether every body fits.
+fn settle_bodies(ctx: &mut Ctx, sector: usize, crush: bool) -> bool {
+    if !ctx.bodies.touched.contains(&sector) {
+        return true;
+    }
+    let player = &mut *ctx.bodies.player;
+    let on_floor = player.z <= player.floor;
+    let world = crate::play::collision::World { compiled: &ctx.level.compiled, blockmap: ctx.bodies.blockmap };
+    let near = world.lines_near(ctx.bodies.query, player.pos, RADIUS + 1.0);
+    let area = world.area(near, player.pos);
+    (player.floor, player.ceiling) = (area.floor, area.ceiling);
+    if on_floor {
+        player.z = area.floor;
+    } else if player.z + HEIGHT > area.ceiling {
+        player.z = (area.ceiling - HEIGHT).max(area.floor);
+    }
+    let fits = area.ceiling - area.floor >= HEIGHT;
+    if !fits && crush && ctx.time % 4 == 0 {
+        player.hurt(CRUSH_DAMAGE);
+    }
+    fits
+}
