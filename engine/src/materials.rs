@@ -6,9 +6,10 @@
 use std::collections::{BTreeSet, HashMap};
 use std::path::PathBuf;
 
+use crate::map::things::ThingTypes;
 use crate::map::{Map, Side, PLAYER_START, SKY};
 use crate::texture::animdefs::AnimDefs;
-use crate::texture::{TextureError, TextureId, TextureKind, TextureSet};
+use crate::texture::{Library, TextureError, TextureId, TextureKind, TextureSet};
 
 /// The textures of one side of a line.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -71,6 +72,12 @@ impl Materials {
     /// (`textures/` and `sprites/` inside them) before the built-in textures.
     /// `label` names the map in errors.
     pub fn resolve(map: &Map, dirs: &[PathBuf], label: &str) -> Result<Materials, MaterialError> {
+        Materials::resolve_in(map, &Library::dirs(dirs), label)
+    }
+
+    /// [`Materials::resolve`] in a library: PNG folders, then a WAD, then
+    /// the built-in set.
+    pub fn resolve_in(map: &Map, library: &Library, label: &str) -> Result<Materials, MaterialError> {
         let mut m = Materials::default();
         // A name may be a texture of the other kind (a STONE floor): walls and
         // flats are both just images. Report the lookup of the expected kind.
@@ -81,10 +88,10 @@ impl Materials {
                 TextureKind::Sprite => None,
             };
             m.textures
-                .resolve(name, kind, dirs)
+                .resolve_in(name, kind, library)
                 .or_else(|error| match other {
                     Some(o) if matches!(error, TextureError::Missing { .. }) => {
-                        m.textures.resolve(name, o, dirs).map_err(|_| error)
+                        m.textures.resolve_in(name, o, library).map_err(|_| error)
                     }
                     _ => Err(error),
                 })
@@ -123,11 +130,24 @@ impl Materials {
         }
         let mut sprites = Vec::with_capacity(map.things.len());
         for (i, t) in map.things.iter().enumerate() {
+            let element = format!("thing {i} (kind {:?}) sprite", t.kind);
             let sprite = if t.kind == PLAYER_START {
                 None
+            } else if map.version >= 2 {
+                // A thing type names its first frame; its front view is
+                // rotation 0 (all sides alike) or 1 (facing the viewer).
+                match ThingTypes::doom().get(&t.kind).and_then(|ty| ty.first_frame()) {
+                    None => None,
+                    Some(stem) => {
+                        let all_sides = format!("{stem}0");
+                        match get(&all_sides, TextureKind::Sprite, element.clone()) {
+                            Ok(id) => Some(id),
+                            Err(_) => Some(get(&format!("{stem}1"), TextureKind::Sprite, element)?),
+                        }
+                    }
+                }
             } else {
-                let name = t.kind.to_ascii_uppercase();
-                Some(get(&name, TextureKind::Sprite, format!("thing {i} (kind {:?}) sprite", t.kind))?)
+                Some(get(&t.kind.to_ascii_uppercase(), TextureKind::Sprite, element)?)
             };
             sprites.push(sprite);
         }
@@ -139,7 +159,7 @@ impl Materials {
         let masked =
             sides.iter().zip(&map.lines).any(|(s, l)| l.back.is_some() && s.iter().any(|s| s.middle.is_some()));
         let mut m = Materials { sides, sectors, sprites, sky, masked, ..m };
-        m.add_animations(map, dirs, AnimDefs::doom());
+        m.add_animations(map, library, AnimDefs::doom());
         Ok(m)
     }
 
@@ -147,7 +167,7 @@ impl Materials {
     /// switch, whose textures the map uses. An animation with a frame that
     /// resolves to nothing, or a switch without its partner, is left still
     /// (as Doom leaves out an animation whose textures a WAD lacks).
-    fn add_animations(&mut self, map: &Map, dirs: &[PathBuf], defs: &AnimDefs) {
+    fn add_animations(&mut self, map: &Map, library: &Library, defs: &AnimDefs) {
         let mut walls = BTreeSet::new();
         let mut flats = BTreeSet::new();
         for line in &map.lines {
@@ -168,7 +188,7 @@ impl Materials {
                     continue;
                 }
                 let frames: Result<Vec<TextureId>, _> =
-                    anim.frames.iter().map(|f| self.textures.resolve(f, kind, dirs)).collect();
+                    anim.frames.iter().map(|f| self.textures.resolve_in(f, kind, library)).collect();
                 if let Ok(frames) = frames {
                     self.animations.push(Animated { frames, tics: anim.tics });
                 }
@@ -179,8 +199,8 @@ impl Materials {
                 continue;
             }
             let (Ok(off), Ok(on)) = (
-                self.textures.resolve(&s.off, TextureKind::Wall, dirs),
-                self.textures.resolve(&s.on, TextureKind::Wall, dirs),
+                self.textures.resolve_in(&s.off, TextureKind::Wall, library),
+                self.textures.resolve_in(&s.on, TextureKind::Wall, library),
             ) else {
                 continue;
             };

@@ -55,6 +55,23 @@ fn list_problems<P: fmt::Display>(problems: &[P]) -> String {
     text
 }
 
+/// The line that carries a special: one of the map's lines, or one of its
+/// trigger lines.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SpecialAt {
+    Line(usize),
+    TriggerLine(usize),
+}
+
+impl fmt::Display for SpecialAt {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            SpecialAt::Line(i) => write!(f, "line {i}"),
+            SpecialAt::TriggerLine(i) => write!(f, "trigger line {i}"),
+        }
+    }
+}
+
 /// One thing wrong with a map, naming the element it concerns.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Problem {
@@ -170,22 +187,29 @@ pub enum Problem {
     },
     /// A special acts on a tag no sector has.
     TagMatchesNothing {
-        element: String,
+        at: SpecialAt,
+        action: &'static str,
         tag: u16,
     },
     /// A special with no tag acts on the sector behind its line; this line has none.
     NoBackSector {
-        element: String,
+        at: SpecialAt,
+        action: &'static str,
     },
     /// A door locked with a key no thing in the map gives.
     MissingKey {
-        element: String,
+        at: SpecialAt,
         colour: &'static str,
     },
     /// A teleporter whose tagged sectors hold no teleport destination.
     NoTeleportDestination {
-        element: String,
+        at: SpecialAt,
         tag: u16,
+    },
+    /// A line teleporter whose exit is not another two-sided line.
+    BadTeleportLine {
+        at: SpecialAt,
+        to: usize,
     },
     /// A version-2 thing kind that is not in the thing table.
     UnknownThing {
@@ -288,22 +312,26 @@ impl fmt::Display for Problem {
                 f,
                 "version {version}: this build reads map format versions 1 and 2 (version 2 names things by type)"
             ),
-            Problem::TagMatchesNothing { element, tag } => {
-                write!(f, "{element}: acts on sectors tagged {tag}, but no sector has tag {tag}")
+            Problem::TagMatchesNothing { at, action, tag } => {
+                write!(f, "{at} {action} special: acts on sectors tagged {tag}, but no sector has tag {tag}")
             }
-            Problem::NoBackSector { element } => write!(
+            Problem::NoBackSector { at, action } => write!(
                 f,
-                "{element}: with no tag it acts on the sector behind the line, but the line has no back side; \
-                 give it a tag or a back side"
+                "{at} {action} special: with no tag it acts on the sector behind the line, but the line has no \
+                 back side; give it a tag or a back side"
             ),
-            Problem::MissingKey { element, colour } => write!(
+            Problem::MissingKey { at, colour } => write!(
                 f,
-                "{element}: the door needs the {colour} key, but no thing in the map is a {colour} card or skull"
+                "{at} door special: the door needs the {colour} key, but no thing in the map is a {colour} card or skull"
             ),
-            Problem::NoTeleportDestination { element, tag } => write!(
+            Problem::NoTeleportDestination { at, tag } => write!(
                 f,
-                "{element}: teleports to a destination in a sector tagged {tag}, \
+                "{at} teleporter special: teleports to a destination in a sector tagged {tag}, \
                  but none of those sectors holds a \"teleport_destination\" thing"
+            ),
+            Problem::BadTeleportLine { at, to } => write!(
+                f,
+                "{at} teleporter special: teleports to line {to}, which must be another two-sided line of the map"
             ),
             Problem::UnknownThing { thing, kind, nearest } => {
                 write!(f, "thing {thing}: no thing type is named {kind:?}")?;

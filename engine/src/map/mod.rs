@@ -14,7 +14,7 @@ pub mod validate;
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
 
-pub use load::{load_map, parse_map, MapError, Problem};
+pub use load::{load_map, parse_map, MapError, Problem, SpecialAt};
 pub use special::{Action, Activation, LineSpecial, SectorSpecial, SkillBand, Who};
 
 /// A validated sector map. Built only by [`validate::validate`].

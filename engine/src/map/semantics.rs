@@ -4,7 +4,7 @@
 //! teleporter a destination, its lock a key the map holds); a version-2
 //! thing must be of a known type.
 
-use super::load::Problem;
+use super::load::{Problem, SpecialAt};
 use super::special::{Action, KeyColour, LineSpecial};
 use super::things::{Category, ThingTypes};
 use super::Map;
@@ -31,54 +31,52 @@ pub fn check(map: &Map) -> Vec<Problem> {
         .lines
         .iter()
         .enumerate()
-        .filter_map(|(i, l)| l.special.as_ref().map(|s| (format!("line {i}"), s, l.back.is_some(), Some(i))));
-    let triggers =
-        map.trigger_lines.iter().enumerate().map(|(i, t)| (format!("trigger line {i}"), &t.special, false, None));
-    for (element, special, two_sided, own) in specials.chain(triggers) {
-        check_special(map, &element, special, two_sided, &keys, &mut problems);
-        if let Action::LineTeleport { to } = special.action {
-            let ok = map.lines.get(to).is_some_and(|l| l.back.is_some()) && Some(to) != own;
-            if !ok {
-                problems.push(Problem::BadSpecial {
-                    element: format!("{element} teleporter special"),
-                    message: format!("teleports to line {to}, which must be another two-sided line of the map"),
-                });
-            }
-        }
+        .filter_map(|(i, l)| l.special.as_ref().map(|s| (SpecialAt::Line(i), s, l.back.is_some())));
+    let triggers = map.trigger_lines.iter().enumerate().map(|(i, t)| (SpecialAt::TriggerLine(i), &t.special, false));
+    for (at, special, two_sided) in specials.chain(triggers) {
+        check_special(map, at, special, two_sided, &keys, &mut problems);
     }
     problems
 }
 
 fn check_special(
     map: &Map,
-    element: &str,
+    at: SpecialAt,
     special: &LineSpecial,
     two_sided: bool,
     keys: &[KeyColour],
     problems: &mut Vec<Problem>,
 ) {
     let action = &special.action;
-    let element = format!("{element} {} special", action.name());
-    let tagged = || map.sectors_tagged(special.tag);
+    let name = action.name();
     if action.moves_sectors() {
         if special.tag == 0 && !two_sided {
-            problems.push(Problem::NoBackSector { element: element.clone() });
+            problems.push(Problem::NoBackSector { at, action: name });
         }
-        if special.tag != 0 && tagged().next().is_none() {
-            problems.push(Problem::TagMatchesNothing { element: element.clone(), tag: special.tag });
-        }
-    }
-    if let Action::Door { key: Some(colour), .. } = action {
-        if !keys.contains(colour) {
-            problems.push(Problem::MissingKey { element: element.clone(), colour: colour.name() });
+        if special.tag != 0 && map.sectors_tagged(special.tag).next().is_none() {
+            problems.push(Problem::TagMatchesNothing { at, action: name, tag: special.tag });
         }
     }
-    let sector_of = |i: usize| {
-        let p = map.things[i].pos;
-        map.sectors_near(p).into_iter().find(|&s| map.sectors[s].tag == special.tag)
-    };
-    if *action == Action::Teleport && teleport_destination(map, special.tag, sector_of).is_none() {
-        problems.push(Problem::NoTeleportDestination { element, tag: special.tag });
+    match *action {
+        Action::Door { key: Some(colour), .. } if !keys.contains(&colour) => {
+            problems.push(Problem::MissingKey { at, colour: colour.name() });
+        }
+        Action::Teleport => {
+            let sector_of = |i: usize| {
+                let p = map.things[i].pos;
+                map.sectors_near(p).into_iter().find(|&s| map.sectors[s].tag == special.tag)
+            };
+            if teleport_destination(map, special.tag, sector_of).is_none() {
+                problems.push(Problem::NoTeleportDestination { at, tag: special.tag });
+            }
+        }
+        Action::LineTeleport { to } => {
+            let ok = map.lines.get(to).is_some_and(|l| l.back.is_some()) && at != SpecialAt::Line(to);
+            if !ok {
+                problems.push(Problem::BadTeleportLine { at, to });
+            }
+        }
+        _ => {}
     }
 }
 

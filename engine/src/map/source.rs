@@ -52,7 +52,7 @@ pub struct TriggerLineSource {
 }
 
 /// `special: LineSpecial(on: Walk, tag: 3, action: Lift())`.
-#[derive(Clone, Debug, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(rename = "LineSpecial", deny_unknown_fields)]
 pub struct LineSpecialSource {
     pub on: Activation,

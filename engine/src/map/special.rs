@@ -90,6 +90,10 @@ pub enum FloorTarget {
     HighestNeighbourFloor,
     /// The lowest neighbouring floor above this one (stays put if none).
     NextHigherFloor,
+    /// The highest neighbouring floor below this one (stays put if none).
+    NextLowerFloor,
+    /// The sector's own ceiling.
+    Ceiling,
     /// The lowest neighbouring ceiling, at most the sector's own ceiling.
     LowestNeighbourCeiling,
     /// The floor plus the height of the shortest lower texture on its lines
@@ -170,7 +174,9 @@ pub enum Action {
         speed: f64,
         #[serde(default = "door_wait", skip_serializing_if = "is_door_wait")]
         wait: u32,
-        /// Needs this key (card or skull) to open.
+        /// Needs this key (card or skull) to open. `wait` is how long a
+        /// raise door stays open, and how long a close-then-open door stays
+        /// shut (Doom's is 1050 ticks, 30 s).
         #[serde(default, skip_serializing_if = "Option::is_none")]
         key: Option<KeyColour>,
     },

@@ -18,6 +18,9 @@ mod preview;
 use std::collections::HashMap;
 use std::fmt;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use crate::wad::library::WadArt;
 
 pub use decode::MAX_SIDE;
 
@@ -198,10 +201,26 @@ pub struct TextureSet {
     sources: HashMap<Source, TextureId>,
 }
 
+/// Where a map's art is looked for, in order, before the built-in set:
+/// folders of PNGs (`textures/`, `flats/`, `sprites/` in each), then a WAD.
+#[derive(Clone, Default)]
+pub struct Library {
+    pub dirs: Vec<PathBuf>,
+    pub wad: Option<Arc<WadArt>>,
+}
+
+impl Library {
+    pub fn dirs(dirs: &[PathBuf]) -> Library {
+        Library { dirs: dirs.to_vec(), wad: None }
+    }
+}
+
 /// Where a texture's texels come from.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 enum Source {
     File(PathBuf),
+    /// A lump of the library's WAD, by its (upper-case) name.
+    Wad(String, TextureKind),
     /// A procedural texture, by its canonical (upper-case) name; the painters
     /// depend on the name alone, so the kind is not part of the key.
     Builtin(&'static str),
@@ -219,16 +238,26 @@ impl TextureSet {
     /// but does not decode is an error, not a reason to fall back, so a broken
     /// art file is never silently replaced by a built-in look.
     pub fn resolve(&mut self, name: &str, kind: TextureKind, dirs: &[PathBuf]) -> Result<TextureId, TextureError> {
+        self.resolve_in(name, kind, &Library::dirs(dirs))
+    }
+
+    /// [`TextureSet::resolve`] in a library: its folders, then its WAD,
+    /// then the built-in set.
+    pub fn resolve_in(&mut self, name: &str, kind: TextureKind, library: &Library) -> Result<TextureId, TextureError> {
         let key = (name.to_string(), kind);
         if let Some(&id) = self.ids.get(&key) {
             return Ok(id);
         }
-        let source = find(name, kind, dirs)?;
+        let source = find(name, kind, library)?;
         let id = match self.sources.get(&source) {
             Some(&id) => id,
             None => {
                 let texture = match &source {
                     Source::File(path) => decode::read_png(path)?,
+                    Source::Wad(lump, kind) => match &library.wad {
+                        Some(wad) => wad.texture(lump, *kind)?,
+                        None => unreachable!("a WAD source comes from a library with a WAD"),
+                    },
                     Source::Builtin(canonical) => {
                         procedural::generate(canonical, kind).unwrap_or_else(|| unreachable!("{canonical} was listed"))
                     }
@@ -271,7 +300,8 @@ impl TextureSet {
 }
 
 /// Where `name` comes from, without loading it.
-fn find(name: &str, kind: TextureKind, dirs: &[PathBuf]) -> Result<Source, TextureError> {
+fn find(name: &str, kind: TextureKind, library: &Library) -> Result<Source, TextureError> {
+    let dirs = &library.dirs;
     // A name is joined onto a directory, so a map must not be able to reach
     // outside it ("../../etc/x"), name a hidden file, or (on Windows) a drive.
     let plain = !name.is_empty() && !name.starts_with('.') && !name.contains(['/', '\\', '\0', ':']);
@@ -291,6 +321,10 @@ fn find(name: &str, kind: TextureKind, dirs: &[PathBuf]) -> Result<Source, Textu
             }
             tried.push(path);
         }
+    }
+    if let Some(wad) = library.wad.as_ref().filter(|w| w.has(name, kind)) {
+        let _ = wad;
+        return Ok(Source::Wad(name.to_ascii_uppercase(), kind));
     }
     match procedural::canonical(name, kind) {
         Some(canonical) => Ok(Source::Builtin(canonical)),

@@ -1,13 +1,15 @@
 //! A WAD map to a Sightline map: [`convert`] turns the records of
-//! [`super::level`] into a [`MapSource`] (the RON form), and [`write_art`]
-//! writes the pictures the maps use as PNGs beside it.
+//! [`super::level`] into a version-2 [`MapSource`] (the RON form), and
+//! [`write_art`] writes the pictures the maps use as PNGs beside it.
 //!
 //! What is kept: geometry, sector heights, light and flats; side textures and
-//! offsets; the pegging, two-sided and impassable flags; manual doors and the
-//! tagged door triggers (walk and switch, once and repeatable, open-and-close
-//! and open-and-stay); the sky per episode; the player start and the things
-//! that have a sprite. What is not: other specials (lifts, floors, lights,
-//! teleporters, exits), keys (keyed doors open without one), monsters' logic.
+//! offsets; the pegging, two-sided and impassable flags; every line special
+//! (as the typed special [`super::specials`] translates it, invisible
+//! walk-over lines becoming trigger lines), sector special and tag; Boom's
+//! scrollers, light transfers, translucency and conveyors; the sky per
+//! episode; every thing, named by its type, with its skill and mode flags.
+//! What cannot be translated is counted and listed in [`Report`], never
+//! dropped silently.
 //!
 //! Doom's maps break rules our validator enforces, in ways Doom never minds;
 //! [`convert`] repairs what it can and says so in [`Converted::repairs`]:
@@ -21,10 +23,15 @@ use std::path::Path;
 
 use super::art::{self, Image, Palette, TextureDef};
 use super::level::{flags, WadLine, WadMap};
+use super::specials::{sector_special, translate, Effect};
 use super::{Wad, WadError};
-use crate::map::source::{LineSource, MapSource, SectorSource, SideSource, ThingSource, TriggerSource};
+use crate::map::source::{
+    LineSource, LineSpecialSource, MapSource, SectorSource, SideSource, ThingSource, TriggerLineSource,
+};
+use crate::map::special::{Action, Activation, Scroll, SkillBand, Who};
+use crate::map::things::ThingTypes;
 use crate::map::validate::validate;
-use crate::map::{Problem, TriggerOn, PLAYER_START, SKY};
+use crate::map::{GameMode, Problem, SpecialAt, SKY};
 
 /// Doom's name for the sky flat: a ceiling (or floor) showing it shows the sky.
 const SKY_FLAT: &str = "F_SKY1";
@@ -38,6 +45,26 @@ pub struct Converted {
     pub sprites: BTreeSet<String>,
     /// What had to change for the map to validate, one line each.
     pub repairs: Vec<String>,
+    pub report: Report,
+}
+
+/// What became of the map's specials and things.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Report {
+    /// Line specials translated (on lines and trigger lines), and line
+    /// effects (scrollers, light transfers, translucency, conveyors).
+    pub specials: usize,
+    /// Sectors with a special.
+    pub sector_specials: usize,
+    /// Specials and sector types with no translation: `linedef 12: ...`.
+    pub unsupported_specials: Vec<String>,
+    /// Things of a type the thing table does not know.
+    pub unknown_things: Vec<String>,
+    /// Specials that Doom and Boom ignore (other ports' numbers), with why.
+    pub ignored: Vec<String>,
+    /// Specials dropped because they name nothing in the map (a tag no
+    /// sector has, a teleporter with no destination), and locks with no key.
+    pub dangling: Vec<String>,
 }
 
 /// What the WAD offers for maps to use: its palette, texture definitions,
@@ -61,14 +88,12 @@ impl Art {
             let at = usize::try_from(super::i32_at(b, 4)).ok().filter(|_| b.len() >= 8)?;
             b.get(at..at + 8).map(super::lump_name)
         });
-        let index = |start, end| -> Result<HashMap<String, usize>, WadError> {
+        let index = |start: &[&str], end: &[&str]| -> Result<HashMap<String, usize>, WadError> {
             Ok(wad.namespace(start, end)?.into_iter().map(|i| (wad.lumps[i].name.clone(), i)).collect())
         };
         // PWADs often mark their namespaces FF_START and SS_START.
-        let start =
-            |plain: &'static str, doubled: &'static str| if wad.find(plain).is_some() { plain } else { doubled };
-        let flats = index(start("F_START", "FF_START"), "F_END")?;
-        let sprites = index(start("S_START", "SS_START"), "S_END")?;
+        let flats = index(&["F_START", "FF_START"], &["F_END", "FF_END"])?;
+        let sprites = index(&["S_START", "SS_START"], &["S_END", "SS_END"])?;
         Ok(Art { palette, textures, null_texture, flats, sprites })
     }
 }
@@ -92,10 +117,27 @@ pub fn sky_of(name: &str) -> &'static str {
     }
 }
 
+/// A line as built, before the pass that turns invisible lines into
+/// trigger lines: its source, and the WAD linedefs it stands for.
+struct Built {
+    line: LineSource,
+    linedefs: Vec<usize>,
+}
+
+/// Effects of a line that act on other elements, applied once every line
+/// and sector has its final number.
+enum Deferred {
+    LightTransfer { linedef: usize, floor: bool },
+    Translucent { linedef: usize },
+    Carry { linedef: usize },
+    LineTeleport { linedef: usize },
+}
+
 /// Converts one map. Texture, flat and sprite names are checked against
 /// `art`, so every name the map uses can be written by [`write_art`].
 pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError> {
     let mut repairs = Vec::new();
+    let mut report = Report::default();
     let mut walls = BTreeSet::new();
     let mut flats = BTreeSet::new();
     let mut sprites = BTreeSet::new();
@@ -126,6 +168,34 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
         repairs.push(format!("merged {merged} vertices that share a position with another"));
     }
 
+    // Line specials, translated once per linedef.
+    let mut effects: Vec<Option<Effect>> = vec![None; map.lines.len()];
+    let mut deferred = Vec::new();
+    for (i, l) in map.lines.iter().enumerate() {
+        if l.special == 0 {
+            continue;
+        }
+        match translate(l.special, l.tag) {
+            Ok(Effect::Ignored(why)) => report.ignored.push(format!("linedef {i}: special {}: {why}", l.special)),
+            Ok(effect) => {
+                report.specials += 1;
+                deferred.extend(match effect {
+                    Effect::LightTransfer { floor } => Some(Deferred::LightTransfer { linedef: i, floor }),
+                    Effect::Translucent => Some(Deferred::Translucent { linedef: i }),
+                    Effect::Carry => Some(Deferred::Carry { linedef: i }),
+                    Effect::LineTeleport => Some(Deferred::LineTeleport { linedef: i }),
+                    _ => None,
+                });
+                effects[i] = Some(effect);
+            }
+            Err(what) => report.unsupported_specials.push(format!("linedef {i}: {what}")),
+        }
+    }
+    let special_of = |i: usize| match &effects[i] {
+        Some(Effect::Special(s)) => Some(s.clone()),
+        _ => None,
+    };
+
     // Lines: two-sided only with the flag and a left side (Doom's P_LoadSegs).
     let sector_of = |l: &WadLine| {
         let right = map.sides[usize::from(l.right.unwrap_or(0))].sector;
@@ -135,8 +205,8 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
     // A sector all of whose lines have it on both sides has no area of its
     // own: it is Doom's self-referencing sector trick (deep water, invisible
     // bridges), which relies on how Doom's node builder assigns subsectors.
-    // Its lines draw nothing here, so they go, and its area joins the sector
-    // around it.
+    // Its lines draw nothing here, so they go (their specials, if any, stay
+    // as trigger lines), and its area joins the sector around it.
     let mut only_self = vec![true; map.sectors.len()];
     for l in &map.lines {
         match sector_of(l) {
@@ -149,24 +219,36 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
             }
         }
     }
-    let mut lines = Vec::new();
+    let mut built: Vec<Built> = Vec::new();
+    let mut trigger_lines: Vec<(TriggerLineSource, usize)> = Vec::new();
     let mut seen_ends: HashMap<(usize, usize), usize> = HashMap::new();
     for (i, l) in map.lines.iter().enumerate() {
         let (from, to) = (vertex_map[usize::from(l.v1)], vertex_map[usize::from(l.v2)]);
         if from == to {
             repairs.push(format!("dropped linedef {i}: zero length"));
+            if effects[i].is_some() {
+                report.dangling.push(format!("linedef {i}: its special is lost with the zero-length line"));
+            }
             continue;
         }
         if let (r, Some(_)) = sector_of(l) {
             if only_self[usize::from(r)] {
-                repairs.push(format!("dropped linedef {i}: it only borders self-referencing sector {r}"));
+                match special_of(i) {
+                    Some(special) => {
+                        trigger_lines.push((TriggerLineSource { from: from as i64, to: to as i64, special }, i));
+                        repairs.push(format!(
+                            "linedef {i} borders only self-referencing sector {r}: kept as a trigger line"
+                        ));
+                    }
+                    None => repairs.push(format!("dropped linedef {i}: it only borders self-referencing sector {r}")),
+                }
                 continue;
             }
         }
         let duplicate = match seen_ends.entry((from.min(to), from.max(to))) {
             Entry::Occupied(first) => Some(*first.get()),
             Entry::Vacant(slot) => {
-                slot.insert(lines.len());
+                slot.insert(built.len());
                 None
             }
         };
@@ -196,9 +278,11 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
                 scroll: None,
             })
         };
-        let front = side(right, "right")?;
+        let mut front = side(right, "right")?;
         let back = left.map(|s| side(s, "left")).transpose()?;
-        let (door, trigger) = special(l, back.is_some());
+        if let Some(Effect::Scroll(scroll)) = effects[i] {
+            front.scroll = Some(scroll);
+        }
         let line = LineSource {
             from: from as i64,
             to: to as i64,
@@ -207,23 +291,53 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
             upper_unpegged: l.flags & flags::UPPER_UNPEGGED != 0,
             lower_unpegged: l.flags & flags::LOWER_UNPEGGED != 0,
             impassable: l.flags & flags::BLOCKING != 0,
-            door,
-            trigger,
+            special: special_of(i),
             ..LineSource::default()
         };
         match duplicate {
-            None => lines.push(line),
-            Some(k) => match merge(&lines[k], &line) {
+            None => built.push(Built { line, linedefs: vec![i] }),
+            Some(k) => match merge(&built[k].line, &line) {
                 Some(merged) => {
+                    if built[k].line.special.is_some() && line.special.is_some() {
+                        report.dangling.push(format!(
+                            "linedef {i}: merged into a line with the same ends that has a special of its own; its special is lost"
+                        ));
+                    }
                     repairs.push(format!("merged linedef {i} into the line with the same end points"));
-                    lines[k] = merged;
+                    built[k].line = merged;
+                    built[k].linedefs.push(i);
                 }
                 None => repairs.push(format!("dropped linedef {i}: it has the same end points as another line")),
             },
         }
     }
 
-    drop_invisible_lines(&mut lines, &mut repairs);
+    // Lines that draw nothing and block nothing: trigger lines if they have
+    // a special, else gone.
+    let mut lines = Vec::new();
+    let mut line_of_linedef: Vec<Option<usize>> = vec![None; map.lines.len()];
+    let mut invisible = 0;
+    for b in built {
+        if is_invisible(&b.line) {
+            match b.line.special {
+                Some(special) => {
+                    let (from, to) = (b.line.from, b.line.to);
+                    trigger_lines.push((TriggerLineSource { from, to, special }, b.linedefs[0]));
+                }
+                None => invisible += 1,
+            }
+            continue;
+        }
+        for &d in &b.linedefs {
+            line_of_linedef[d] = Some(lines.len());
+        }
+        lines.push(b.line);
+    }
+    if invisible > 0 {
+        repairs.push(format!(
+            "dropped {invisible} lines with the same sector on both sides that draw nothing, block nothing and do nothing"
+        ));
+    }
 
     // Sectors: only those some side faces, renumbered.
     let mut used_sectors = vec![false; map.sectors.len()];
@@ -257,6 +371,14 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
         } else {
             s.ceiling
         };
+        let special = match sector_special(s.special) {
+            Ok(special) => special,
+            Err(what) => {
+                report.unsupported_specials.push(format!("sector {i}: {what}"));
+                Default::default()
+            }
+        };
+        report.sector_specials += usize::from(s.special != 0);
         sectors.push(SectorSource {
             floor: f64::from(s.floor),
             ceiling: f64::from(ceiling),
@@ -264,6 +386,7 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
             floor_texture: flat(&s.floor_flat, "floor")?,
             ceiling_texture: flat(&s.ceiling_flat, "ceiling")?,
             tag: i64::from(s.tag),
+            special,
             ..SectorSource::default()
         });
     }
@@ -272,35 +395,192 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
             side.sector = sector_map[side.sector as usize] as i64;
         }
     }
+    apply_deferred(map, &deferred, &line_of_linedef, &sector_map, &mut lines, &mut sectors, &mut report);
 
-    // Things: the player 1 start, and every thing with a sprite that is
-    // there on Doom's middle skill (Hurt Me Plenty) in single player.
+    let things = convert_things(map, art, &mut sprites, &mut report)?;
+    let uses_sky =
+        sectors.iter().any(|s| [&s.floor_texture, &s.ceiling_texture].iter().any(|t| t.as_deref() == Some(SKY)));
+    let sky = uses_sky.then(|| sky_of(&map.name).to_string());
+    if let Some(sky) = &sky {
+        if !art.textures.contains_key(sky) {
+            return Err(wad.missing(sky, &format!(" (the sky of {}, a texture in TEXTURE1)", map.name)));
+        }
+        walls.insert(sky.clone());
+    }
+    let trigger_lines = trigger_lines.into_iter().map(|(t, _)| t).collect();
+    let mut source = MapSource {
+        version: 2,
+        name: map.name.clone(),
+        vertices,
+        sectors,
+        lines,
+        things,
+        sky,
+        trigger_lines,
+        ..MapSource::default()
+    };
+    move_start_off_lines(&mut source, &mut repairs);
+    reassign_misplaced_lines(&mut source, &mut repairs);
+    drop_dangling_specials(&mut source, &mut report);
+    Ok(Converted { source, walls, flats, sprites, repairs, report })
+}
+
+/// Does a line draw nothing and block nothing: the same sector on both
+/// sides, no middle texture, not impassable? Doom's maps use such lines as
+/// walk-over triggers; they may cross other lines (MAP20 of Freedoom 2
+/// raises a floor with two that cut across rooms) or lie in another sector
+/// than they name. Doom does not mind; our validator does, and the renderer
+/// would only walk them for nothing. With a special they become trigger lines.
+fn is_invisible(l: &LineSource) -> bool {
+    l.back.as_ref().is_some_and(|b| b.sector == l.front.sector && b.middle.is_none())
+        && l.front.middle.is_none()
+        && !l.impassable
+}
+
+/// The line effects that reach other elements: light transfers and
+/// conveyors to the tagged sectors, translucency to the tagged lines, line
+/// teleporters to their exit line.
+fn apply_deferred(
+    map: &WadMap,
+    deferred: &[Deferred],
+    line_of_linedef: &[Option<usize>],
+    sector_map: &[usize],
+    lines: &mut [LineSource],
+    sectors: &mut [SectorSource],
+    report: &mut Report,
+) {
+    let tagged_sectors = |tag: u16| -> Vec<usize> {
+        (0..map.sectors.len())
+            .filter(|&s| map.sectors[s].tag == tag && sector_map[s] != usize::MAX)
+            .map(|s| sector_map[s])
+            .collect()
+    };
+    let front_sector =
+        |d: usize| sector_map[usize::from(map.sides[usize::from(map.lines[d].right.unwrap_or(0))].sector)];
+    for effect in deferred {
+        match *effect {
+            Deferred::LightTransfer { linedef, floor } => {
+                let from = front_sector(linedef);
+                for s in tagged_sectors(map.lines[linedef].tag) {
+                    let slot = if floor { &mut sectors[s].floor_light } else { &mut sectors[s].ceiling_light };
+                    *slot = (from != usize::MAX).then_some(from as i64);
+                }
+            }
+            Deferred::Carry { linedef } => {
+                let l = &map.lines[linedef];
+                let (a, b) = (map.vertices[usize::from(l.v1)], map.vertices[usize::from(l.v2)]);
+                // Boom's carry: the line's vector / 32, times 3/32 per tick.
+                let k = 3.0 / 1024.0;
+                let carry = Scroll { x: f64::from(b.0 - a.0) * k, y: f64::from(b.1 - a.1) * k };
+                for s in tagged_sectors(l.tag) {
+                    sectors[s].carry = Some(carry);
+                }
+            }
+            Deferred::Translucent { linedef } => {
+                let tag = map.lines[linedef].tag;
+                let targets: Vec<usize> = if tag == 0 {
+                    vec![linedef]
+                } else {
+                    (0..map.lines.len()).filter(|&d| map.lines[d].tag == tag).collect()
+                };
+                for d in targets {
+                    if let Some(k) = line_of_linedef[d] {
+                        lines[k].translucent = true;
+                    }
+                }
+            }
+            Deferred::LineTeleport { linedef } => {
+                let tag = map.lines[linedef].tag;
+                let exit = (0..map.lines.len()).find(|&d| {
+                    d != linedef
+                        && tag != 0
+                        && map.lines[d].tag == tag
+                        && map.lines[d].left.is_some()
+                        && line_of_linedef[d].is_some()
+                });
+                match (line_of_linedef[linedef], exit.and_then(|d| line_of_linedef[d])) {
+                    (Some(k), Some(to)) => {
+                        lines[k].special = Some(LineSpecialSource {
+                            on: Activation::Walk,
+                            repeat: true,
+                            by: Who::Anyone,
+                            tag: 0,
+                            action: Action::LineTeleport { to },
+                        });
+                    }
+                    _ => report
+                        .dangling
+                        .push(format!("linedef {linedef}: line teleporter with no exit line tagged {tag}")),
+                }
+            }
+        }
+    }
+}
+
+/// Every thing, named by its type (player 1's start first: the validator
+/// takes the first), with its skill bands and mode flags; the sprite of
+/// each type's first frame is added to `sprites`.
+fn convert_things(
+    map: &WadMap,
+    art: &Art,
+    sprites: &mut BTreeSet<String>,
+    report: &mut Report,
+) -> Result<Vec<ThingSource>, WadError> {
+    const EASY: u16 = 0x0001;
+    const MEDIUM: u16 = 0x0002;
+    const HARD: u16 = 0x0004;
+    const AMBUSH: u16 = 0x0008;
+    const MULTIPLAYER: u16 = 0x0010;
+    const NOT_DEATHMATCH: u16 = 0x0020;
+    const NOT_COOP: u16 = 0x0040;
+    let types = ThingTypes::doom();
     let mut things = Vec::new();
-    let mut starts = 0;
-    for t in &map.things {
-        let (x, y, angle) = (f64::from(t.x), f64::from(t.y), f64::from(t.angle));
-        if t.kind == 1 {
-            starts += 1;
-            // The player start goes first: the validator takes the first.
-            things.insert(0, ThingSource::new(PLAYER_START, x, y, angle));
-            continue;
-        }
-        const MEDIUM: u16 = 0x0002;
-        const MULTIPLAYER: u16 = 0x0010;
-        if t.flags & MEDIUM == 0 || t.flags & MULTIPLAYER != 0 {
-            continue;
-        }
-        let Some(sprite) = sprite_of(t.kind).and_then(|(prefix, frame)| find_sprite(art, prefix, frame)) else {
+    for (i, t) in map.things.iter().enumerate() {
+        let Some(ty) = types.by_doomednum(t.kind) else {
+            report.unknown_things.push(format!("thing {i}: type {} at ({}, {})", t.kind, t.x, t.y));
             continue;
         };
-        sprites.insert(sprite.clone());
-        things.push(ThingSource::new(&sprite.to_ascii_lowercase(), x, y, angle));
+        if let Some(lump) = ty.first_frame().and_then(|stem| find_sprite(art, &stem)) {
+            sprites.insert(lump);
+        }
+        let bands = [(EASY, SkillBand::Easy), (MEDIUM, SkillBand::Medium), (HARD, SkillBand::Hard)];
+        let mut not_in = Vec::new();
+        if t.flags & NOT_DEATHMATCH != 0 {
+            not_in.push(GameMode::Deathmatch);
+        }
+        if t.flags & NOT_COOP != 0 {
+            not_in.push(GameMode::Coop);
+        }
+        let thing = ThingSource {
+            kind: ty.name.clone(),
+            x: f64::from(t.x),
+            y: f64::from(t.y),
+            angle: f64::from(t.angle),
+            skills: bands.iter().filter(|(bit, _)| t.flags & bit != 0).map(|&(_, b)| b).collect(),
+            ambush: t.flags & AMBUSH != 0,
+            multiplayer: t.flags & MULTIPLAYER != 0,
+            not_in,
+        };
+        if t.kind == 1 && !things.iter().any(|t: &ThingSource| t.kind == crate::map::PLAYER_START) {
+            things.insert(0, thing);
+        } else {
+            things.push(thing);
+        }
     }
-    if starts == 0 {
-        return Err(wad.error(&format!("{}/THINGS", map.name), "no player 1 start (thing type 1)"));
+    if !things.first().is_some_and(|t| t.kind == crate::map::PLAYER_START) {
+        return Err(WadError::Lump {
+            path: String::new(),
+            lump: format!("{}/THINGS", map.name),
+            message: "no player 1 start (thing type 1)".into(),
+        });
     }
-    // Doom does not mind a start exactly on a line; our validator does (which
-    // sector is it in?). Step off it by a unit, as a player would on moving.
+    Ok(things)
+}
+
+/// Doom does not mind a start exactly on a line; our validator does (which
+/// sector is it in?). Step off it by a unit, as a player would on moving.
+fn move_start_off_lines(source: &mut MapSource, repairs: &mut Vec<String>) {
+    let (vertices, lines) = (&source.vertices, &source.lines);
     let on_line = |x: f64, y: f64| {
         lines.iter().any(|l| {
             let (a, b) = (vertices[l.from as usize], vertices[l.to as usize]);
@@ -308,7 +588,7 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
             cross == 0.0 && x >= a.0.min(b.0) && x <= a.0.max(b.0) && y >= a.1.min(b.1) && y <= a.1.max(b.1)
         })
     };
-    let start = &mut things[0];
+    let start = &mut source.things[0];
     if on_line(start.x, start.y) {
         let (x, y) = (start.x, start.y);
         if let Some((dx, dy)) =
@@ -319,44 +599,59 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
             repairs.push(format!("moved the player start off the line it stood on, from ({x}, {y})"));
         }
     }
-
-    let uses_sky =
-        sectors.iter().any(|s| [&s.floor_texture, &s.ceiling_texture].iter().any(|t| t.as_deref() == Some(SKY)));
-    let sky = uses_sky.then(|| sky_of(&map.name).to_string());
-    if let Some(sky) = &sky {
-        if !art.textures.contains_key(sky) {
-            return Err(wad.missing(sky, &format!(" (the sky of {}, a texture in TEXTURE1)", map.name)));
-        }
-        walls.insert(sky.clone());
-    }
-    let mut source =
-        MapSource { name: map.name.clone(), vertices, sectors, lines, things, sky, ..MapSource::default() };
-    reassign_misplaced_lines(&mut source, &mut repairs);
-    Ok(Converted { source, walls, flats, sprites, repairs })
 }
 
-/// Removes the lines that draw nothing and do nothing here: the same sector
-/// on both sides, no middle texture, not impassable, no door. Doom's maps use
-/// them as walk-over triggers for specials we do not play, and they may cross
-/// other lines (MAP20 of Freedoom 2 raises a floor with two that cut across
-/// rooms) or lie in another sector than they name; Doom does not mind, our
-/// validator does, and the renderer would only walk them for nothing.
-fn drop_invisible_lines(lines: &mut Vec<LineSource>, repairs: &mut Vec<String>) {
-    let invisible = |l: &LineSource| {
-        l.back.as_ref().is_some_and(|b| b.sector == l.front.sector && b.middle.is_none())
-            && l.front.middle.is_none()
-            && !l.impassable
-            && !l.door
-            && l.trigger.is_none()
-    };
-    let before = lines.len();
-    lines.retain(|l| !invisible(l));
-    if lines.len() < before {
-        repairs.push(format!(
-            "dropped {} lines with the same sector on both sides that draw nothing and block nothing",
-            before - lines.len()
-        ));
+/// Specials that name nothing the map has (a tag no sector has, a
+/// teleporter with no destination, a manual special on a one-sided line)
+/// are dropped, and a lock whose key no thing gives is taken off: Doom
+/// would do nothing, or crash, or never open. Each is listed.
+fn drop_dangling_specials(source: &mut MapSource, report: &mut Report) {
+    for _ in 0..2 {
+        let Err(problems) = validate(source) else { return };
+        let mut changed = false;
+        for p in problems {
+            let (at, why) = match &p {
+                Problem::TagMatchesNothing { at, .. }
+                | Problem::NoBackSector { at, .. }
+                | Problem::NoTeleportDestination { at, .. }
+                | Problem::BadTeleportLine { at, .. } => (*at, "dropped"),
+                Problem::MissingKey { at, .. } => (*at, "unlocked"),
+                _ => continue,
+            };
+            let special = match at {
+                SpecialAt::Line(i) => source.lines.get_mut(i).and_then(|l| l.special.as_mut()),
+                SpecialAt::TriggerLine(i) => source.trigger_lines.get_mut(i).map(|t| &mut t.special),
+            };
+            let Some(special) = special else { continue };
+            if why == "unlocked" {
+                if let Action::Door { key, .. } = &mut special.action {
+                    *key = None;
+                }
+            } else {
+                special.action = Action::Exit;
+                special.on = Activation::Shoot;
+            }
+            report.dangling.push(format!("{p} ({why})"));
+            changed = true;
+        }
+        // Dropped specials were marked above; remove them now that the
+        // problems' line numbers no longer matter.
+        for l in &mut source.lines {
+            if l.special.as_ref().is_some_and(is_marked) {
+                l.special = None;
+            }
+        }
+        source.trigger_lines.retain(|t| !is_marked(&t.special));
+        if !changed {
+            return;
+        }
     }
+}
+
+/// A special [`drop_dangling_specials`] marked for removal (an exit set off
+/// by a shot: no translation makes one).
+fn is_marked(s: &LineSpecialSource) -> bool {
+    s.action == Action::Exit && s.on == Activation::Shoot
 }
 
 /// A line with one sector on both sides lying inside another sector (a
@@ -424,175 +719,24 @@ fn merge(a: &LineSource, b: &LineSource) -> Option<LineSource> {
         ([], [b]) => (hi, lo, b.clone(), None),
         _ => return None,
     };
-    Some(LineSource { from, to, front, back, door: a.door && b.door, trigger: a.trigger.clone(), ..a.clone() })
+    Some(LineSource { from, to, front, back, special: a.special.clone().or_else(|| b.special.clone()), ..a.clone() })
 }
 
-/// The door a line special makes, as `(door, trigger)`: the manual doors
-/// (used on the line, opening its back sector) become `door`, the tagged
-/// door openers a [`TriggerSource`]. Numbers from Doom's p_spec.c and
-/// p_switch.c; keyed variants open without a key.
-fn special(l: &WadLine, two_sided: bool) -> (bool, Option<TriggerSource>) {
-    // Manual doors: DR 1, 26-28, 117 (and D1 31-34, 118, which in Doom stay
-    // open; here they close again after the wait, and can be reopened).
-    let manual = matches!(l.special, 1 | 26 | 27 | 28 | 31 | 32 | 33 | 34 | 117 | 118);
-    if manual {
-        return (two_sided, None);
-    }
-    // (on, once, stays open)
-    let kind = match l.special {
-        2 | 109 => Some((TriggerOn::Walk, true, true)),
-        4 | 108 => Some((TriggerOn::Walk, true, false)),
-        86 | 106 => Some((TriggerOn::Walk, false, true)),
-        90 | 105 => Some((TriggerOn::Walk, false, false)),
-        103 | 112 | 133 | 135 | 137 => Some((TriggerOn::Use, true, true)),
-        29 | 111 => Some((TriggerOn::Use, true, false)),
-        61 | 115 | 99 | 134 | 136 => Some((TriggerOn::Use, false, true)),
-        63 | 114 => Some((TriggerOn::Use, false, false)),
-        // Shot doors (GR 46): there are no guns; using the line opens them.
-        46 => Some((TriggerOn::Use, false, true)),
-        _ => None,
-    };
-    let trigger = kind.filter(|_| l.tag != 0).map(|(on, once, stay_open)| TriggerSource {
-        tag: i64::from(l.tag),
-        on,
-        once,
-        stay_open,
-    });
-    (false, trigger)
+/// The front view of a sprite frame `stem` (`TROOA`), by the name
+/// [`crate::materials`] looks for: rotation 0 (the same from every side) or
+/// 1 (facing the viewer), whichever the WAD has.
+pub fn find_sprite(art: &Art, stem: &str) -> Option<String> {
+    ["0", "1"].iter().map(|rot| format!("{stem}{rot}")).find(|name| sprite_lump(art, name).is_some())
 }
 
-/// The sprite and frame a thing type shows (Doom's mobjinfo spawn states,
-/// info.c). `None` for things with no picture (starts, teleport
-/// destinations) or types we do not know.
-pub fn sprite_of(kind: u16) -> Option<(&'static str, u8)> {
-    let a = b'A';
-    Some(match kind {
-        // Monsters.
-        3004 => ("POSS", a),
-        9 => ("SPOS", a),
-        65 => ("CPOS", a),
-        3001 => ("TROO", a),
-        3002 | 58 => ("SARG", a),
-        3006 => ("SKUL", a),
-        3005 => ("HEAD", a),
-        3003 => ("BOSS", a),
-        69 => ("BOS2", a),
-        16 => ("CYBR", a),
-        7 => ("SPID", a),
-        64 => ("VILE", a),
-        66 => ("SKEL", a),
-        67 => ("FATT", a),
-        68 => ("BSPI", a),
-        71 => ("PAIN", a),
-        84 => ("SSWV", a),
-        72 => ("KEEN", a),
-        88 => ("BBRN", a),
-        // Weapons, ammunition, health, armour, power-ups, keys.
-        2001 => ("SHOT", a),
-        82 => ("SGN2", a),
-        2002 => ("MGUN", a),
-        2003 => ("LAUN", a),
-        2004 => ("PLAS", a),
-        2005 => ("CSAW", a),
-        2006 => ("BFUG", a),
-        2007 => ("CLIP", a),
-        2048 => ("AMMO", a),
-        2008 => ("SHEL", a),
-        2049 => ("SBOX", a),
-        2010 => ("ROCK", a),
-        2046 => ("BROK", a),
-        2047 => ("CELL", a),
-        17 => ("CELP", a),
-        8 => ("BPAK", a),
-        2011 => ("STIM", a),
-        2012 => ("MEDI", a),
-        2014 => ("BON1", a),
-        2015 => ("BON2", a),
-        2018 => ("ARM1", a),
-        2019 => ("ARM2", a),
-        83 => ("MEGA", a),
-        2013 => ("SOUL", a),
-        2022 => ("PINV", a),
-        2023 => ("PSTR", a),
-        2024 => ("PINS", a),
-        2025 => ("SUIT", a),
-        2026 => ("PMAP", a),
-        2045 => ("PVIS", a),
-        5 => ("BKEY", a),
-        6 => ("YKEY", a),
-        13 => ("RKEY", a),
-        38 => ("RSKU", a),
-        39 => ("YSKU", a),
-        40 => ("BSKU", a),
-        // Obstacles and decoration.
-        2035 => ("BAR1", a),
-        70 => ("FCAN", a),
-        2028 => ("COLU", a),
-        30 => ("COL1", a),
-        31 => ("COL2", a),
-        32 => ("COL3", a),
-        33 => ("COL4", a),
-        36 => ("COL5", a),
-        37 => ("COL6", a),
-        41 => ("CEYE", a),
-        42 => ("FSKU", a),
-        43 => ("TRE1", a),
-        54 => ("TRE2", a),
-        44 => ("TBLU", a),
-        45 => ("TGRN", a),
-        46 => ("TRED", a),
-        55 => ("SMBT", a),
-        56 => ("SMGT", a),
-        57 => ("SMRT", a),
-        47 => ("SMIT", a),
-        48 => ("ELEC", a),
-        34 => ("CAND", a),
-        35 => ("CBRA", a),
-        85 => ("TLMP", a),
-        86 => ("TLP2", a),
-        49 | 63 => ("GOR1", a),
-        50 | 59 => ("GOR2", a),
-        51 | 61 => ("GOR3", a),
-        52 | 60 => ("GOR4", a),
-        53 | 62 => ("GOR5", a),
-        73 => ("HDB1", a),
-        74 => ("HDB2", a),
-        75 => ("HDB3", a),
-        76 => ("HDB4", a),
-        77 => ("HDB5", a),
-        78 => ("HDB6", a),
-        24 => ("POL5", a),
-        25 => ("POL1", a),
-        26 => ("POL6", a),
-        27 => ("POL4", a),
-        28 => ("POL2", a),
-        29 => ("POL3", a),
-        79 => ("POB1", a),
-        80 => ("POB2", a),
-        81 => ("BRS1", a),
-        // Corpses: the last frame of a death.
-        10 | 12 => ("PLAY", b'W'),
-        15 => ("PLAY", b'N'),
-        18 => ("POSS", b'L'),
-        19 => ("SPOS", b'L'),
-        20 => ("TROO", b'M'),
-        21 => ("SARG", b'N'),
-        22 => ("HEAD", b'L'),
-        _ => return None,
-    })
-}
-
-/// The lump of a sprite frame seen from the front: rotation 0 (the same from
-/// every side) or 1 (facing the viewer), alone or as the first half of a
-/// mirrored pair (`POSSA2A8` holds rotations 2 and 8, so not 1).
-fn find_sprite(art: &Art, prefix: &str, frame: u8) -> Option<String> {
-    let frame = char::from(frame);
-    ["0", "1"].iter().find_map(|rot| {
-        let exact = format!("{prefix}{frame}{rot}");
-        if art.sprites.contains_key(&exact) {
-            return Some(exact);
-        }
-        art.sprites.keys().find(|k| k.starts_with(&exact) && k.len() == 8).cloned()
+/// The lump that holds front view `name` (`TROOA1`): the lump of that name,
+/// or a mirrored pair that starts with it (`TROOA1A5` would hold rotations 1
+/// and 5).
+pub fn sprite_lump(art: &Art, name: &str) -> Option<usize> {
+    art.sprites.get(name).copied().or_else(|| {
+        let mut pairs: Vec<_> = art.sprites.iter().filter(|(k, _)| k.starts_with(name) && k.len() == 8).collect();
+        pairs.sort();
+        pairs.first().map(|(_, &i)| i)
     })
 }
 
@@ -626,7 +770,8 @@ pub fn write_art<'a>(
         written += 1;
     }
     for name in &sprites {
-        let image = art::picture(wad.bytes(art.sprites[name]), &art.palette).map_err(|m| wad.error(name, m))?;
+        let lump = sprite_lump(art, name).ok_or_else(|| wad.missing(name, " (a sprite)"))?;
+        let image = art::picture(wad.bytes(lump), &art.palette).map_err(|m| wad.error(name, m))?;
         save(&dir.join("sprites"), name, &stand_on_origin(&image))?;
         written += 1;
     }

@@ -14,6 +14,8 @@
 pub mod art;
 pub mod import;
 pub mod level;
+pub mod library;
+pub mod specials;
 
 use std::path::Path;
 
@@ -143,17 +145,44 @@ impl Wad {
             .collect()
     }
 
-    /// Directory indices of the lumps strictly between the markers `start`
-    /// and `end` (for example F_START and F_END); a namespace may appear in
-    /// several pieces (F1_START inside F_START), so marker lumps are skipped.
-    pub fn namespace(&self, start: &str, end: &str) -> Result<Vec<usize>, WadError> {
-        let from = self.lumps.iter().position(|l| l.name == start).ok_or_else(|| self.missing(start, ""))?;
-        let to = self.lumps[from..]
-            .iter()
-            .position(|l| l.name == end)
-            .map(|k| from + k)
-            .ok_or_else(|| self.missing(end, &format!(" (after {start})")))?;
-        Ok(((from + 1)..to).filter(|&i| self.lumps[i].size > 0).collect())
+    /// Directory indices of the lumps between any of the `start` markers
+    /// and the next `end` marker (F_START or FF_START to F_END or FF_END), in
+    /// directory order: a PWAD stacked on an IWAD ([`Wad::stack`]) adds a
+    /// second run. Empty lumps (inner markers such as F1_START) are skipped.
+    pub fn namespace(&self, start: &[&str], end: &[&str]) -> Result<Vec<usize>, WadError> {
+        let mut found = Vec::new();
+        let mut k = 0;
+        let mut runs = 0;
+        while let Some(from) = self.lumps[k..].iter().position(|l| start.contains(&l.name.as_str())).map(|p| k + p) {
+            let to = self.lumps[from..]
+                .iter()
+                .position(|l| end.contains(&l.name.as_str()))
+                .map(|p| from + p)
+                .ok_or_else(|| self.missing(end[0], &format!(" (after {})", self.lumps[from].name)))?;
+            found.extend(((from + 1)..to).filter(|&i| self.lumps[i].size > 0));
+            runs += 1;
+            k = to + 1;
+        }
+        if runs == 0 {
+            return Err(self.missing(start[0], ""));
+        }
+        Ok(found)
+    }
+
+    /// WADs read as one, later ones over earlier ones (a PWAD on its IWAD,
+    /// as `doom -iwad doom2.wad -file map.wad`): lumps of the same name in a
+    /// later WAD replace those before, and namespaces (flats, sprites) join.
+    pub fn stack(wads: Vec<Wad>) -> Wad {
+        let mut data = Vec::new();
+        let mut lumps = Vec::new();
+        let path = wads.iter().map(|w| w.path.as_str()).collect::<Vec<_>>().join(" + ");
+        let iwad = wads.first().is_some_and(|w| w.iwad);
+        for w in wads {
+            let base = data.len();
+            lumps.extend(w.lumps.into_iter().map(|l| Lump { offset: l.offset + base, ..l }));
+            data.extend(w.data);
+        }
+        Wad { path, data, lumps, iwad }
     }
 }
 

@@ -22,7 +22,7 @@ use crate::play::player::RADIUS;
 
 /// An open door stops this far under the lowest neighbouring ceiling (Doom's 4).
 pub const DOOR_LIP: f64 = 4.0;
-/// How long a close-then-open door stays shut (Doom: 30 s).
+/// How long Doom's close-then-open doors stay shut (30 s).
 pub const CLOSED_WAIT: u32 = 30 * 35;
 /// Doors this fast or faster make the "blazing" sounds (Doom's 4 x VDOORSPEED).
 const BLAZING: f64 = 8.0;
@@ -171,7 +171,7 @@ impl Door {
                 Moved::Ok => true,
                 Moved::Arrived => {
                     if self.kind == DoorKind::CloseThenOpen {
-                        self.state = DoorState::Shut { wait: CLOSED_WAIT };
+                        self.state = DoorState::Shut { wait: self.wait };
                         return true;
                     }
                     false

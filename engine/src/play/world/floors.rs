@@ -92,6 +92,8 @@ fn destination(level: &Level, sector: usize, floor: &Floor) -> f64 {
             h
         }
         FloorTarget::NextHigherFloor => specials::next_higher_floor(level, sector, s.floor).unwrap_or(s.floor),
+        FloorTarget::NextLowerFloor => specials::next_lower_floor(level, sector, s.floor).unwrap_or(s.floor),
+        FloorTarget::Ceiling => s.ceiling,
         FloorTarget::LowestNeighbourCeiling => {
             specials::lowest_ceiling_around(level, sector).map_or(s.ceiling, |c| c.min(s.ceiling))
         }

@@ -150,6 +150,12 @@ pub fn next_higher_floor(level: &Level, sector: usize, height: f64) -> Option<f6
     neighbours(level, sector).map(|s| sectors[s].floor).filter(|&f| f > height).reduce(f64::min)
 }
 
+/// The highest neighbouring floor below `height`, if any (Boom's P_FindNextLowestFloor).
+pub fn next_lower_floor(level: &Level, sector: usize, height: f64) -> Option<f64> {
+    let sectors = &level.compiled.map.sectors;
+    neighbours(level, sector).map(|s| sectors[s].floor).filter(|&f| f < height).reduce(f64::max)
+}
+
 /// The lowest neighbouring ceiling, its own not included; `None` with no neighbours.
 pub fn lowest_ceiling_around(level: &Level, sector: usize) -> Option<f64> {
     let sectors = &level.compiled.map.sectors;

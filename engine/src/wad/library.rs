@@ -1,0 +1,69 @@
+//! A WAD's art as a texture library: the pictures a map played straight
+//! from a WAD names (wall textures composed from patches, flats, sprites)
+//! are decoded from the WAD when the level opens, the same way `sightline
+//! import` writes them as PNGs, so an imported map and the WAD itself look
+//! the same.
+
+use super::art::{self, Image};
+use super::import::{sprite_lump, stand_on_origin, Art};
+use super::{Wad, WadError};
+use crate::texture::{Texture, TextureError, TextureKind, MAX_SIDE};
+
+/// A WAD (or a stack of them) and its art index.
+pub struct WadArt {
+    pub wad: Wad,
+    pub art: Art,
+}
+
+impl WadArt {
+    pub fn new(wad: Wad) -> Result<WadArt, WadError> {
+        let art = Art::read(&wad)?;
+        Ok(WadArt { wad, art })
+    }
+
+    /// Does the WAD have a picture of this name and kind? (Walls and flats
+    /// are both images here, as for PNGs: a flat may name a wall texture.)
+    pub fn has(&self, name: &str, kind: TextureKind) -> bool {
+        let name = name.to_ascii_uppercase();
+        match kind {
+            TextureKind::Wall | TextureKind::Flat => {
+                self.art.textures.contains_key(&name) || self.art.flats.contains_key(&name)
+            }
+            TextureKind::Sprite => sprite_lump(&self.art, &name).is_some(),
+        }
+    }
+
+    /// Decodes picture `name` (upper case) of `kind`.
+    pub fn texture(&self, name: &str, kind: TextureKind) -> Result<Texture, TextureError> {
+        let bad = |message: String| TextureError::Png { path: format!("{}:{name}", self.wad.path).into(), message };
+        let image = match kind {
+            // A name both lists have: walls prefer the texture, floors the flat.
+            TextureKind::Wall if self.art.textures.contains_key(name) => {
+                art::compose(&self.wad, &self.art.textures[name], &self.art.palette).map_err(|e| bad(e.to_string()))?
+            }
+            TextureKind::Wall | TextureKind::Flat if self.art.flats.contains_key(name) => {
+                art::flat(self.wad.bytes(self.art.flats[name]), &self.art.palette).map_err(bad)?
+            }
+            TextureKind::Flat => {
+                let def = self.art.textures.get(name).ok_or_else(|| bad("not in the WAD".into()))?;
+                art::compose(&self.wad, def, &self.art.palette).map_err(|e| bad(e.to_string()))?
+            }
+            TextureKind::Sprite => {
+                let lump = sprite_lump(&self.art, name).ok_or_else(|| bad("not in the WAD".into()))?;
+                stand_on_origin(&art::picture(self.wad.bytes(lump), &self.art.palette).map_err(bad)?)
+            }
+            TextureKind::Wall => return Err(bad("not in the WAD".into())),
+        };
+        texture_of(&image)
+            .ok_or_else(|| bad(format!("{}x{} is not 1 to {MAX_SIDE} on a side", image.width, image.height)))
+    }
+}
+
+/// An RGBA image as a column-major texture.
+fn texture_of(image: &Image) -> Option<Texture> {
+    let ok = |n: usize| (1..=MAX_SIDE as usize).contains(&n);
+    if !ok(image.width) || !ok(image.height) {
+        return None;
+    }
+    Some(Texture::from_fn(image.width, image.height, |u, v| image.rgba[v * image.width + u]))
+}
