@@ -44,7 +44,7 @@ pub const TICRATE: u32 = 35;
 
 #[derive(Debug, thiserror::Error, PartialEq)]
 pub enum PlayError {
-    #[error("{map}: ({x}, {y}) is not inside any sector")]
+    #[error("{map}: ({x}, {y}) is not inside any sector (in a hole, outside the map, or on a one-sided wall)")]
     Outside { map: String, x: f64, y: f64 },
 }
 
@@ -76,7 +76,7 @@ impl Game {
     pub fn new(level: Level) -> Result<Game, PlayError> {
         let map = &level.compiled.map;
         let start = map.player_start().clone();
-        if map.sector_at(start.pos).is_none() {
+        if level.compiled.locate(start.pos).is_none() {
             return Err(PlayError::Outside { map: map.name.clone(), x: start.pos.x, y: start.pos.y });
         }
         let blockmap = Blockmap::new(map);
@@ -166,7 +166,7 @@ impl Game {
     /// floor there, as if it had started there.
     pub fn teleport(&mut self, pos: DVec2, angle: f64) -> Result<(), PlayError> {
         let map = &self.level.compiled.map;
-        if !(pos.is_finite() && angle.is_finite()) || map.sector_at(pos).is_none() {
+        if !(pos.is_finite() && angle.is_finite()) || self.level.compiled.locate(pos).is_none() {
             return Err(PlayError::Outside { map: map.name.clone(), x: pos.x, y: pos.y });
         }
         let world = World { compiled: &self.level.compiled, blockmap: &self.blockmap };
