@@ -12,6 +12,7 @@
 
 use std::path::{Path, PathBuf};
 
+use glam::DVec2;
 use rand::{RngExt, SeedableRng};
 use sightline::bsp::check::check_invariants;
 use sightline::bsp::{build, file, BuildOptions, CompiledMap};
@@ -635,10 +636,16 @@ fn player_start_problems_name_the_thing() {
             &["thing 0", "(1000.0, 128.0)", "not inside any sector"],
         ),
         invalid(
-            "start exactly on a line",
-            tr("x: 64.0", "x: 256.0"),
-            vec![Problem::StartOutside { thing: 0, x: 256.0, y: 128.0 }],
-            &["thing 0", "(256.0, 128.0)"],
+            "start exactly on a one-sided wall",
+            tr("x: 64.0", "x: 0.0"),
+            vec![Problem::StartOutside { thing: 0, x: 0.0, y: 128.0 }],
+            &["thing 0", "(0.0, 128.0)", "on a one-sided wall"],
+        ),
+        invalid(
+            "start at a corner of the outer wall and the open line",
+            tr("x: 64.0, y: 128.0", "x: 256.0, y: 0.0"),
+            vec![Problem::StartOutside { thing: 0, x: 256.0, y: 0.0 }],
+            &["thing 0", "(256.0, 0.0)"],
         ),
         invalid(
             "second thing is the start, outside",
@@ -651,6 +658,20 @@ fn player_start_problems_name_the_thing() {
             &["thing 1", "(-5.0, 128.0)"],
         ),
     ]);
+}
+
+/// A start exactly on the open line between the rooms is in the map: the
+/// map loads, and the game starts there.
+#[test]
+fn a_start_on_a_two_sided_line_is_accepted() {
+    let text = tr("x: 64.0", "x: 256.0");
+    let map = parse_map(&text, "doorway.ron").unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(map.player_start().pos, DVec2::new(256.0, 128.0));
+    let compiled = build(&map, &BuildOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+    assert!(compiled.locate(map.player_start().pos).is_some());
+    render_both(&compiled);
+    let level = sightline::level::Level::with_builtin_textures(compiled).unwrap_or_else(|e| panic!("{e}"));
+    sightline::play::Game::new(level).unwrap_or_else(|e| panic!("{e}"));
 }
 
 /// The edit helpers make valid maps when asked to: a pillar wound
@@ -714,7 +735,7 @@ fn from_bytes(bytes: &[u8], label: &str) -> Result<CompiledMap, LevelError> {
 
 /// A loaded map, however odd, must render through both renderers.
 fn render_both(level: &CompiledMap) {
-    let view = View::at_start(&level.map).expect("a loaded map has a valid start");
+    let view = View::at_start(level).expect("a loaded map has a valid start");
     let level = sightline::level::Level::with_builtin_textures(level.clone()).unwrap_or_else(|e| panic!("{e}"));
     for r in Renderer::ALL {
         render(&level, &view, (32, 20), r, Shade::Ids);

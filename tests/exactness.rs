@@ -5,7 +5,7 @@ use rand::{RngExt, SeedableRng};
 use sightline::bsp::CompiledMap;
 use sightline::geom::sin_cos_degrees;
 use sightline::render::View;
-use sightline_tests::{assert_agree, load, shipped_maps, v};
+use sightline_tests::{assert_agree, assert_agree_on_two_sided_lines, load, shipped_maps, v};
 
 /// Even and odd sizes: with an odd width the centre column's ray is exactly
 /// the view direction, so axis-aligned views cast exactly axis-aligned rays.
@@ -13,7 +13,7 @@ const SIZES: [(usize, usize); 2] = [(320, 200), (161, 101)];
 
 /// A pose is usable when it is inside a sector and not on a line.
 fn try_view(level: &CompiledMap, x: f64, y: f64, angle: f64) -> Option<View> {
-    let view = View::at_pose(&level.map, x, y, angle, None).ok()?;
+    let view = View::at_pose(level, x, y, angle, None).ok()?;
     (level.map.distance_to_nearest_line(view.pos) > 1e-3).then_some(view)
 }
 
@@ -111,11 +111,36 @@ fn eye_heights_at_neighbouring_floors_and_ceilings() {
         heights.dedup();
         for z in heights {
             for angle in [0.0, 60.0, 135.0, 270.0] {
-                let view = View { z, ..View::at_pose(&level.map, start.pos.x, start.pos.y, angle, None).unwrap() };
+                let view = View { z, ..View::at_pose(&level, start.pos.x, start.pos.y, angle, None).unwrap() };
                 assert_agree(&level, &view, (320, 200), &format!("{} eye at z={z} angle {angle}", path.display()));
             }
         }
     }
+}
+
+/// A pose exactly on a two-sided line or at a vertex where only two-sided
+/// lines meet is a pose like any other: accepted, its eye at the located
+/// sector's floor plus the eye height, and the BSP frame agrees with the
+/// reference (see `assert_agree_on_two_sided_lines`). The doorway of
+/// two_rooms, the pose issue 12 tried, agrees in every pixel all round.
+#[test]
+fn poses_on_two_sided_lines_and_vertices_agree() {
+    let two_rooms = load(&sightline_tests::map_path("two_rooms.ron"));
+    for k in 0..16 {
+        let angle = 22.5 * f64::from(k);
+        for angle in [angle, angle + 7.0] {
+            let view = sightline_tests::view(&two_rooms, 256.0, 128.0, angle);
+            for size in SIZES {
+                let (diff, ..) = sightline_tests::bsp_vs_reference(&two_rooms, &view, size);
+                assert_eq!(diff.pixels, 0, "two_rooms doorway (256, 128) angle {angle} {size:?}: pixels differ");
+            }
+        }
+    }
+    let mut frames = 0;
+    for path in shipped_maps() {
+        frames += assert_agree_on_two_sided_lines(&load(&path), &path.display().to_string(), 24, &SIZES);
+    }
+    eprintln!("{frames} frames from poses on two-sided lines agree");
 }
 
 #[test]

@@ -22,7 +22,9 @@ use sightline::tour::tour;
 use sightline::wad::import::{convert, write_art, Art};
 use sightline::wad::Wad;
 use sightline::Framebuffer;
-use sightline_tests::{assert_agree, freedoom_wads};
+use sightline_tests::{
+    assert_agree, assert_agree_on_two_sided_lines, freedoom_wads, points_on_two_sided_lines, random_inputs,
+};
 
 /// The IWAD `name` (see `freedoom_wads` for where it is looked for).
 fn wad_path(name: &str) -> PathBuf {
@@ -81,7 +83,7 @@ fn every_freedoom2_map_imports_compiles_renders_and_plays() {
 fn render_tour(level: &sightline::level::Level, path: &Path) {
     let mut frame = Frame::new();
     let mut fb = Framebuffer::new(160, 100);
-    for view in tour(&level.map, 8, 1) {
+    for view in tour(level, 8, 1) {
         render_frame(level, &view, &RenderOptions::default(), &mut frame, &mut fb);
         let first = fb.pixels[0];
         assert!(fb.pixels.iter().any(|&p| p != first), "{}: a flat frame at {view:?}", path.display());
@@ -97,11 +99,9 @@ fn play(level: sightline::level::Level, path: &Path) -> usize {
     for _ in 0..70 {
         game.tick(&forward);
     }
-    // Inside a sector, or on a line between two (walking along a line is fine).
+    // Inside a sector, or on lines between two (walking along a line is fine).
     let p = game.player().pos;
-    let near = [(0.0, 0.0), (0.01, 0.0), (-0.01, 0.0), (0.0, 0.01), (0.0, -0.01)];
-    let inside = near.iter().any(|&(dx, dy)| map.sector_at(p + DVec2::new(dx, dy)).is_some());
-    assert!(inside, "{}: walked out of the map to {p}", path.display());
+    assert!(map.contains(p), "{}: walked out of the map to {p}", path.display());
     let mut tried = 0;
     for (i, line) in map.lines.iter().enumerate() {
         let targets: Vec<usize> = match (&line.back, line.trigger) {
@@ -116,11 +116,9 @@ fn play(level: sightline::level::Level, path: &Path) -> usize {
         let normal = DVec2::new(d.y, -d.x); // the front is the right-hand side
         let middle = (a + b) / 2.0;
         // Stand 20 units in front, facing the line (nearer if a wall is close).
-        let Some(pos) = [20.0, 8.0, 2.0]
-            .into_iter()
-            .map(|k| middle + normal * k)
-            .find(|&p| exact_side(a, b, p) == Side::Front && map.sector_at(p) == Some(line.front.sector))
-        else {
+        let Some(pos) = [20.0, 8.0, 2.0].into_iter().map(|k| middle + normal * k).find(|&p| {
+            exact_side(a, b, p) == Side::Front && map.sector_strictly_containing(p) == Some(line.front.sector)
+        }) else {
             continue;
         };
         let angle = (-normal).y.atan2((-normal).x).to_degrees();
@@ -155,11 +153,11 @@ fn e1m4_agrees_with_the_reference() {
     let paths = import_all(&wad_path("freedoom1.wad"), dir.path());
     let path = paths.iter().find(|p| p.ends_with("e1m4.ron")).expect("E1M4 is in freedoom1.wad");
     let level = open_level(path, &BuildOptions::default()).unwrap_or_else(|e| panic!("{e}"));
-    for view in tour(&level.map, 4, 7) {
+    for view in tour(&level, 4, 7) {
         assert_agree(&level, &view, (160, 100), "E1M4");
     }
     let start = level.map.player_start();
-    let view = View::at_pose(&level.map, start.pos.x, start.pos.y, start.angle, None).unwrap();
+    let view = View::at_pose(&level, start.pos.x, start.pos.y, start.angle, None).unwrap();
     let mut fb = Framebuffer::new(320, 200);
     render_frame(
         &level,
@@ -259,6 +257,61 @@ mod fuzz {
                     let _ = sightline::wad::art::compose(&wad, &art.textures[t], &art.palette);
                 }
             }
+        }
+    }
+}
+
+/// Imports the one map `name` of `wad` into `dir` with its art; returns its RON path.
+fn import_one(wad: &Path, name: &str, dir: &Path) -> PathBuf {
+    let wad = Wad::open(wad).unwrap_or_else(|e| panic!("{e}"));
+    let art = Art::read(&wad).unwrap_or_else(|e| panic!("{e}"));
+    let raw = wad.map(name).unwrap_or_else(|e| panic!("{e}"));
+    let c = convert(&wad, &raw, &art).unwrap_or_else(|e| panic!("{e}"));
+    let path = dir.join(format!("{}.ron", name.to_ascii_lowercase()));
+    std::fs::write(&path, c.source.to_ron()).unwrap();
+    write_art(&wad, &art, [&c], dir).unwrap_or_else(|e| panic!("{e}"));
+    path
+}
+
+/// freedoom2's MAP10, where issue 12 saw random play stand the player
+/// exactly on a line between two sectors. (The seeded runs below never land
+/// exactly on one, so the test also puts the player there.) Poses exactly on
+/// its two-sided lines and at vertices where only such lines meet are
+/// accepted and render as the reference does; the game teleports there and
+/// plays on; and seeded random play keeps the player in the map, where point
+/// location always answers.
+#[test]
+fn map10_poses_and_play_on_two_sided_lines() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = import_one(&wad_path("freedoom2.wad"), "MAP10", dir.path());
+    let level = open_level(&path, &BuildOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+    let frames = assert_agree_on_two_sided_lines(&level, "MAP10", 16, &[(160, 100), (161, 101)]);
+    assert!(frames > 300, "MAP10: only {frames} frames from poses on two-sided lines");
+    let map = level.map.clone();
+    let points = points_on_two_sided_lines(&map);
+    assert!(points.len() > 100, "MAP10: only {} points on two-sided lines", points.len());
+    let mut game = Game::new(level).unwrap_or_else(|e| panic!("{e}"));
+    let in_map = |game: &Game, at: &str| {
+        let p = game.player().pos;
+        assert!(
+            map.contains(p) && game.level().locate(p).is_some(),
+            "MAP10 {at}: ({:?}, {:?}) not in the map",
+            p.x,
+            p.y
+        );
+    };
+    for (k, (what, p, directions)) in points.iter().enumerate().step_by(7) {
+        game.teleport(*p, directions[0]).unwrap_or_else(|e| panic!("MAP10 {what}: {e}"));
+        for (tick, input) in random_inputs(k as u64, 35).iter().enumerate() {
+            game.tick(input);
+            in_map(&game, &format!("{what}, tick {tick} after teleporting there"));
+        }
+    }
+    game.teleport(map.player_start().pos, map.player_start().angle).unwrap();
+    for seed in 0..4 {
+        for (tick, input) in random_inputs(seed, 20_000).iter().enumerate() {
+            game.tick(input);
+            in_map(&game, &format!("random play seed {seed}, tick {tick}"));
         }
     }
 }

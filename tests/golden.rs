@@ -20,7 +20,7 @@ fn frames_match_golden_images() {
     for path in shipped_maps() {
         let level = load(&path);
         let stem = path.file_stem().unwrap().to_string_lossy().to_string();
-        let views = tour(&level.map, 8, 11);
+        let views = tour(&level, 8, 11);
         // The start facing its own angle, then two seeded poses from the tour.
         for (i, view) in [views[0], views[8], views[9]].iter().take(POSES).enumerate() {
             // Grid maps also through the ray-caster, textured as players see them.

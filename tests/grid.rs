@@ -171,7 +171,7 @@ fn hard_poses(level: &Level, count: usize) -> Vec<(String, View)> {
 fn raycast_agrees_with_bsp_on_every_shipped_grid_map() {
     for (name, level) in grid_maps() {
         let mut poses: Vec<(String, View)> =
-            tour(&level.map, 24, 5).into_iter().enumerate().map(|(i, v)| (format!("tour {i}"), v)).collect();
+            tour(&level, 24, 5).into_iter().enumerate().map(|(i, v)| (format!("tour {i}"), v)).collect();
         poses.extend(hard_poses(&level, 120));
         let mut worst = 1.0f64;
         for (what, view) in &poses {
@@ -186,7 +186,7 @@ fn raycast_agrees_with_bsp_on_every_shipped_grid_map() {
 #[test]
 fn raycast_draws_every_pixel_once_and_textured_frames_have_no_void() {
     for (name, level) in grid_maps() {
-        for view in tour(&level.map, 8, 9) {
+        for view in tour(&level, 8, 9) {
             let options = sightline::RenderOptions {
                 renderer: Renderer::Raycast,
                 shade: Shade::Textured,
@@ -223,7 +223,7 @@ fn compare_rays(level: &Level, view: &View, width: usize, method: RayMethod) -> 
 fn cheaper_rays_approach_the_exact_ones_as_they_refine() {
     for (name, level) in grid_maps() {
         let s = level.grid().unwrap().0.cell_size;
-        let views = tour(&level.map, 8, 21);
+        let views = tour(&level, 8, 21);
         let share = |method| {
             let (mut wrong, mut total, mut max_error) = (0, 0, 0.0f64);
             for view in &views {
@@ -412,7 +412,7 @@ proptest! {
             }
             let angle = if angle_kind < 8 { angle_kind as f64 * 45.0 } else { free_angle };
             // Only poses in the open: off every line, and not inside a door's slab.
-            let Some(sector) = level.map.sector_at(p) else { continue };
+            let Some(sector) = level.map.sector_strictly_containing(p) else { continue };
             if sector != 0 || level.map.distance_to_nearest_line(p) < 1e-9 {
                 continue;
             }

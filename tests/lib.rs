@@ -4,8 +4,11 @@
 use std::path::{Path, PathBuf};
 
 use glam::DVec2;
+use rand::rngs::ChaCha8Rng;
+use rand::{RngExt, SeedableRng};
 use sightline::bsp::BuildOptions;
 use sightline::level::{open_level, Level};
+use sightline::play::TickInput;
 use sightline::render::{render_frame, Frame, RenderOptions, Renderer, Shade, View};
 use sightline::Framebuffer;
 
@@ -111,7 +114,7 @@ pub fn assert_agree(level: &Level, view: &View, size: (usize, usize), what: &str
 }
 
 pub fn view(level: &Level, x: f64, y: f64, angle: f64) -> View {
-    View::at_pose(&level.map, x, y, angle, None).unwrap_or_else(|e| panic!("pose ({x}, {y}): {e}"))
+    View::at_pose(level, x, y, angle, None).unwrap_or_else(|e| panic!("pose ({x}, {y}): {e}"))
 }
 
 pub fn v(x: f64, y: f64) -> DVec2 {
@@ -169,4 +172,106 @@ pub fn assert_agree_off_eye_lines(level: &Level, view: &View, size: (usize, usiz
         exempt.len(),
         diff.pixels
     );
+}
+
+/// Points where a user or the game may stand that lie on lines: exactly on
+/// two-sided lines (at a quarter, the middle, three quarters; only the
+/// rounded points that are exactly on the line) and at vertices where only
+/// two-sided lines meet, each with the directions of its lines in degrees.
+pub fn points_on_two_sided_lines(map: &sightline::map::Map) -> Vec<(String, DVec2, Vec<f64>)> {
+    use sightline::geom::{exact_side, Side};
+    let mut points = Vec::new();
+    for (i, line) in map.lines.iter().enumerate().filter(|(_, l)| l.back.is_some()) {
+        let (a, b) = map.line_points(line);
+        let d = b - a;
+        let along = d.y.atan2(d.x).to_degrees();
+        for t in [0.25, 0.5, 0.75] {
+            let p = a + d * t;
+            if exact_side(a, b, p) == Side::On {
+                points.push((format!("on line {i} at {t}"), p, vec![along]));
+            }
+        }
+    }
+    for (i, &p) in map.vertices.iter().enumerate() {
+        let lines: Vec<_> = map.lines.iter().filter(|l| l.from == i || l.to == i).collect();
+        if !lines.is_empty() && lines.iter().all(|l| l.back.is_some()) {
+            let directions = lines
+                .iter()
+                .map(|l| {
+                    let (a, b) = map.line_points(l);
+                    let d = if l.from == i { b - a } else { a - b };
+                    d.y.atan2(d.x).to_degrees()
+                })
+                .collect();
+            points.push((format!("at vertex {i}"), p, directions));
+        }
+    }
+    points
+}
+
+/// Poses at up to `max_points` of [`points_on_two_sided_lines`] (spread
+/// over the list), looking along each line there, across it, back and at
+/// a few other angles: every one is accepted, its eye at the located
+/// sector's floor plus the eye height, and the BSP frame agrees with the
+/// reference at each of `sizes`. Along an axis-aligned line a column's ray
+/// runs exactly along it and both renderers settle it by the same rule, so
+/// every column counts; along a slanted one it runs along only within
+/// rounding, and which side of the line's vertices it passes is decided by
+/// the last bits of two independent computations, so that column alone is
+/// exempt ([`assert_agree_off_eye_lines`]). Returns the frames compared.
+pub fn assert_agree_on_two_sided_lines(
+    level: &Level,
+    name: &str,
+    max_points: usize,
+    sizes: &[(usize, usize)],
+) -> usize {
+    let points = points_on_two_sided_lines(&level.map);
+    let step = (points.len() / max_points.max(1)).max(1);
+    let mut frames = 0;
+    for (what, p, directions) in points.into_iter().step_by(step) {
+        let sector = level.locate(p).unwrap_or_else(|| panic!("{name} {what}: ({}, {}) not located", p.x, p.y));
+        let axis_aligned = directions.iter().all(|d| d.rem_euclid(90.0) == 0.0);
+        let mut angles: Vec<f64> = directions.iter().flat_map(|&d| [d, d + 90.0, d + 180.0, d + 270.0]).collect();
+        angles.extend([0.0, 45.0, 200.0, directions[0] + 37.0, directions[0] - 0.3]);
+        for angle in angles {
+            let view = self::view(level, p.x, p.y, angle);
+            assert_eq!(view.z, level.map.sectors[sector].floor + sightline::render::view::EYE_HEIGHT, "{name} {what}");
+            for &size in sizes {
+                let what = format!("{name} {what} ({:?}, {:?}) angle {angle} {size:?}", p.x, p.y);
+                if axis_aligned {
+                    assert_agree(level, &view, size, &what);
+                } else {
+                    assert_agree_off_eye_lines(level, &view, size, &what);
+                }
+                frames += 1;
+            }
+        }
+    }
+    frames
+}
+
+/// Seeded input that mostly runs into things: a direction held for a random
+/// stretch, turning in bursts (now and then a mouse fling), use pressed now
+/// and then.
+pub fn random_inputs(seed: u64, ticks: usize) -> Vec<TickInput> {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut inputs = Vec::with_capacity(ticks);
+    while inputs.len() < ticks {
+        let hold = rng.random_range(1..=140usize);
+        let forward = [1, 1, 1, 0, -1][rng.random_range(0..5usize)];
+        let strafe = [0, 0, 0, 1, -1][rng.random_range(0..5usize)];
+        let run = rng.random_range(0..10) < 7;
+        let turn: f32 = match rng.random_range(0..10) {
+            0..=5 => 0.0,
+            6..=8 => rng.random_range(-8.0..8.0),
+            _ => rng.random_range(-180.0..180.0),
+        };
+        let burst = rng.random_range(1..=hold);
+        for k in 0..hold {
+            let use_door = rng.random_range(0..25) == 0;
+            inputs.push(TickInput { forward, strafe, turn: if k < burst { turn } else { 0.0 }, run, use_door });
+        }
+    }
+    inputs.truncate(ticks);
+    inputs
 }

@@ -10,7 +10,7 @@ use sightline_tests::{load, shipped_maps};
 fn every_pixel_written_exactly_once() {
     for path in shipped_maps() {
         let level = load(&path);
-        let views = tour(&level.map, 24, 3);
+        let views = tour(&level, 24, 3);
         assert!(views.len() >= 30, "{}: tour too short", path.display());
         let mut frame = Frame::new();
         for (w, h) in [(320, 200), (97, 61)] {
@@ -45,7 +45,7 @@ fn occlusion_culls_and_stops_early_on_the_maze() {
     let mut frame = Frame::new();
     let mut fb = Framebuffer::new(320, 200);
     let mut culled = 0;
-    for view in tour(&level.map, 8, 4) {
+    for view in tour(&level, 8, 4) {
         let stats = render_frame(&level, &view, &RenderOptions::default(), &mut frame, &mut fb);
         assert!(stats.walls_considered * 4 < level.bsp.segs.len() as u64, "{stats:?}");
         culled += stats.subtrees_culled;

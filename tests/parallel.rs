@@ -69,7 +69,7 @@ fn every_thread_count_draws_the_same_frame() {
     for path in shipped_maps() {
         let name = path.file_name().map_or_else(String::new, |n| n.to_string_lossy().into_owned());
         let level = load(&path);
-        let views = tour(&level.map, 6, 11);
+        let views = tour(&level, 6, 11);
         assert!(views.len() >= 12, "{name}: tour too short");
         let renderers = [Renderer::Bsp, Renderer::Raycast].into_iter().filter(|r| r.supports(&level));
         for renderer in renderers {
@@ -89,7 +89,7 @@ fn sprites_and_masked_middles_agree_across_threads() {
     // The hall has things in view from most poses and see-through middles;
     // at 1080p a sprite spans several strips.
     let level = load(&sightline_tests::map_path("hall.ron"));
-    let views = sightline::tour::things_tour(&level.map);
+    let views = sightline::tour::things_tour(&level);
     let mut frames: [Frame; 4] = Default::default();
     let mut fb = Framebuffer::new(640, 400);
     let masked: u64 = views

@@ -38,7 +38,7 @@ fn each_shipped_map_plans_exactly_what_it_uses() {
     }
     for (name, effects) in expected {
         let level = load(&map_path(&format!("{name}.ron")));
-        let view = View::at_start(&level.map).unwrap();
+        let view = View::at_start(&level).unwrap();
         assert_eq!(plan_at(&level, &view, Disabled::default()), *effects, "{name}");
     }
 }
@@ -46,19 +46,19 @@ fn each_shipped_map_plans_exactly_what_it_uses() {
 #[test]
 fn sprites_are_planned_only_when_a_thing_is_in_view() {
     let level = load(&map_path("hall.ron"));
-    let start = View::at_start(&level.map).unwrap();
+    let start = View::at_start(&level).unwrap();
     assert!(plan_at(&level, &start, Disabled::default()).contains(&"sprites"));
     // Every thing behind the eye: look away from all of them, from a corner.
     let things: Vec<_> = level.map.things.iter().filter(|t| t.kind != "player_start").map(|t| t.pos).collect();
     let west = things.iter().map(|p| p.x).fold(f64::INFINITY, f64::min) - 1.0;
-    let view = View::at_pose(&level.map, west, start.pos.y, 180.0, None).unwrap();
+    let view = View::at_pose(&level, west, start.pos.y, 180.0, None).unwrap();
     assert!(!plan_at(&level, &view, Disabled::default()).contains(&"sprites"));
 }
 
 #[test]
 fn disabled_effects_leave_the_plan() {
     let level = load(&map_path("courtyard.ron"));
-    let view = View::at_start(&level.map).unwrap();
+    let view = View::at_start(&level).unwrap();
     let all = Disabled { sky: true, sprites: true, masked: true, diminishing: true, fog: true };
     assert_eq!(plan_at(&level, &view, all), Vec::<&str>::new());
 }

@@ -19,7 +19,7 @@ use sightline::play::{Demo, Game, TickInput, TICRATE};
 use sightline::render::shade::{ids_colour, Surface};
 use sightline::render::{render_frame, Frame, RenderOptions, Renderer, Shade};
 use sightline::Framebuffer;
-use sightline_tests::{load, map_path, render, shipped_maps};
+use sightline_tests::{load, map_path, random_inputs, render, shipped_maps};
 
 fn level_from(text: &str) -> Level {
     let map = parse_map(text, "test.ron").unwrap_or_else(|e| panic!("{e}"));
@@ -33,32 +33,6 @@ fn game_from(text: &str) -> Game {
 
 const RUN_EAST: TickInput = TickInput { forward: 1, strafe: 0, turn: 0.0, run: true, use_door: false };
 const IDLE: TickInput = TickInput { forward: 0, strafe: 0, turn: 0.0, run: false, use_door: false };
-
-/// Seeded input that mostly runs into things: a direction held for a random
-/// stretch, turning in bursts (now and then a mouse fling), use pressed now
-/// and then.
-fn random_inputs(seed: u64, ticks: usize) -> Vec<TickInput> {
-    let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let mut inputs = Vec::with_capacity(ticks);
-    while inputs.len() < ticks {
-        let hold = rng.random_range(1..=140usize);
-        let forward = [1, 1, 1, 0, -1][rng.random_range(0..5usize)];
-        let strafe = [0, 0, 0, 1, -1][rng.random_range(0..5usize)];
-        let run = rng.random_range(0..10) < 7;
-        let turn: f32 = match rng.random_range(0..10) {
-            0..=5 => 0.0,
-            6..=8 => rng.random_range(-8.0..8.0),
-            _ => rng.random_range(-180.0..180.0),
-        };
-        let burst = rng.random_range(1..=hold);
-        for k in 0..hold {
-            let use_door = rng.random_range(0..25) == 0;
-            inputs.push(TickInput { forward, strafe, turn: if k < burst { turn } else { 0.0 }, run, use_door });
-        }
-    }
-    inputs.truncate(ticks);
-    inputs
-}
 
 fn distance_to_segment(p: DVec2, a: DVec2, b: DVec2) -> f64 {
     let d = b - a;
@@ -74,15 +48,6 @@ fn blocks(map: &Map, h: &[(f64, f64)], line: usize, z: f64) -> bool {
     let (f, b) = (h[line.front.sector], h[back.sector]);
     let floor = f.0.max(b.0);
     line.flags.impassable || floor - z > MAX_STEP || f.1.min(b.1) - floor.max(z) < HEIGHT
-}
-
-/// Inside a sector, or exactly on lines that are all two-sided.
-fn inside(map: &Map, p: DVec2) -> bool {
-    map.sector_at(p).is_some()
-        || map.lines.iter().all(|l| {
-            let (a, b) = map.line_points(l);
-            l.back.is_some() || distance_to_segment(p, a, b) > 0.0
-        })
 }
 
 /// What one run of random play saw.
@@ -122,7 +87,8 @@ fn play_checked(name: &str, game: &mut Game, inputs: &[TickInput]) -> Seen {
         let after = if game.doors().is_empty() { before.clone() } else { heights(game) };
         let at = || format!("{name}, tick {tick}: from ({}, {}) z {z0} to ({}, {}) z {z}", old.x, old.y, p.x, p.y);
         assert!(p.is_finite() && z.is_finite(), "{}", at());
-        assert!(inside(&map, p), "{}: left the map", at());
+        // In the map: inside a sector, or on lines that are all two-sided.
+        assert!(map.contains(p), "{}: left the map", at());
         // Never across a line that blocked the body when the tick began.
         if old != p {
             for (i, &(a, b)) in ends.iter().enumerate() {
@@ -144,7 +110,7 @@ fn play_checked(name: &str, game: &mut Game, inputs: &[TickInput]) -> Seen {
         assert!(z - z0 <= MAX_STEP, "{}: climbed {}", at(), z - z0);
         // Standing on or above every floor under the body, fitting under
         // every ceiling over it.
-        let mut under: Vec<usize> = map.sector_at(p).into_iter().collect();
+        let mut under: Vec<usize> = map.sector_strictly_containing(p).into_iter().collect();
         for (i, &(a, b)) in ends.iter().enumerate() {
             if distance_to_segment(p, a, b) < RADIUS - 1e-6 {
                 let line = &map.lines[i];
@@ -156,7 +122,7 @@ fn play_checked(name: &str, game: &mut Game, inputs: &[TickInput]) -> Seen {
             assert!(z >= floor, "{}: feet below the floor {floor} of sector {s}", at());
             assert!(ceiling - z >= HEIGHT, "{}: only {} of headroom in sector {s}", at(), ceiling - z);
         }
-        if let Some(s) = map.sector_at(p) {
+        if let Some(s) = map.sector_strictly_containing(p) {
             assert!(after[s].0 - z0 <= MAX_STEP, "{}: floor rose {} in one tick", at(), after[s].0 - z0);
         }
         seen.path += old.distance(p);
@@ -311,7 +277,7 @@ fn running_into_a_wall_from_every_angle_never_crosses_it() {
                 let (a, b) = map.line_points(l);
                 distance_to_segment(start, a, b) > RADIUS + 1.0
             });
-            if !clear || map.sector_at(start).is_none() {
+            if !clear || map.sector_strictly_containing(start).is_none() {
                 continue;
             }
             game.teleport(start, angle).unwrap();

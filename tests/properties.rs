@@ -82,7 +82,7 @@ proptest! {
                 if !usable(&level.map, p) {
                     continue;
                 }
-                let expected = level.map.sector_at(p);
+                let expected = level.map.sector_strictly_containing(p);
                 prop_assert_eq!(
                     Some(level.sector_at(p)),
                     expected,

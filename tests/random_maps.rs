@@ -39,6 +39,7 @@ use rand::{RngExt, SeedableRng};
 use sightline::map::source::{LineSource, MapSource, SectorSource, SideSource, ThingSource};
 use sightline::map::validate::validate;
 use sightline::map::{Map, PLAYER_START};
+use sightline::render::view::EYE_HEIGHT;
 use sightline::render::View;
 
 /// Smallest angular gap between consecutive room vertices (radians).
@@ -435,7 +436,7 @@ pub fn generate(spec: &MapSpec) -> Generated {
 
 /// A usable pose: inside a sector and not on (or within 1e-3 of) a line.
 pub fn usable(map: &Map, p: DVec2) -> bool {
-    map.sector_at(p).is_some() && map.distance_to_nearest_line(p) > 1e-3
+    map.sector_strictly_containing(p).is_some() && map.distance_to_nearest_line(p) > 1e-3
 }
 
 /// Is `p` on the infinite line of some wall, up to rounding (1e-12 of the
@@ -545,17 +546,22 @@ pub fn random_poses(g: &Generated, count: usize, seed: u64, lines: WallLines) ->
             WallLines::Only if !on_line => continue,
             _ => {}
         }
-        let sector = map.sector_at(p).unwrap_or(0);
+        // Strictly inside (usable), so the map alone says which sector: the
+        // poses serve every compile of the map.
+        let sector = map.sector_strictly_containing(p).expect("a usable pose is inside a sector");
         let z = match r.random_range(0..4) {
-            0 | 1 => None,
+            0 | 1 => map.sectors[sector].floor + EYE_HEIGHT,
             2 => {
                 let s = &map.sectors[r.random_range(0..map.sectors.len())];
-                Some(if r.random_bool(0.5) { s.floor } else { s.ceiling })
+                if r.random_bool(0.5) {
+                    s.floor
+                } else {
+                    s.ceiling
+                }
             }
-            _ => Some(r.random_range(-80.0..300.0)),
+            _ => r.random_range(-80.0..300.0),
         };
-        let view =
-            View::at_pose(map, p.x, p.y, angle, z).unwrap_or_else(|e| panic!("pose ({}, {}) rejected: {e}", p.x, p.y));
+        let view = View::new(p, z, angle);
         poses.push((
             format!(
                 "{what} pose{} ({:?}, {:?}) angle {angle:?} z {:?} in sector {sector}",

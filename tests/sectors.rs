@@ -87,7 +87,7 @@ fn ten_thousand_visible_lines_and_a_thousand_sprites() {
     let source = room(&points, 200, "STONE", things);
     let level = level(&source, SplitterKind::Random);
     assert!(level.map.lines.len() > 10_000);
-    let view = View::at_start(&level.map).unwrap();
+    let view = View::at_start(&level).unwrap();
     // 10,000 columns: enough that thousands of lines each claim columns.
     let size = (10_000, 120);
     let mut frame = Frame::new();
@@ -117,7 +117,7 @@ fn sprites_at_a_wall_and_at_the_eye() {
     ];
     let level = level(&room(&square, 160, "BRICK", things), SplitterKind::Cost);
     for angle in [90.0, 45.0, 0.0, 270.0, 12.5] {
-        let view = View::at_pose(&level.map, 256.0, 100.0, angle, None).unwrap();
+        let view = View::at_pose(&level, 256.0, 100.0, angle, None).unwrap();
         assert_agree(&level, &view, (320, 200), &format!("angle {angle}"));
         for shade in [Shade::Textured, Shade::Flat] {
             no_void(&render(&level, &view, (320, 200), Renderer::Bsp, shade), "sprites at wall and eye");
@@ -131,7 +131,7 @@ fn light_zero_and_full() {
     let lit = |light| {
         level(&room(&square, light, "BRICK", vec![thing("player_start", 128.0, 64.0, 90.0)]), SplitterKind::Cost)
     };
-    let view = View::at_pose(&lit(0).map, 128.0, 64.0, 90.0, None).unwrap();
+    let view = View::at_pose(&lit(0), 128.0, 64.0, 90.0, None).unwrap();
     let dark = render(&lit(0), &view, (64, 40), Renderer::Bsp, Shade::Textured);
     // Black, but for Doom's fake contrast: walls running north-south one light
     // step (16 of 256) brighter than their sector.
@@ -159,7 +159,7 @@ fn one_texel_wide_and_odd_sized_textures() {
         let texels: std::collections::HashSet<u32> =
             texture.texels.iter().flat_map(|&t| [t, darker.apply(t)]).collect();
         for angle in [90.0, 30.0, 200.0] {
-            let view = View::at_pose(&level.map, 150.0, 40.0, angle, None).unwrap();
+            let view = View::at_pose(&level, 150.0, 40.0, angle, None).unwrap();
             let fb = render(&level, &view, (97, 61), Renderer::Bsp, Shade::Textured);
             no_void(&fb, name);
             // Every wall pixel is one of the texture's own texels: sampling

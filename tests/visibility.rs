@@ -27,7 +27,7 @@ fn overwriting_renderers_draw_the_walks_picture() {
         let level = load(&path);
         let mut frame = Frame::new();
         for (w, h) in [(160, 100), (37, 23)] {
-            for view in tour(&level.map, 6, 5) {
+            for view in tour(&level, 6, 5) {
                 for shade in [Shade::Ids, Shade::Flat] {
                     let mut bsp = Framebuffer::new(w, h);
                     render_frame(&level, &view, &options(Renderer::Bsp, shade), &mut frame, &mut bsp);

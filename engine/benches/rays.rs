@@ -29,7 +29,7 @@ fn rays(c: &mut Criterion) {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../maps/gridmaze.ron");
     let level = open_level(&path, &BuildOptions::default()).expect("shipped map loads");
     let s = level.grid().expect("a grid map").0.cell_size;
-    let views = tour(&level.map, 8, 1);
+    let views = tour(&level, 8, 1);
     let mut group = c.benchmark_group("rays/gridmaze");
     group.sample_size(10).warm_up_time(Duration::from_millis(500)).measurement_time(Duration::from_secs(3));
     group.throughput(Throughput::Elements(views.len() as u64));

@@ -17,7 +17,7 @@ fn frames(c: &mut Criterion) {
     for path in shipped_maps() {
         let name = path.file_stem().unwrap().to_string_lossy().to_string();
         let level = open_level(&path, &BuildOptions::default()).expect("shipped map loads");
-        let views = tour(&level.map, 8, 1);
+        let views = tour(&level, 8, 1);
         let mut group = c.benchmark_group(format!("frame/{name}"));
         group.sample_size(10).warm_up_time(Duration::from_millis(500)).measurement_time(Duration::from_secs(3));
         group.throughput(Throughput::Elements(views.len() as u64));

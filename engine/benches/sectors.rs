@@ -52,7 +52,7 @@ fn frames(c: &mut Criterion) {
     let mut group = configure(c, "showcase");
     for name in SHOWCASE {
         let level = level(name);
-        let views = tour(&level.map, 8, 1);
+        let views = tour(&level, 8, 1);
         for size in [(320, 200), (1920, 1080)] {
             bench_tour(&mut group, format!("{name}/{}x{}", size.0, size.1), &level, &views, size, Default::default());
         }
@@ -64,7 +64,7 @@ fn floors(c: &mut Criterion) {
     let mut group = configure(c, "floors");
     for name in ["hall", "courtyard"] {
         let level = level(name);
-        let views = tour(&level.map, 8, 1);
+        let views = tour(&level, 8, 1);
         for (label, floors) in [("spans", Floors::Spans), ("columns", Floors::Columns)] {
             let options = RenderOptions { floors, ..Default::default() };
             bench_tour(&mut group, format!("{name}/{label}"), &level, &views, (1920, 1080), options);
@@ -89,7 +89,7 @@ fn effects(c: &mut Criterion) {
     ];
     for name in ["room", "hall", "courtyard"] {
         let level = level(name);
-        let views = tour(&level.map, 8, 1);
+        let views = tour(&level, 8, 1);
         bench_tour(&mut group, format!("{name}/all-available"), &level, &views, (640, 400), Default::default());
         for (effect, disabled) in switches {
             let options = RenderOptions { disabled, ..Default::default() };

@@ -24,7 +24,7 @@ fn main() {
         .unwrap_or((640, 400));
     let renderer = Renderer::from_name(&args[3]).unwrap_or_default();
     let seconds: f64 = args[4].parse().unwrap_or(5.0);
-    let views = tour(&level.map, 8, 1);
+    let views = tour(&level, 8, 1);
     let options = RenderOptions { renderer, ..Default::default() };
     let (mut fb, mut frame) = (Framebuffer::new(w, h), Frame::new());
     let start = Instant::now();

@@ -49,6 +49,16 @@ pub fn exact_side(a: DVec2, b: DVec2, p: DVec2) -> Side {
     }
 }
 
+/// Is `p` exactly on the closed segment `a-b` (an end point included)?
+pub fn on_segment(a: DVec2, b: DVec2, p: DVec2) -> bool {
+    // Collinear exactly; then comparisons of stored coordinates are exact.
+    exact_side(a, b, p) == Side::On
+        && p.x >= a.x.min(b.x)
+        && p.x <= a.x.max(b.x)
+        && p.y >= a.y.min(b.y)
+        && p.y <= a.y.max(b.y)
+}
+
 fn coord(p: DVec2) -> robust::Coord<f64> {
     robust::Coord { x: p.x, y: p.y }
 }

@@ -4,8 +4,8 @@
 use glam::DVec2;
 use rand::{RngExt, SeedableRng};
 
+use crate::bsp::CompiledMap;
 use crate::geom::Aabb;
-use crate::map::Map;
 use crate::render::View;
 
 /// Poses no closer than this to a wall, so a tour shows rooms, not wallpaper.
@@ -13,12 +13,13 @@ const CLEARANCE: f64 = 8.0;
 
 /// The player start facing eight directions, then `extra` seeded random poses
 /// inside the map (each at least [`CLEARANCE`] from every line).
-pub fn tour(map: &Map, extra: usize, seed: u64) -> Vec<View> {
+pub fn tour(compiled: &CompiledMap, extra: usize, seed: u64) -> Vec<View> {
+    let map = &compiled.map;
     let mut views = Vec::with_capacity(8 + extra);
     let start = map.player_start();
     for k in 0..8 {
         let angle = start.angle + 45.0 * f64::from(k);
-        if let Ok(v) = View::at_pose(map, start.pos.x, start.pos.y, angle, None) {
+        if let Ok(v) = View::at_pose(compiled, start.pos.x, start.pos.y, angle, None) {
             views.push(v);
         }
     }
@@ -33,7 +34,7 @@ pub fn tour(map: &Map, extra: usize, seed: u64) -> Vec<View> {
         let p = DVec2::new(rng.random_range(bbox.min.x..=bbox.max.x), rng.random_range(bbox.min.y..=bbox.max.y));
         let angle = rng.random_range(0.0..360.0);
         if map.distance_to_nearest_line(p) >= CLEARANCE {
-            if let Ok(v) = View::at_pose(map, p.x, p.y, angle, None) {
+            if let Ok(v) = View::at_pose(compiled, p.x, p.y, angle, None) {
                 views.push(v);
             }
         }
@@ -44,14 +45,15 @@ pub fn tour(map: &Map, extra: usize, seed: u64) -> Vec<View> {
 /// The benchmark tour of `sightline bench tour`: the player start as it
 /// faces, then every thing's position (things stand where a player would
 /// meet them) looking eight ways (0, 45, ..., 315 degrees), eye at the usual
-/// height above the floor there. Things outside every sector are skipped.
-pub fn things_tour(map: &Map) -> Vec<View> {
+/// height above the floor there. Things outside the map are skipped.
+pub fn things_tour(compiled: &CompiledMap) -> Vec<View> {
+    let map = &compiled.map;
     let mut views = Vec::with_capacity(1 + 8 * map.things.len());
-    views.extend(View::at_start(map));
+    views.extend(View::at_start(compiled));
     for thing in &map.things {
         for k in 0..8 {
             let angle = 45.0 * f64::from(k);
-            views.extend(View::at_pose(map, thing.pos.x, thing.pos.y, angle, None));
+            views.extend(View::at_pose(compiled, thing.pos.x, thing.pos.y, angle, None));
         }
     }
     views
@@ -65,9 +67,10 @@ mod tests {
     fn things_tour_visits_every_thing_eight_ways() {
         let text = include_str!("../../maps/pillars.ron");
         let map = crate::map::parse_map(text, "pillars.ron").expect("shipped map");
-        let views = things_tour(&map);
+        let compiled = crate::bsp::build(&map, &Default::default()).expect("compiles");
+        let views = things_tour(&compiled);
         assert_eq!(views.len(), 1 + 8 * map.things.len());
-        assert_eq!(views[0], View::at_start(&map).expect("start"));
+        assert_eq!(views[0], View::at_start(&compiled).expect("start"));
         assert_eq!(views[1 + 8 + 3].angle, 135.0);
     }
 }

@@ -18,8 +18,8 @@ pub fn run(args: &CaptureArgs) -> Result<()> {
     let level = open_level(&args.map, &BuildOptions::default())?;
     let map_name = args.map.display();
     let view = match args.pose {
-        Some(p) => View::at_pose(&level.map, p.x, p.y, p.angle, p.z),
-        None => View::at_start(&level.map),
+        Some(p) => View::at_pose(&level, p.x, p.y, p.angle, p.z),
+        None => View::at_start(&level),
     }
     .with_context(|| format!("{map_name}: bad pose"))?;
     let (width, height) = args.size;

@@ -220,10 +220,11 @@ fn capture_refuses_bad_poses() {
         (capture!("--pose", "64,128,0,inf"), &["--pose", "`inf`", "not finite"]),
         (capture!("--pose", "a,b,c"), &["--pose", "`a` is not a number"]),
         (capture!("--pose", "1e999,128,0"), &["--pose", "not finite"]),
-        // Outside every sector, and exactly on a wall: the map names itself.
+        // Outside the map, and exactly on a one-sided wall: the map names itself.
         (capture!("--pose", "-5,128,0"), &["map.ron", "bad pose", "(-5, 128)", "not inside any sector"]),
         (capture!("--pose", "1000,1000,90"), &["map.ron", "(1000, 1000)"]),
-        (capture!("--pose", "256,128,0"), &["map.ron", "(256, 128)"]),
+        (capture!("--pose", "0,128,0"), &["map.ron", "(0, 128)", "on a one-sided wall"]),
+        (capture!("--pose", "256,0,0"), &["map.ron", "(256, 0)"]),
     ]);
 }
 
@@ -271,6 +272,27 @@ fn capture_writes_a_png() {
     assert!(!run.stderr.contains("panicked"), "{}", run.stderr);
     let png = std::fs::read(scene.path("new.png")).expect("the PNG was written");
     assert_eq!(png_size(&png), (64, 40));
+}
+
+/// The pose a new user tried: the doorway of two_rooms, exactly on the open
+/// line between the rooms. It renders, and both renderers draw the same
+/// `ids` frame from it.
+#[test]
+fn capture_from_a_doorway() {
+    let scene = Scene::new();
+    let map = shipped_map("two_rooms.ron");
+    let map = map.to_str().expect("a UTF-8 path");
+    let mut frames = Vec::new();
+    for renderer in ["bsp", "reference"] {
+        let out = format!("doorway-{renderer}.png");
+        let args = ["capture", map, "--pose", "256,128,0", "--renderer", renderer, "--shade", "ids", "-o", &out];
+        let run = scene.run(&args);
+        run.ok(&format!("capture --pose 256,128,0 --renderer {renderer}"));
+        let png = std::fs::read(scene.path(&out)).expect("the PNG was written");
+        assert_eq!(png_size(&png), (640, 400));
+        frames.push(png);
+    }
+    assert!(frames[0] == frames[1], "bsp and reference draw different frames from the doorway");
 }
 
 /// An existing output is replaced whole, through a temporary file that is gone

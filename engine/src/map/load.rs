@@ -305,7 +305,11 @@ impl fmt::Display for Problem {
                 write!(f, "the map has no thing of kind \"{}\"", super::PLAYER_START)
             }
             Problem::StartOutside { thing, x, y } => {
-                write!(f, "thing {thing}: the player start ({x:?}, {y:?}) is not inside any sector")
+                write!(
+                    f,
+                    "thing {thing}: the player start ({x:?}, {y:?}) is not inside any sector \
+                     (in a hole, outside the map, or on a one-sided wall)"
+                )
             }
             Problem::BadSpecial { element, message } => write!(f, "{element}: {message}"),
             Problem::BadVersion { version } => write!(

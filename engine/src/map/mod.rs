@@ -14,6 +14,8 @@ pub mod validate;
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
 
+use crate::geom::{self, exact_side, on_segment};
+
 pub use load::{load_map, parse_map, MapError, Problem, SpecialAt};
 pub use special::{Action, Activation, LineSpecial, SectorSpecial, SkillBand, Who};
 
@@ -189,26 +191,60 @@ impl Map {
         &self.things[self.player_start]
     }
 
-    /// The sector containing `p`, by the crossing-number test over each sector's
-    /// lines; `None` outside every sector or exactly on a line.
+    /// Is `p` in the map: in the interior of the closure of the union of the
+    /// sectors? That is a point strictly inside a sector, or a point on
+    /// two-sided lines only (a point of a line between two sectors, or a
+    /// vertex where only such lines meet). Not in: a point on any one-sided
+    /// line (the map's outer boundary, a pillar's edge), in a hole, or in
+    /// the void.
     ///
-    /// This is deliberately independent of the BSP: it is how the reference
-    /// renderer, pose checks and tests find a point's sector.
-    pub fn sector_at(&self, p: DVec2) -> Option<usize> {
+    /// Why a point on two-sided lines only is surrounded by sectors: lines
+    /// neither cross nor touch, so near `p` the only lines are the ones
+    /// through it; each wedge between them runs along a two-sided line,
+    /// which has a sector on both sides all along its length (validation
+    /// checked each side at its middle, and no line meets it on the way).
+    ///
+    /// Exact (orient2d) and independent of the BSP, so the validator asks it
+    /// of the player start before anything is compiled. Which sector such a
+    /// point belongs to is the BSP's answer: [`crate::bsp::CompiledMap::locate`].
+    pub fn contains(&self, p: DVec2) -> bool {
+        let mut on_two_sided = false;
+        for line in &self.lines {
+            let (a, b) = self.line_points(line);
+            if on_segment(a, b, p) {
+                if line.back.is_none() {
+                    return false;
+                }
+                on_two_sided = true;
+            }
+        }
+        on_two_sided || self.sector_strictly_containing(p).is_some()
+    }
+
+    /// The sector `p` lies strictly inside, by the crossing-number test over
+    /// each sector's lines; `None` outside every sector or exactly on a line.
+    ///
+    /// Deliberately independent of the BSP: the reference renderer and the
+    /// tests use it as the oracle. It answers nothing for a point on a line,
+    /// so nothing a user gives (a pose, a start) is checked with it alone:
+    /// that is [`Map::contains`] and [`crate::bsp::CompiledMap::locate`].
+    pub fn sector_strictly_containing(&self, p: DVec2) -> Option<usize> {
         let mut crossings = vec![0u32; self.sectors.len()];
         for line in &self.lines {
             let (a, b) = self.line_points(line);
-            if crate::geom::exact_side(a, b, p) == crate::geom::Side::On && on_segment(a, b, p) {
+            let side = exact_side(a, b, p);
+            if side == geom::Side::On && on_segment(a, b, p) {
                 return None;
             }
-            // Half-open rule on y so a ray through a vertex counts once.
-            if (a.y > p.y) != (b.y > p.y) {
-                let x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);
-                if x > p.x {
-                    crossings[line.front.sector] += 1;
-                    if let Some(back) = &line.back {
-                        crossings[back.sector] += 1;
-                    }
+            // Half-open rule on y so a ray through a vertex counts once. The
+            // ray from `p` towards +x crosses the line right of `p` when `p`
+            // is left of the line walked upwards: behind an upward line, in
+            // front of a downward one (exact, not an interpolated x).
+            let upward = b.y > a.y;
+            if (a.y > p.y) != (b.y > p.y) && side == if upward { geom::Side::Back } else { geom::Side::Front } {
+                crossings[line.front.sector] += 1;
+                if let Some(back) = &line.back {
+                    crossings[back.sector] += 1;
                 }
             }
         }
@@ -218,7 +254,7 @@ impl Map {
     /// The sectors at `p`: the one containing it, or the sectors of every
     /// line it lies on (a point on a line touches both sides).
     pub fn sectors_near(&self, p: DVec2) -> Vec<usize> {
-        if let Some(s) = self.sector_at(p) {
+        if let Some(s) = self.sector_strictly_containing(p) {
             return vec![s];
         }
         let mut out: Vec<usize> = self
@@ -226,7 +262,7 @@ impl Map {
             .iter()
             .filter(|l| {
                 let (a, b) = self.line_points(l);
-                crate::geom::exact_side(a, b, p) == crate::geom::Side::On && on_segment(a, b, p)
+                on_segment(a, b, p)
             })
             .flat_map(|l| std::iter::once(l.front.sector).chain(l.back.as_ref().map(|b| b.sector)))
             .collect();
@@ -247,10 +283,6 @@ impl Map {
             })
             .fold(f64::INFINITY, f64::min)
     }
-}
-
-fn on_segment(a: DVec2, b: DVec2, p: DVec2) -> bool {
-    p.x >= a.x.min(b.x) && p.x <= a.x.max(b.x) && p.y >= a.y.min(b.y) && p.y <= a.y.max(b.y)
 }
 
 impl Map {

@@ -527,9 +527,12 @@ fn find_player_start(map: &Map) -> Result<usize, Problem> {
     }
     let start = map.things.iter().position(|t| t.kind == PLAYER_START).ok_or(Problem::NoPlayerStart)?;
     let p = map.things[start].pos;
-    match map.sector_at(p) {
-        Some(_) => Ok(start),
-        None => Err(Problem::StartOutside { thing: start, x: p.x, y: p.y }),
+    // In the map, a point on a two-sided line included; which sector it is
+    // in is for the BSP to say, once compiled (CompiledMap::locate).
+    if map.contains(p) {
+        Ok(start)
+    } else {
+        Err(Problem::StartOutside { thing: start, x: p.x, y: p.y })
     }
 }
 

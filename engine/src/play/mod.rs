@@ -69,7 +69,7 @@ pub const SHOT_HEIGHT: f64 = HEIGHT / 2.0 + 8.0;
 
 #[derive(Debug, thiserror::Error, PartialEq)]
 pub enum PlayError {
-    #[error("{map}: ({x}, {y}) is not inside any sector")]
+    #[error("{map}: ({x}, {y}) is not inside any sector (in a hole, outside the map, or on a one-sided wall)")]
     Outside { map: String, x: f64, y: f64 },
     #[error("skill {0} is not 1 to 5")]
     Skill(u8),
@@ -144,7 +144,7 @@ impl Game {
         }
         let map = &level.compiled.map;
         let start = map.player_start().clone();
-        if map.sector_at(start.pos).is_none() {
+        if level.compiled.locate(start.pos).is_none() {
             return Err(PlayError::Outside { map: map.name.clone(), x: start.pos.x, y: start.pos.y });
         }
         let types = ThingTypes::doom();
@@ -384,7 +384,7 @@ impl Game {
     /// floor there, as if it had started there (health and keys are kept).
     pub fn teleport(&mut self, pos: DVec2, angle: f64) -> Result<(), PlayError> {
         let map = &self.level.compiled.map;
-        if !(pos.is_finite() && angle.is_finite()) || map.sector_at(pos).is_none() {
+        if !(pos.is_finite() && angle.is_finite()) || self.level.compiled.locate(pos).is_none() {
             return Err(PlayError::Outside { map: map.name.clone(), x: pos.x, y: pos.y });
         }
         let collision = Collision { compiled: &self.level.compiled, blockmap: &self.blockmap };

@@ -294,7 +294,7 @@ mod tests {
     fn share(compiled: &CompiledMap, numbers: Numbers) -> f64 {
         let mut agree = 0;
         let mut total = 0;
-        for view in crate::tour::tour(&compiled.map, 16, 3) {
+        for view in crate::tour::tour(compiled, 16, 3) {
             let exact = exact_walls(compiled, &view, 320);
             agree += agreeing(&walls(compiled, &view, 320, numbers), &exact);
             total += 320;

@@ -19,19 +19,19 @@ use super::shade::{
     ceiling_at_line, colour, masked_top, plane_lights, plane_surfaces, side_offsets, wall_facing, Shade, Surface,
 };
 use super::view::{Camera, NEAR};
-use crate::geom::cross;
+use crate::geom::{cross, on_segment};
 use crate::level::Level;
 use crate::map::Map;
 use crate::texture::Texture;
 
 /// The reference's per-frame set-up, shared by every strip: each line's ends
-/// in camera space (and whether it is two-sided), the eye's sector, and the
-/// things in front of the eye.
+/// in camera space (and whether it is two-sided), the sector each ray starts
+/// in, and the things in front of the eye.
 pub struct Reference<'a> {
     level: &'a Level,
     cam: &'a Camera,
     ends: Vec<(DVec2, DVec2, bool)>,
-    eye_sector: Option<usize>,
+    eye: EyeSector,
     things: Vec<Billboard<'a>>,
     /// See-through middles are drawn (not disabled).
     masked: bool,
@@ -48,14 +48,7 @@ impl<'a> Reference<'a> {
                 (cam.to_camera(a), cam.to_camera(b), l.back.is_some())
             })
             .collect();
-        Reference {
-            level,
-            cam,
-            ends,
-            eye_sector: map.sector_at(cam.eye),
-            things: things_in_front(level, cam),
-            masked: true,
-        }
+        Reference { level, cam, ends, eye: EyeSector::new(map, cam), things: things_in_front(level, cam), masked: true }
     }
 
     /// Leaves out the effects `disabled` names that the reference draws:
@@ -77,10 +70,10 @@ impl<'a> Reference<'a> {
         shade: Shade,
     ) {
         let (level, cam, ends, things) = (self.level, self.cam, &self.ends, &self.things);
-        let (map, eye_sector) = (&level.map, self.eye_sector);
+        let map = &level.map;
         for x in columns {
             collect_hits(cam, ends, x, &mut frame.hits);
-            order_ties(map, eye_sector, &mut frame.hits);
+            order_ties(map, self.eye.of_column(cam, x), &mut frame.hits);
             let sprites = sprites_on_column(cam, things, x);
             frame.stats.walls_considered += ends.len() as u64;
             let mut run: Option<(i32, u32)> = None;
@@ -158,13 +151,83 @@ fn collect_hits(cam: &Camera, ends: &[(DVec2, DVec2, bool)], x: usize, hits: &mu
     hits.sort_by(|p, q| p.depth.total_cmp(&q.depth).then(p.line.cmp(&q.line)));
 }
 
+/// The sector a column's ray is in as it leaves the eye: where
+/// [`order_ties`] starts its chain.
+///
+/// Not one sector for the whole frame: an eye on a line between two sectors
+/// (a pose in a doorway) sends the rays on one side of the line through one
+/// sector and the rest through the other. Decided from the map alone, as
+/// the rest of the reference is.
+enum EyeSector {
+    /// The eye is on no line: every ray starts in the sector strictly
+    /// containing it (`None` in the void).
+    Inside(Option<usize>),
+    /// The eye is on lines. One spoke per line end seen from the eye (two
+    /// for a line through it, one for a line ending at it); a ray starts in
+    /// the wedge it leaves into, whose sector is the one clockwise of the
+    /// first spoke counter-clockwise from the ray.
+    OnLines(Vec<Spoke>),
+}
+
+struct Spoke {
+    /// Where the spoke goes, in camera space (depth, sideways) from the eye.
+    to: DVec2,
+    /// The sector on its clockwise side (right, looking out along it).
+    right: Option<usize>,
+}
+
+impl EyeSector {
+    fn new(map: &Map, cam: &Camera) -> EyeSector {
+        let mut spokes = Vec::new();
+        for line in &map.lines {
+            let (a, b) = map.line_points(line);
+            if !on_segment(a, b, cam.eye) {
+                continue;
+            }
+            let (front, back) = (Some(line.front.sector), line.back.as_ref().map(|s| s.sector));
+            // Out along `a -> b` the front is on the right; out along `b -> a` the back.
+            if cam.eye != b {
+                spokes.push(Spoke { to: cam.to_camera(b), right: front });
+            }
+            if cam.eye != a {
+                spokes.push(Spoke { to: cam.to_camera(a), right: back });
+            }
+        }
+        if spokes.is_empty() {
+            EyeSector::Inside(map.sector_strictly_containing(cam.eye))
+        } else {
+            EyeSector::OnLines(spokes)
+        }
+    }
+
+    /// The sector column `x`'s ray starts in. A ray exactly along a spoke
+    /// counts as stepped to its right, the screen's half-open rule
+    /// ([`Camera::left_of_or_on`], whose sign test this repeats): it starts
+    /// clockwise of that spoke, as the walk draws that column from the
+    /// partition's side the ray runs `a -> b` along.
+    fn of_column(&self, cam: &Camera, x: usize) -> Option<usize> {
+        match self {
+            EyeSector::Inside(sector) => *sector,
+            EyeSector::OnLines(spokes) => {
+                let t = cam.column_slope(x);
+                // Counter-clockwise (map) angle from the ray (1, t) to the
+                // spoke, in [0, 2 pi): camera space mirrors the map, so its
+                // sine is t * p.x - p.y, and 0 exactly when the column's ray
+                // passes through the spoke's end (left_of_or_on's tie).
+                let angle = |p: DVec2| (t * p.x - p.y).atan2(p.x + t * p.y).rem_euclid(std::f64::consts::TAU);
+                spokes.iter().min_by(|p, q| angle(p.to).total_cmp(&angle(q.to))).and_then(|s| s.right)
+            }
+        }
+    }
+}
+
 /// Depths this close (relative) are one crossing point: a ray through a shared vertex.
 const TIE: f64 = 1e-9;
 
 /// Puts crossings at the same depth in the order the ray meets them. Through a
 /// vertex where it enters and leaves a sector at once, the ray crosses first
 /// the line whose near side is the sector it is in, then the next.
-fn order_ties(map: &Map, eye_sector: Option<usize>, hits: &mut [Hit]) {
+fn order_ties(map: &Map, start: Option<usize>, hits: &mut [Hit]) {
     let sides = |h: &Hit| {
         let line = &map.lines[h.line];
         let (front, back) = (line.front.sector, line.back.as_ref().map(|b| b.sector));
@@ -174,7 +237,7 @@ fn order_ties(map: &Map, eye_sector: Option<usize>, hits: &mut [Hit]) {
             (back, Some(front))
         }
     };
-    let mut current = eye_sector;
+    let mut current = start;
     let mut i = 0;
     while i < hits.len() {
         let tied = hits[i..].iter().take_while(|h| h.depth - hits[i].depth <= hits[i].depth * TIE).count();

@@ -8,6 +8,7 @@
 
 use glam::DVec2;
 
+use crate::bsp::CompiledMap;
 use crate::geom::sin_cos_degrees;
 
 /// Nothing nearer than this (map units of depth) is drawn.
@@ -216,7 +217,7 @@ impl Rows<'_> {
 /// Why a pose cannot be used.
 #[derive(Debug, thiserror::Error, PartialEq)]
 pub enum PoseError {
-    #[error("pose ({x}, {y}) is not inside any sector of the map")]
+    #[error("pose ({x}, {y}) is not inside any sector (in a hole, outside the map, or on a one-sided wall)")]
     Outside { x: f64, y: f64 },
     #[error("pose has a value that is not finite")]
     NotFinite,
@@ -224,20 +225,23 @@ pub enum PoseError {
 
 impl View {
     /// A view at `(x, y)` looking at `angle`; the eye `z` defaults to
-    /// [`EYE_HEIGHT`] above the floor of the sector there.
-    pub fn at_pose(map: &crate::map::Map, x: f64, y: f64, angle: f64, z: Option<f64>) -> Result<View, PoseError> {
+    /// [`EYE_HEIGHT`] above the floor of the sector there. Any point of the
+    /// map will do, one on a two-sided line or vertex too: its sector is the
+    /// one point location gives ([`CompiledMap::locate`]: on a partition
+    /// line, the partition's front).
+    pub fn at_pose(compiled: &CompiledMap, x: f64, y: f64, angle: f64, z: Option<f64>) -> Result<View, PoseError> {
         if ![x, y, angle, z.unwrap_or(0.0)].iter().all(|v| v.is_finite()) {
             return Err(PoseError::NotFinite);
         }
         let pos = DVec2::new(x, y);
-        let sector = map.sector_at(pos).ok_or(PoseError::Outside { x, y })?;
-        let z = z.unwrap_or(map.sectors[sector].floor + EYE_HEIGHT);
+        let sector = compiled.locate(pos).ok_or(PoseError::Outside { x, y })?;
+        let z = z.unwrap_or(compiled.map.sectors[sector].floor + EYE_HEIGHT);
         Ok(View::new(pos, z, angle))
     }
 
     /// The view from the map's player start.
-    pub fn at_start(map: &crate::map::Map) -> Result<View, PoseError> {
-        let start = map.player_start();
-        View::at_pose(map, start.pos.x, start.pos.y, start.angle, None)
+    pub fn at_start(compiled: &CompiledMap) -> Result<View, PoseError> {
+        let start = compiled.map.player_start();
+        View::at_pose(compiled, start.pos.x, start.pos.y, start.angle, None)
     }
 }

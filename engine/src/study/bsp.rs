@@ -32,7 +32,10 @@ pub fn run(levels: &[(String, &Level)], s: &Settings, progress: &mut dyn FnMut(&
         if sides <= EXHAUSTIVE_LIMIT {
             runs.push(BuildOptions { splitter: SplitterKind::Exhaustive, seed: 0 });
         }
-        let views = tour(map, s.effort.pick(4, 16), 2);
+        // One tour for every run, from the first compile: a pose's sector
+        // (its eye height) on a two-sided line comes from the tree.
+        let Ok(first) = build(map, &runs[0]) else { continue };
+        let views = tour(&first, s.effort.pick(4, 16), 2);
         for options in runs {
             progress(&format!("bsp: {name} {} {}", options.splitter.name(), options.seed));
             let mut compiled: Option<CompiledMap> = None;

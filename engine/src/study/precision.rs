@@ -23,7 +23,7 @@ pub fn run(levels: &[(String, &Level)], s: &Settings, progress: &mut dyn FnMut(&
         for (k, &offset) in offsets.iter().enumerate() {
             progress(&format!("precision: {name} at {offset:e}"));
             let Some(compiled) = moved(&level.compiled, offset) else { continue };
-            let views = tour(&compiled.map, s.effort.pick(8, 32), 5);
+            let views = tour(&compiled, s.effort.pick(8, 32), 5);
             let exact: Vec<_> = views.iter().map(|v| exact_walls(&compiled, v, s.width)).collect();
             for (n, &numbers) in Numbers::ALL.iter().enumerate() {
                 let got: Vec<_> = views.iter().map(|v| walls(&compiled, v, s.width, numbers)).collect();

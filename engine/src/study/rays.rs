@@ -25,7 +25,7 @@ pub fn run(levels: &[(String, &Level)], s: &Settings, progress: &mut dyn FnMut(&
     let mut dda_points = Vec::new();
     for (name, level) in &grids {
         let cell = level.grid().map_or(64.0, |(g, _)| g.cell_size);
-        let views = tour(&level.map, s.effort.pick(4, 24), 1);
+        let views = tour(level, s.effort.pick(4, 24), 1);
         let methods = std::iter::once((RayMethod::Dda, 0.0))
             .chain(MARCH.iter().map(|&k| (RayMethod::March { step: k * cell }, k)))
             .chain(SPHERE.iter().map(|&e| (RayMethod::Sphere { epsilon: e * cell }, e)));

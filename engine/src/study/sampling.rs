@@ -43,7 +43,7 @@ pub fn run(levels: &[(String, &Level)], s: &Settings, progress: &mut dyn FnMut(&
     // variant -> (ms sum, differing sum, mean diff sum, maps)
     let mut totals = [(0.0f64, 0.0f64, 0.0f64, 0usize); VARIANTS.len()];
     for (name, level) in levels {
-        let views = tour(&level.map, s.effort.pick(4, 16), 3);
+        let views = tour(level, s.effort.pick(4, 16), 3);
         let mut baseline: Vec<Vec<u32>> = Vec::new();
         for (k, variant) in VARIANTS.iter().enumerate() {
             progress(&format!("sampling: {name} {}", variant.name));

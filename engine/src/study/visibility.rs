@@ -82,7 +82,7 @@ pub fn run(levels: &[(String, &Level)], s: &Settings, progress: &mut dyn FnMut(&
 
 /// The tour: quick runs keep every third pose of the start's eight views.
 fn poses(level: &Level, s: &Settings) -> Vec<View> {
-    let views = tour(&level.map, s.effort.pick(0, 16), 1);
+    let views = tour(level, s.effort.pick(0, 16), 1);
     match s.effort {
         super::Effort::Quick => views.into_iter().step_by(3).collect(),
         super::Effort::Full => views,

@@ -25,7 +25,7 @@ const MAX_FRAMES: usize = 200_000;
 pub fn run(args: &BenchTourArgs) -> Result<()> {
     let level = open_level(&args.map, &BuildOptions::default())?;
     let renderer = crate::replay::choose_renderer(args.renderer, &level, &args.map)?;
-    let views = things_tour(&level.map);
+    let views = things_tour(&level);
     if views.is_empty() {
         bail!("{}: no pose of the tour lies inside a sector", args.map.display());
     }
