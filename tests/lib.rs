@@ -268,8 +268,15 @@ pub fn random_inputs(seed: u64, ticks: usize) -> Vec<TickInput> {
         };
         let burst = rng.random_range(1..=hold);
         for k in 0..hold {
-            let use_door = rng.random_range(0..25) == 0;
-            inputs.push(TickInput { forward, strafe, turn: if k < burst { turn } else { 0.0 }, run, use_door });
+            let use_line = rng.random_range(0..25) == 0;
+            inputs.push(TickInput {
+                forward,
+                strafe,
+                turn: if k < burst { turn } else { 0.0 },
+                run,
+                use_line,
+                fire: false,
+            });
         }
     }
     inputs.truncate(ticks);

@@ -11,10 +11,11 @@ use rand::{RngExt, SeedableRng};
 use sightline::bsp::{build, BuildOptions};
 use sightline::geom::{segment_contact, Contact};
 use sightline::level::Level;
+use sightline::map::special::DOOR_WAIT;
 use sightline::map::{parse_map, Map};
 use sightline::play::demo::{DemoError, MAGIC, VERSION};
-use sightline::play::doors::{DoorKind, DoorState, DOOR_WAIT};
 use sightline::play::player::{HEIGHT, MAX_SPEED, MAX_STEP, RADIUS};
+use sightline::play::world::doors::{DoorState, Motion};
 use sightline::play::{Demo, Game, TickInput, TICRATE};
 use sightline::render::shade::{ids_colour, Surface};
 use sightline::render::{render_frame, Frame, RenderOptions, Renderer, Shade};
@@ -31,8 +32,8 @@ fn game_from(text: &str) -> Game {
     Game::new(level_from(text)).unwrap_or_else(|e| panic!("{e}"))
 }
 
-const RUN_EAST: TickInput = TickInput { forward: 1, strafe: 0, turn: 0.0, run: true, use_door: false };
-const IDLE: TickInput = TickInput { forward: 0, strafe: 0, turn: 0.0, run: false, use_door: false };
+const RUN_EAST: TickInput = TickInput { forward: 1, strafe: 0, turn: 0.0, run: true, use_line: false, fire: false };
+const IDLE: TickInput = TickInput { forward: 0, strafe: 0, turn: 0.0, run: false, use_line: false, fire: false };
 
 fn distance_to_segment(p: DVec2, a: DVec2, b: DVec2) -> f64 {
     let d = b - a;
@@ -84,7 +85,7 @@ fn play_checked(name: &str, game: &mut Game, inputs: &[TickInput]) -> Seen {
         let (old, z0) = (game.player().pos, game.player().z);
         game.tick(input);
         let (p, z) = (game.player().pos, game.player().z);
-        let after = if game.doors().is_empty() { before.clone() } else { heights(game) };
+        let after = if game.world().thinkers.is_empty() { before.clone() } else { heights(game) };
         let at = || format!("{name}, tick {tick}: from ({}, {}) z {z0} to ({}, {}) z {z}", old.x, old.y, p.x, p.y);
         assert!(p.is_finite() && z.is_finite(), "{}", at());
         // In the map: inside a sector, or on lines that are all two-sided.
@@ -345,20 +346,26 @@ fn door_ceiling(game: &Game) -> f64 {
     game.level().map.sectors[1].ceiling
 }
 
+/// What the door on `sector` is doing; `None` when no door is at work there
+/// (it is shut, or open for good).
+fn door(game: &Game, sector: usize) -> Option<DoorState> {
+    game.world().door_on(sector).map(|d| d.state)
+}
+
 #[test]
 fn a_door_opens_when_used_lets_the_player_through_and_closes_after_a_wait() {
     let mut game = game_from(DOOR_MAP);
-    assert_eq!(game.doors().len(), 1);
+    assert_eq!(door(&game, 1), None);
     // Shut: the body stops at it.
     let (x, _) = run_east(&mut game, 40);
     assert!(x <= 256.0 - RADIUS + 1e-6, "walked through a shut door: x {x}");
     assert_eq!(door_ceiling(&game), 0.0);
     // Use it from here (the door is 16 ahead, within reach).
-    game.tick(&TickInput { use_door: true, ..IDLE });
-    assert_eq!(game.doors()[0].state, DoorState::Opening);
+    game.tick(&TickInput { use_line: true, ..IDLE });
+    assert_eq!(door(&game, 1), Some(DoorState::Opening));
     // It rises at 2 a tick to the lowest neighbouring ceiling less 4 (128 - 4).
     let mut ticks = 1;
-    while game.doors()[0].state == DoorState::Opening {
+    while door(&game, 1) == Some(DoorState::Opening) {
         game.tick(&IDLE);
         ticks += 1;
         assert!(ticks < 100, "never finished opening");
@@ -374,7 +381,7 @@ fn a_door_opens_when_used_lets_the_player_through_and_closes_after_a_wait() {
     for _ in 0..62 + 5 {
         game.tick(&IDLE);
     }
-    assert_eq!((door_ceiling(&game), game.doors()[0].state), (0.0, DoorState::Closed));
+    assert_eq!((door_ceiling(&game), door(&game, 1)), (0.0, None));
     // Shut again: no way back west.
     game.teleport(DVec2::new(400.0, 128.0), 180.0).unwrap();
     for _ in 0..40 {
@@ -382,15 +389,28 @@ fn a_door_opens_when_used_lets_the_player_through_and_closes_after_a_wait() {
     }
     assert!(game.player().pos.x >= 272.0 + RADIUS - 1e-6, "walked back through the shut door");
     // From the far side, the other door line opens it too.
-    game.tick(&TickInput { use_door: true, ..IDLE });
-    assert_eq!(game.doors()[0].state, DoorState::Opening);
+    game.tick(&TickInput { use_line: true, ..IDLE });
+    assert_eq!(door(&game, 1), Some(DoorState::Opening));
+    // Used again while it opens, it closes at once (Doom's manual doors);
+    // used while it closes, it opens again.
+    game.tick(&IDLE);
+    game.tick(&TickInput { use_line: true, ..IDLE });
+    assert_eq!(door(&game, 1), Some(DoorState::Closing));
+    game.tick(&IDLE);
+    game.tick(&TickInput { use_line: true, ..IDLE });
+    assert_eq!(door(&game, 1), Some(DoorState::Opening));
+    // Holding use does not use it again.
+    for _ in 0..10 {
+        game.tick(&TickInput { use_line: true, ..IDLE });
+    }
+    assert_eq!(door(&game, 1), Some(DoorState::Opening));
 }
 
 #[test]
 fn a_door_never_closes_on_the_player() {
     let mut game = game_from(DOOR_MAP);
     game.teleport(DVec2::new(230.0, 128.0), 0.0).unwrap();
-    game.tick(&TickInput { use_door: true, ..IDLE });
+    game.tick(&TickInput { use_line: true, ..IDLE });
     for _ in 0..70 {
         game.tick(&IDLE);
     }
@@ -476,20 +496,19 @@ fn run_until(game: &mut Game, input: &TickInput, done: impl Fn(f64) -> bool) {
 #[test]
 fn walking_over_a_trigger_opens_the_tagged_door_once() {
     let mut game = tagged(", trigger: Trigger(tag: 5, on: Walk, once: true)", "");
-    assert_eq!(game.doors().len(), 1);
-    assert_eq!(game.doors()[0].state, DoorState::Closed);
+    assert_eq!(door(&game, 2), None);
     // Crossing x = 128 sets it off; the door opens, waits and closes.
     run_east(&mut game, 12);
     assert!(game.player().pos.x > 128.0);
-    assert_eq!(game.doors()[0].state, DoorState::Opening);
+    assert_eq!(door(&game, 2), Some(DoorState::Opening));
     for _ in 0..300 {
         game.tick(&IDLE);
     }
-    assert_eq!((game.doors()[0].state, game.level().map.sectors[2].ceiling), (DoorState::Closed, 0.0));
+    assert_eq!((door(&game, 2), game.level().map.sectors[2].ceiling), (None, 0.0));
     // Once only: back over the line and across again does nothing.
     run_until(&mut game, &RUN_WEST, |x| x < 100.0);
     run_until(&mut game, &RUN_EAST, |x| x > 160.0);
-    assert_eq!(game.doors()[0].state, DoorState::Closed);
+    assert_eq!(door(&game, 2), None);
 }
 
 #[test]
@@ -499,18 +518,15 @@ fn a_repeatable_trigger_works_from_either_side_and_a_stay_open_door_stays() {
     for _ in 0..400 {
         game.tick(&IDLE);
     }
-    assert_eq!(
-        (game.doors()[0].state, game.level().map.sectors[2].ceiling),
-        (DoorState::Open { wait: DOOR_WAIT }, 124.0)
-    );
+    assert_eq!((door(&game, 2), game.level().map.sectors[2].ceiling), (None, 124.0));
     let mut game = tagged(", trigger: Trigger(tag: 5, on: Walk)", "");
     run_east(&mut game, 8);
     for _ in 0..300 {
         game.tick(&IDLE);
     }
-    assert_eq!(game.doors()[0].state, DoorState::Closed);
+    assert_eq!(door(&game, 2), None);
     run_until(&mut game, &RUN_WEST, |x| x < 100.0);
-    assert_eq!(game.doors()[0].state, DoorState::Opening, "crossing back sets it off again");
+    assert_eq!(door(&game, 2), Some(DoorState::Opening), "crossing back sets it off again");
 }
 
 #[test]
@@ -518,13 +534,13 @@ fn a_switch_opens_the_tagged_door_and_a_walk_trigger_ignores_use() {
     let mut game = tagged("", ", trigger: Trigger(tag: 5, on: Use, once: true, stay_open: true)");
     // Face the west wall (the switch) from 32 units: use it.
     game.teleport(DVec2::new(32.0, 128.0), 180.0).unwrap();
-    game.tick(&TickInput { use_door: true, ..IDLE });
-    assert_eq!(game.doors()[0].state, DoorState::Opening);
+    game.tick(&TickInput { use_line: true, ..IDLE });
+    assert_eq!(door(&game, 2), Some(DoorState::Opening));
     // A walk trigger is not a switch.
     let mut game = tagged(", trigger: Trigger(tag: 5, on: Walk)", "");
     game.teleport(DVec2::new(100.0, 128.0), 0.0).unwrap();
-    game.tick(&TickInput { use_door: true, ..IDLE });
-    assert_eq!(game.doors()[0].state, DoorState::Closed);
+    game.tick(&TickInput { use_line: true, ..IDLE });
+    assert_eq!(door(&game, 2), None);
 }
 
 #[test]
@@ -551,14 +567,13 @@ fn the_view_interpolates_between_ticks() {
 /// bunker.ron's door east of the start room: cell (7, 11) (text row 3,
 /// column 7), jambs north and south, its panel running north-south through
 /// x = 480 (faces at 476 and 484); the open cells (6, 11) west and (8, 11)
-/// east of it. Returns where it is in `game.doors()` and in `GridLevel::open`.
+/// east of it. Returns its sector and its place in `GridLevel::open` (door
+/// `k` is sector `k + 1`).
 fn bunker_door(game: &Game) -> (usize, usize) {
-    let centre = DVec2::new(480.0, 736.0);
-    let found = game.doors().iter().enumerate().find_map(|(d, door)| match door.kind {
-        DoorKind::Slide(s) if s.cell[0].cmplt(centre).all() && centre.cmplt(s.cell[1]).all() => Some((d, s.index)),
-        _ => None,
-    });
-    found.expect("bunker.ron: no sliding door in cell (7, 11)")
+    let (grid, gl) = game.level().grid().expect("bunker.ron is a grid map");
+    let k = gl.faces.doors.iter().position(|&cell| cell == grid.index(7, 11));
+    let k = k.expect("bunker.ron: no sliding door in cell (7, 11)");
+    (k + 1, k)
 }
 
 fn slid(game: &Game, k: usize) -> f64 {
@@ -567,7 +582,7 @@ fn slid(game: &Game, k: usize) -> f64 {
 
 /// The door's sector: ceiling minus floor (0 shut, the grid's 64 passable).
 fn door_gap(game: &Game, d: usize) -> f64 {
-    let s = &game.level().map.sectors[game.doors()[d].sector];
+    let s = &game.level().map.sectors[d];
     s.ceiling - s.floor
 }
 
@@ -582,14 +597,8 @@ const WEST_OF_THE_BUNKER_DOOR: DVec2 = DVec2::new(416.0, 736.0);
 fn a_grid_door_slides_open_when_used_and_the_ray_caster_draws_it_sliding() {
     let mut game = Game::new(load(&map_path("bunker.ron"))).unwrap_or_else(|e| panic!("{e}"));
     let (grid, gl) = game.level().grid().expect("bunker.ron is a grid map");
-    // Every grid door is a sliding door, door k its sector k + 1.
-    assert_eq!(game.doors().len(), gl.faces.doors.len());
-    assert!(game.doors().len() >= 7, "bunker.ron has {} doors", game.doors().len());
-    for door in game.doors() {
-        let DoorKind::Slide(s) = door.kind else { panic!("sector {}: not a sliding door", door.sector) };
-        assert_eq!(door.sector, s.index + 1);
-        assert_eq!(s.ceiling, grid.ceiling);
-    }
+    assert!(gl.faces.doors.len() >= 7, "bunker.ron has {} doors", gl.faces.doors.len());
+    let grid_ceiling = grid.ceiling;
     let (d, k) = bunker_door(&game);
     let panel = gl.faces.line(gl.faces.doors[k], sightline::grid::Face::West) as usize;
     let panel_colour = ids_colour(Surface::Wall { line: panel });
@@ -606,8 +615,11 @@ fn a_grid_door_slides_open_when_used_and_the_ray_caster_draws_it_sliding() {
 
     // Used from 60 units away, it slides 1/32 of its width a tick, from the
     // use tick on.
-    game.tick(&TickInput { use_door: true, ..IDLE });
-    assert_eq!((game.doors()[d].state, slid(&game, k)), (DoorState::Opening, 1.0 / 32.0));
+    game.tick(&TickInput { use_line: true, ..IDLE });
+    assert_eq!((door(&game, d), slid(&game, k)), (Some(DoorState::Opening), 1.0 / 32.0));
+    // A grid door is a sliding door: door k is sector k + 1, and it opens to the grid's ceiling.
+    let motion = game.world().door_on(d).map(|door| door.motion);
+    assert!(matches!(motion, Some(Motion::Slide { slide, .. }) if slide.index == k && slide.ceiling == grid_ceiling));
     for _ in 1..16 {
         game.tick(&IDLE);
     }
@@ -624,7 +636,7 @@ fn a_grid_door_slides_open_when_used_and_the_ray_caster_draws_it_sliding() {
 
     // Fully open after 32 ticks (0.91 s): passable, and no panel drawn.
     let mut ticks = 16;
-    while game.doors()[d].state == DoorState::Opening {
+    while door(&game, d) == Some(DoorState::Opening) {
         game.tick(&IDLE);
         ticks += 1;
         assert!(ticks < 100, "never finished opening");
@@ -645,13 +657,13 @@ fn a_grid_door_slides_open_when_used_and_the_ray_caster_draws_it_sliding() {
         ticks += 1;
         assert_eq!((slid(&game, k), door_gap(&game, d)), (1.0, 64.0), "tick {ticks}: closed early");
     }
-    assert_eq!(game.doors()[d].state, DoorState::Closing);
+    assert_eq!(door(&game, d), Some(DoorState::Closing));
     game.tick(&IDLE);
     assert_eq!((slid(&game, k), door_gap(&game, d)), (31.0 / 32.0, 0.0));
     for _ in 1..32 {
         game.tick(&IDLE);
     }
-    assert_eq!((game.doors()[d].state, slid(&game, k)), (DoorState::Closed, 0.0));
+    assert_eq!((door(&game, d), slid(&game, k)), (None, 0.0));
     assert!(frame(&game, Renderer::Raycast).pixels == shut.pixels, "shut again, but drawn differently");
     // Shut again: no way back west.
     game.tick(&TickInput { forward: 1, run: true, turn: 180.0, ..IDLE });
@@ -660,8 +672,8 @@ fn a_grid_door_slides_open_when_used_and_the_ray_caster_draws_it_sliding() {
     }
     assert!(game.player().pos.x >= 484.0 + RADIUS - 1e-6, "walked back through the shut door");
     // From the east, the other face opens it.
-    game.tick(&TickInput { use_door: true, ..IDLE });
-    assert_eq!(game.doors()[d].state, DoorState::Opening);
+    game.tick(&TickInput { use_line: true, ..IDLE });
+    assert_eq!(door(&game, d), Some(DoorState::Opening));
 }
 
 #[test]
@@ -669,7 +681,7 @@ fn a_grid_door_never_closes_on_the_player() {
     let mut game = Game::new(load(&map_path("bunker.ron"))).unwrap_or_else(|e| panic!("{e}"));
     let (d, k) = bunker_door(&game);
     game.teleport(WEST_OF_THE_BUNKER_DOOR, 0.0).unwrap();
-    game.tick(&TickInput { use_door: true, ..IDLE });
+    game.tick(&TickInput { use_line: true, ..IDLE });
     for _ in 0..40 {
         game.tick(&IDLE);
     }
@@ -687,7 +699,7 @@ fn a_grid_door_never_closes_on_the_player() {
     for tick in 0..1000 {
         game.tick(&IDLE);
         assert_eq!((slid(&game, k), door_gap(&game, d)), (1.0, 64.0), "tick {tick}: the door moved on the player");
-        tried += usize::from(game.doors()[d].state == DoorState::Closing);
+        tried += usize::from(door(&game, d) == Some(DoorState::Closing));
     }
     assert!(tried >= 5, "the door tried to close only {tried} times in 1000 ticks");
 
@@ -715,7 +727,7 @@ fn a_grid_door_never_closes_on_the_player() {
     for _ in 0..DOOR_WAIT + 40 {
         game.tick(&IDLE);
     }
-    assert_eq!((game.doors()[d].state, slid(&game, k), door_gap(&game, d)), (DoorState::Closed, 0.0, 0.0));
+    assert_eq!((door(&game, d), slid(&game, k), door_gap(&game, d)), (None, 0.0, 0.0));
 }
 
 /// Every tick's pose, bit for bit.
@@ -743,7 +755,7 @@ fn a_demo_replays_to_the_same_positions_and_frames() {
     let inputs = random_inputs(7, 6000);
     let mut live_frames = Vec::new();
     let live = trace(&mut Game::new(load(&path)).unwrap(), &inputs, &mut live_frames);
-    let demo = Demo { map: "maps/doors.ron".into(), inputs };
+    let demo = Demo { inputs, ..Demo::new("maps/doors.ron") };
     let file = std::env::temp_dir().join(format!("sightline-play-{}.demo", std::process::id()));
     demo.save(&file).unwrap();
     let loaded = Demo::load(&file).unwrap();
@@ -766,7 +778,7 @@ fn a_demo_replays_to_the_same_positions_and_frames() {
 
 #[test]
 fn corrupt_demo_files_are_errors() {
-    let demo = Demo { map: "maps/doors.ron".into(), inputs: random_inputs(3, 200) };
+    let demo = Demo { inputs: random_inputs(3, 200), ..Demo::new("maps/doors.ron") };
     let bytes = demo.to_bytes();
     assert_eq!(Demo::from_bytes(&bytes, "ok.demo").unwrap(), demo);
     for len in 0..bytes.len() {
@@ -785,7 +797,16 @@ fn corrupt_demo_files_are_errors() {
     let mut long_name = bytes.clone();
     long_name[body..body + 4].copy_from_slice(&u32::MAX.to_le_bytes());
     assert!(matches!(Demo::from_bytes(&long_name, "n"), Err(DemoError::MapTooLong { .. })));
-    let count = body + 4 + demo.map.len();
+    // The skill (a byte after the name, then the 8-byte seed) must be 1 to 5.
+    let skill = body + 4 + demo.map.len();
+    let mut bad_skill = bytes.clone();
+    bad_skill[skill] = 9;
+    // With its checksum made right, so the skill itself is what is refused.
+    let crc = crc32fast::hash(&bad_skill[body..]).to_le_bytes();
+    bad_skill[body - 4..body].copy_from_slice(&crc);
+    let err = Demo::from_bytes(&bad_skill, "s.demo").unwrap_err();
+    assert!(err.to_string().contains("skill 9"), "{err}");
+    let count = skill + 9;
     let mut many = bytes.clone();
     many[count..count + 4].copy_from_slice(&u32::MAX.to_le_bytes());
     let err = Demo::from_bytes(&many, "t.demo").unwrap_err();

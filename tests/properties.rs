@@ -295,23 +295,16 @@ const ODD: (usize, usize) = (127, 75);
 /// One sector (floor 0, ceiling 128) bounded by the given rings of one-sided
 /// lines, each ring listed so that the sector is on its right.
 fn one_sector_map(rings: &[&[(f64, f64)]]) -> sightline::Map {
-    use sightline::map::source::{LineSource, SectorSource, SideSource, ThingSource};
+    use sightline::map::source::{LineSource, MapSource, SectorSource, SideSource, ThingSource};
     let mut source = sightline::map::source::MapSource {
         name: "regression".into(),
         vertices: Vec::new(),
-        sectors: vec![SectorSource {
-            floor: 0.0,
-            ceiling: 128.0,
-            light: 160,
-            floor_texture: None,
-            ceiling_texture: None,
-            tag: 0,
-        }],
+        sectors: vec![SectorSource { floor: 0.0, ceiling: 128.0, light: 160, ..SectorSource::default() }],
         lines: Vec::new(),
-        things: vec![ThingSource { kind: sightline::map::PLAYER_START.into(), x: -128.0, y: 0.0, angle: 0.0 }],
+        things: vec![ThingSource::new(sightline::map::PLAYER_START, -128.0, 0.0, 0.0)],
         diminishing_light: true,
         fog: None,
-        sky: None,
+        ..MapSource::default()
     };
     for ring in rings {
         let first = source.vertices.len();
@@ -322,11 +315,7 @@ fn one_sector_map(rings: &[&[(f64, f64)]]) -> sightline::Map {
                 to: (first + (j + 1) % ring.len()) as i64,
                 front: SideSource::default(),
                 back: None,
-                upper_unpegged: false,
-                lower_unpegged: false,
-                impassable: false,
-                door: false,
-                trigger: None,
+                ..LineSource::default()
             });
         }
     }

@@ -279,7 +279,7 @@ fn height(r: &mut ChaCha8Rng, lo: f64, hi: f64, shared: &[f64]) -> f64 {
 }
 
 fn sector(floor: f64, ceiling: f64, light: i64) -> SectorSource {
-    SectorSource { floor, ceiling, light, floor_texture: None, ceiling_texture: None, tag: 0 }
+    SectorSource { floor, ceiling, light, ..SectorSource::default() }
 }
 
 fn pillar_sector(r: &mut ChaCha8Rng, kind: PillarKind, room: &SectorSource) -> SectorSource {
@@ -396,11 +396,7 @@ pub fn generate(spec: &MapSpec) -> Generated {
                 to: to as i64,
                 front: side(front),
                 back: back.map(side),
-                upper_unpegged: false,
-                lower_unpegged: false,
-                impassable: false,
-                door: false,
-                trigger: None,
+                ..LineSource::default()
             });
         }
     };
@@ -423,10 +419,10 @@ pub fn generate(spec: &MapSpec) -> Generated {
         vertices,
         sectors,
         lines,
-        things: vec![ThingSource { kind: PLAYER_START.into(), x: start.x, y: start.y, angle: start_angle }],
+        things: vec![ThingSource::new(PLAYER_START, start.x, start.y, start_angle)],
         diminishing_light: true,
         fog: None,
-        sky: None,
+        ..MapSource::default()
     };
     let map = validate(&source).unwrap_or_else(|problems| {
         panic!("generator bug: invalid map {problems:?}\nspec {spec:?}\n{}", source.to_ron())

@@ -27,7 +27,7 @@ fn room(points: &[(f64, f64)], light: i64, wall: &str, things: Vec<ThingSource>)
             light,
             floor_texture: Some("FLOOR".into()),
             ceiling_texture: Some("CEIL".into()),
-            tag: 0,
+            ..SectorSource::default()
         }],
         lines: (0..n)
             .map(|i| LineSource {
@@ -35,22 +35,18 @@ fn room(points: &[(f64, f64)], light: i64, wall: &str, things: Vec<ThingSource>)
                 to: (i + 1) % n,
                 front: side(0, Some(wall)),
                 back: None,
-                upper_unpegged: false,
-                lower_unpegged: false,
-                impassable: false,
-                door: false,
-                trigger: None,
+                ..LineSource::default()
             })
             .collect(),
         things,
         diminishing_light: false,
         fog: None,
-        sky: None,
+        ..MapSource::default()
     }
 }
 
 fn thing(kind: &str, x: f64, y: f64, angle: f64) -> ThingSource {
-    ThingSource { kind: kind.into(), x, y, angle }
+    ThingSource::new(kind, x, y, angle)
 }
 
 fn level(source: &MapSource, splitter: SplitterKind) -> Level {

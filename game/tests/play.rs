@@ -51,7 +51,7 @@ fn scripted_walk() -> Vec<TickInput> {
 
 fn write_demo(dir: &Path, map: &Path, inputs: Vec<TickInput>) -> PathBuf {
     let path = dir.join("walk.sldemo");
-    Demo { map: map.display().to_string(), inputs }.save(&path).expect("demo written");
+    Demo { inputs, ..Demo::new(map.display().to_string()) }.save(&path).expect("demo written");
     path
 }
 

@@ -1,5 +1,6 @@
 //! The compiled map file: a magic header, a format version, a CRC-32 of the
-//! payload, then the validated map and its BSP in postcard (a compact serde binary format).
+//! payload, then the map (as its RON source text) and its BSP in postcard (a
+//! compact serde binary format).
 //!
 //! Loading never rebuilds the tree, but it checks the checksum, re-validates
 //! the map and holds the tree to the compiler's invariants, so a corrupt or
@@ -11,21 +12,22 @@ use super::check::check_invariants;
 use super::{Bsp, BuildStats, CompiledMap};
 use crate::grid::Grid;
 use crate::map::validate::validate;
-use crate::map::Map;
 
 /// First bytes of every compiled map.
 pub const MAGIC: &[u8] = b"SIGHTLINE-BSP\n";
 /// Bumped whenever the layout below changes; older files are refused.
 /// (6: a grid door's panel faces are `door` lines; a version 5 file of a grid
 /// map would otherwise fail as "its grid and its map disagree". 7: sector
-/// tags, line triggers and the map's sky texture.)
-pub const VERSION: u8 = 7;
+/// tags, line triggers and the map's sky texture. 8: the map as RON text,
+/// for map format 2's specials.)
+pub const VERSION: u8 = 8;
 
-/// What the file holds. The map goes in its validated form: postcard is not
-/// self-describing, so it cannot carry the source form's skipped defaults.
+/// What the file holds. The map goes as its RON source: loading validates it
+/// again anyway, and postcard, not being self-describing, cannot carry the
+/// defaults the specials leave out when written.
 #[derive(Serialize, Deserialize)]
 struct Contents {
-    map: Map,
+    map: String,
     bsp: Bsp,
     stats: BuildStats,
     grid: Option<Grid>,
@@ -37,7 +39,7 @@ pub fn is_compiled(bytes: &[u8]) -> bool {
 
 pub fn to_bytes(compiled: &CompiledMap) -> Vec<u8> {
     let contents = Contents {
-        map: compiled.map.clone(),
+        map: compiled.map.to_source().to_ron(),
         bsp: compiled.bsp.clone(),
         stats: compiled.stats.clone(),
         grid: compiled.grid.clone(),
@@ -63,8 +65,10 @@ pub fn from_bytes(bytes: &[u8]) -> Result<CompiledMap, String> {
         return Err("corrupt or truncated: checksum mismatch".into());
     }
     let contents: Contents = postcard::from_bytes(payload).map_err(|e| format!("corrupt or truncated: {e}"))?;
-    // Validate again, as if from source: the bytes may have been tampered with.
-    let map = validate(&contents.map.to_source()).map_err(|problems| {
+    // Validate again, from source: the bytes may have been tampered with.
+    let source = crate::map::load::parse_source(contents.map.as_bytes(), "the compiled map")
+        .map_err(|e| format!("its map does not parse: {e}"))?;
+    let map = validate(&source).map_err(|problems| {
         let first = problems.first().map(|p| p.to_string()).unwrap_or_default();
         format!("its map is invalid: {first}")
     })?;

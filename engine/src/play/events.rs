@@ -4,6 +4,8 @@
 
 use glam::DVec2;
 
+use super::world::SpecialLine;
+
 /// Where a sound comes from.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Origin {
@@ -22,6 +24,9 @@ pub enum Event {
     Sound { sound: &'static str, origin: Origin },
     /// A line of text for the player ("Picked up a blue keycard.").
     Message(String),
+    /// A line's special went off (`started`: it set something going, and a
+    /// switch flips), or was tried and did nothing.
+    Special { line: SpecialLine, started: bool },
 }
 
 /// Shorthand for a sound event.

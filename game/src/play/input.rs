@@ -35,6 +35,7 @@ enum Move {
     TurnRight = 32,
     Run = 64,
     Use = 128,
+    Fire = 256,
 }
 
 fn binding(key: KeyCode) -> Option<Move> {
@@ -47,6 +48,7 @@ fn binding(key: KeyCode) -> Option<Move> {
         KeyCode::ArrowRight => Move::TurnRight,
         KeyCode::ShiftLeft | KeyCode::ShiftRight => Move::Run,
         KeyCode::KeyE | KeyCode::Space => Move::Use,
+        KeyCode::ControlLeft | KeyCode::ControlRight | KeyCode::KeyF => Move::Fire,
         _ => return None,
     })
 }
@@ -72,10 +74,10 @@ pub fn window_action(key: KeyCode, down: bool, repeat: bool) -> Option<Action> {
 #[derive(Default)]
 pub struct Controls {
     /// Movement keys down now.
-    held: u8,
+    held: u16,
     /// Movement keys pressed since the last tick, so a tap shorter than a
     /// tick (28.6 ms) still moves or uses once.
-    pressed: u8,
+    pressed: u16,
     /// Mouse counts to the right since the last tick.
     mouse_dx: f64,
     /// Degrees per mouse count.
@@ -91,16 +93,25 @@ impl Controls {
     /// press (auto-repeat does not repeat actions).
     pub fn key(&mut self, key: KeyCode, down: bool, repeat: bool) -> Option<Action> {
         if let Some(m) = binding(key) {
-            let bit = m as u8;
-            if down {
-                self.held |= bit;
-                self.pressed |= bit;
-            } else {
-                self.held &= !bit;
-            }
+            self.set(m, down);
             return None;
         }
         window_action(key, down, repeat)
+    }
+
+    fn set(&mut self, m: Move, down: bool) {
+        let bit = m as u16;
+        if down {
+            self.held |= bit;
+            self.pressed |= bit;
+        } else {
+            self.held &= !bit;
+        }
+    }
+
+    /// The left mouse button (fire) went down or up, while the cursor is grabbed.
+    pub fn mouse_button(&mut self, down: bool) {
+        self.set(Move::Fire, down);
     }
 
     /// Mouse motion while the cursor is grabbed.
@@ -118,7 +129,7 @@ impl Controls {
 
     /// The input for the next tick; clears what was latched for this one.
     pub fn tick_input(&mut self) -> TickInput {
-        let on = |m: Move| (self.held | self.pressed) & m as u8 != 0;
+        let on = |m: Move| (self.held | self.pressed) & m as u16 != 0;
         let axis = |plus: Move, minus: Move| i8::from(on(plus)) - i8::from(on(minus));
         let run = on(Move::Run);
         let keys_turn = f32::from(axis(Move::TurnLeft, Move::TurnRight)) * if run { TURN_RUN } else { TURN_WALK };
@@ -130,7 +141,8 @@ impl Controls {
             strafe: axis(Move::StrafeRight, Move::StrafeLeft),
             turn: keys_turn + mouse_turn,
             run,
-            use_door: on(Move::Use),
+            use_line: on(Move::Use),
+            fire: on(Move::Fire),
         };
         self.pressed = 0;
         self.mouse_dx = 0.0;
@@ -160,8 +172,8 @@ mod tests {
         // A tap between two ticks still counts once.
         c.key(KeyCode::Space, true, false);
         c.key(KeyCode::Space, false, false);
-        assert!(c.tick_input().use_door);
-        assert!(!c.tick_input().use_door);
+        assert!(c.tick_input().use_line);
+        assert!(!c.tick_input().use_line);
 
         c.key(KeyCode::ArrowLeft, true, false);
         c.key(KeyCode::ShiftLeft, false, false);

@@ -111,7 +111,7 @@ fn check_display() -> Result<()> {
 fn save_recording(path: &Path, map: &Path, inputs: Vec<sightline::play::TickInput>) -> Result<()> {
     let ticks = inputs.len();
     // The map as given, so a demo recorded in the repository replays there.
-    let demo = Demo { map: map.display().to_string(), inputs };
+    let demo = Demo { inputs, ..Demo::new(map.display().to_string()) };
     demo.save(path)?;
     println!("recorded {ticks} ticks to {}", path.display());
     Ok(())

@@ -45,6 +45,7 @@ pub fn activate(
         }
     }
     let started = perform(world, ctx, line, &special, from_front);
+    ctx.events.push(crate::play::events::Event::Special { line, started });
     if started && !special.repeat {
         world.spend(ctx.level, line);
     }
