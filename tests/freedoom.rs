@@ -350,3 +350,61 @@ fn map10_poses_and_play_on_two_sided_lines() {
         }
     }
 }
+
+/// `sightline play freedoom1.wad`, as the window plays it: E1M1 straight
+/// from the WAD (no import step, its art read from the WAD), the exit
+/// switch used (the player put in front of it), the intermission with
+/// E1M1's tallies, a press, and E1M2 from the WAD; then E1M2's exit leads
+/// to E1M3, and E1M3's secret exit to E1M9, which returns to E1M4.
+#[test]
+#[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
+fn freedoom1_plays_from_the_wad_through_exits_and_intermissions() {
+    use sightline::campaign::MapRef;
+    use sightline::play::playthrough::{Phase, Playthrough, INTERMISSION_MIN};
+    use sightline::play::{Exit, GameOptions};
+
+    let wad = wad_path("freedoom1.wad");
+    let mut play = Playthrough::of(&MapRef::parse(wad.to_str().unwrap(), None), GameOptions::default())
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(play.map.short_name(), "E1M1");
+    let press = TickInput { use_line: true, ..Default::default() };
+    for (exit, next) in [(Exit::Normal, "E1M2"), (Exit::Normal, "E1M3"), (Exit::Secret, "E1M9"), (Exit::Normal, "E1M4")]
+    {
+        let map = play.game.level().map.clone();
+        let wanted = if exit == Exit::Secret { Action::SecretExit } else { Action::Exit };
+        // An exit switch, used from in front; or an exit walk line, crossed.
+        let (i, line) = map
+            .lines
+            .iter()
+            .enumerate()
+            .find(|(_, l)| l.special.as_ref().is_some_and(|s| s.action == wanted && s.on == Activation::Use))
+            .unwrap_or_else(|| panic!("{}: no {wanted:?} switch", play.map.short_name()));
+        let (a, b) = map.line_points(line);
+        let d = (b - a).normalize();
+        let normal = DVec2::new(d.y, -d.x);
+        let pos = [20.0, 8.0, 2.0]
+            .into_iter()
+            .map(|k| (a + b) / 2.0 + normal * k)
+            .find(|&p| map.sector_strictly_containing(p) == Some(line.front.sector))
+            .unwrap_or_else(|| panic!("no room in front of line {i}"));
+        play.game.teleport(pos, (-normal).y.atan2((-normal).x).to_degrees()).unwrap();
+        play.tick(&press).unwrap();
+        let Phase::Intermission { exit: ended, next: Some(ref to), ref stats, .. } = play.phase else {
+            panic!("{}: using line {i} did not end the level: {:?}", play.map.short_name(), play.phase)
+        };
+        assert_eq!((ended, to.short_name().as_str()), (exit, next));
+        assert!(stats.kills.1 > 0 && stats.items.1 > 0, "no tallies: {stats:?}");
+        // Held or pressed too soon, the intermission stays; then a press goes on.
+        for _ in 0..INTERMISSION_MIN / 2 - 1 {
+            play.tick(&press).unwrap();
+            play.tick(&TickInput::default()).unwrap();
+        }
+        assert!(matches!(play.phase, Phase::Intermission { .. }));
+        while matches!(play.phase, Phase::Intermission { ticks, .. } if ticks + 1 < INTERMISSION_MIN) {
+            play.tick(&TickInput::default()).unwrap();
+        }
+        play.tick(&press).unwrap();
+        assert_eq!((play.phase.clone(), play.map.short_name()), (Phase::Playing, next.to_string()));
+        assert_eq!(play.game.player().health, 100);
+    }
+}

@@ -120,6 +120,14 @@ impl Level {
         Level { compiled, materials, thing_sectors, thing_shown, time: 0, sector_lines, sector_centres, grid }
     }
 
+    /// Shows the things a single-player game at `skill` (1 to 5) has, by
+    /// their skill and mode flags, and hides the rest.
+    pub fn show_skill(&mut self, skill: u8) {
+        for (shown, t) in self.thing_shown.iter_mut().zip(&self.compiled.map.things) {
+            *shown = t.in_single_player(skill);
+        }
+    }
+
     /// The grid and its ray-casting data, for a grid map.
     pub fn grid(&self) -> Option<(&Grid, &GridLevel)> {
         self.compiled.grid.as_ref().zip(self.grid.as_ref())

@@ -16,6 +16,7 @@
 //! collision, doors) from per-tick inputs, which demos record and replay.
 
 pub mod bsp;
+pub mod campaign;
 pub mod framebuffer;
 pub mod geom;
 pub mod grid;

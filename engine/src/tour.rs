@@ -6,6 +6,7 @@ use rand::{RngExt, SeedableRng};
 
 use crate::bsp::CompiledMap;
 use crate::geom::Aabb;
+use crate::level::Level;
 use crate::render::View;
 
 /// Poses no closer than this to a wall, so a tour shows rooms, not wallpaper.
@@ -43,14 +44,17 @@ pub fn tour(compiled: &CompiledMap, extra: usize, seed: u64) -> Vec<View> {
 }
 
 /// The benchmark tour of `sightline bench tour`: the player start as it
-/// faces, then every thing's position (things stand where a player would
-/// meet them) looking eight ways (0, 45, ..., 315 degrees), eye at the usual
-/// height above the floor there. Things outside the map are skipped.
-pub fn things_tour(compiled: &CompiledMap) -> Vec<View> {
+/// faces, then the player start's and every drawn thing's position (things
+/// stand where a player would meet them; only those `level` shows) looking
+/// eight ways (0, 45, ..., 315 degrees), eye at the usual height above the
+/// floor there. Things outside the map are skipped.
+pub fn things_tour(level: &Level) -> Vec<View> {
+    let compiled = &level.compiled;
     let map = &compiled.map;
     let mut views = Vec::with_capacity(1 + 8 * map.things.len());
     views.extend(View::at_start(compiled));
-    for thing in &map.things {
+    let drawn = |i: usize| i == map.player_start || (level.thing_shown[i] && level.materials.sprites[i].is_some());
+    for thing in map.things.iter().enumerate().filter(|&(i, _)| drawn(i)).map(|(_, t)| t) {
         for k in 0..8 {
             let angle = 45.0 * f64::from(k);
             views.extend(View::at_pose(compiled, thing.pos.x, thing.pos.y, angle, None));
@@ -68,9 +72,10 @@ mod tests {
         let text = include_str!("../../maps/pillars.ron");
         let map = crate::map::parse_map(text, "pillars.ron").expect("shipped map");
         let compiled = crate::bsp::build(&map, &Default::default()).expect("compiles");
-        let views = things_tour(&compiled);
+        let level = Level::with_builtin_textures(compiled).expect("textures");
+        let views = things_tour(&level);
         assert_eq!(views.len(), 1 + 8 * map.things.len());
-        assert_eq!(views[0], View::at_start(&compiled).expect("start"));
+        assert_eq!(views[0], View::at_start(&level).expect("start"));
         assert_eq!(views[1 + 8 + 3].angle, 135.0);
     }
 }

@@ -4,7 +4,8 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context, Result};
 use sightline::bsp::BuildOptions;
-use sightline::level::{check_not_input, open_level, write_atomic};
+use sightline::campaign::{open, MapRef};
+use sightline::level::{check_not_input, write_atomic};
 use sightline::render::{render_frame, Frame, RenderOptions, Renderer, View};
 use sightline::Framebuffer;
 
@@ -14,9 +15,13 @@ use crate::cli::CaptureArgs;
 pub const DEFAULT_MAP: &str = "maps/pillars.ron";
 
 pub fn run(args: &CaptureArgs) -> Result<()> {
-    check_not_input(&args.map, &args.output)?;
-    let level = open_level(&args.map, &BuildOptions::default())?;
-    let map_name = args.map.display();
+    let map = MapRef::parse(&args.map, args.iwad.as_deref());
+    if let MapRef::File(path) = &map {
+        check_not_input(path, &args.output)?;
+    }
+    let mut level = open(&map, &BuildOptions::default())?.level;
+    level.show_skill(sightline::play::DEFAULT_SKILL);
+    let map_name = &args.map;
     let view = match args.pose {
         Some(p) => View::at_pose(&level, p.x, p.y, p.angle, p.z),
         None => View::at_start(&level),

@@ -54,6 +54,10 @@ pub struct ImportArgs {
     /// compiler would refuse.
     #[arg(long)]
     pub check: bool,
+    /// Print one JSON object per map (counts, and what could not be
+    /// translated: `unsupported_specials`, `unknown_things`) on its own line.
+    #[arg(long)]
+    pub json: bool,
 }
 
 /// `sightline bench [MAP...] --out DIR`: the study suite; `sightline bench
@@ -76,8 +80,11 @@ pub enum BenchCommand {
 
 #[derive(Args)]
 pub struct BenchTourArgs {
-    /// A RON map or a compiled map.
-    pub map: PathBuf,
+    /// A RON map, a compiled map or `WAD:MAP`.
+    pub map: String,
+    /// The IWAD under a PWAD map.
+    #[arg(long)]
+    pub iwad: Option<PathBuf>,
     /// Frame size, WxH.
     #[arg(long, default_value = "320x200", value_parser = parse_size)]
     pub size: (usize, usize),
@@ -119,8 +126,11 @@ pub struct CompileArgs {
 
 #[derive(Args)]
 pub struct CaptureArgs {
-    /// A RON map or a compiled map.
-    pub map: PathBuf,
+    /// A RON map, a compiled map, or `WAD:MAP` (a map read from a WAD).
+    pub map: String,
+    /// The IWAD under a PWAD map (`--iwad freedoom2.wad mymap.wad:MAP01`).
+    #[arg(long)]
+    pub iwad: Option<PathBuf>,
     /// X,Y,ANGLE[,Z]: where the eye is and where it looks (degrees,
     /// counter-clockwise from east). Default: the player start.
     #[arg(long, value_parser = parse_pose, allow_hyphen_values = true)]
@@ -152,8 +162,18 @@ pub struct CaptureArgs {
 
 #[derive(Args)]
 pub struct PlayArgs {
-    /// A RON map or a compiled map. Default: maps/pillars.ron.
-    pub map: Option<PathBuf>,
+    /// A RON map, a compiled map, a campaign file, a WAD (its first map,
+    /// then its episode) or `WAD:MAP`. Default: maps/pillars.ron.
+    pub map: Option<String>,
+    /// The IWAD under a PWAD (`--iwad freedoom2.wad mymap.wad:MAP01`).
+    #[arg(long)]
+    pub iwad: Option<PathBuf>,
+    /// Skill level 1 to 5 (Doom's: 3 is Hurt Me Plenty); things appear by it.
+    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(1..=5))]
+    pub skill: u8,
+    /// The game's random seed (light flicker, lifts' first direction).
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
     /// Internal frame size, WxH; the window scales it to fit.
     #[arg(long, default_value = "640x400", value_parser = parse_size)]
     pub size: (usize, usize),
@@ -197,9 +217,12 @@ pub struct PlayArgs {
 pub struct ReplayArgs {
     /// The demo file to replay.
     pub demo: PathBuf,
-    /// Replay on this map instead of the one the demo names.
+    /// Replay on this map (a path or `WAD:MAP`) instead of the one the demo names.
     #[arg(long)]
-    pub map: Option<PathBuf>,
+    pub map: Option<String>,
+    /// The IWAD under a PWAD given with --map.
+    #[arg(long)]
+    pub iwad: Option<PathBuf>,
     /// Write a PNG of every Nth tick (tick 0, N, 2N, ... and the last) into
     /// the directory given with -o.
     #[arg(long, requires = "output", value_parser = clap::value_parser!(u64).range(1..))]

@@ -32,7 +32,9 @@ pub fn run(args: &ImportArgs) -> Result<()> {
         }
     }
     let files = write_art(&wad, &art, &converted, &args.output)?;
-    println!("{}: {files} PNG files in textures/, flats/ and sprites/", args.output.display());
+    if !args.json {
+        println!("{}: {files} PNG files in textures/, flats/ and sprites/", args.output.display());
+    }
     if !failed.is_empty() {
         anyhow::bail!("{} of {} maps failed to import: {}", failed.len(), names.len(), failed.join(" "));
     }
@@ -50,26 +52,76 @@ fn import_one(args: &ImportArgs, wad: &Wad, art: &Art, name: &str) -> Result<Con
     if args.check {
         build(&map, &BuildOptions::default()).with_context(|| format!("{label}: imported, but does not compile"))?;
     }
+    let r = &c.report;
+    let listed = |what: &str, items: &[String]| items.iter().map(|i| format!("// {what}: {i}\n")).collect::<String>();
     let header = format!(
-        "// {} from {}, imported by `sightline import`.\n{}",
+        "// {} from {}, imported by `sightline import`.\n{}{}{}{}{}",
         name,
         args.wad.file_name().map_or(wad.path.clone(), |f| f.to_string_lossy().into_owned()),
-        c.repairs.iter().map(|r| format!("// repaired: {r}\n")).collect::<String>()
+        listed("repaired", &c.repairs),
+        listed("not translated", &r.unsupported_specials),
+        listed("unknown thing", &r.unknown_things),
+        listed("ignored", &r.ignored),
+        listed("names nothing", &r.dangling),
     );
     std::fs::write(&path, header + &c.source.to_ron() + "\n").with_context(|| format!("{label}: cannot write"))?;
+    if args.json {
+        println!("{}", report_json(name, &c));
+        return Ok(c);
+    }
     println!(
-        "{label}: {} vertices, {} lines, {} sectors, {} things, {} textures, {} flats, {} sprites{}",
+        "{label}: {} vertices, {} lines, {} trigger lines, {} sectors, {} things, {} specials, {} textures, {} flats, {} sprites{}",
         c.source.vertices.len(),
         c.source.lines.len(),
+        c.source.trigger_lines.len(),
         c.source.sectors.len(),
         c.source.things.len(),
+        r.specials + r.sector_specials,
         c.walls.len(),
         c.flats.len(),
         c.sprites.len(),
         match c.repairs.len() {
             0 => String::new(),
-            n => format!(", {n} repairs (listed at the top of the file)"),
+            n => format!(", {n} repairs"),
         }
     );
+    let untranslated = r.unsupported_specials.len() + r.unknown_things.len() + r.dangling.len() + r.ignored.len();
+    if untranslated > 0 {
+        println!(
+            "  {} specials not translated, {} unknown things, {} specials that name nothing, {} ignored (listed at the top of the file)",
+            r.unsupported_specials.len(),
+            r.unknown_things.len(),
+            r.dangling.len(),
+            r.ignored.len()
+        );
+    }
     Ok(c)
+}
+
+/// One map's import as one JSON object: its size, what was translated, and
+/// what was not (counts, then the lists).
+fn report_json(name: &str, c: &Converted) -> serde_json::Value {
+    let r = &c.report;
+    serde_json::json!({
+        "map": name,
+        "vertices": c.source.vertices.len(),
+        "lines": c.source.lines.len(),
+        "trigger_lines": c.source.trigger_lines.len(),
+        "sectors": c.source.sectors.len(),
+        "things": c.source.things.len(),
+        "line_specials": r.specials,
+        "sector_specials": r.sector_specials,
+        "unsupported_specials": r.unsupported_specials.len(),
+        "unknown_things": r.unknown_things.len(),
+        "ignored_specials": r.ignored.len(),
+        "dangling_specials": r.dangling.len(),
+        "repairs": c.repairs.len(),
+        "lists": {
+            "unsupported_specials": r.unsupported_specials,
+            "unknown_things": r.unknown_things,
+            "ignored_specials": r.ignored,
+            "dangling_specials": r.dangling,
+            "repairs": c.repairs,
+        },
+    })
 }

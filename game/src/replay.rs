@@ -2,29 +2,32 @@
 //! fast as it runs. The same demo gives the same positions and the same
 //! frames every time: the simulation is deterministic and frames are
 //! rendered from the state after whole ticks (`Game::view(1.0)`), never from
-//! wall time.
+//! wall time. A demo that exits a level goes on through the intermission
+//! into the next map, as the window would.
 
 use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context, Result};
-use sightline::bsp::BuildOptions;
-use sightline::level::{open_level, write_atomic, Level};
+use sightline::campaign::MapRef;
+use sightline::level::{write_atomic, Level};
 use sightline::play::demo::Demo;
-use sightline::play::Game;
+use sightline::play::playthrough::Playthrough;
+use sightline::play::GameOptions;
 use sightline::render::{render_frame, Frame, RenderOptions, Renderer};
 use sightline::Framebuffer;
 
 use crate::cli::ReplayArgs;
+use crate::play::hud;
 
 pub fn run(args: &ReplayArgs) -> Result<()> {
     let demo = Demo::load(&args.demo)?;
     let map = match &args.map {
-        Some(map) => map.clone(),
-        None => demo_map_path(&demo.map, &args.demo),
+        Some(map) => MapRef::parse(map, args.iwad.as_deref()),
+        None => demo_map(&demo.map, &args.demo),
     };
-    let level = open_level(&map, &BuildOptions::default())?;
-    let renderer = choose_renderer(args.renderer, &level, &map)?;
-    let mut game = Game::new(level).with_context(|| format!("{}: cannot start the game", map.display()))?;
+    let options = GameOptions { skill: demo.skill, seed: demo.seed };
+    let mut play = Playthrough::of(&map, options).with_context(|| format!("{}: cannot start the game", map.label()))?;
+    let renderer = choose_renderer(args.renderer, play.game.level(), &map.label())?;
     let options = RenderOptions { renderer, threads: args.threads, ..Default::default() };
     let mut capture = match (args.capture_every, &args.output) {
         (Some(every), Some(dir)) => Some(Capture::new(every, dir, args.size, options)?),
@@ -32,45 +35,51 @@ pub fn run(args: &ReplayArgs) -> Result<()> {
     };
     let last = demo.inputs.len() as u64;
     if let Some(c) = &mut capture {
-        c.frame(&game, 0)?;
+        c.frame(&play, 0)?;
     }
     for (i, input) in demo.inputs.iter().enumerate() {
-        game.tick(input);
+        play.tick(input)?;
         let tick = i as u64 + 1;
         if let Some(c) = &mut capture {
             if tick.is_multiple_of(c.every) || tick == last {
-                c.frame(&game, tick)?;
+                c.frame(&play, tick)?;
             }
         }
     }
     if let Some(c) = &capture {
         println!("wrote {} frames to {}", c.written, c.dir.display());
     }
-    println!("{}", position_line(&game));
+    println!("{}", position_line(&play));
     Ok(())
 }
 
 /// Where the game stands, in full precision (shortest round-trip form), so
 /// two runs can be compared as text.
-pub fn position_line(game: &Game) -> String {
-    let p = game.player();
-    format!("tick {}: x {:?} y {:?} z {:?} angle {:?}", game.ticks(), p.pos.x, p.pos.y, p.z, p.angle)
+pub fn position_line(play: &Playthrough) -> String {
+    let p = play.game.player();
+    format!("tick {}: x {:?} y {:?} z {:?} angle {:?}", play.ticks, p.pos.x, p.pos.y, p.z, p.angle)
 }
 
 /// The renderer asked for, else the level's default; an error when it
 /// cannot draw the level (the ray-caster on a sector map).
-pub fn choose_renderer(asked: Option<Renderer>, level: &Level, map: &Path) -> Result<Renderer> {
+pub fn choose_renderer(asked: Option<Renderer>, level: &Level, map: &str) -> Result<Renderer> {
     let renderer = asked.unwrap_or_else(|| Renderer::default_for(level));
     if !renderer.supports(level) {
-        bail!("{}: the {} renderer draws grid maps only; this is a sector map", map.display(), renderer.name());
+        bail!("{map}: the {} renderer draws grid maps only; this is a sector map", renderer.name());
     }
     Ok(renderer)
 }
 
-/// The map a demo names, as given when that path exists from here, else
-/// beside the demo file.
-pub fn demo_map_path(name: &str, demo: &Path) -> PathBuf {
-    let given = PathBuf::from(name);
+/// The map a demo names: a WAD map as written; a file as given when that
+/// path exists from here, else beside the demo file.
+pub fn demo_map(name: &str, demo: &Path) -> MapRef {
+    match MapRef::from_label(name) {
+        MapRef::File(given) => MapRef::File(beside(given, demo)),
+        MapRef::Wad { wads, map } => MapRef::Wad { wads: wads.into_iter().map(|w| beside(w, demo)).collect(), map },
+    }
+}
+
+fn beside(given: PathBuf, demo: &Path) -> PathBuf {
     if given.exists() || given.is_absolute() {
         return given;
     }
@@ -104,9 +113,12 @@ impl Capture {
         })
     }
 
-    /// Renders the state after `tick` ticks to `tick-NNNNNN.png`.
-    fn frame(&mut self, game: &Game, tick: u64) -> Result<()> {
+    /// Renders the state after `tick` ticks to `tick-NNNNNN.png` (with the
+    /// intermission over it, between levels).
+    fn frame(&mut self, play: &Playthrough, tick: u64) -> Result<()> {
+        let game = &play.game;
         render_frame(game.level(), &game.view(1.0), &self.options, &mut self.frame, &mut self.fb);
+        hud::draw_phase(&mut self.fb, &play.phase);
         write_atomic(&self.dir.join(format!("tick-{tick:06}.png")), &self.fb.to_png())?;
         self.written += 1;
         Ok(())

@@ -104,9 +104,20 @@ impl ThingType {
     }
 
     /// The sprite lump stem of the first frame (`BKEYA`), if it is drawn.
+    /// Markers are not: starts (a player appears there, not a thing),
+    /// teleport destinations, boss targets, an editor's camera.
     pub fn first_frame(&self) -> Option<String> {
+        let marker = matches!(
+            self.category,
+            Category::PlayerStart(_)
+                | Category::DeathmatchStart
+                | Category::TeleportDestination
+                | Category::BossTarget
+                | Category::EditorOnly
+        );
         let frame = self.frames.chars().next()?;
-        (!self.sprite.is_empty() && !self.has(ThingFlag::NoSector)).then(|| format!("{}{frame}", self.sprite))
+        let drawn = !marker && !self.sprite.is_empty() && !self.has(ThingFlag::NoSector);
+        drawn.then(|| format!("{}{frame}", self.sprite))
     }
 
     /// The key it gives, if it is a key.

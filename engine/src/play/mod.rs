@@ -31,6 +31,7 @@ pub mod events;
 pub mod input;
 pub mod pickups;
 pub mod player;
+pub mod playthrough;
 pub mod random;
 pub mod trace;
 pub mod world;
@@ -50,11 +51,12 @@ use player::{HEIGHT, RADIUS};
 use random::GameRng;
 use trace::{Lines, Scratch};
 use world::specials::{activate, Activator};
-use world::{Bodies, Ctx, Exit, SpecialLine, World};
+use world::{Bodies, Ctx, SpecialLine, World};
 
 pub use demo::{Demo, DemoError};
 pub use input::TickInput;
 pub use player::Player;
+pub use world::Exit;
 
 /// Simulation ticks per second (Doom's `TICRATE`).
 pub const TICRATE: u32 = 35;
@@ -149,14 +151,13 @@ impl Game {
         }
         let types = ThingTypes::doom();
         let mut totals = (0, 0);
-        for (i, t) in map.things.iter().enumerate() {
-            let shown = t.in_single_player(options.skill);
-            level.thing_shown[i] = shown;
-            if let Some(ty) = types.get(&t.kind).filter(|_| shown && map.version >= 2) {
+        for t in map.things.iter().filter(|t| t.in_single_player(options.skill) && map.version >= 2) {
+            if let Some(ty) = types.get(&t.kind) {
                 totals.0 += u32::from(ty.has(ThingFlag::CountKill));
                 totals.1 += u32::from(ty.has(ThingFlag::CountItem));
             }
         }
+        level.show_skill(options.skill);
         level.time = 0;
         let blockmap = Blockmap::new(&level.compiled.map);
         let triggers = Blockmap::of_trigger_lines(&level.compiled.map);

@@ -9,7 +9,8 @@ use std::time::{Duration, Instant};
 
 use anyhow::{bail, Result};
 use sightline::bsp::BuildOptions;
-use sightline::level::open_level;
+use sightline::campaign::{open, MapRef};
+use sightline::play::DEFAULT_SKILL;
 use sightline::render::{render_frame, Frame, RenderOptions, View};
 use sightline::tour::things_tour;
 use sightline::Framebuffer;
@@ -23,11 +24,14 @@ const MIN_PASSES: usize = 3;
 const MAX_FRAMES: usize = 200_000;
 
 pub fn run(args: &BenchTourArgs) -> Result<()> {
-    let level = open_level(&args.map, &BuildOptions::default())?;
+    let map = MapRef::parse(&args.map, args.iwad.as_deref());
+    let mut level = open(&map, &BuildOptions::default())?.level;
+    // The things a game at the middle skill shows, as the player would meet them.
+    level.show_skill(DEFAULT_SKILL);
     let renderer = crate::replay::choose_renderer(args.renderer, &level, &args.map)?;
     let views = things_tour(&level);
     if views.is_empty() {
-        bail!("{}: no pose of the tour lies inside a sector", args.map.display());
+        bail!("{}: no pose of the tour lies inside a sector", args.map);
     }
     let (width, height) = args.size;
     let options = RenderOptions { renderer, threads: args.threads, ..Default::default() };
@@ -52,7 +56,7 @@ pub fn run(args: &BenchTourArgs) -> Result<()> {
 
     let summary = Summary::of(&mut times);
     let size = format!("{width}x{height}");
-    println!("map       {} ({} poses x {passes} passes)", args.map.display(), views.len());
+    println!("map       {} ({} poses x {passes} passes)", args.map, views.len());
     println!("renderer  {} at {size}, {} thread(s)", renderer.name(), args.threads);
     println!("frames    {}", summary.frames);
     println!("median    {:.4} ms ({:.0} fps)", summary.median_ms, summary.fps_median());
@@ -60,7 +64,7 @@ pub fn run(args: &BenchTourArgs) -> Result<()> {
     println!("mean      {:.4} ms", summary.mean_ms);
     if args.json {
         let json = serde_json::json!({
-            "map": args.map.display().to_string(),
+            "map": args.map.to_string(),
             "size": size,
             "renderer": renderer.name(),
             "threads": args.threads,

@@ -11,6 +11,7 @@ use std::time::{Duration, Instant};
 
 use anyhow::Result;
 use sightline::level::Level;
+use sightline::play::playthrough::Playthrough;
 use sightline::render::{render_frame, Frame, RenderOptions, Renderer};
 use sightline::Framebuffer;
 use winit::application::ApplicationHandler;
@@ -42,6 +43,8 @@ pub struct App {
     automap: Automap,
     pub timings: Timings,
     grabbed: bool,
+    /// The window's title now (it names the map, which changes between levels).
+    title: String,
     last_frame: Option<Instant>,
     frames: u64,
     /// What stopped the loop, if something went wrong.
@@ -60,11 +63,11 @@ pub struct AppOptions {
 impl App {
     pub fn new(session: Session, options: AppOptions) -> App {
         let (w, h) = options.screen.frame;
-        let level = session.game.level();
+        let level = session.play.game.level();
         let renderers = renderers_for(level);
         let automap = Automap::new(&level.map);
         App {
-            screen_options: options.screen,
+            screen_options: options.screen.clone(),
             screen: None,
             session,
             frame_limit: options.frame_limit,
@@ -77,6 +80,7 @@ impl App {
             automap,
             timings: Timings::default(),
             grabbed: false,
+            title: options.screen.title.clone(),
             last_frame: None,
             frames: 0,
             error: None,
@@ -98,9 +102,17 @@ impl App {
         self.last_frame = Some(now);
         let (ticks, alpha) = self.clock.advance(interval);
         self.session.run(ticks);
+        if let Some(e) = self.session.error.take() {
+            return Err(e);
+        }
+        for m in self.session.take_messages() {
+            self.hud.message(m);
+        }
+        self.follow_map();
         let view = self.session.view(alpha);
 
-        let level = self.session.game.level();
+        let play = &self.session.play;
+        let level = play.game.level();
         let start = Instant::now();
         render_frame(level, &view, &self.options, &mut self.frame, &mut self.fb);
         let render = start.elapsed();
@@ -109,7 +121,10 @@ impl App {
             self.automap.draw(&level.map, (view.pos.x, view.pos.y), view.angle, &mut self.fb);
         }
         self.hud.frame(interval, render);
-        self.hud.draw(&mut self.fb, &level.map.name, self.options.renderer.name());
+        let name = format!("{} ({})", play.map.short_name(), level.map.name);
+        self.hud.draw(&mut self.fb, &name, self.options.renderer.name());
+        self.hud.draw_status(&mut self.fb, play.game.player());
+        super::hud::draw_phase(&mut self.fb, &play.phase);
 
         let Some(screen) = &mut self.screen else { return Ok(()) };
         let start = Instant::now();
@@ -149,11 +164,35 @@ impl App {
         Ok(())
     }
 
+    /// A new map (the next level, or a restart): the title names it, the
+    /// automap starts empty, and the renderer must be one that draws it.
+    fn follow_map(&mut self) {
+        let title = title(&self.session.play);
+        if title == self.title {
+            return;
+        }
+        let level = self.session.play.game.level();
+        self.automap = Automap::new(&level.map);
+        self.renderers = renderers_for(level);
+        if !self.options.renderer.supports(level) {
+            self.options.renderer = Renderer::default_for(level);
+        }
+        if let Some(screen) = &self.screen {
+            screen.window.set_title(&title);
+        }
+        self.title = title;
+    }
+
     fn grab(&mut self, grab: bool) {
         if let Some(screen) = &self.screen {
             self.grabbed = screen.grab_cursor(grab);
         }
     }
+}
+
+/// The window's title: the map played and where it comes from.
+pub fn title(play: &Playthrough) -> String {
+    format!("Sightline: {} ({})", play.map.short_name(), play.game.level().map.name)
 }
 
 /// The renderers that can draw `level`: all of them, but the ray-caster
@@ -191,9 +230,15 @@ impl ApplicationHandler for App {
                 self.grab(false);
                 Ok(())
             }
-            WindowEvent::MouseInput { state: ElementState::Pressed, button: MouseButton::Left, .. } => {
+            WindowEvent::MouseInput { state, button: MouseButton::Left, .. } => {
+                let down = state == ElementState::Pressed;
                 if !self.grabbed {
-                    self.grab(true);
+                    // The click that grabs the mouse does not fire.
+                    if down {
+                        self.grab(true);
+                    }
+                } else if let Some(controls) = self.session.controls() {
+                    controls.mouse_button(down);
                 }
                 Ok(())
             }

@@ -15,7 +15,7 @@
 mod app;
 mod automap;
 mod clock;
-mod hud;
+pub(crate) mod hud;
 mod input;
 mod screen;
 mod screenshot;
@@ -25,10 +25,10 @@ mod timings;
 use std::path::Path;
 
 use anyhow::{anyhow, bail, Context, Result};
-use sightline::bsp::BuildOptions;
-use sightline::level::open_level;
+use sightline::campaign::MapRef;
 use sightline::play::demo::Demo;
-use sightline::play::Game;
+use sightline::play::playthrough::Playthrough;
+use sightline::play::GameOptions;
 use winit::event_loop::{ControlFlow, EventLoop};
 
 use crate::cli::PlayArgs;
@@ -46,16 +46,20 @@ pub fn run(args: &PlayArgs) -> Result<()> {
         None => None,
     };
     let map = match (&args.map, &demo, &args.demo) {
-        (Some(map), _, _) => map.clone(),
-        (None, Some(demo), Some(demo_path)) => crate::replay::demo_map_path(&demo.map, demo_path),
-        _ => crate::capture::default_map_path(),
+        (Some(map), _, _) => MapRef::parse(map, args.iwad.as_deref()),
+        (None, Some(demo), Some(demo_path)) => crate::replay::demo_map(&demo.map, demo_path),
+        _ => MapRef::File(crate::capture::default_map_path()),
     };
-    let level = open_level(&map, &BuildOptions::default())?;
-    let renderer = crate::replay::choose_renderer(args.renderer, &level, &map)?;
-    let game = Game::new(level).with_context(|| format!("{}: cannot start the game", map.display()))?;
+    let game_options = match &demo {
+        Some(demo) => GameOptions { skill: demo.skill, seed: demo.seed },
+        None => GameOptions { skill: args.skill, seed: args.seed },
+    };
+    let play =
+        Playthrough::of(&map, game_options).with_context(|| format!("{}: cannot start the game", map.label()))?;
+    let renderer = crate::replay::choose_renderer(args.renderer, play.game.level(), &map.label())?;
     let session = match demo {
-        Some(demo) => Session::demo(game, demo.inputs),
-        None => Session::live(game, Controls::new(args.mouse_sensitivity), args.record.is_some()),
+        Some(demo) => Session::demo(play, demo.inputs),
+        None => Session::live(play, Controls::new(args.mouse_sensitivity), args.record.is_some()),
     };
 
     check_display()?;
@@ -65,7 +69,7 @@ pub fn run(args: &PlayArgs) -> Result<()> {
     let (w, h) = args.size;
     let options = AppOptions {
         screen: ScreenOptions {
-            title: format!("Sightline: {}", map.display()),
+            title: app::title(&session.play),
             frame: (w as u32, h as u32),
             window: args.window.map(|(w, h)| (w as u32, h as u32)),
             vsync: !args.no_vsync,
@@ -80,12 +84,13 @@ pub fn run(args: &PlayArgs) -> Result<()> {
     if (args.frames.is_some() || args.stats) && app.timings.frames() > 0 {
         println!("{}", app.timings.summary());
     }
-    let error = app.error.take();
+    let app_error = app.error.take();
     let mut session = app.into_session();
+    let error = app_error.or(session.error.take());
     // A window that never opened leaves nothing worth a demo file.
     let recording = session.take_recording().filter(|inputs| error.is_none() || !inputs.is_empty());
     let saved = match (&args.record, recording) {
-        (Some(path), Some(inputs)) => save_recording(path, &map, inputs),
+        (Some(path), Some(inputs)) => save_recording(path, &map, game_options, inputs),
         _ => Ok(()),
     };
     // What stopped the window matters more than the demo that could not be saved.
@@ -108,10 +113,15 @@ fn check_display() -> Result<()> {
     Ok(())
 }
 
-fn save_recording(path: &Path, map: &Path, inputs: Vec<sightline::play::TickInput>) -> Result<()> {
+fn save_recording(
+    path: &Path,
+    map: &MapRef,
+    options: GameOptions,
+    inputs: Vec<sightline::play::TickInput>,
+) -> Result<()> {
     let ticks = inputs.len();
     // The map as given, so a demo recorded in the repository replays there.
-    let demo = Demo { inputs, ..Demo::new(map.display().to_string()) };
+    let demo = Demo { inputs, skill: options.skill, seed: options.seed, ..Demo::new(map.label()) };
     demo.save(path)?;
     println!("recorded {ticks} ticks to {}", path.display());
     Ok(())

@@ -15,6 +15,7 @@ use winit::window::{CursorGrabMode, Fullscreen, Window};
 /// How much of the screen the first window may cover.
 const SCREEN_SHARE: f64 = 0.9;
 
+#[derive(Clone)]
 pub struct ScreenOptions {
     pub title: String,
     /// Internal frame size.

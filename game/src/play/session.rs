@@ -1,9 +1,12 @@
-//! The game being played, apart from the window: the simulation, where its
-//! inputs come from (the keyboard and mouse, or a demo), and the recording of
-//! what it was fed. The frame loop asks it to run whole ticks and for the
-//! view between the last two.
+//! The game being played, apart from the window: the playthrough (one map
+//! after another, with intermissions), where its inputs come from (the
+//! keyboard and mouse, or a demo), and the recording of what it was fed. The
+//! frame loop asks it to run whole ticks and for the view between the last
+//! two; messages the game sends are kept for the HUD.
 
-use sightline::play::{Game, TickInput};
+use sightline::play::events::Event;
+use sightline::play::playthrough::{Phase, Playthrough};
+use sightline::play::TickInput;
 use sightline::View;
 
 use super::input::Controls;
@@ -19,21 +22,29 @@ enum Source {
 }
 
 pub struct Session {
-    pub game: Game,
+    pub play: Playthrough,
     source: Source,
     /// Every input fed to the game, when recording.
     recording: Option<Vec<TickInput>>,
     /// The demo has run out; the game stands still on its last tick.
     finished: bool,
+    /// Messages for the player since the frame loop last took them.
+    messages: Vec<String>,
+    /// What went wrong loading the next map, once.
+    pub error: Option<anyhow::Error>,
 }
 
 impl Session {
-    pub fn live(game: Game, controls: Controls, record: bool) -> Session {
-        Session { game, source: Source::Live(controls), recording: record.then(Vec::new), finished: false }
+    pub fn live(play: Playthrough, controls: Controls, record: bool) -> Session {
+        Session::with(play, Source::Live(controls), record)
     }
 
-    pub fn demo(game: Game, inputs: Vec<TickInput>) -> Session {
-        Session { game, source: Source::Demo { inputs, next: 0 }, recording: None, finished: false }
+    pub fn demo(play: Playthrough, inputs: Vec<TickInput>) -> Session {
+        Session::with(play, Source::Demo { inputs, next: 0 }, false)
+    }
+
+    fn with(play: Playthrough, source: Source, record: bool) -> Session {
+        Session { play, source, recording: record.then(Vec::new), finished: false, messages: Vec::new(), error: None }
     }
 
     /// The keyboard and mouse state, when they drive the game.
@@ -46,7 +57,8 @@ impl Session {
 
     /// Runs up to `ticks` ticks. When a demo runs out it says so (with the
     /// final position, in the same words `sightline replay` prints) and the
-    /// game stops advancing.
+    /// game stops advancing. A next map that cannot be loaded stops the
+    /// session with its error.
     pub fn run(&mut self, ticks: u32) {
         for _ in 0..ticks {
             let input = match &mut self.source {
@@ -59,13 +71,21 @@ impl Session {
                     None => {
                         if !self.finished {
                             self.finished = true;
-                            println!("demo finished: {}", position_line(&self.game));
+                            println!("demo finished: {}", position_line(&self.play));
                         }
                         return;
                     }
                 },
             };
-            self.game.tick(&input);
+            if let Err(e) = self.play.tick(&input) {
+                self.error.get_or_insert(e.into());
+                return;
+            }
+            for event in self.play.game.events() {
+                if let Event::Message(text) = event {
+                    self.messages.push(text.clone());
+                }
+            }
             if let Some(recording) = &mut self.recording {
                 recording.push(input);
             }
@@ -73,10 +93,15 @@ impl Session {
     }
 
     /// The view `alpha` of the way from the previous tick to the last; once a
-    /// demo has finished, exactly the last tick (as `sightline replay`
-    /// captures it).
+    /// demo has finished, or in an intermission, exactly the last tick.
     pub fn view(&self, alpha: f64) -> View {
-        self.game.view(if self.finished { 1.0 } else { alpha })
+        let still = self.finished || self.play.phase != Phase::Playing;
+        self.play.game.view(if still { 1.0 } else { alpha })
+    }
+
+    /// The messages since the last call.
+    pub fn take_messages(&mut self) -> Vec<String> {
+        std::mem::take(&mut self.messages)
     }
 
     pub fn take_recording(&mut self) -> Option<Vec<TickInput>> {

@@ -1,0 +1,146 @@
+//! A playthrough: one map after another, as a person plays a campaign.
+//! Levels end at an exit; an intermission shows the level's tallies until
+//! the player presses use or fire; then the next map of the [`Campaign`]
+//! loads. A dead player's use restarts the map. Driven by the same
+//! [`TickInput`]s as a [`Game`] (the intermission's presses included), so a
+//! demo recorded across several maps replays exactly, headless too.
+
+use crate::bsp::BuildOptions;
+use crate::campaign::{open, Campaign, CampaignError, MapRef};
+use crate::level::Level;
+
+use super::world::Exit;
+use super::{Game, GameOptions, PlayError, Stats, TickInput};
+
+/// Ticks an intermission shows before a press can end it (1 s, so a key
+/// still held from the exit switch does not skip it).
+pub const INTERMISSION_MIN: u32 = 35;
+
+/// What the playthrough is showing.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Phase {
+    Playing,
+    /// The level ended: its tallies, and what comes next (`None`: the
+    /// campaign is over).
+    Intermission {
+        map: String,
+        stats: Stats,
+        exit: Exit,
+        next: Option<MapRef>,
+        ticks: u32,
+    },
+    /// The last map is done.
+    Finished {
+        stats: Stats,
+    },
+}
+
+#[derive(Debug, thiserror::Error)]
+pub enum PlaythroughError {
+    #[error(transparent)]
+    Open(#[from] CampaignError),
+    #[error("{map}: {error}")]
+    Start { map: String, error: PlayError },
+}
+
+/// A playthrough in progress.
+pub struct Playthrough {
+    pub campaign: Campaign,
+    /// The map being played (or just finished).
+    pub map: MapRef,
+    pub game: Game,
+    pub phase: Phase,
+    /// Ticks run since the playthrough began, over every map and intermission.
+    pub ticks: u64,
+    options: GameOptions,
+    build: BuildOptions,
+    /// The last tick's use or fire, to act on presses only.
+    held: bool,
+}
+
+impl Playthrough {
+    /// Starts `campaign` on `map` (its first map when `None`).
+    pub fn new(campaign: Campaign, map: Option<MapRef>, options: GameOptions) -> Result<Playthrough, PlaythroughError> {
+        let build = BuildOptions::default();
+        let map = map.unwrap_or_else(|| campaign.first());
+        let opened = open(&map, &build)?;
+        let map = opened.map;
+        let game = start(opened.level, &map, options)?;
+        Ok(Playthrough { campaign, map, game, phase: Phase::Playing, ticks: 0, options, build, held: false })
+    }
+
+    /// Starts on a command-line map: a WAD, `WAD:MAP`, a campaign file or a map.
+    pub fn of(map: &MapRef, options: GameOptions) -> Result<Playthrough, PlaythroughError> {
+        let campaign = Campaign::of(map)?;
+        let start = match (&campaign, map) {
+            (Campaign::List { .. }, _) | (Campaign::Wad { .. }, MapRef::Wad { map: None, .. }) => None,
+            _ => Some(map.clone()),
+        };
+        Playthrough::new(campaign, start, options)
+    }
+
+    pub fn options(&self) -> GameOptions {
+        self.options
+    }
+
+    /// One tick: the game's, or the intermission's. Loading the next map can
+    /// fail (a file changed or vanished); the error says which, and the
+    /// playthrough stays in its intermission.
+    pub fn tick(&mut self, input: &TickInput) -> Result<(), PlaythroughError> {
+        self.ticks += 1;
+        let pressed = (input.use_line || input.fire) && !self.held;
+        self.held = input.use_line || input.fire;
+        match &mut self.phase {
+            Phase::Playing => {
+                if self.game.player().dead() && pressed {
+                    return self.restart();
+                }
+                self.game.tick(input);
+                if let Some(exit) = self.game.exit() {
+                    let next = self.campaign.next(&self.map, exit);
+                    let map = self.map.short_name();
+                    self.phase = Phase::Intermission { map, stats: self.game.stats(), exit, next, ticks: 0 };
+                    // The press that ended the level does not end the intermission.
+                    self.held = true;
+                }
+            }
+            Phase::Intermission { ticks, next, stats, .. } => {
+                *ticks += 1;
+                if pressed && *ticks >= INTERMISSION_MIN {
+                    match next.clone() {
+                        Some(next) => self.load(next)?,
+                        None => self.phase = Phase::Finished { stats: *stats },
+                    }
+                }
+            }
+            Phase::Finished { .. } => {}
+        }
+        Ok(())
+    }
+
+    /// Loads `map` and plays it; the player keeps its health (not its keys,
+    /// as in Doom).
+    fn load(&mut self, map: MapRef) -> Result<(), PlaythroughError> {
+        let health = self.game.player().health;
+        let opened = open(&map, &self.build)?;
+        let mut game = start(opened.level, &opened.map, self.options)?;
+        game.player_mut().health = health.max(1);
+        self.map = opened.map;
+        self.game = game;
+        self.phase = Phase::Playing;
+        Ok(())
+    }
+
+    /// The current map from its start, with a fresh player (Doom's reborn).
+    fn restart(&mut self) -> Result<(), PlaythroughError> {
+        let map = self.map.clone();
+        let opened = open(&map, &self.build)?;
+        self.game = start(opened.level, &opened.map, self.options)?;
+        self.phase = Phase::Playing;
+        Ok(())
+    }
+}
+
+fn start(level: Level, map: &MapRef, options: GameOptions) -> Result<Game, PlaythroughError> {
+    Game::with_options(level, options).map_err(|error| PlaythroughError::Start { map: map.label(), error })
+}
