@@ -59,9 +59,16 @@ from fractions import Fraction
 
 LIMIT = 16777216
 TEXTURES = {"BRICK", "STONE", "WOOD", "METAL", "TILE", "FLOOR", "STEP", "SKY",
-            "DOOR", "SUPPORT", "GRATE", "FENCE", "GRASS", "WATER", "CEIL", "DIRT"}
+            "DOOR", "SUPPORT", "GRATE", "FENCE", "GRASS", "WATER", "CEIL", "DIRT",
+            "SWITCH1", "SWITCH2", "EXITSW1", "EXITSW2", "CHEVRON", "GOO1", "GOO2", "GOO3", "TELEPAD"}
 MASKED_TEXTURES = {"GRATE", "FENCE"}
 THING_KINDS = {"player_start", "lamp", "barrel", "column", "torch", "crate", "plant", "statue"}
+# Fields of map format version 2 (specials, thing flags): the engine checks
+# what they mean; this checker accepts them and checks the geometry.
+SPECIAL_MAP_FIELDS = ("version", "sky", "trigger_lines")
+SPECIAL_SECTOR_FIELDS = ("tag", "special", "floor_light", "ceiling_light", "carry")
+SPECIAL_LINE_FIELDS = ("trigger", "special", "translucent")
+SPECIAL_THING_FIELDS = ("skills", "ambush", "multiplayer", "not_in")
 
 
 # ---------------------------------------------------------------- RON parsing
@@ -227,7 +234,8 @@ def load_map(path, errors, warnings):
         return None
     f = root.fields
     for key in f:
-        if key not in ("name", "vertices", "sectors", "lines", "things", "diminishing_light", "fog"):
+        if key not in ("name", "vertices", "sectors", "lines", "things", "diminishing_light", "fog") \
+                + SPECIAL_MAP_FIELDS:
             warnings.append(f"unknown Map field {key!r}")
     for key in ("name", "vertices", "sectors", "lines", "things"):
         if key not in f:
@@ -312,7 +320,7 @@ def load_map(path, errors, warnings):
                 raise RonError(f"sector {k}: expected Sector(...)")
             sf = s.fields
             for key in sf:
-                if key not in ("floor", "ceiling", "light", "floor_texture", "ceiling_texture"):
+                if key not in ("floor", "ceiling", "light", "floor_texture", "ceiling_texture") + SPECIAL_SECTOR_FIELDS:
                     raise RonError(f"sector {k}: unknown field {key!r}")
             for key in ("floor", "ceiling", "light"):
                 if key not in sf:
@@ -329,7 +337,7 @@ def load_map(path, errors, warnings):
             if not isinstance(v, Struct) or v.name != "Side" or not isinstance(v.fields, dict):
                 raise RonError(f"{what}: expected Side(...)")
             for key in v.fields:
-                if key not in ("sector", "upper", "middle", "lower", "x_offset", "y_offset"):
+                if key not in ("sector", "upper", "middle", "lower", "x_offset", "y_offset", "scroll"):
                     raise RonError(f"{what}: unknown field {key!r}")
             for key in ("x_offset", "y_offset"):
                 if key in v.fields:
@@ -350,7 +358,7 @@ def load_map(path, errors, warnings):
             lf = ln.fields
             for key in lf:
                 if key not in ("from", "to", "front", "back", "upper_unpegged", "lower_unpegged",
-                               "impassable", "door"):
+                               "impassable", "door") + SPECIAL_LINE_FIELDS:
                     raise RonError(f"line {k}: unknown field {key!r}")
             for key in ("from", "to", "front"):
                 if key not in lf:
@@ -380,7 +388,7 @@ def load_map(path, errors, warnings):
                 if key not in tf:
                     raise RonError(f"thing {k}: missing {key!r}")
             for key in tf:
-                if key not in ("kind", "x", "y", "angle"):
+                if key not in ("kind", "x", "y", "angle") + SPECIAL_THING_FIELDS:
                     raise RonError(f"thing {k}: unknown field {key!r}")
             if not isinstance(tf["kind"], str):
                 raise RonError(f"thing {k}: kind must be a string")

@@ -31,6 +31,12 @@ Texturing (defaults keep the output of older scripts unchanged):
 
 Map options: `diminishing_light` (None: not written, the engine's default
 true) and `fog=((r, g, b), distance)`.
+
+Map format version 2 (`version=2`): sectors take a `tag` and a `special`
+(RON text such as `SectorSpecial(light: Flicker)`), `edge()` a line
+`special` (RON text such as `LineSpecial(on: Use, tag: 2, action: Lift())`),
+a side `scroll=(x, y)`, and `front=SECTOR` to turn the line so that sector
+is in front (a switch must face the player); `thing()` takes `extra` fields.
 """
 
 from fractions import Fraction
@@ -67,8 +73,9 @@ def counter_clockwise(pts):
 
 
 class SectorMap:
-    def __init__(self, name, header_comment="", diminishing_light=None, fog=None):
+    def __init__(self, name, header_comment="", diminishing_light=None, fog=None, version=None):
         self.name = name
+        self.version = version  # None: leave the field out (version 1)
         self.header = header_comment
         self.diminishing_light = diminishing_light  # None: leave the field out
         self.fog = fog  # None or ((r, g, b), distance)
@@ -79,10 +86,11 @@ class SectorMap:
         self.things = []
 
     def sector(self, floor, ceiling, light, floor_texture=None, ceiling_texture=None,
-               wall="BRICK", label="", riser=None, lintel=None):
+               wall="BRICK", label="", riser=None, lintel=None, tag=0, special=None):
         self.sectors.append(dict(floor=float(floor), ceiling=float(ceiling), light=int(light),
                                  floor_texture=floor_texture, ceiling_texture=ceiling_texture,
-                                 wall=wall, label=label, riser=riser, lintel=lintel))
+                                 wall=wall, label=label, riser=riser, lintel=lintel,
+                                 tag=int(tag), special=special))
         return len(self.sectors) - 1
 
     def region(self, sector, outer, holes=(), label="", wall=None):
@@ -103,7 +111,7 @@ class SectorMap:
 
     def edge(self, p, q, sector=None, wall=None, upper=None, middle=None, lower=None,
              x_offset=None, y_offset=None, impassable=None, upper_unpegged=None,
-             lower_unpegged=None):
+             lower_unpegged=None, special=None, scroll=None, front=None):
         """Override every line lying on the segment p-q (end points included).
 
         Side textures (`upper`, `middle`, `lower`, offsets) go to the side facing
@@ -111,15 +119,16 @@ class SectorMap:
         one-sided lines only.  Flags (`impassable`, `*_unpegged`) go to the line.
         Matching no line at all is an error."""
         side = {k: v for k, v in (("upper", upper), ("middle", middle), ("lower", lower),
-                                  ("x_offset", x_offset), ("y_offset", y_offset))
+                                  ("x_offset", x_offset), ("y_offset", y_offset), ("scroll", scroll))
                 if v is not None}
         flags = {k: v for k, v in (("impassable", impassable), ("upper_unpegged", upper_unpegged),
-                                   ("lower_unpegged", lower_unpegged)) if v is not None}
+                                   ("lower_unpegged", lower_unpegged), ("special", special),
+                                   ("front_sector", front)) if v is not None}
         self.edges.append(((float(p[0]), float(p[1])), (float(q[0]), float(q[1])),
                            sector, wall, side, flags))
 
-    def thing(self, kind, x, y, angle=0.0):
-        self.things.append((kind, float(x), float(y), float(angle)))
+    def thing(self, kind, x, y, angle=0.0, extra=""):
+        self.things.append((kind, float(x), float(y), float(angle), extra))
 
     # ------------------------------------------------------------------ build
     def build(self):
@@ -221,6 +230,14 @@ class SectorMap:
                         sd.update(side)
             if not hit:
                 raise ValueError(f"edge override {p}-{q} matches no line")
+        for ln in lines:
+            want = ln.pop("front_sector", None)
+            if want is None or ln["front"]["sector"] == want:
+                continue
+            if ln["back"] is None or ln["back"]["sector"] != want:
+                raise ValueError(f"line {verts[ln['a']]}-{verts[ln['b']]} has no side in sector {want}")
+            ln["a"], ln["b"] = ln["b"], ln["a"]
+            ln["front"], ln["back"] = ln["back"], ln["front"]
 
     # ------------------------------------------------------------------ write
     def render(self, vertex_comments=True, per_row=1):
@@ -229,6 +246,8 @@ class SectorMap:
         for c in self.header.strip("\n").splitlines():
             out.append(f"// {c}".rstrip())
         out.append("Map(")
+        if self.version is not None:
+            out.append(f"    version: {self.version},")
         out.append(f"    name: \"{self.name}\",")
         if self.diminishing_light is not None:
             out.append(f"    diminishing_light: {'true' if self.diminishing_light else 'false'},")
@@ -250,6 +269,10 @@ class SectorMap:
                 extra += f", floor_texture: \"{s['floor_texture']}\""
             if s["ceiling_texture"]:
                 extra += f", ceiling_texture: \"{s['ceiling_texture']}\""
+            if s.get("tag"):
+                extra += f", tag: {s['tag']}"
+            if s.get("special"):
+                extra += f", special: {s['special']}"
             label = f" // {k}: {s['label']}" if s["label"] else f" // {k}"
             out.append(f"        Sector(floor: {fmt(s['floor'])}, ceiling: {fmt(s['ceiling'])}, "
                        f"light: {s['light']}{extra}),{label}")
@@ -262,12 +285,15 @@ class SectorMap:
                 last_group = ln["group"]
             flags = "".join(f", {k}: true" for k in ("upper_unpegged", "lower_unpegged", "impassable", "door")
                             if ln.get(k))
+            if ln.get("special"):
+                flags += f", special: {ln['special']}"
             out.append(f"        Line(from: {ln['a']}, to: {ln['b']}, front: {side_text(ln['front'])}"
                        + (f", back: Some({side_text(ln['back'])})" if ln["back"] else "") + flags + "),")
         out.append("    ],")
         out.append("    things: [")
-        for kind, x, y, a in self.things:
-            out.append(f"        Thing(kind: \"{kind}\", x: {fmt(x)}, y: {fmt(y)}, angle: {fmt(a)}),")
+        for kind, x, y, a, extra in self.things:
+            more = f", {extra}" if extra else ""
+            out.append(f"        Thing(kind: \"{kind}\", x: {fmt(x)}, y: {fmt(y)}, angle: {fmt(a)}{more}),")
         out.append("    ],")
         out.append(")")
         return "\n".join(out) + "\n", len(verts), len(lines)
@@ -281,4 +307,7 @@ def side_text(side):
     for key in ("x_offset", "y_offset"):
         if side.get(key):
             parts.append(f"{key}: {fmt(side[key])}")
+    if side.get("scroll"):
+        x, y = side["scroll"]
+        parts.append(f"scroll: (x: {fmt(x)}, y: {fmt(y)})")
     return "Side(" + ", ".join(parts) + ")"

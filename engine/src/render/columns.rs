@@ -92,6 +92,18 @@ impl ColumnWriter<'_> {
         self.masked_written += 1;
     }
 
+    /// Writes one pixel of the masked pass two-thirds over what is there (a
+    /// translucent middle texture: Boom's default translucency table is
+    /// about 66% opaque).
+    #[inline]
+    pub fn put_blended(&mut self, x: usize, y: i32, colour: u32) {
+        let p = &mut self.canvas[(x - self.x0) * self.height + y as usize];
+        let (a, b) = (colour.to_le_bytes(), p.to_le_bytes());
+        let mix = |k: usize| ((2 * u32::from(a[k]) + u32::from(b[k])) / 3) as u8;
+        *p = u32::from_le_bytes([mix(0), mix(1), mix(2), b[3]]);
+        self.masked_written += 1;
+    }
+
     /// Fills rows `[y0, y1)` of column `x` with `colour(y)`.
     #[inline]
     pub fn fill_with(&mut self, x: usize, y0: i32, y1: i32, mut colour: impl FnMut(i32) -> u32) {

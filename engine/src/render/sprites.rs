@@ -126,7 +126,7 @@ impl MaskedPass<'_> {
         if !(0.0..c.texture.width as f64).contains(&u) {
             return;
         }
-        self.put_texels(out, x, s.depth, c.rows, (c.texture, u as usize, c.top), c.paint);
+        self.put_texels(out, x, s.depth, c.rows, (c.texture, u as usize, c.top), c.paint, false);
     }
 
     fn masked_column(&self, out: &mut ColumnWriter, m: &super::frame::MaskedColumn, x: usize) {
@@ -151,7 +151,10 @@ impl MaskedPass<'_> {
         let rows = (rows.first_at_or_below(m.depth, scale, top), rows.first_at_or_below(m.depth, scale, bottom));
         let event = self.events[m.event as usize];
         let rows = (rows.0.max(event.top), rows.1.min(event.bottom));
-        self.put_texels(out, x, m.depth, rows, (texture, u, top), paint);
+        // Translucent middles (Boom's 260) blend only when textured, so
+        // the flat and ids pictures stay comparable with the reference.
+        let translucent = line.flags.translucent && self.scene.shade == Shade::Textured;
+        self.put_texels(out, x, m.depth, rows, (texture, u, top), paint, translucent);
     }
 
     /// Writes the opaque texels of texture column `u` over rows `rows` of
@@ -165,6 +168,7 @@ impl MaskedPass<'_> {
         rows: (i32, i32),
         (texture, u, top): (&Texture, usize, f64),
         paint: Texels,
+        translucent: bool,
     ) {
         let cam = self.cam;
         let (open_top, open_bottom) = self.window(x, depth, cam.height as i32);
@@ -179,7 +183,11 @@ impl MaskedPass<'_> {
                 Texels::Solid(c) => c,
                 Texels::Tinted(t) => t.apply(texel),
             };
-            out.put_masked(x, y, c);
+            if translucent {
+                out.put_blended(x, y, c);
+            } else {
+                out.put_masked(x, y, c);
+            }
         }
     }
 }

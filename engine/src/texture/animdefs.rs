@@ -96,7 +96,7 @@ mod tests {
     fn doom_lists_load_and_bad_ones_are_named() {
         let d = AnimDefs::doom();
         assert_eq!(d.flats[0].frames, ["NUKAGE1", "NUKAGE2", "NUKAGE3"]);
-        assert_eq!(d.switches.len(), 40);
+        assert_eq!(d.switches.len(), 42);
         let bad = "Animations(flats: [Animation(frames: [\"A\"], tics: 8)], textures: [], switches: [])";
         assert_eq!(
             AnimDefs::parse(bad, "a.ron").unwrap_err().to_string(),

@@ -190,9 +190,17 @@ impl App {
     }
 }
 
-/// The window's title: the map played and where it comes from.
+/// The window's title: the map played, and its WAD or its name.
 pub fn title(play: &Playthrough) -> String {
-    format!("Sightline: {} ({})", play.map.short_name(), play.game.level().map.name)
+    let from = match &play.map {
+        sightline::campaign::MapRef::Wad { wads, .. } => wads
+            .iter()
+            .map(|w| w.file_name().map_or_else(|| w.display().to_string(), |n| n.to_string_lossy().into_owned()))
+            .collect::<Vec<_>>()
+            .join(" + "),
+        sightline::campaign::MapRef::File(_) => play.game.level().map.name.clone(),
+    };
+    format!("Sightline: {} ({from})", play.map.short_name())
 }
 
 /// The renderers that can draw `level`: all of them, but the ray-caster

@@ -8,6 +8,7 @@
 //! not only by tests.
 
 mod flats;
+mod machinery;
 mod paint;
 mod sky;
 mod special;
@@ -19,14 +20,26 @@ use super::{Texture, TextureKind};
 /// Wall textures. DEBUG1 (1x1), THIN (1x64) and ODD (37x23) exist for the
 /// renderer's hard cases: a texture with one texel, one column, and sides that
 /// are prime.
-const WALLS: &[&str] =
-    &["BRICK", "STONE", "WOOD", "METAL", "STEP", "DOOR", "GRATE", "FENCE", "SUPPORT", "SKY", "DEBUG1", "THIN", "ODD"];
+/// SWITCH1 and SWITCH2 (a switch off and on), EXITSW1 and EXITSW2 (an exit
+/// switch) are paired in `engine/data/animations.ron`; CHEVRON is made to
+/// scroll.
+const WALLS: &[&str] = &[
+    "BRICK", "STONE", "WOOD", "METAL", "STEP", "DOOR", "GRATE", "FENCE", "SUPPORT", "SKY", "DEBUG1", "THIN", "ODD",
+    "SWITCH1", "SWITCH2", "EXITSW1", "EXITSW2", "CHEVRON",
+];
 
 /// Floor and ceiling textures. The sky is both a wall and a flat: a sector
 /// ceiling named SKY shows the panorama.
-const FLATS: &[&str] = &["FLOOR", "TILE", "GRASS", "WATER", "CEIL", "DIRT", "SKY"];
+/// GOO1 to GOO3 are the frames of an animation (`engine/data/animations.ron`).
+const FLATS: &[&str] = &["FLOOR", "TILE", "GRASS", "WATER", "CEIL", "DIRT", "SKY", "GOO1", "GOO2", "GOO3", "TELEPAD"];
 
-const SPRITES: &[&str] = &["BARREL", "LAMP", "COLUMN", "PLANT", "TORCH", "CRATE", "STATUE"];
+/// The keys and the barrel also answer to Doom's sprite names (BKEYA0 is a
+/// blue keycard's front view), so a version-2 map's `blue_card` or `barrel`
+/// finds a picture with no art files; a WAD's or a PNG's comes first.
+const SPRITES: &[&str] = &[
+    "BARREL", "LAMP", "COLUMN", "PLANT", "TORCH", "CRATE", "STATUE", "BKEYA0", "YKEYA0", "RKEYA0", "BSKUA0", "YSKUA0",
+    "RSKUA0", "BAR1A0", "COLUA0",
+];
 
 /// Names of the built-in textures of each kind, upper case.
 pub fn names(kind: TextureKind) -> &'static [&'static str] {
@@ -74,6 +87,16 @@ pub fn generate(name: &str, kind: TextureKind) -> Option<Texture> {
         "TORCH" => sprites::torch(seed),
         "CRATE" => sprites::crate_(seed),
         "STATUE" => sprites::statue(seed),
+        "SWITCH1" | "SWITCH2" => machinery::switch(seed, name == "SWITCH2"),
+        "EXITSW1" | "EXITSW2" => machinery::exit(seed, name == "EXITSW2"),
+        "CHEVRON" => machinery::chevron(seed),
+        // One seed for the three frames: the same slime, flowing.
+        "GOO1" | "GOO2" | "GOO3" => machinery::goo(paint::seed_of("GOO"), u32::from(name.as_bytes()[3] - b'1')),
+        "TELEPAD" => machinery::telepad(seed),
+        "BKEYA0" | "YKEYA0" | "RKEYA0" => machinery::card(name),
+        "BSKUA0" | "YSKUA0" | "RSKUA0" => machinery::skull(name),
+        "BAR1A0" => sprites::barrel(paint::seed_of("BARREL")),
+        "COLUA0" => sprites::lamp(paint::seed_of("LAMP")),
         other => unreachable!("{other} is listed but has no painter"),
     })
 }
