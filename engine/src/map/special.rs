@@ -411,66 +411,34 @@ pub const STAIR_SPEED: f64 = 0.25;
 pub const DONUT_SPEED: f64 = 0.5;
 pub const DAMAGE_EVERY: u32 = 32;
 
-fn door_speed() -> f64 {
-    DOOR_SPEED
+/// The serde default of a field and its "is the default" test, for each
+/// Doom constant above.
+macro_rules! defaults {
+    ($($value:ident, $is:ident: $ty:ty = $constant:ident;)*) => {
+        $(
+            fn $value() -> $ty {
+                $constant
+            }
+            fn $is(v: &$ty) -> bool {
+                *v == $constant
+            }
+        )*
+    };
 }
-fn is_door_speed(v: &f64) -> bool {
-    *v == DOOR_SPEED
+
+defaults! {
+    door_speed, is_door_speed: f64 = DOOR_SPEED;
+    door_wait, is_door_wait: u32 = DOOR_WAIT;
+    lift_speed, is_lift_speed: f64 = LIFT_SPEED;
+    lift_wait, is_lift_wait: u32 = LIFT_WAIT;
+    perpetual_speed, is_perpetual_speed: f64 = PERPETUAL_SPEED;
+    floor_speed, is_floor_speed: f64 = FLOOR_SPEED;
+    stair_step, is_stair_step: f64 = STAIR_STEP;
+    stair_speed, is_stair_speed: f64 = STAIR_SPEED;
+    donut_speed, is_donut_speed: f64 = DONUT_SPEED;
+    damage_every, is_damage_every: u32 = DAMAGE_EVERY;
 }
-fn door_wait() -> u32 {
-    DOOR_WAIT
-}
-fn is_door_wait(v: &u32) -> bool {
-    *v == DOOR_WAIT
-}
-fn lift_speed() -> f64 {
-    LIFT_SPEED
-}
-fn is_lift_speed(v: &f64) -> bool {
-    *v == LIFT_SPEED
-}
-fn lift_wait() -> u32 {
-    LIFT_WAIT
-}
-fn is_lift_wait(v: &u32) -> bool {
-    *v == LIFT_WAIT
-}
-fn perpetual_speed() -> f64 {
-    PERPETUAL_SPEED
-}
-fn is_perpetual_speed(v: &f64) -> bool {
-    *v == PERPETUAL_SPEED
-}
-fn floor_speed() -> f64 {
-    FLOOR_SPEED
-}
-fn is_floor_speed(v: &f64) -> bool {
-    *v == FLOOR_SPEED
-}
-fn stair_step() -> f64 {
-    STAIR_STEP
-}
-fn is_stair_step(v: &f64) -> bool {
-    *v == STAIR_STEP
-}
-fn stair_speed() -> f64 {
-    STAIR_SPEED
-}
-fn is_stair_speed(v: &f64) -> bool {
-    *v == STAIR_SPEED
-}
-fn donut_speed() -> f64 {
-    DONUT_SPEED
-}
-fn is_donut_speed(v: &f64) -> bool {
-    *v == DONUT_SPEED
-}
-fn damage_every() -> u32 {
-    DAMAGE_EVERY
-}
-fn is_damage_every(v: &u32) -> bool {
-    *v == DAMAGE_EVERY
-}
+
 fn is_zero(v: &f64) -> bool {
     *v == 0.0
 }

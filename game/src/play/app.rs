@@ -121,7 +121,7 @@ impl App {
             self.automap.draw(&level.map, (view.pos.x, view.pos.y), view.angle, &mut self.fb);
         }
         self.hud.frame(interval, render);
-        let name = format!("{} ({})", play.map.short_name(), level.map.name);
+        let name = map_label(play);
         self.hud.draw(&mut self.fb, &name, self.options.renderer.name());
         self.hud.draw_status(&mut self.fb, play.game.player());
         super::hud::draw_phase(&mut self.fb, &play.phase);
@@ -192,6 +192,11 @@ impl App {
 
 /// The window's title: the map played, and its WAD or its name.
 pub fn title(play: &Playthrough) -> String {
+    format!("Sightline: {}", map_label(play))
+}
+
+/// The map played, and its WAD or its name: `E1M1 (freedoom1.wad)`.
+fn map_label(play: &Playthrough) -> String {
     let from = match &play.map {
         sightline::campaign::MapRef::Wad { wads, .. } => wads
             .iter()
@@ -200,7 +205,7 @@ pub fn title(play: &Playthrough) -> String {
             .join(" + "),
         sightline::campaign::MapRef::File(_) => play.game.level().map.name.clone(),
     };
-    format!("Sightline: {} ({from})", play.map.short_name())
+    format!("{} ({from})", play.map.short_name())
 }
 
 /// The renderers that can draw `level`: all of them, but the ray-caster
