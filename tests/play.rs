@@ -830,3 +830,35 @@ fn corrupt_demo_files_are_errors() {
     let err = Demo::load(&missing).unwrap_err();
     assert!(matches!(err, DemoError::Read { .. }) && err.to_string().contains("sightline-no-such.demo"), "{err}");
 }
+
+/// A map may name its own animations file: its textures animate by it (a
+/// modder's list, not the shipped one), and a broken one is an error naming
+/// the file and what is wrong.
+#[test]
+fn a_map_names_its_own_animations() {
+    let dir = tempfile::tempdir().unwrap();
+    let anims = r#"Animations(flats: [], textures: [Animation(frames: ["BRICK", "STONE", "WOOD"], tics: 2)], switches: [])"#;
+    std::fs::write(dir.path().join("anims.ron"), anims).unwrap();
+    let text = two_rooms((0.0, 128.0), (0.0, 128.0))
+        .replace("Map(name:", "Map(animations: \"anims.ron\", name:")
+        .replacen("Side(sector: 0)", "Side(sector: 0, middle: \"BRICK\")", 1);
+    let path = dir.path().join("m.ron");
+    std::fs::write(&path, &text).unwrap();
+    let level = sightline::level::open_level(&path, &BuildOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+    let shown = |game: &Game| {
+        let m = &game.level().materials;
+        m.textures.name(m.side(0, 0).middle.expect("a middle texture")).to_string()
+    };
+    let mut game = Game::new(level).unwrap();
+    let mut seen = Vec::new();
+    for _ in 0..7 {
+        seen.push(shown(&game));
+        game.tick(&IDLE);
+    }
+    // Tick t shows frame (t / tics) of the cycle, t counted before the tick
+    // (Doom's leveltime): frames change on ticks 2, 4, ...
+    assert_eq!(seen, ["BRICK", "BRICK", "BRICK", "STONE", "STONE", "WOOD", "WOOD"]);
+    std::fs::write(dir.path().join("anims.ron"), anims.replace("tics: 2", "tics: 0")).unwrap();
+    let err = sightline::level::open_level(&path, &BuildOptions::default()).unwrap_err().to_string();
+    assert!(err.contains("m.ron: the animations file:") && err.contains("anims.ron: texture animation 0: tics"), "{err}");
+}

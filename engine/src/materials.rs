@@ -159,7 +159,12 @@ impl Materials {
         let masked =
             sides.iter().zip(&map.lines).any(|(s, l)| l.back.is_some() && s.iter().any(|s| s.middle.is_some()));
         let mut m = Materials { sides, sectors, sprites, sky, masked, ..m };
-        m.add_animations(map, library, AnimDefs::doom());
+        let own = own_animations(map, library).map_err(|error| MaterialError {
+            path: label.to_string(),
+            element: "the animations file".into(),
+            error,
+        })?;
+        m.add_animations(map, library, own.as_ref().unwrap_or(AnimDefs::doom()));
         Ok(m)
     }
 
@@ -230,6 +235,20 @@ impl Materials {
         let s = self.sectors[sector];
         SectorTextures { floor: s.floor.map(|id| self.current(id)), ceiling: s.ceiling.map(|id| self.current(id)) }
     }
+}
+
+/// The animations file a map names, read from its folder (the library's
+/// first); `None` when it names none (the shipped list applies).
+fn own_animations(map: &Map, library: &Library) -> Result<Option<AnimDefs>, TextureError> {
+    let Some(name) = &map.animations else { return Ok(None) };
+    let plain = !name.is_empty() && !name.starts_with('.') && !name.contains(['/', '\\', '\0', ':']);
+    if !plain {
+        return Err(TextureError::Animations(format!("{name:?} is not a plain file name beside the map")));
+    }
+    let path = library.dirs.first().map_or_else(|| PathBuf::from(name), |d| d.join(name));
+    let text = std::fs::read_to_string(&path)
+        .map_err(|e| TextureError::Animations(format!("{}: cannot read: {e}", path.display())))?;
+    AnimDefs::parse(&text, &path.display().to_string()).map(Some).map_err(|e| TextureError::Animations(e.to_string()))
 }
 
 fn side_textures(

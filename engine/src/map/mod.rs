@@ -35,6 +35,8 @@ pub struct Map {
     pub fog: Option<Fog>,
     /// The texture sky surfaces show; `None` is the built-in [`SKY`].
     pub sky: Option<String>,
+    /// The map's own animations file, if it names one (see [`source::MapSource::animations`]).
+    pub animations: Option<String>,
     /// Lines that only set off specials (no sides, not in the BSP).
     pub trigger_lines: Vec<TriggerLine>,
 }
@@ -364,6 +366,7 @@ impl Map {
             diminishing_light: self.diminishing_light,
             fog: self.fog.map(|f| FogSource { colour: (f.colour[0], f.colour[1], f.colour[2]), distance: f.distance }),
             sky: self.sky.clone(),
+            animations: self.animations.clone(),
             trigger_lines: self
                 .trigger_lines
                 .iter()

@@ -34,6 +34,10 @@ pub struct MapSource {
     /// The texture `"SKY"` ceilings and floors show (default: the built-in SKY).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub sky: Option<String>,
+    /// A file of animated textures and switch pairs (beside the map) to use
+    /// instead of the shipped list (`engine/data/animations.ron`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub animations: Option<String>,
     /// Lines that only set off specials: they draw nothing, block nothing,
     /// have no sides, and may cross anything (Doom's invisible walk-over
     /// lines).
@@ -203,6 +207,7 @@ impl Default for MapSource {
             diminishing_light: true,
             fog: None,
             sky: None,
+            animations: None,
             trigger_lines: Vec::new(),
         }
     }

@@ -201,6 +201,7 @@ fn check_elements(src: &MapSource) -> Result<Map, Vec<Problem>> {
         diminishing_light: src.diminishing_light,
         fog,
         sky: src.sky.clone(),
+        animations: src.animations.clone(),
         trigger_lines,
     })
 }

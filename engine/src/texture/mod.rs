@@ -170,6 +170,9 @@ pub enum TextureError {
     /// The file is unreadable or not a valid PNG: the path and the decoder's message.
     #[error("{}: cannot read PNG: {message}", path.display())]
     Png { path: PathBuf, message: String },
+    /// The map's animations file could not be read or is invalid.
+    #[error("{0}")]
+    Animations(String),
     /// A side is 0 or above [`MAX_SIDE`]; refused from the header, before
     /// any pixel memory is allocated.
     #[error(
