@@ -206,7 +206,9 @@ impl Game {
         let use_pressed = input.use_line && !self.player.use_held;
         let fire_pressed = input.fire && !self.player.fire_held;
         (self.player.use_held, self.player.fire_held) = (input.use_line, input.fire);
-        if !self.player.dead() && self.player.freeze == 0 {
+        // Held after a teleport the body cannot move or turn, but it can
+        // still use and fire (Doom's reactiontime stops P_MovePlayer only).
+        if !self.player.dead() {
             if use_pressed {
                 self.use_lines();
             }
