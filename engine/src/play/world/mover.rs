@@ -32,36 +32,42 @@ pub enum Moved {
 pub const CRUSH_DAMAGE: i32 = 10;
 
 /// Moves `plane` of `sector` one tick towards `dest` at `speed` (units per
-/// tick), `up` or down. A plane never passes `dest`, and one already at or
-/// past it has arrived (Doom would snap it back to `dest`). When a body no longer
-/// fits over the sector, a plane that does not `crush` goes back where it
-/// was; one that crushes stays (Doom keeps a crushing plane moving into
-/// bodies, and the crush hurts them). Only a floor going up or a ceiling
-/// going down can squeeze a body.
+/// tick), `up` or down, by Doom's T_MovePlane rules. A step that would pass
+/// `dest` stops on it, and one already at or past it has arrived (Doom
+/// would snap it back to `dest`). When a body no longer fits over the
+/// sector: a floor going up or a ceiling going down that `crush`es keeps
+/// moving into it (the crush hurts it); any other plane goes back where it
+/// was, except a rising ceiling, which Doom never checks. A step cut short
+/// to `dest` that does not fit is undone and the plane has arrived all the
+/// same (Doom's `pastdest`), so a crusher with a body under it still turns
+/// at the bottom.
 pub fn move_plane(ctx: &mut Ctx, sector: usize, plane: Plane, speed: f64, dest: f64, crush: bool, up: bool) -> Moved {
     let before = height(ctx, sector, plane);
     if (up && dest <= before) || (!up && dest >= before) {
         return Moved::Arrived;
     }
-    let arrived = if up { before + speed >= dest } else { before - speed <= dest };
-    let next = match (arrived, up) {
-        (true, _) => dest,
-        (false, true) => before + speed,
-        (false, false) => before - speed,
-    };
+    let stepped = if up { before + speed } else { before - speed };
+    let past = if up { stepped > dest } else { stepped < dest };
+    let next = if past { dest } else { stepped };
+    let arrived = next == dest;
     let squeezes = (plane == Plane::Floor) == up;
     set_height(ctx, sector, plane, next);
     let fits = settle_bodies(ctx, sector, crush);
     if fits {
         return if arrived { Moved::Arrived } else { Moved::Ok };
     }
-    if arrived || !crush || !squeezes {
-        // Doom puts the plane back whenever the last step would not fit,
-        // and when a non-crushing plane meets a body.
+    let keeps = !past && ((crush && squeezes) || (plane == Plane::Ceiling && up));
+    if !keeps {
         set_height(ctx, sector, plane, before);
         settle_bodies(ctx, sector, false);
     }
-    Moved::Crushed
+    match (past, keeps) {
+        (true, _) => Moved::Arrived,
+        (false, true) if arrived => Moved::Arrived,
+        // A rising ceiling carries on as if nothing were there.
+        (false, true) if !squeezes => Moved::Ok,
+        _ => Moved::Crushed,
+    }
 }
 
 fn height(ctx: &Ctx, sector: usize, plane: Plane) -> f64 {
