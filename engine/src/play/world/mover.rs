@@ -89,12 +89,15 @@ fn set_height(ctx: &mut Ctx, sector: usize, plane: Plane, h: f64) {
 /// Doom's P_ChangeSector for the bodies over `sector`: each is re-clipped
 /// to the floor and ceiling under it (on the floor: it rides the floor;
 /// else a low ceiling pushes it down), and one that no longer fits is hurt
-/// when `crush`. Returns whether every body fits.
+/// when `crush`. A dead body has no height (Doom's PIT_ChangeSector turns a
+/// corpse into gibs of height 0), so it always fits. Returns whether every
+/// body fits.
 fn settle_bodies(ctx: &mut Ctx, sector: usize, crush: bool) -> bool {
     if !ctx.bodies.touched.contains(&sector) {
         return true;
     }
     let player = &mut *ctx.bodies.player;
+    let height = if player.dead() { 0.0 } else { HEIGHT };
     let on_floor = player.z <= player.floor;
     let world = crate::play::collision::World { compiled: &ctx.level.compiled, blockmap: ctx.bodies.blockmap };
     let near = world.lines_near(ctx.bodies.query, player.pos, RADIUS + 1.0);
@@ -102,10 +105,10 @@ fn settle_bodies(ctx: &mut Ctx, sector: usize, crush: bool) -> bool {
     (player.floor, player.ceiling) = (area.floor, area.ceiling);
     if on_floor {
         player.z = area.floor;
-    } else if player.z + HEIGHT > area.ceiling {
-        player.z = (area.ceiling - HEIGHT).max(area.floor);
+    } else if player.z + height > area.ceiling {
+        player.z = (area.ceiling - height).max(area.floor);
     }
-    let fits = area.ceiling - area.floor >= HEIGHT;
+    let fits = area.ceiling - area.floor >= height;
     if !fits && crush && ctx.time % 4 == 0 {
         player.hurt(CRUSH_DAMAGE);
     }
