@@ -1030,14 +1030,15 @@ fn a_teleporter_crossed_from_its_back_does_nothing() {
 #[test]
 fn a_line_teleporter_keeps_the_speed_turned_by_the_angle_between_the_lines() {
     let mut g = game("teleport");
-    stand(&mut g, 128.0, 512.0, 0.0);
+    stand(&mut g, 128.0, 560.0, 0.0);
     until(&mut g, RUN, 40, |g| g.player().sector == 5);
     let p = g.player().clone();
-    // Along the source line (from (256, 640) down to (256, 384)) y 512 is
-    // half way; the exit runs from (896, 512) to (640, 512), measured from
-    // its far end: x 768, 1/64 in front of it. Turned by the angle between
-    // the lines plus a half turn: east becomes north (Boom's 244).
-    assert_eq!(p.pos, DVec2::new(768.0, 512.0 + 1.0 / 64.0));
+    // Along the source line (from (256, 640) down to (256, 384)) y 560 is
+    // 0.3125 of the way; the exit runs from (896, 512) to (640, 512),
+    // measured from its far end: x 640 + 0.3125 * 256 = 720, 1/64 in front
+    // of it. Turned by the angle between the lines plus a half turn: east
+    // becomes north (Boom's EV_SilentLineTeleport, special 244).
+    assert_eq!(p.pos, DVec2::new(720.0, 512.0 + 1.0 / 64.0));
     assert!((p.angle - 90.0).abs() < 1e-9, "angle {}", p.angle);
     assert_eq!((p.z, p.freeze), (0.0, 0));
     assert!(p.velocity.x.abs() < 1e-9 && p.velocity.y > 10.0, "velocity {:?}", p.velocity);
