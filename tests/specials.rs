@@ -201,7 +201,8 @@ fn run_mover(g: &mut Game, first: TickInput, s: usize, height: impl Fn(&Game, us
 }
 
 // ---------------------------------------------------------------------------
-// Lifts (tests/maps/lift.ron: lower room 0, lift A 1 (tag 1), lift B 2 (tag 2), upper room 3)
+// Lifts (tests/maps/lift.ron: lower room 0, lift A 1 (tag 1), lift B 2 (tag 2), upper room 3;
+// apart, low pad 4, lift C 5 (tag 3, perpetual), high pad 6)
 
 #[test]
 fn a_lift_goes_down_waits_105_ticks_and_comes_back_up_carrying_the_player() {
@@ -277,6 +278,39 @@ fn a_lift_with_a_body_in_the_way_goes_back_down() {
     stand(&mut g, 128.0, 128.0, 0.0);
     until(&mut g, IDLE, 300, |g| plat(g, lift).is_none());
     assert_eq!(floor(&g, lift), 64.0);
+}
+
+#[test]
+fn a_perpetual_lift_goes_between_the_lowest_and_highest_floors_until_stopped_and_wakes_again() {
+    let mut g = game("lift");
+    let lift = 5;
+    assert_eq!((floor(&g, 4), floor(&g, lift), floor(&g, 6)), (0.0, 32.0, 96.0));
+    stand(&mut g, 40.0, 360.0, 180.0);
+    press_use(&mut g);
+    let mut heights = vec![floor(&g, lift)];
+    heights.extend(record(&mut g, IDLE, 599, |g| floor(g, lift)));
+    // Speed 1 (Doom's PLATSPEED), between the lowest (0) and the highest (96)
+    // neighbouring floor, 105 ticks at each end; the first way is P_Random & 1.
+    let (first, second) = if heights[0] > 32.0 { (96.0, 0.0) } else { (0.0, 96.0) };
+    let cycle = |a: f64, b: f64| concat(&[path(a, b, 1.0), repeat(b, 105)]);
+    let want = concat(&[cycle(32.0, first), cycle(first, second), cycle(second, first), cycle(first, second)]);
+    assert_eq!(heights, want[..600]);
+    // Stopped: it stays, remembering what it was doing.
+    stand(&mut g, 40.0, 408.0, 180.0);
+    press_use(&mut g);
+    let stopped = floor(&g, lift);
+    let was = plat(&g, lift);
+    assert!(matches!(was, Some(PlatState::Stasis { .. })), "{was:?}");
+    let held = record(&mut g, IDLE, 300, |g| floor(g, lift));
+    assert!(held.iter().all(|&h| h == stopped), "moved while stopped");
+    // The perpetual special again wakes it: on from where it was.
+    stand(&mut g, 40.0, 360.0, 180.0);
+    press_use(&mut g);
+    let going = concat(&[vec![floor(&g, lift)], record(&mut g, IDLE, 200, |g| floor(g, lift))]);
+    let resumed = want[600..].iter().copied().skip_while(|&h| h == stopped).take(3).collect::<Vec<_>>();
+    assert_eq!(going.iter().copied().skip_while(|&h| h == stopped).take(3).collect::<Vec<_>>(), resumed);
+    let lifts = g.world().thinkers.iter().filter(|t| matches!(t, Thinker::Plat(p) if p.sector == lift)).count();
+    assert_eq!(lifts, 1);
 }
 
 // ---------------------------------------------------------------------------
