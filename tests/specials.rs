@@ -314,7 +314,7 @@ fn a_perpetual_lift_goes_between_the_lowest_and_highest_floors_until_stopped_and
 }
 
 // ---------------------------------------------------------------------------
-// Doors (tests/maps/doors.ron: hall 0, closet 1, doors 0-5 are sectors 2-7)
+// Doors (tests/maps/doors.ron: hall 0, closet 1, doors 0-7 are sectors 2-9)
 
 const DOOR_TOP: f64 = 128.0 - 4.0;
 
@@ -476,6 +476,27 @@ fn a_closing_door_goes_back_up_when_it_meets_the_player() {
     assert_eq!(lowest, 56.0);
     assert!(reversals.len() >= 2, "reversed {reversals:?}");
     assert_eq!(reversals[1] - reversals[0], 34 + 150 + 35, "{reversals:?}");
+}
+
+#[test]
+fn sector_timers_close_a_door_after_30_seconds_and_open_one_after_5_minutes() {
+    let mut g = game("doors");
+    let (closes, opens) = (8, 9);
+    let mut c = Vec::new();
+    let mut o = Vec::new();
+    for _ in 0..5 * 60 * 35 + 62 + 150 + 62 {
+        g.tick(&IDLE);
+        c.push(ceiling(&g, closes));
+        o.push(ceiling(&g, opens));
+    }
+    // Doom's P_SpawnDoorCloseIn30: open 1050 ticks, then down at 2.
+    let want = concat(&[repeat(DOOR_TOP, 1050), path(DOOR_TOP, 0.0, 2.0)]);
+    assert_eq!(c[..want.len()], want[..]);
+    assert!(c[want.len()..].iter().all(|&h| h == 0.0));
+    // P_SpawnDoorRaiseIn5Mins: shut 10500 ticks, then a normal door.
+    let want = concat(&[repeat(0.0, 10500), path(0.0, DOOR_TOP, 2.0), repeat(DOOR_TOP, 150), path(DOOR_TOP, 0.0, 2.0)]);
+    assert_eq!(o, want);
+    assert!(!moving(&g, closes) && !moving(&g, opens));
 }
 
 // ---------------------------------------------------------------------------
@@ -981,7 +1002,8 @@ fn light_specials_set_the_brightest_or_dimmest_neighbour_a_level_or_a_strobe() {
 }
 
 // ---------------------------------------------------------------------------
-// Damage and secrets (tests/maps/sector_specials.ron: room 0, nukage 1 (floor -8), secret 2)
+// Damage and secrets (tests/maps/sector_specials.ron: room 0, nukage 1 (floor -8), secret 2,
+// exit floor 3)
 
 #[test]
 fn damage_hurts_every_32_ticks_only_with_the_feet_on_the_floor() {
@@ -1022,6 +1044,25 @@ fn a_secret_is_counted_once_when_entered() {
     assert_eq!(g.level().map.sectors[2].special, SectorSpecial::default());
     idle(&mut g, 40);
     assert_eq!(g.stats().secrets, (1, 1));
+}
+
+#[test]
+fn an_exit_floor_hurts_and_ends_the_level_at_10_health() {
+    // Doom's sector type 11 (E1M8's): 20 every 32 ticks; at 10 health or
+    // less the level ends.
+    let mut g = game("sector_specials");
+    stand(&mut g, 896.0, 128.0, 0.0);
+    let mut healths = Vec::new();
+    while g.exit().is_none() {
+        let time = g.ticks();
+        g.tick(&IDLE);
+        if time % 32 == 0 {
+            healths.push(g.player().health);
+        }
+        assert!(g.ticks() < 1000, "never ended");
+    }
+    assert_eq!(healths, [80, 60, 40, 20, 0]);
+    assert_eq!(g.exit(), Some(Exit::Normal));
 }
 
 // ---------------------------------------------------------------------------
