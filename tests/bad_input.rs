@@ -720,6 +720,345 @@ fn unreadable_paths_are_io_errors() {
 }
 
 // ---------------------------------------------------------------------------
+// Source maps: specials (map format version 2), each problem naming its element
+
+/// two_rooms in format version 2.
+fn v2(text: &str) -> String {
+    edit(text, "Map(\n", "Map(\n    version: 2,\n")
+}
+
+/// two_rooms with a special on line 0 (the west wall, one-sided, sector 0).
+fn on_wall(special: &str) -> String {
+    tr(
+        "front: Side(sector: 0, middle: \"BRICK\"))",
+        &format!("front: Side(sector: 0, middle: \"BRICK\"), special: {special})"),
+    )
+}
+
+/// two_rooms with a special on line 6 (the open line, sector 1 in front, 0 behind).
+fn on_opening(special: &str) -> String {
+    tr("back: Some(Side(sector: 0)))", &format!("back: Some(Side(sector: 0)), special: {special})"))
+}
+
+/// `text` with sector 1 (the east room) tagged `tag`.
+fn tag_east(text: &str, tag: u16) -> String {
+    edit(
+        text,
+        "Sector(floor: 24.0, ceiling: 128.0, light: 160,",
+        &format!("Sector(floor: 24.0, ceiling: 128.0, light: 160, tag: {tag},"),
+    )
+}
+
+/// `text` with `things` added after the player start.
+fn with_things(text: &str, things: &str) -> String {
+    edit(text, "angle: 0.0),\n", &format!("angle: 0.0),\n        {things}\n"))
+}
+
+/// `text` with these trigger lines.
+fn with_trigger_lines(text: &str, lines: &str) -> String {
+    edit(text, "    ],\n)", &format!("    ],\n    trigger_lines: [{lines}],\n)"))
+}
+
+fn bad_special(element: &str, message: &str) -> Problem {
+    Problem::BadSpecial { element: element.into(), message: message.into() }
+}
+
+#[test]
+fn specials_that_name_nothing_name_their_line() {
+    use sightline::map::SpecialAt::{Line, TriggerLine};
+    let destination = "Thing(kind: \"teleport_destination\", x: 384.0, y: 128.0, angle: 90.0),";
+    let teleport = "LineSpecial(on: Walk, repeat: true, tag: 5, action: Teleport)";
+    check_all(&[
+        invalid(
+            "a special whose tag matches no sector",
+            on_wall("LineSpecial(on: Use, tag: 9, action: Lift())"),
+            vec![Problem::TagMatchesNothing { at: Line(0), action: "lift", tag: 9 }],
+            &["line 0 lift special: acts on sectors tagged 9, but no sector has tag 9"],
+        ),
+        invalid(
+            "a manual special (no tag) on a one-sided line",
+            on_wall("LineSpecial(on: Use, repeat: true, action: Door(kind: Raise))"),
+            vec![Problem::NoBackSector { at: Line(0), action: "door" }],
+            &["line 0 door special", "acts on the sector behind the line, but the line has no back side"],
+        ),
+        invalid(
+            "a trigger line's special with no tag",
+            with_trigger_lines(
+                &two_rooms(),
+                "TriggerLine(from: 0, to: 2, special: LineSpecial(on: Walk, action: Floor(to: Current, offset: 8.0)))",
+            ),
+            vec![Problem::NoBackSector { at: TriggerLine(0), action: "floor" }],
+            &["trigger line 0 floor special"],
+        ),
+        invalid(
+            "a door locked with a key no thing gives (a blue card does not open red)",
+            with_things(
+                &v2(&on_opening("LineSpecial(on: Use, repeat: true, action: Door(kind: Raise, key: Red))")),
+                "Thing(kind: \"blue_card\", x: 128.0, y: 64.0),",
+            ),
+            vec![Problem::MissingKey { at: Line(6), colour: "red" }],
+            &["line 6 door special: the door needs the red key, but no thing in the map is a red card or skull"],
+        ),
+        invalid(
+            "a teleporter with no destination",
+            tag_east(&on_opening(teleport), 5),
+            vec![Problem::NoTeleportDestination { at: Line(6), tag: 5 }],
+            &["line 6 teleporter special", "sector tagged 5", "\"teleport_destination\""],
+        ),
+        invalid(
+            "a teleporter whose destination is in an untagged sector",
+            with_things(
+                &tag_east(&on_opening(teleport), 5),
+                "Thing(kind: \"teleport_destination\", x: 128.0, y: 64.0),",
+            ),
+            vec![Problem::NoTeleportDestination { at: Line(6), tag: 5 }],
+            &["line 6 teleporter special"],
+        ),
+        invalid(
+            "a line teleporter to a one-sided line",
+            on_opening("LineSpecial(on: Walk, repeat: true, action: LineTeleport(to: 0))"),
+            vec![Problem::BadTeleportLine { at: Line(6), to: 0 }],
+            &["line 6 teleporter special: teleports to line 0, which must be another two-sided line"],
+        ),
+        invalid(
+            "a line teleporter to a line that does not exist",
+            on_opening("LineSpecial(on: Walk, repeat: true, action: LineTeleport(to: 99))"),
+            vec![Problem::BadTeleportLine { at: Line(6), to: 99 }],
+            &["line 6", "line 99"],
+        ),
+        invalid(
+            "a line teleporter to itself",
+            on_opening("LineSpecial(on: Walk, repeat: true, action: LineTeleport(to: 6))"),
+            vec![Problem::BadTeleportLine { at: Line(6), to: 6 }],
+            &["line 6 teleporter special: teleports to line 6"],
+        ),
+    ]);
+    // The same teleporter with its destination in the tagged room is fine.
+    let good = with_things(&tag_east(&on_opening(teleport), 5), destination);
+    parse_map(&good, "teleporter.ron").unwrap_or_else(|e| panic!("{e}"));
+}
+
+#[test]
+fn unknown_thing_kinds_in_version_2_are_named_with_a_suggestion() {
+    check_all(&[
+        invalid(
+            "a misspelt thing kind",
+            with_things(&v2(&two_rooms()), "Thing(kind: \"imps\", x: 128.0, y: 64.0),"),
+            vec![Problem::UnknownThing { thing: 1, kind: "imps".into(), nearest: Some("imp".into()) }],
+            &["thing 1: no thing type is named \"imps\"; did you mean \"imp\"?"],
+        ),
+        invalid(
+            "a thing kind like no other",
+            with_things(&v2(&two_rooms()), "Thing(kind: \"qqqqqqqqqqqq\", x: 128.0, y: 64.0),"),
+            vec![Problem::UnknownThing { thing: 1, kind: "qqqqqqqqqqqq".into(), nearest: None }],
+            &["thing 1: no thing type is named \"qqqqqqqqqqqq\" (the types are listed in engine/data/things.ron)"],
+        ),
+    ]);
+    // In version 1 a kind names the sprite drawn: anything goes.
+    parse_map(&with_things(&two_rooms(), "Thing(kind: \"imps\", x: 128.0, y: 64.0),"), "v1.ron")
+        .unwrap_or_else(|e| panic!("{e}"));
+}
+
+#[test]
+fn unknown_special_names_and_fields_are_syntax_errors_where_they_are() {
+    check_all(&[
+        syntax(
+            "an unknown action",
+            on_wall("LineSpecial(on: Use, tag: 1, action: Elevator())"),
+            "Elevator",
+            "Elevator",
+        ),
+        syntax("an unknown activation", on_wall("LineSpecial(on: Touch, tag: 1, action: Lift())"), "Touch", "Touch"),
+        syntax("a misspelt special field", on_wall("LineSpecial(on: Use, tagg: 1, action: Lift())"), "tagg", "tagg"),
+        syntax(
+            "an unknown key colour",
+            on_opening("LineSpecial(on: Use, action: Door(kind: Raise, key: Green))"),
+            "Green",
+            "Green",
+        ),
+        syntax(
+            "a misspelt sector special field",
+            tr("light: 160,", "light: 160, special: SectorSpecial(secrett: true),"),
+            "secrett",
+            "secrett",
+        ),
+        syntax("a negative wait", on_opening("LineSpecial(on: Use, action: Door(kind: Raise, wait: -1))"), "-1", ""),
+    ]);
+}
+
+/// Misspelt parameters inside specials are silently dropped (the default
+/// is used instead): `Action`'s struct variants, `Change`, `Damage` and
+/// `Scroll` in engine/src/map/special.rs lack `#[serde(deny_unknown_fields)]`
+/// (`SectorSpecial` and every source struct have it).
+#[test]
+#[ignore = "bug: map/special.rs accepts unknown fields in actions, Change, Damage and Scroll"]
+fn bug_misspelt_fields_inside_specials_are_syntax_errors() {
+    let tagged = |t: String| tag_east(&t, 1);
+    check_all(&[
+        syntax(
+            "a misspelt lift speed",
+            tagged(on_wall("LineSpecial(on: Use, tag: 1, action: Lift(sped: 4.0))")),
+            "sped",
+            "sped",
+        ),
+        syntax(
+            "a misspelt door wait",
+            tagged(on_wall("LineSpecial(on: Use, tag: 1, action: Door(kind: Raise, wiat: 10))")),
+            "wiat",
+            "wiat",
+        ),
+        syntax(
+            "a misspelt change field",
+            tagged(on_wall(
+                "LineSpecial(on: Use, tag: 1, action: Floor(to: Current, change: Change(from: Trigger, specal: Copy)))",
+            )),
+            "specal",
+            "specal",
+        ),
+        syntax(
+            "a misspelt damage field",
+            tr("light: 160,", "light: 160, special: SectorSpecial(damage: Damage(amount: 5, evry: 3)),"),
+            "evry",
+            "evry",
+        ),
+        syntax(
+            "a third scroll axis",
+            tr("light: 160,", "light: 160, carry: Scroll(x: 1.0, y: 0.0, z: 4.0),"),
+            "z: 4.0",
+            "z",
+        ),
+    ]);
+}
+
+#[test]
+fn bad_numbers_in_specials_name_the_special() {
+    let wall = |action: &str| tag_east(&on_wall(&format!("LineSpecial(on: Use, tag: 5, action: {action})")), 5);
+    let sector = |special: &str| tr("light: 160,", &format!("light: 160, special: {special},"));
+    check_all(&[
+        invalid(
+            "a speed of 0",
+            wall("Lift(speed: 0.0)"),
+            vec![bad_special("line 0 lift special", "speed 0.0 must be above 0 and at most 1024 units a tick")],
+            &["line 0 lift special: speed 0.0"],
+        ),
+        invalid(
+            "a NaN speed",
+            wall("Door(kind: Raise, speed: NaN)"),
+            vec![bad_special("line 0 door special", "speed NaN must be above 0 and at most 1024 units a tick")],
+            &["line 0 door special: speed NaN"],
+        ),
+        invalid(
+            "a speed too high",
+            wall("Crusher(speed: 2000.0)"),
+            vec![bad_special("line 0 crusher special", "speed 2000.0 must be above 0 and at most 1024 units a tick")],
+            &["line 0 crusher special"],
+        ),
+        invalid(
+            "a wait over an hour",
+            wall("Door(kind: Raise, wait: 200000)"),
+            vec![bad_special("line 0 door special", "wait 200000 is more than an hour (126000 ticks)")],
+            &["line 0 door special: wait 200000"],
+        ),
+        invalid(
+            "an infinite offset",
+            wall("Floor(to: Current, offset: inf)"),
+            vec![bad_special("line 0 floor special", "offset inf is not finite within the supported range")],
+            &["line 0 floor special: offset inf"],
+        ),
+        invalid(
+            "a stair step of 0",
+            wall("Stairs(step: 0.0)"),
+            vec![bad_special("line 0 stairs special", "step 0.0 must be finite, not 0, and at most 4096")],
+            &["line 0 stairs special: step 0.0"],
+        ),
+        invalid(
+            "a special tag out of range",
+            on_wall("LineSpecial(on: Use, tag: 70000, action: Lift())"),
+            vec![Problem::BadTag { element: "line 0 special".into(), tag: 70000 }],
+            &["line 0 special: tag 70000 is outside 0..=65535"],
+        ),
+        invalid(
+            "too much damage",
+            sector("SectorSpecial(damage: Damage(amount: 2000))"),
+            vec![bad_special(
+                "sector 1",
+                "damage 2000 every 32 ticks: the amount must be 0..=1000 and every at least 1",
+            )],
+            &["sector 1: damage 2000 every 32 ticks"],
+        ),
+        invalid(
+            "damage every 0 ticks",
+            sector("SectorSpecial(damage: Damage(amount: 5, every: 0))"),
+            vec![bad_special("sector 1", "damage 5 every 0 ticks: the amount must be 0..=1000 and every at least 1")],
+            &["sector 1: damage 5 every 0 ticks"],
+        ),
+        invalid(
+            "a scroll too fast",
+            tr(
+                "front: Side(sector: 0, middle: \"BRICK\")",
+                "front: Side(sector: 0, middle: \"BRICK\", scroll: Scroll(x: 5000.0, y: 0.0))",
+            ),
+            vec![bad_special("line 0 front side", "scroll (5000.0, 0.0) must be finite and at most 1024 units a tick")],
+            &["line 0 front side: scroll (5000.0, 0.0)"],
+        ),
+        invalid(
+            "a conveyor too fast",
+            tr("light: 160,", "light: 160, carry: Scroll(x: 100.0, y: 0.0),"),
+            vec![bad_special("sector 1", "carry (100.0, 0.0) must be finite and at most 64 units a tick")],
+            &["sector 1: carry (100.0, 0.0)"],
+        ),
+        invalid(
+            "a light transfer from a sector that does not exist",
+            tr("light: 160,", "light: 160, floor_light: 7,"),
+            vec![bad_special("sector 1", "floor_light refers to sector 7, but the sectors are numbered 0..2")],
+            &["sector 1: floor_light refers to sector 7"],
+        ),
+    ]);
+}
+
+#[test]
+fn versions_and_special_line_forms_are_checked() {
+    check_all(&[
+        invalid(
+            "version 3",
+            edit(&two_rooms(), "Map(\n", "Map(\n    version: 3,\n"),
+            vec![Problem::BadVersion { version: 3 }],
+            &["version 3: this build reads map format versions 1 and 2"],
+        ),
+        invalid(
+            "version 0",
+            edit(&two_rooms(), "Map(\n", "Map(\n    version: 0,\n"),
+            vec![Problem::BadVersion { version: 0 }],
+            &["version 0"],
+        ),
+        invalid(
+            "`door` and `special` on one line",
+            on_opening("LineSpecial(on: Use, action: Door(kind: Open)), door: true"),
+            vec![bad_special("line 6", "give at most one of `door`, `trigger` and `special`")],
+            &["line 6: give at most one of `door`, `trigger` and `special`"],
+        ),
+        invalid(
+            "a trigger line with a bad vertex",
+            with_trigger_lines(
+                &tag_east(&two_rooms(), 5),
+                "TriggerLine(from: 0, to: 99, special: LineSpecial(on: Walk, tag: 5, action: Lift()))",
+            ),
+            vec![bad_special("trigger line 0", "refers to vertex 99, but the vertices are numbered 0..6")],
+            &["trigger line 0: refers to vertex 99"],
+        ),
+        invalid(
+            "a trigger line of zero length",
+            with_trigger_lines(
+                &tag_east(&two_rooms(), 5),
+                "TriggerLine(from: 2, to: 2, special: LineSpecial(on: Walk, tag: 5, action: Lift()))",
+            ),
+            vec![bad_special("trigger line 0", "has zero length")],
+            &["trigger line 0: has zero length"],
+        ),
+    ]);
+}
+
+// ---------------------------------------------------------------------------
 // Compiled maps
 
 fn compiled(name: &str) -> (CompiledMap, Vec<u8>) {

@@ -392,7 +392,10 @@ pub fn sector_special(number: i16) -> Result<SectorSpecial, String> {
         10 => s.timer = Some(DoorTimer::CloseIn30s),
         11 => s.damage = Some(Damage { amount: 20, every: 32, exit_below: 10 }),
         14 => s.timer = Some(DoorTimer::RaiseIn5Min),
-        other => return Err(format!("sector type {other} (not a Doom sector type)")),
+        // Name the number the WAD holds: for a Boom generalized type (32 and
+        // up) the bad part is only its low five bits.
+        other if n < 32 => return Err(format!("sector type {other} (not a Doom sector type)")),
+        other => return Err(format!("sector type {number} (its low five bits, {other}, are not a Doom sector type)")),
     }
     if n < 32 {
         return Ok(s);

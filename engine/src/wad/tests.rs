@@ -310,3 +310,256 @@ proptest! {
         exercise(bytes);
     }
 }
+
+// ---------------------------------------------------------------------------
+// Specials, tags, sector types and thing types that make no sense: listed in
+// the report, never a panic, and the map still validates.
+
+/// Little-endian u16s, as the map lumps store specials, tags and types.
+fn u16s(values: &[u16]) -> Vec<u8> {
+    values.iter().flat_map(|v| v.to_le_bytes()).collect()
+}
+
+/// Two rooms side by side, west (sector 0, x 0..256) and east (sector 1,
+/// x 256..512, both y 0..256), joined by linedef 6, two-sided, from (256, 0)
+/// to (256, 256) with the east room on its right. Linedefs 0-5 are the walls:
+/// 0 west, 1 north of sector 0, 2 north of sector 1, 3 east, 4 south of 1, 5
+/// south of 0. `lines` gives each linedef's special and tag, `sectors` each
+/// sector's type and tag; `things` (x, y, type, all skills) follow player 1's
+/// start at (128, 128).
+fn two_rooms(
+    lines: &[(u16, u16); 7],
+    sectors: &[(i16, u16); 2],
+    things: &[(i16, i16, u16)],
+) -> Vec<(&'static str, Vec<u8>)> {
+    let vertices = i16s(&[0, 0, 0, 256, 256, 256, 512, 256, 512, 0, 256, 0]);
+    let ends = [(0, 1), (1, 2), (2, 3), (3, 4), (4, 5), (5, 0), (5, 2)];
+    let mut linedefs = Vec::new();
+    for (k, (&(a, b), &(special, tag))) in ends.iter().zip(lines).enumerate() {
+        let two_sided = k == 6;
+        let (flags, left) = if two_sided { (level::flags::TWO_SIDED, 7) } else { (level::flags::BLOCKING, 0xFFFF) };
+        linedefs.extend(u16s(&[a, b, flags, special, tag, k as u16, left]));
+    }
+    let side = |middle: &str, sector: i16| {
+        let mut s = i16s(&[0, 0]);
+        s.extend(name8("-"));
+        s.extend(name8("-"));
+        s.extend(name8(middle));
+        s.extend(i16s(&[sector]));
+        s
+    };
+    let mut sidedefs = Vec::new();
+    for sector in [0, 0, 1, 1, 1, 0] {
+        sidedefs.extend(side("WALL", sector));
+    }
+    sidedefs.extend(side("-", 1));
+    sidedefs.extend(side("-", 0));
+    let mut sector_bytes = Vec::new();
+    for &(kind, tag) in sectors {
+        sector_bytes.extend(i16s(&[0, 128]));
+        sector_bytes.extend(name8("FLAT"));
+        sector_bytes.extend(name8("FLAT"));
+        sector_bytes.extend(i16s(&[160, kind]));
+        sector_bytes.extend(u16s(&[tag]));
+    }
+    let mut thing_bytes = i16s(&[128, 128, 90, 1, 7]);
+    for &(x, y, kind) in things {
+        thing_bytes.extend(i16s(&[x, y, 0]));
+        thing_bytes.extend(u16s(&[kind, 7]));
+    }
+    let replaced = [
+        ("THINGS", thing_bytes),
+        ("LINEDEFS", linedefs),
+        ("SIDEDEFS", sidedefs),
+        ("VERTEXES", vertices),
+        ("SECTORS", sector_bytes),
+    ];
+    square_room()
+        .into_iter()
+        .map(|(n, b)| match replaced.iter().find(|r| r.0 == n) {
+            Some((_, bytes)) => (n, bytes.clone()),
+            None => (n, b),
+        })
+        .collect()
+}
+
+/// No specials, no tags, no sector types.
+const PLAIN_LINES: [(u16, u16); 7] = [(0, 0); 7];
+const PLAIN_SECTORS: [(i16, u16); 2] = [(0, 0); 2];
+
+/// Imports E1M1 of `lumps`; the conversion itself must succeed.
+fn import(lumps: &[(&str, Vec<u8>)]) -> super::import::Converted {
+    let w = wad(lumps).unwrap_or_else(|e| panic!("{e}"));
+    let art = Art::read(&w).unwrap_or_else(|e| panic!("{e}"));
+    convert(&w, &w.map("E1M1").unwrap_or_else(|e| panic!("{e}")), &art).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// Imports and validates; returns the conversion and the validated map.
+fn import_valid(lumps: &[(&str, Vec<u8>)]) -> (super::import::Converted, crate::map::Map) {
+    let c = import(lumps);
+    let map = crate::map::validate::validate(&c.source).unwrap_or_else(|p| panic!("{p:?}\n{}", c.source.to_ron()));
+    (c, map)
+}
+
+#[test]
+fn the_two_room_wad_imports_as_two_rooms() {
+    let (c, map) = import_valid(&two_rooms(&PLAIN_LINES, &PLAIN_SECTORS, &[]));
+    assert_eq!((map.sectors.len(), map.lines.len(), map.things.len()), (2, 7, 1));
+    let opening = &map.lines[6];
+    assert_eq!((opening.front.sector, opening.back.as_ref().map(|b| b.sector)), (1, Some(0)));
+    assert_eq!(c.report, super::import::Report::default());
+}
+
+#[test]
+fn unknown_special_numbers_and_thing_types_are_listed_and_left_out() {
+    let mut lines = PLAIN_LINES;
+    lines[0] = (9999, 0);
+    // A Boom locked door that opens for any key: a lock Sightline cannot say.
+    lines[6] = (0x3800 | 7, 0);
+    let things = [(64, 64, 12345), (384, 64, 2014)];
+    let (c, map) = import_valid(&two_rooms(&lines, &PLAIN_SECTORS, &things));
+    assert_eq!(
+        c.report.unsupported_specials,
+        [
+            "linedef 0: line special 9999 (not a Doom or Boom special Sightline knows)",
+            "linedef 6: generalized line type 0x3807 (a lock that wants any key or all keys)",
+        ]
+    );
+    assert_eq!(c.report.unknown_things, ["thing 1: type 12345 at (64, 64)"]);
+    assert_eq!((c.report.specials, c.report.dangling.len()), (0, 0));
+    assert!(map.lines.iter().all(|l| l.special.is_none()));
+    // The known thing (a health bonus) is kept, the unknown one left out.
+    let kinds: Vec<&str> = map.things.iter().map(|t| t.kind.as_str()).collect();
+    assert_eq!(kinds, ["player_start", "health_bonus"]);
+}
+
+#[test]
+fn specials_that_name_nothing_are_dropped_or_unlocked_and_listed() {
+    // (lines, sectors, things, the report's dangling entries, what line 6 keeps)
+    let dr_on_a_wall = {
+        let mut l = PLAIN_LINES;
+        l[0] = (1, 0);
+        l
+    };
+    let on_opening = |special, tag| {
+        let mut l = PLAIN_LINES;
+        l[6] = (special, tag);
+        l
+    };
+    let east_tagged = |tag| [(0, 0), (0, tag)];
+    type Case = ([(u16, u16); 7], [(i16, u16); 2], Vec<(i16, i16, u16)>, Vec<&'static str>);
+    let cases: Vec<Case> = vec![
+        // A manual door (DR, 1) on a one-sided wall: nothing behind it to open.
+        (
+            dr_on_a_wall,
+            PLAIN_SECTORS,
+            vec![],
+            vec![
+                "line 0 door special: with no tag it acts on the sector behind the line, but the line has no back \
+                 side; give it a tag or a back side (dropped)",
+            ],
+        ),
+        // W1 open door (2) tagged 42: no sector has it.
+        (
+            on_opening(2, 42),
+            PLAIN_SECTORS,
+            vec![],
+            vec!["line 6 door special: acts on sectors tagged 42, but no sector has tag 42 (dropped)"],
+        ),
+        // WR teleport (97) to the tagged east room, which has no destination
+        // (the one there is in the west room).
+        (
+            on_opening(97, 3),
+            east_tagged(3),
+            vec![(64, 64, 14)],
+            vec![
+                "line 6 teleporter special: teleports to a destination in a sector tagged 3, but none of those \
+                 sectors holds a \"teleport_destination\" thing (dropped)",
+            ],
+        ),
+        // DR blue door (26) with no blue card or skull anywhere: it opens for anyone.
+        (
+            on_opening(26, 0),
+            PLAIN_SECTORS,
+            vec![(64, 64, 6)],
+            vec![
+                "line 6 door special: the door needs the blue key, but no thing in the map is a blue card or skull \
+                 (unlocked)",
+            ],
+        ),
+        // Boom's line teleporter (244) with no other line of its tag.
+        (on_opening(244, 5), PLAIN_SECTORS, vec![], vec!["linedef 6: line teleporter with no exit line tagged 5"]),
+    ];
+    for (k, (lines, sectors, things, dangling)) in cases.into_iter().enumerate() {
+        let (c, map) = import_valid(&two_rooms(&lines, &sectors, &things));
+        assert_eq!(c.report.dangling, dangling, "case {k}");
+        assert_eq!((c.report.unsupported_specials.len(), c.report.unknown_things.len()), (0, 0), "case {k}");
+        let left: Vec<_> = map.lines.iter().filter_map(|l| l.special.as_ref()).collect();
+        if k == 3 {
+            // Unlocked, not dropped.
+            assert!(
+                matches!(left[..], [s] if matches!(s.action, crate::map::Action::Door { key: None, .. })),
+                "{left:?}"
+            );
+        } else {
+            assert!(left.is_empty(), "case {k}: {left:?}");
+        }
+    }
+}
+
+#[test]
+fn bad_sector_types_are_listed_with_the_number_the_wad_has() {
+    for (kind, why) in [
+        (6, "sector 1: sector type 6 (not a Doom sector type)"),
+        (15, "sector 1: sector type 15 (not a Doom sector type)"),
+        (38, "sector 1: sector type 38 (its low five bits, 6, are not a Doom sector type)"),
+        (0x300, "sector 1: sector type 768 (Boom's friction, wind or current bits)"),
+        (-1, "sector 1: sector type -1 (its low five bits, 31, are not a Doom sector type)"),
+    ] {
+        let (c, map) = import_valid(&two_rooms(&PLAIN_LINES, &[(9, 0), (kind, 0)], &[]));
+        assert_eq!(c.report.unsupported_specials, [why]);
+        assert_eq!(c.report.sector_specials, 2);
+        // The sector is kept without a special; the good one keeps its own.
+        assert!(map.sectors[1].special.is_none());
+        assert!(map.sectors[0].special.secret);
+    }
+}
+
+/// Special numbers: mostly from the ranges that mean something (vanilla,
+/// Boom's, generalized), some anything at all.
+fn special_number() -> impl Strategy<Value = u16> {
+    prop_oneof![3 => 1u16..=141, 1 => 213u16..=261, 3 => 0x2F80u16..=0x7FFF, 2 => any::<u16>(), 1 => Just(0u16)]
+}
+
+/// Thing types: keys, teleport destinations and starts often, anything else too.
+fn thing_type() -> impl Strategy<Value = u16> {
+    prop_oneof![2 => prop::sample::select(vec![1u16, 5, 6, 13, 14, 38, 39, 40]), 1 => 1u16..=3006, 1 => any::<u16>()]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(cases(256)))]
+
+    /// Whatever the specials, tags, sector types and thing types, the
+    /// importer returns a map that validates, and lists what it could not keep.
+    #[test]
+    fn random_specials_tags_and_types_import_to_a_valid_map(
+        lines in proptest::collection::vec((special_number(), prop_oneof![3 => 0u16..4, 1 => any::<u16>()]), 7),
+        sectors in proptest::collection::vec((any::<i16>(), prop_oneof![3 => 0u16..4, 1 => any::<u16>()]), 2),
+        things in proptest::collection::vec(
+            (prop_oneof![3 => 0i16..=512, 1 => any::<i16>()], prop_oneof![3 => 0i16..=256, 1 => any::<i16>()], thing_type()),
+            0..6,
+        ),
+    ) {
+        let lines: [(u16, u16); 7] = lines.try_into().expect("7 lines");
+        let sectors: [(i16, u16); 2] = sectors.try_into().expect("2 sectors");
+        let c = import(&two_rooms(&lines, &sectors, &things));
+        let validated = crate::map::validate::validate(&c.source);
+        prop_assert!(validated.is_ok(), "{:?}\n{:?}\n{}", validated.err(), c.report, c.source.to_ron());
+        // Every special number is accounted for: kept, ignored, unsupported or dangling.
+        let given = lines.iter().filter(|l| l.0 != 0).count();
+        let r = &c.report;
+        prop_assert!(r.specials + r.ignored.len() + r.unsupported_specials.len() >= given, "{r:?}");
+        let unknown = things.iter().filter(|t| crate::map::things::ThingTypes::doom().by_doomednum(t.2).is_none()).count();
+        prop_assert_eq!(r.unknown_things.len(), unknown);
+    }
+}

@@ -32,36 +32,42 @@ pub enum Moved {
 pub const CRUSH_DAMAGE: i32 = 10;
 
 /// Moves `plane` of `sector` one tick towards `dest` at `speed` (units per
-/// tick), `up` or down. A plane never passes `dest`, and one already at or
-/// past it has arrived (Doom would snap it back to `dest`). When a body no longer
-/// fits over the sector, a plane that does not `crush` goes back where it
-/// was; one that crushes stays (Doom keeps a crushing plane moving into
-/// bodies, and the crush hurts them). Only a floor going up or a ceiling
-/// going down can squeeze a body.
+/// tick), `up` or down, by Doom's T_MovePlane rules. A step that would pass
+/// `dest` stops on it, and one already at or past it has arrived (Doom
+/// would snap it back to `dest`). When a body no longer fits over the
+/// sector: a floor going up or a ceiling going down that `crush`es keeps
+/// moving into it (the crush hurts it); any other plane goes back where it
+/// was, except a rising ceiling, which Doom never checks. A step cut short
+/// to `dest` that does not fit is undone and the plane has arrived all the
+/// same (Doom's `pastdest`), so a crusher with a body under it still turns
+/// at the bottom.
 pub fn move_plane(ctx: &mut Ctx, sector: usize, plane: Plane, speed: f64, dest: f64, crush: bool, up: bool) -> Moved {
     let before = height(ctx, sector, plane);
     if (up && dest <= before) || (!up && dest >= before) {
         return Moved::Arrived;
     }
-    let arrived = if up { before + speed >= dest } else { before - speed <= dest };
-    let next = match (arrived, up) {
-        (true, _) => dest,
-        (false, true) => before + speed,
-        (false, false) => before - speed,
-    };
+    let stepped = if up { before + speed } else { before - speed };
+    let past = if up { stepped > dest } else { stepped < dest };
+    let next = if past { dest } else { stepped };
+    let arrived = next == dest;
     let squeezes = (plane == Plane::Floor) == up;
     set_height(ctx, sector, plane, next);
     let fits = settle_bodies(ctx, sector, crush);
     if fits {
         return if arrived { Moved::Arrived } else { Moved::Ok };
     }
-    if arrived || !crush || !squeezes {
-        // Doom puts the plane back whenever the last step would not fit,
-        // and when a non-crushing plane meets a body.
+    let keeps = !past && ((crush && squeezes) || (plane == Plane::Ceiling && up));
+    if !keeps {
         set_height(ctx, sector, plane, before);
         settle_bodies(ctx, sector, false);
     }
-    Moved::Crushed
+    match (past, keeps) {
+        (true, _) => Moved::Arrived,
+        (false, true) if arrived => Moved::Arrived,
+        // A rising ceiling carries on as if nothing were there.
+        (false, true) if !squeezes => Moved::Ok,
+        _ => Moved::Crushed,
+    }
 }
 
 fn height(ctx: &Ctx, sector: usize, plane: Plane) -> f64 {
@@ -83,12 +89,15 @@ fn set_height(ctx: &mut Ctx, sector: usize, plane: Plane, h: f64) {
 /// Doom's P_ChangeSector for the bodies over `sector`: each is re-clipped
 /// to the floor and ceiling under it (on the floor: it rides the floor;
 /// else a low ceiling pushes it down), and one that no longer fits is hurt
-/// when `crush`. Returns whether every body fits.
+/// when `crush`. A dead body has no height (Doom's PIT_ChangeSector turns a
+/// corpse into gibs of height 0), so it always fits. Returns whether every
+/// body fits.
 fn settle_bodies(ctx: &mut Ctx, sector: usize, crush: bool) -> bool {
     if !ctx.bodies.touched.contains(&sector) {
         return true;
     }
     let player = &mut *ctx.bodies.player;
+    let height = if player.dead() { 0.0 } else { HEIGHT };
     let on_floor = player.z <= player.floor;
     let world = crate::play::collision::World { compiled: &ctx.level.compiled, blockmap: ctx.bodies.blockmap };
     let near = world.lines_near(ctx.bodies.query, player.pos, RADIUS + 1.0);
@@ -96,10 +105,10 @@ fn settle_bodies(ctx: &mut Ctx, sector: usize, crush: bool) -> bool {
     (player.floor, player.ceiling) = (area.floor, area.ceiling);
     if on_floor {
         player.z = area.floor;
-    } else if player.z + HEIGHT > area.ceiling {
-        player.z = (area.ceiling - HEIGHT).max(area.floor);
+    } else if player.z + height > area.ceiling {
+        player.z = (area.ceiling - height).max(area.floor);
     }
-    let fits = area.ceiling - area.floor >= HEIGHT;
+    let fits = area.ceiling - area.floor >= height;
     if !fits && crush && ctx.time % 4 == 0 {
         player.hurt(CRUSH_DAMAGE);
     }
