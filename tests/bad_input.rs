@@ -891,8 +891,7 @@ fn unknown_special_names_and_fields_are_syntax_errors_where_they_are() {
 /// `Scroll` in engine/src/map/special.rs lack `#[serde(deny_unknown_fields)]`
 /// (`SectorSpecial` and every source struct have it).
 #[test]
-#[ignore = "bug: map/special.rs accepts unknown fields in actions, Change, Damage and Scroll"]
-fn bug_misspelt_fields_inside_specials_are_syntax_errors() {
+fn misspelt_fields_inside_specials_are_syntax_errors() {
     let tagged = |t: String| tag_east(&t, 1);
     check_all(&[
         syntax(

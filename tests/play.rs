@@ -837,7 +837,8 @@ fn corrupt_demo_files_are_errors() {
 #[test]
 fn a_map_names_its_own_animations() {
     let dir = tempfile::tempdir().unwrap();
-    let anims = r#"Animations(flats: [], textures: [Animation(frames: ["BRICK", "STONE", "WOOD"], tics: 2)], switches: [])"#;
+    let anims =
+        r#"Animations(flats: [], textures: [Animation(frames: ["BRICK", "STONE", "WOOD"], tics: 2)], switches: [])"#;
     std::fs::write(dir.path().join("anims.ron"), anims).unwrap();
     let text = two_rooms((0.0, 128.0), (0.0, 128.0))
         .replace("Map(name:", "Map(animations: \"anims.ron\", name:")
@@ -860,5 +861,8 @@ fn a_map_names_its_own_animations() {
     assert_eq!(seen, ["BRICK", "BRICK", "BRICK", "STONE", "STONE", "WOOD", "WOOD"]);
     std::fs::write(dir.path().join("anims.ron"), anims.replace("tics: 2", "tics: 0")).unwrap();
     let err = sightline::level::open_level(&path, &BuildOptions::default()).unwrap_err().to_string();
-    assert!(err.contains("m.ron: the animations file:") && err.contains("anims.ron: texture animation 0: tics"), "{err}");
+    assert!(
+        err.contains("m.ron: the animations file:") && err.contains("anims.ron: texture animation 0: tics"),
+        "{err}"
+    );
 }

@@ -74,7 +74,7 @@ pub enum DoorKind {
     Open,
     /// Close and stay closed (W1 3, S1 50, ...).
     Close,
-    /// Close, wait, open again (W1 16: closes for 30 s).
+    /// Close, wait shut, open again (W1 16: closes for 30 s).
     CloseThenOpen,
 }
 
@@ -141,7 +141,7 @@ pub enum SpecialChange {
 
 /// A floor's change of texture on arrival (or, for a trigger model, at the start).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
-#[serde(rename = "Change")]
+#[serde(rename = "Change", deny_unknown_fields)]
 pub struct Change {
     pub from: ChangeFrom,
     #[serde(default, skip_serializing_if = "is_default")]
@@ -165,6 +165,7 @@ pub enum LightChange {
 /// is the special's, or, with no tag, on the sector behind the line (Doom's
 /// manual doors).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub enum Action {
     /// A door: the sector's ceiling moves between its floor and the lowest
     /// neighbouring ceiling less 4.
@@ -172,11 +173,13 @@ pub enum Action {
         kind: DoorKind,
         #[serde(default = "door_speed", skip_serializing_if = "is_door_speed")]
         speed: f64,
+        /// Ticks a raise door stays open.
         #[serde(default = "door_wait", skip_serializing_if = "is_door_wait")]
         wait: u32,
-        /// Needs this key (card or skull) to open. `wait` is how long a
-        /// raise door stays open, and how long a close-then-open door stays
-        /// shut (Doom's is 1050 ticks, 30 s).
+        /// Ticks a close-then-open door stays shut (Doom's 30 s).
+        #[serde(default = "door_shut", skip_serializing_if = "is_door_shut")]
+        shut: u32,
+        /// Needs this key (card or skull) to open.
         #[serde(default, skip_serializing_if = "Option::is_none")]
         key: Option<KeyColour>,
     },
@@ -325,7 +328,7 @@ pub enum LightEffect {
 
 /// Damage to a player standing on the floor (Doom's nukage and lava).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
-#[serde(rename = "Damage")]
+#[serde(rename = "Damage", deny_unknown_fields)]
 pub struct Damage {
     /// Health lost each time.
     pub amount: u32,
@@ -395,6 +398,7 @@ impl SkillBand {
 /// Scrolling in map units per tick: x along the side (positive moves the
 /// texture towards its start, as Doom's 48 "scroll left"), y down.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Scroll {
     pub x: f64,
     pub y: f64,
@@ -402,6 +406,7 @@ pub struct Scroll {
 
 pub const DOOR_SPEED: f64 = 2.0;
 pub const DOOR_WAIT: u32 = 150;
+pub const DOOR_SHUT: u32 = 30 * 35;
 pub const LIFT_SPEED: f64 = 4.0;
 pub const LIFT_WAIT: u32 = 105;
 pub const PERPETUAL_SPEED: f64 = 1.0;
@@ -429,6 +434,7 @@ macro_rules! defaults {
 defaults! {
     door_speed, is_door_speed: f64 = DOOR_SPEED;
     door_wait, is_door_wait: u32 = DOOR_WAIT;
+    door_shut, is_door_shut: u32 = DOOR_SHUT;
     lift_speed, is_lift_speed: f64 = LIFT_SPEED;
     lift_wait, is_lift_wait: u32 = LIFT_WAIT;
     perpetual_speed, is_perpetual_speed: f64 = PERPETUAL_SPEED;

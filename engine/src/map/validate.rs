@@ -241,6 +241,7 @@ fn line_special(i: usize, l: &LineSource, problems: &mut Vec<Problem>) -> Option
                 kind: DoorKind::Raise,
                 speed: super::special::DOOR_SPEED,
                 wait: super::special::DOOR_WAIT,
+                shut: super::special::DOOR_SHUT,
                 key: None,
             },
         });
@@ -263,6 +264,7 @@ fn line_special(i: usize, l: &LineSource, problems: &mut Vec<Problem>) -> Option
                 kind,
                 speed: super::special::DOOR_SPEED,
                 wait: super::special::DOOR_WAIT,
+                shut: super::special::DOOR_SHUT,
                 key: None,
             },
         });

@@ -9,7 +9,7 @@
 use crate::map::source::LineSpecialSource;
 use crate::map::special::{
     Action, Activation, CeilingTarget, Change, ChangeFrom, Damage, DoorKind, DoorTimer, FloorTarget, KeyColour,
-    LightChange, LightEffect, Scroll, SectorSpecial, SpecialChange, Who, DOOR_SPEED, DOOR_WAIT, FLOOR_SPEED,
+    LightChange, LightEffect, Scroll, SectorSpecial, SpecialChange, Who, DOOR_SHUT, DOOR_SPEED, DOOR_WAIT, FLOOR_SPEED,
     LIFT_SPEED, LIFT_WAIT, PERPETUAL_SPEED, STAIR_SPEED, STAIR_STEP,
 };
 
@@ -61,7 +61,7 @@ fn special(t: Trigger, by: Who, tag: u16, action: Action) -> Effect {
 }
 
 fn door(kind: DoorKind, speed: f64, key: Option<KeyColour>) -> Action {
-    Action::Door { kind, speed, wait: DOOR_WAIT, key }
+    Action::Door { kind, speed, wait: DOOR_WAIT, shut: DOOR_SHUT, key }
 }
 
 fn floor(to: FloorTarget, offset: f64, speed: f64, crush: bool, change: Option<Change>) -> Action {
@@ -90,7 +90,7 @@ pub fn translate(number: u16, tag: u16) -> Result<Effect, String> {
         2 => s(W1, P, door(Open, d, None)),
         3 => s(W1, P, door(Close, d, None)),
         4 => s(W1, Anyone, door(Raise, d, None)),
-        16 => s(W1, P, A::Door { kind: CloseThenOpen, speed: d, wait: 30 * 35, key: None }),
+        16 => s(W1, P, door(CloseThenOpen, d, None)),
         26 => s(DR, P, door(Raise, d, Some(Blue))),
         27 => s(DR, P, door(Raise, d, Some(Yellow))),
         28 => s(DR, P, door(Raise, d, Some(Red))),
@@ -105,7 +105,7 @@ pub fn translate(number: u16, tag: u16) -> Result<Effect, String> {
         61 => s(SR, P, door(Open, d, None)),
         63 => s(SR, P, door(Raise, d, None)),
         75 => s(WR, P, door(Close, d, None)),
-        76 => s(WR, P, A::Door { kind: CloseThenOpen, speed: d, wait: 30 * 35, key: None }),
+        76 => s(WR, P, door(CloseThenOpen, d, None)),
         86 => s(WR, P, door(Open, d, None)),
         90 => s(WR, P, door(Raise, d, None)),
         99 => s(SR, P, door(Open, BLAZE, Some(Blue))),
@@ -326,7 +326,8 @@ fn generalized(number: u16, tag: u16) -> Result<Effect, String> {
                 [DoorKind::Raise, DoorKind::Open, DoorKind::CloseThenOpen, DoorKind::Close][usize::from((v >> 5) & 3)];
             let wait = [35, 150, 300, 1050][usize::from((v >> 8) & 3)];
             let speed = [2.0, 4.0, 8.0, 16.0][speed];
-            s(monsters(7), Action::Door { kind, speed, wait, key: None })
+            // One delay field: how long the door stays open, or shut.
+            s(monsters(7), Action::Door { kind, speed, wait, shut: wait, key: None })
         }
         "locked door" => {
             let kind = if (v >> 5) & 1 == 0 { DoorKind::Raise } else { DoorKind::Open };
@@ -339,7 +340,7 @@ fn generalized(number: u16, tag: u16) -> Result<Effect, String> {
                 _ => return unsupported("a lock that wants any key or all keys"),
             };
             let speed = [2.0, 4.0, 8.0, 16.0][speed];
-            s(Who::Players, Action::Door { kind, speed, wait: DOOR_WAIT, key: Some(key) })
+            s(Who::Players, Action::Door { kind, speed, wait: DOOR_WAIT, shut: DOOR_SHUT, key: Some(key) })
         }
         "lift" => {
             let wait = [35, 105, 175, 350][usize::from((v >> 6) & 3)];
@@ -422,7 +423,7 @@ mod tests {
         // E3M7's walk-repeatable fast door, MAP26's switch lift (see the research notes).
         let Ok(Effect::Special(door)) = translate(15889, 9) else { panic!() };
         assert_eq!((door.on, door.repeat, door.by, door.tag), (Activation::Walk, true, Who::Players, 9));
-        assert_eq!(door.action, Action::Door { kind: DoorKind::Raise, speed: 8.0, wait: 300, key: None });
+        assert_eq!(door.action, Action::Door { kind: DoorKind::Raise, speed: 8.0, wait: 300, shut: 300, key: None });
         let Ok(Effect::Special(lift)) = translate(13331, 11) else { panic!() };
         assert_eq!((lift.on, lift.repeat), (Activation::Use, true));
         assert_eq!(lift.action, Action::Lift { speed: 8.0, wait: 35 });

@@ -144,8 +144,9 @@ class SpecialMap(SectorMap):
                 out.append(f"        TriggerLine(from: {a}, to: {b}, special: {text}),")
             out.append("    ],")
         out.append("    things: [")
-        for kind, x, y, a in self.things:
-            out.append(f"        Thing(kind: \"{kind}\", x: {fmt(x)}, y: {fmt(y)}, angle: {fmt(a)}),")
+        for kind, x, y, a, extra in self.things:
+            more = f", {extra}" if extra else ""
+            out.append(f"        Thing(kind: \"{kind}\", x: {fmt(x)}, y: {fmt(y)}, angle: {fmt(a)}{more}),")
         out.append("    ],")
         out.append(")")
         return "\n".join(out) + "\n", len(verts), len(lines)

@@ -106,7 +106,7 @@ Switches for the tagged doors are on the hall's south wall below each door
     actions = {
         0: "LineSpecial(on: Use, repeat: true, tag: 1, action: Door(kind: Raise))",
         1: "LineSpecial(on: Use, tag: 2, action: Door(kind: Open))",
-        3: "LineSpecial(on: Use, tag: 4, action: Door(kind: CloseThenOpen, wait: 1050))",
+        3: "LineSpecial(on: Use, tag: 4, action: Door(kind: CloseThenOpen))",
         4: "LineSpecial(on: Use, repeat: true, tag: 5, action: Door(kind: Raise, speed: 8))",
     }
     for k, text in actions.items():

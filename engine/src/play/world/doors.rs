@@ -22,8 +22,6 @@ use crate::play::player::RADIUS;
 
 /// An open door stops this far under the lowest neighbouring ceiling (Doom's 4).
 pub const DOOR_LIP: f64 = 4.0;
-/// How long Doom's close-then-open doors stay shut (30 s).
-pub const CLOSED_WAIT: u32 = 30 * 35;
 /// Doors this fast or faster make the "blazing" sounds (Doom's 4 x VDOORSPEED).
 const BLAZING: f64 = 8.0;
 /// The share of its width a sliding panel moves per tick: 1/32, so it opens
@@ -96,11 +94,13 @@ pub struct Door {
     pub speed: f64,
     /// Ticks a raise door stays open.
     pub wait: u32,
+    /// Ticks a close-then-open door stays shut.
+    pub shut: u32,
 }
 
 impl Door {
     /// A door on `sector` of `kind`, set going.
-    pub fn new(level: &Level, sector: usize, kind: DoorKind, speed: f64, wait: u32) -> Door {
+    pub fn new(level: &Level, sector: usize, kind: DoorKind, speed: f64, (wait, shut): (u32, u32)) -> Door {
         let s = &level.compiled.map.sectors[sector];
         let motion = match level.grid().and_then(|(grid, gl)| slide_of(grid, gl, sector)) {
             Some(slide) => {
@@ -123,7 +123,7 @@ impl Door {
             DoorKind::Raise | DoorKind::Open => DoorState::Opening,
             DoorKind::Close | DoorKind::CloseThenOpen => DoorState::Closing,
         };
-        Door { sector, kind, motion, state, speed, wait }
+        Door { sector, kind, motion, state, speed, wait, shut }
     }
 
     fn blazing(&self) -> bool {
@@ -171,7 +171,7 @@ impl Door {
                 Moved::Ok => true,
                 Moved::Arrived => {
                     if self.kind == DoorKind::CloseThenOpen {
-                        self.state = DoorState::Shut { wait: self.wait };
+                        self.state = DoorState::Shut { wait: self.shut };
                         return true;
                     }
                     false
@@ -239,7 +239,7 @@ pub fn start(
     sectors: &[usize],
     kind: DoorKind,
     speed: f64,
-    wait: u32,
+    waits: (u32, u32),
     manual: bool,
 ) -> bool {
     let mut started = false;
@@ -259,7 +259,7 @@ pub fn start(
         if world.is_busy(sector) {
             continue;
         }
-        let door = Door::new(ctx.level, sector, kind, speed, wait);
+        let door = Door::new(ctx.level, sector, kind, speed, waits);
         let origin = Origin::Sector(sector);
         let noise = match door.state {
             DoorState::Opening => door.open_sound(),

@@ -7,7 +7,7 @@ use super::doors::{Door, DoorState};
 use super::lights::Light;
 use super::{say, Ctx, Exit, Thinker, World};
 use crate::level::Level;
-use crate::map::special::{DoorKind, DoorTimer, DOOR_SPEED, DOOR_WAIT};
+use crate::map::special::{DoorKind, DoorTimer, DOOR_SHUT, DOOR_SPEED, DOOR_WAIT};
 use crate::play::random::GameRng;
 
 /// Ticks before a sector's timed door acts (Doom: 30 s and 5 minutes).
@@ -23,7 +23,7 @@ pub fn spawn_effects(world: &mut World, level: &mut Level, rng: &mut GameRng) {
             world.start_light(s, light);
         }
         let Some(timer) = special.timer else { continue };
-        let mut door = Door::new(level, s, DoorKind::Raise, DOOR_SPEED, DOOR_WAIT);
+        let mut door = Door::new(level, s, DoorKind::Raise, DOOR_SPEED, (DOOR_WAIT, DOOR_SHUT));
         door.state = match timer {
             // An open door that closes after 30 s, and stays closed.
             DoorTimer::CloseIn30s => DoorState::Open { wait: CLOSE_IN },

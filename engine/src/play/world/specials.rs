@@ -68,9 +68,9 @@ fn perform(world: &mut World, ctx: &mut Ctx, line: SpecialLine, special: &LineSp
         SpecialLine::Trigger(_) => None,
     };
     match &special.action {
-        Action::Door { kind, speed, wait, .. } => {
+        Action::Door { kind, speed, wait, shut, .. } => {
             let manual = special.tag == 0;
-            doors::start(world, ctx, &sectors, *kind, *speed, *wait, manual)
+            doors::start(world, ctx, &sectors, *kind, *speed, (*wait, *shut), manual)
         }
         Action::Lift { speed, wait } => plats::start_lift(world, ctx, &sectors, *speed, *wait, special.tag),
         Action::PerpetualLift { speed, wait } => {
