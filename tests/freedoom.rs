@@ -408,3 +408,53 @@ fn freedoom1_plays_from_the_wad_through_exits_and_intermissions() {
         assert_eq!(play.game.player().health, 100);
     }
 }
+
+/// A PWAD played on its IWAD, as `sightline play --iwad freedoom2.wad
+/// mymap.wad:MAP01` does: a PWAD holding one map of its own (freedoom2's
+/// MAP05, renamed MAP01, as a Doom editor saves a map) and no art opens over
+/// the IWAD, its map (not the IWAD's MAP01) with the IWAD's textures. Alone
+/// it is refused, naming what it lacks.
+#[test]
+#[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
+fn a_pwad_plays_on_its_iwad_without_importing() {
+    use sightline::campaign::{open, MapRef};
+    let iwad_path = wad_path("freedoom2.wad");
+    let iwad = Wad::open(&iwad_path).unwrap();
+    let marker = iwad.lumps.iter().position(|l| l.name == "MAP05").unwrap();
+    let mut lumps: Vec<(String, Vec<u8>)> = vec![("MAP01".into(), Vec::new())];
+    for k in 1..=10 {
+        lumps.push((iwad.lumps[marker + k].name.clone(), iwad.bytes(marker + k).to_vec()));
+    }
+    // A PWAD: header, lumps, directory.
+    let mut data = b"PWAD".to_vec();
+    data.extend((lumps.len() as i32).to_le_bytes());
+    data.extend(0i32.to_le_bytes());
+    let mut dir = Vec::new();
+    for (name, bytes) in &lumps {
+        dir.extend((data.len() as i32).to_le_bytes());
+        dir.extend((bytes.len() as i32).to_le_bytes());
+        let mut n = [0u8; 8];
+        n[..name.len()].copy_from_slice(name.as_bytes());
+        dir.extend(n);
+        data.extend(bytes);
+    }
+    let table = data.len() as i32;
+    data[8..12].copy_from_slice(&table.to_le_bytes());
+    data.extend(dir);
+    let tmp = tempfile::tempdir().unwrap();
+    let pwad = tmp.path().join("mymap.wad");
+    std::fs::write(&pwad, data).unwrap();
+
+    let text = format!("{}:MAP01", pwad.display());
+    let opened =
+        open(&MapRef::parse(&text, Some(&iwad_path)), &BuildOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+    let theirs = convert(&iwad, &iwad.map("MAP05").unwrap(), &Art::read(&iwad).unwrap()).unwrap();
+    assert_eq!(opened.level.map.lines.len(), theirs.source.lines.len(), "not the PWAD's map");
+    assert_eq!(opened.map.label(), format!("{}+{}:MAP01", iwad_path.display(), pwad.display()));
+    let view = View::at_start(&opened.level).unwrap();
+    let mut fb = Framebuffer::new(160, 100);
+    render_frame(&opened.level, &view, &RenderOptions::default(), &mut Frame::new(), &mut fb);
+    assert!(fb.pixels.iter().collect::<std::collections::BTreeSet<_>>().len() > 100, "a flat frame");
+    let err = open(&MapRef::parse(&text, None), &BuildOptions::default()).err().expect("no art without its IWAD");
+    assert!(err.to_string().contains("mymap.wad") && err.to_string().contains("PLAYPAL"), "{err}");
+}

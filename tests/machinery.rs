@@ -211,3 +211,47 @@ fn machinery_is_played_through_from_start_to_exit() {
         Demo { inputs: d.inputs.clone(), ..Demo::new("maps/machinery.ron") }.save(path.as_ref()).unwrap();
     }
 }
+
+/// A RON campaign file: its maps in order, the exit leading on, the secret
+/// exit to its own map, the end after the last; a campaign naming a missing
+/// map is refused naming the file and the entry.
+#[test]
+fn a_campaign_file_plays_its_maps_in_order() {
+    use sightline::campaign::{Campaign, MapRef};
+    use sightline::play::Exit;
+    let dir = tempfile::tempdir().unwrap();
+    let copy = |name: &str| std::fs::copy(map_path(name), dir.path().join(name)).unwrap();
+    copy("machinery.ron");
+    copy("two_rooms.ron");
+    copy("room.ron");
+    let campaign = dir.path().join("campaign.ron");
+    std::fs::write(
+        &campaign,
+        r#"// The machinery, then two rooms; its secret exit would go to room.ron.
+        Campaign(name: "Test", maps: [
+            CampaignMap(map: "machinery.ron", secret: "room.ron"),
+            CampaignMap(map: "two_rooms.ron"),
+            CampaignMap(map: "room.ron", next: "two_rooms.ron"),
+        ])"#,
+    )
+    .unwrap();
+    let c = Campaign::of(&MapRef::File(campaign.clone())).unwrap_or_else(|e| panic!("{e}"));
+    let name = |m: Option<MapRef>| m.map(|m| m.short_name());
+    let first = c.first();
+    assert_eq!(first.short_name(), "machinery.ron");
+    assert_eq!(name(c.next(&first, Exit::Normal)).as_deref(), Some("two_rooms.ron"));
+    assert_eq!(name(c.next(&first, Exit::Secret)).as_deref(), Some("room.ron"));
+    let rooms = MapRef::File(dir.path().join("room.ron"));
+    assert_eq!(name(c.next(&rooms, Exit::Normal)).as_deref(), Some("two_rooms.ron"));
+    let two = MapRef::File(dir.path().join("two_rooms.ron"));
+    assert_eq!(name(c.next(&two, Exit::Normal)).as_deref(), Some("room.ron"));
+    // The playthrough starts on its first map.
+    let play = Playthrough::of(&MapRef::File(campaign.clone()), GameOptions::default()).unwrap();
+    assert_eq!(play.map.short_name(), "machinery.ron");
+    std::fs::write(&campaign, r#"Campaign(name: "Bad", maps: [CampaignMap(map: "nowhere.ron")])"#).unwrap();
+    let err = Campaign::of(&MapRef::File(campaign.clone())).unwrap_err().to_string();
+    assert!(err.contains("campaign.ron: map 0: ") && err.contains("nowhere.ron does not exist"), "{err}");
+    std::fs::write(&campaign, r#"Campaign(name: "Bad", maps: [CampaignMap(mapp: "x")])"#).unwrap();
+    let err = Campaign::of(&MapRef::File(campaign)).unwrap_err().to_string();
+    assert!(err.contains("campaign.ron: 1:") && err.contains("mapp"), "{err}");
+}
