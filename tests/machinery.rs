@@ -255,3 +255,28 @@ fn a_campaign_file_plays_its_maps_in_order() {
     let err = Campaign::of(&MapRef::File(campaign)).unwrap_err().to_string();
     assert!(err.contains("campaign.ron: 1:") && err.contains("mapp"), "{err}");
 }
+
+/// Death and rebirth: a player who dies (here in the slime, health set low)
+/// cannot move, its eye sinks to the floor, and use restarts the map from
+/// its start with full health.
+#[test]
+fn a_dead_player_restarts_the_map_with_use() {
+    let map = MapRef::File(map_path("machinery.ron"));
+    let mut play = Playthrough::of(&map, GameOptions::default()).unwrap();
+    let start = play.game.player().pos;
+    play.game.teleport(DVec2::new(736.0, 548.0), 0.0).unwrap();
+    play.game.player_mut().health = 5;
+    for _ in 0..40 {
+        play.tick(&TickInput::default()).unwrap();
+    }
+    assert!(play.game.player().dead(), "health {}", play.game.player().health);
+    let at = play.game.player().pos;
+    for _ in 0..60 {
+        play.tick(&TickInput { forward: 1, run: true, ..Default::default() }).unwrap();
+    }
+    let p = play.game.player();
+    assert!(p.pos.distance(at) < 1.0, "a dead player walked");
+    assert_eq!(play.game.view(1.0).z, p.z + 6.0, "the eye sinks to 6 above the feet");
+    play.tick(&TickInput { use_line: true, ..Default::default() }).unwrap();
+    assert_eq!((play.game.player().pos, play.game.player().health, play.game.ticks()), (start, 100, 0));
+}

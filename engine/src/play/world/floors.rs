@@ -86,6 +86,7 @@ fn destination(level: &Level, sector: usize, floor: &Floor) -> f64 {
         FloorTarget::LowestNeighbourFloor => specials::lowest_floor_around(level, sector),
         FloorTarget::HighestNeighbourFloor => {
             let h = specials::highest_floor_around(level, sector).unwrap_or(s.floor);
+            // Doom's turbo lower adds its 8 only when the floor moves at all.
             if h == s.floor {
                 return h;
             }
