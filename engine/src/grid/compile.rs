@@ -196,7 +196,7 @@ pub fn compile(grid: &Grid) -> (MapSource, FaceLines) {
                         grid.cell(i + di, j + dj).is_walkable()
                     });
                     // The panel's two broad faces are `door` lines: using one opens the
-                    // door sector behind it, as on a sector map, and `play::doors` makes
+                    // door sector behind it, as on a sector map, and `play::world::doors` makes
                     // it slide because the level has a grid. (Flagging them here rather
                     // than finding grid doors apart keeps one path for "use", and the
                     // compiled map alone stays playable: without its grid, its doors

@@ -125,7 +125,7 @@ pub struct LineSource {
     #[serde(default, skip_serializing_if = "is_false")]
     pub impassable: bool,
     /// A door: using this line opens its back sector: raises its ceiling, or on a
-    /// grid map slides its panel (see `play::doors`).
+    /// grid map slides its panel (see `play::world::doors`).
     #[serde(default, skip_serializing_if = "is_false")]
     pub door: bool,
     /// Version 1's tagged doors: opens every sector tagged `tag` when the
