@@ -1,0 +1,435 @@
+//! The world's machinery, per tick (issue 12's benchmarks):
+//!
+//! - **idle**: a tick in a generated room of 1,000 pillar sectors, each with
+//!   a unique tag, an idle sector special and a line special naming it that
+//!   is never set off, against the same geometry with none, the player
+//!   walking about (the same seeded inputs on both). Criterion times one
+//!   tick per iteration (`idle-tags/none`, `idle-tags/1000-tagged`,
+//!   `idle-tags/none-again`); a
+//!   second, interleaved loop (none, tagged, tagged, none, ...) gives the
+//!   medians and their ratio from one run.
+//! - **freedoom**: ticks per second on every map of freedoom1.wad and
+//!   freedoom2.wad (68 maps) with everything the player can set off
+//!   running. Each round starts a fresh game at skill 3 on the map (opened
+//!   once from the WAD, its level rebuilt untimed), sets off every special
+//!   through the player's inputs (`world/setoff.rs`, untimed), puts the
+//!   player back at the start and times each of [`WINDOW`] ticks on its
+//!   own: walking (seeded random inputs), standing still, and standing still
+//!   in a game where nothing was set off (the lights and timers a level
+//!   starts with still run), the three in rotating order. A custom loop, not
+//!   criterion: a tick can be timed only once from a given state (`Game` is
+//!   not `Clone`), so every window needs an untimed fresh game and setup
+//!   worth hundreds of ticks, which criterion's loop cannot keep out of its
+//!   budget; and its warm-up, analysis and reports for 68 maps would take far
+//!   longer than the ticks. Prints a markdown table: median µs per tick over
+//!   all rounds, ticks per second, the thinkers running at the start and end
+//!   of the window, and what could not be set off.
+//!
+//! Run: `cargo bench -p sightline-engine --bench world` (both), or with
+//! `-- idle` or `-- freedoom` for one; `SIGHTLINE_WORLD_MAPS=MAP20,E1M4`
+//! keeps only those maps. Needs Freedoom's WADs (Debian:
+//! freedoom) in `/usr/share/games/doom` or `$SIGHTLINE_DOOM_DIR`, and fails
+//! if they are missing, as the compile bench does.
+
+#[path = "world/pillars.rs"]
+mod pillars;
+#[path = "world/setoff.rs"]
+mod setoff;
+
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+use criterion::Criterion;
+use rand::rngs::ChaCha8Rng;
+use rand::{RngExt, SeedableRng};
+use sightline::bsp::{build, BuildOptions, CompiledMap};
+use sightline::campaign::{open, MapRef};
+use sightline::level::Level;
+use sightline::map::load::parse_map;
+use sightline::materials::Materials;
+use sightline::play::world::Thinker;
+use sightline::play::{Game, TickInput};
+use sightline::texture::Library;
+use sightline::wad::library::WadArt;
+use sightline::wad::Wad;
+
+/// Ticks timed per round on a Freedoom map: 3 s of play, while what was
+/// set off still runs (a door is done about 214 ticks after it opens).
+const WINDOW: usize = 105;
+/// Rounds per Freedoom map and setup (each starts a fresh game and sets
+/// everything off again).
+const ROUNDS: usize = 20;
+/// Ticks per round of the interleaved idle study, and rounds of it.
+const IDLE_TICKS: usize = 2_000;
+const IDLE_ROUNDS: usize = 10;
+/// The player's health while timing: never dying keeps every round's walk
+/// the same length of movement, whatever the nukage it crosses.
+const HEALTH: i32 = 1_000_000;
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    // Criterion's filter is its first positional argument; the custom loops
+    // honour it too (a substring of "idle" or "freedoom").
+    let filter = args.iter().find(|a| !a.starts_with('-')).cloned();
+    let quick = args.iter().any(|a| a == "--test");
+    let wanted = |name: &str| filter.as_deref().is_none_or(|f| name.contains(f) || f.contains(name));
+    let mut c = Criterion::default().configure_from_args();
+    if wanted("idle-tags") {
+        idle(&mut c, quick);
+    }
+    c.final_summary();
+    if wanted("freedoom") {
+        freedoom(quick);
+    }
+}
+
+/// Seeded random walking, the tests' `random_inputs` without use or fire
+/// (pressing use could set off an exit): runs of 1 to 140 ticks holding a
+/// direction, sometimes turning.
+fn walking(seed: u64, ticks: usize) -> Vec<TickInput> {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut inputs = Vec::with_capacity(ticks);
+    while inputs.len() < ticks {
+        let hold = rng.random_range(1..=140usize);
+        let forward = [1, 1, 1, 0, -1][rng.random_range(0..5usize)];
+        let strafe = [0, 0, 0, 1, -1][rng.random_range(0..5usize)];
+        let run = rng.random_range(0..10) < 7;
+        let turn: f32 = match rng.random_range(0..10) {
+            0..=5 => 0.0,
+            6..=8 => rng.random_range(-8.0..8.0),
+            _ => rng.random_range(-180.0..180.0),
+        };
+        let burst = rng.random_range(1..=hold);
+        for k in 0..hold {
+            let turn = if k < burst { turn } else { 0.0 };
+            inputs.push(TickInput { forward, strafe, turn, run, ..Default::default() });
+        }
+    }
+    inputs.truncate(ticks);
+    inputs
+}
+
+fn median(times: &mut [Duration]) -> f64 {
+    times.sort_unstable();
+    let n = times.len();
+    let us = |d: Duration| d.as_secs_f64() * 1e6;
+    if n.is_multiple_of(2) {
+        (us(times[n / 2 - 1]) + us(times[n / 2])) / 2.0
+    } else {
+        us(times[n / 2])
+    }
+}
+
+fn median_f64(values: &mut [f64]) -> f64 {
+    values.sort_by(f64::total_cmp);
+    let n = values.len();
+    if n.is_multiple_of(2) {
+        (values[n / 2 - 1] + values[n / 2]) / 2.0
+    } else {
+        values[n / 2]
+    }
+}
+
+/// Ticks `game` through `inputs`, timing each tick on its own.
+fn time_ticks(game: &mut Game, inputs: &[TickInput], times: &mut Vec<Duration>) {
+    for input in inputs {
+        let start = Instant::now();
+        game.tick(input);
+        times.push(start.elapsed());
+    }
+}
+
+fn pillar_level(specials: bool) -> Level {
+    let label = if specials { "pillars-tagged" } else { "pillars-plain" };
+    let map = parse_map(&pillars::pillars_ron(specials), label).unwrap_or_else(|e| panic!("{e}"));
+    let specials_found = (
+        map.sectors.iter().filter(|s| s.tag != 0 && !s.special.is_none()).count(),
+        map.lines.iter().filter(|l| l.special.is_some()).count(),
+    );
+    let wanted = if specials { (pillars::ACROSS * pillars::DOWN, pillars::ACROSS * pillars::DOWN) } else { (0, 0) };
+    assert_eq!(specials_found, wanted, "{label}: tagged sectors with a special, and lines with a special");
+    let compiled = build(&map, &BuildOptions::default()).unwrap_or_else(|e| panic!("{label}: {e}"));
+    Level::with_builtin_textures(compiled).unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn idle(c: &mut Criterion, quick: bool) {
+    let inputs = walking(7, 10_000);
+    let mut group = c.benchmark_group("idle-tags");
+    group.sample_size(50).warm_up_time(Duration::from_millis(500)).measurement_time(Duration::from_secs(3));
+    // "none" once more at the end: the first run of a group tends to be
+    // slower (the sectors bench sees the same).
+    for (name, specials) in [("none", false), ("1000-tagged", true), ("none-again", false)] {
+        let mut game = Game::new(pillar_level(specials)).unwrap_or_else(|e| panic!("{e}"));
+        let mut k = 0;
+        group.bench_function(name, |b| {
+            b.iter(|| {
+                game.tick(&inputs[k % inputs.len()]);
+                k += 1;
+            })
+        });
+    }
+    group.finish();
+
+    // Interleaved, from a fresh game each round: none, tagged, tagged, none, ...
+    let (ticks, rounds) = if quick { (35, 2) } else { (IDLE_TICKS, IDLE_ROUNDS) };
+    let levels = [false, true];
+    let mut medians: [Vec<f64>; 2] = [Vec::new(), Vec::new()];
+    let mut ends = [None, None];
+    for round in 0..rounds {
+        let order = if round.is_multiple_of(2) { [0, 1] } else { [1, 0] };
+        for which in order {
+            let mut game = Game::new(pillar_level(levels[which])).unwrap_or_else(|e| panic!("{e}"));
+            let mut times = Vec::with_capacity(ticks);
+            time_ticks(&mut game, &inputs[..ticks], &mut times);
+            medians[which].push(median(&mut times));
+            assert_eq!(game.world().thinkers.len(), 0, "an idle map has no thinker running");
+            ends[which] = Some(game.player().pos);
+        }
+    }
+    assert_eq!(ends[0], ends[1], "the same inputs walk the same way through the same geometry");
+    let none = median_f64(&mut medians[0]);
+    let tagged = median_f64(&mut medians[1]);
+    println!("\n## Idle specials: {rounds} interleaved rounds of {ticks} ticks, median of the per-round medians\n");
+    println!("| map | µs per tick | ticks per second |");
+    println!("|---|---:|---:|");
+    println!("| 1,000 pillars, no tags or specials | {none:.3} | {:.0} |", 1e6 / none);
+    println!("| 1,000 pillars, tagged, sector and line specials | {tagged:.3} | {:.0} |", 1e6 / tagged);
+    println!("\ntagged / none = {:.3}", tagged / none);
+    let spread = |m: &[f64]| {
+        let (lo, hi) = m.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), &x| (lo.min(x), hi.max(x)));
+        format!("{lo:.3}..{hi:.3}")
+    };
+    println!("per-round medians: none {}, tagged {}\n", spread(&medians[0]), spread(&medians[1]));
+}
+
+/// Where Freedoom's WADs are (as tests/freedoom.rs and the compile bench look).
+fn doom_dir() -> PathBuf {
+    std::env::var_os("SIGHTLINE_DOOM_DIR").map_or_else(|| PathBuf::from("/usr/share/games/doom"), PathBuf::from)
+}
+
+/// The thinkers running, by kind: doors, plats (lifts), floors, ceilings
+/// (and crushers), lights, buttons.
+fn census(game: &Game) -> [usize; 6] {
+    let mut n = [0; 6];
+    for t in &game.world().thinkers {
+        n[match t {
+            Thinker::Door(_) => 0,
+            Thinker::Plat(_) => 1,
+            Thinker::Floor(_) => 2,
+            Thinker::Ceiling(_) => 3,
+            Thinker::Light(_) => 4,
+            Thinker::Button(_) => 5,
+        }] += 1;
+    }
+    n
+}
+
+/// How a Freedoom map is timed: with everything set off or nothing, the
+/// player walking or standing still.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Setup {
+    /// Everything set off, the player walking: the headline figure.
+    Walking,
+    /// Everything set off, the player standing at the start: mostly the
+    /// thinkers' cost.
+    Idle,
+    /// Nothing set off (only the lights and timers a level starts with),
+    /// the player standing at the start: the baseline for [`Setup::Idle`].
+    PlainIdle,
+}
+
+const SETUPS: [Setup; 3] = [Setup::Walking, Setup::Idle, Setup::PlainIdle];
+
+/// One Freedoom map's figures.
+struct Row {
+    map: String,
+    lines: usize,
+    sectors: usize,
+    set: setoff::SetOff,
+    /// Median µs per tick, per [`SETUPS`].
+    us: [f64; 3],
+    /// Thinkers running by kind when the walking window starts, and how many at its end.
+    start: [usize; 6],
+    end: usize,
+    /// Thinkers at the start of the plain window.
+    plain_thinkers: usize,
+    /// Per setup, the tick of the window at which the level ended (an exit
+    /// line crossed); later ticks are not timed.
+    exited_at: [Option<usize>; 3],
+}
+
+fn freedoom(quick: bool) {
+    let (window, rounds) = if quick { (35, 1) } else { (WINDOW, ROUNDS) };
+    let walk = walking(7, window);
+    let still = vec![TickInput::default(); window];
+    let mut rows = Vec::new();
+    let started = Instant::now();
+    for file in ["freedoom1.wad", "freedoom2.wad"] {
+        let path = doom_dir().join(file);
+        let wad = Wad::open(&path).unwrap_or_else(|e| {
+            panic!("{e}\nthe world bench needs Freedoom (apt-get install freedoom) or SIGHTLINE_DOOM_DIR=dir")
+        });
+        let mut names = wad.map_names();
+        let library = Library { dirs: Vec::new(), wad: Some(Arc::new(WadArt::new(Wad::stack(vec![wad])).unwrap())) };
+        if let Ok(only) = std::env::var("SIGHTLINE_WORLD_MAPS") {
+            names.retain(|n| only.split(',').any(|o| o.eq_ignore_ascii_case(n)));
+        }
+        if quick {
+            names.truncate(1);
+        }
+        for name in names {
+            let label = format!("{}:{name}", path.display());
+            let opened = open(&MapRef::parse(&label, None), &BuildOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+            let compiled = opened.level.compiled.clone();
+            // A fresh level as `open` makes it, without compiling again.
+            let fresh = || -> Game {
+                let materials =
+                    Materials::resolve_in(&compiled.map, &library, &label).unwrap_or_else(|e| panic!("{e}"));
+                Game::new(Level::new(compiled.clone(), materials)).unwrap_or_else(|e| panic!("{label}: {e}"))
+            };
+            let row = time_map(&name, &compiled, fresh, [&walk, &still, &still], rounds);
+            eprintln!(
+                "{file} {name}: {:.2} µs/tick walking, {:.2} idle, {:.2} plain idle, {} thinkers ({:.0} s so far)",
+                row.us[0],
+                row.us[1],
+                row.us[2],
+                row.start.iter().sum::<usize>(),
+                started.elapsed().as_secs_f64()
+            );
+            rows.push(row);
+        }
+    }
+    print_freedoom(&rows, window, rounds);
+}
+
+/// Times `rounds` windows of each setup, in turn (the order rotating each
+/// round), each on a fresh game: set everything off (or not), put the
+/// player back at the start, time every tick until the window ends or the
+/// level does.
+fn time_map(
+    name: &str,
+    compiled: &CompiledMap,
+    fresh: impl Fn() -> Game,
+    inputs: [&[TickInput]; 3],
+    rounds: usize,
+) -> Row {
+    let mut times: [Vec<Duration>; 3] = Default::default();
+    let mut row = Row {
+        map: name.to_string(),
+        lines: compiled.map.lines.len(),
+        sectors: compiled.map.sectors.len(),
+        set: Default::default(),
+        us: [0.0; 3],
+        start: [0; 6],
+        end: 0,
+        plain_thinkers: 0,
+        exited_at: [None; 3],
+    };
+    for round in 0..rounds {
+        for k in 0..SETUPS.len() {
+            let which = (k + round) % SETUPS.len();
+            let setup = SETUPS[which];
+            let mut game = fresh();
+            let set = match setup {
+                Setup::Walking | Setup::Idle => setoff::set_off_everything(&mut game),
+                Setup::PlainIdle => setoff::SetOff::default(),
+            };
+            let start = compiled.map.player_start();
+            game.teleport(start.pos, start.angle).unwrap_or_else(|e| panic!("{name}: {e}"));
+            game.player_mut().health = HEALTH;
+            let census_start = census(&game);
+            for (tick, input) in inputs[which].iter().enumerate() {
+                let t = Instant::now();
+                game.tick(input);
+                times[which].push(t.elapsed());
+                if game.exit().is_some() {
+                    row.exited_at[which] = Some(tick);
+                    break;
+                }
+            }
+            match setup {
+                Setup::Walking => (row.set, row.start, row.end) = (set, census_start, game.world().thinkers.len()),
+                Setup::Idle => {}
+                Setup::PlainIdle => row.plain_thinkers = census_start.iter().sum(),
+            }
+        }
+    }
+    for (us, t) in row.us.iter_mut().zip(&mut times) {
+        *us = median(t);
+    }
+    row
+}
+
+/// The cost of timing an empty interval (`Instant::now` and `elapsed`),
+/// included in every per-tick figure: the median of 100,000.
+fn timer_overhead() -> f64 {
+    let mut times: Vec<Duration> = (0..100_000).map(|_| Instant::now().elapsed()).collect();
+    median(&mut times)
+}
+
+fn print_freedoom(rows: &[Row], window: usize, rounds: usize) {
+    println!("\n## Freedoom: every map with everything set off ({rounds} rounds of {window} ticks, median per tick)\n");
+    println!(
+        "| map | lines | sectors | set off: went off / tried (use, walk, shoot) | skipped: sectors already moving | setup ticks | thinkers at the start: all (doors, lifts, floors, ceilings, lights, buttons) | at the end | walking: µs per tick | walking: ticks per second | idle: µs per tick | nothing set off, idle: thinkers | nothing set off, idle: µs per tick | idle / nothing set off |"
+    );
+    println!("|---|---:|---:|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|");
+    for r in rows {
+        let [u, w, s] = r.set.fired;
+        let [tu, tw, ts] = r.set.tried;
+        let t = r.start;
+        let exited: String = SETUPS
+            .iter()
+            .zip(r.exited_at)
+            .filter_map(|(setup, at)| at.map(|k| format!(" (the level ends at tick {k}, {setup:?})")))
+            .collect();
+        println!(
+            "| {}{exited} | {} | {} | {}/{} ({u}/{tu}, {w}/{tw}, {s}/{ts}) | {} | {} | {} ({}, {}, {}, {}, {}, {}) | {} | {:.2} | {:.0} | {:.2} | {} | {:.2} | {:.2} |",
+            r.map,
+            r.lines,
+            r.sectors,
+            r.set.fired_total(),
+            r.set.tried_total(),
+            r.set.busy,
+            r.set.ticks,
+            t.iter().sum::<usize>(),
+            t[0],
+            t[1],
+            t[2],
+            t[3],
+            t[4],
+            t[5],
+            r.end,
+            r.us[0],
+            1e6 / r.us[0],
+            r.us[1],
+            r.plain_thinkers,
+            r.us[2],
+            r.us[1] / r.us[2],
+        );
+    }
+    let column = |f: &dyn Fn(&Row) -> f64| -> Vec<f64> { rows.iter().map(f).collect() };
+    let range = |v: &[f64]| v.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), &x| (lo.min(x), hi.max(x)));
+    let mut walk = column(&|r| r.us[0]);
+    let (lo, hi) = range(&walk);
+    let walk_median = median_f64(&mut walk);
+    let mut idle = column(&|r| r.us[1]);
+    let mut ratio = column(&|r| r.us[1] / r.us[2]);
+    let (rlo, rhi) = range(&ratio);
+    println!(
+        "\n{} maps. Walking with everything set off: median over maps {walk_median:.2} µs per tick ({:.0} ticks per second), range {lo:.2}..{hi:.2}. Idle: median {:.2} µs; idle / nothing set off: median {:.2}, range {rlo:.2}..{rhi:.2}.",
+        rows.len(),
+        1e6 / walk_median,
+        median_f64(&mut idle),
+        median_f64(&mut ratio),
+    );
+    println!("Timing an empty interval costs {:.3} µs (median), included in every figure above.", timer_overhead());
+    let failed: usize = rows.iter().map(|r| r.set.failed.len()).sum();
+    let tried: usize = rows.iter().map(|r| r.set.tried_total()).sum();
+    println!("\nSpecials tried that did not go off on either pass ({failed} of {tried}):\n");
+    for r in rows.iter().filter(|r| !r.set.failed.is_empty()) {
+        let failed: Vec<String> =
+            r.set.failed.iter().map(|f| format!("{:?} {:?} {} ({:?})", f.line, f.on, f.action, f.why)).collect();
+        println!("- {}: {}", r.map, failed.join(", "));
+    }
+}
