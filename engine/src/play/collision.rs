@@ -100,11 +100,13 @@ impl World<'_> {
         Area { sector, floor, ceiling }
     }
 
-    /// Every sector the circle at `p` overlaps, into `out` (sorted, no repeats).
-    pub fn sectors_touched(&self, near: &[u32], p: DVec2, out: &mut Vec<usize>) {
+    /// Every sector the circle at `p` overlaps, into `out` (sorted, no
+    /// repeats); `centre` is the sector under `p` (the caller's from
+    /// [`Self::area`]: locating it again would descend the BSP twice a tick).
+    pub fn sectors_touched(&self, near: &[u32], p: DVec2, centre: usize, out: &mut Vec<usize>) {
         let map = self.map();
         out.clear();
-        out.push(self.compiled.sector_at(p));
+        out.push(centre);
         for &i in near {
             let line = &map.lines[i as usize];
             let (a, b) = map.line_points(line);

@@ -333,7 +333,7 @@ impl Game {
     fn run_world(&mut self) {
         let collision = Collision { compiled: &self.level.compiled, blockmap: &self.blockmap };
         let near = collision.lines_near(&mut self.query, self.player.pos, RADIUS + 1.0);
-        collision.sectors_touched(near, self.player.pos, &mut self.touched);
+        collision.sectors_touched(near, self.player.pos, self.player.sector, &mut self.touched);
         // Conveyors (Boom's 252) push a body standing on their floor.
         for &s in &self.touched {
             let sector = &self.level.compiled.map.sectors[s];
