@@ -148,8 +148,33 @@ pub fn open(map: &MapRef, options: &BuildOptions) -> Result<Opened, CampaignErro
 
 /// The WADs as one, later over earlier.
 fn stack(paths: &[PathBuf]) -> Result<Wad, WadError> {
-    let wads = paths.iter().map(|p| Wad::open(p)).collect::<Result<Vec<_>, _>>()?;
+    let dirs = wad_dirs();
+    let wads = paths.iter().map(|p| Wad::open(&find_wad(p, &dirs))).collect::<Result<Vec<_>, _>>()?;
     Ok(Wad::stack(wads))
+}
+
+/// Where a WAD named without a directory is looked for when it is not in
+/// the current one, as Doom ports do: `$DOOMWADDIR`, each directory of
+/// `$DOOMWADPATH` (colon-separated), then where Linux packages install
+/// IWADs.
+pub fn wad_dirs() -> Vec<PathBuf> {
+    let mut dirs: Vec<PathBuf> = std::env::var_os("DOOMWADDIR").map(PathBuf::from).into_iter().collect();
+    if let Some(path) = std::env::var_os("DOOMWADPATH") {
+        dirs.extend(std::env::split_paths(&path));
+    }
+    dirs.extend(["/usr/local/share/games/doom", "/usr/share/games/doom", "/usr/share/doom"].map(PathBuf::from));
+    dirs
+}
+
+/// `wad` itself when it exists or names a directory; else the first of
+/// `dirs` holding a file of that name; else `wad` (whose error then names
+/// it as given).
+pub fn find_wad(wad: &Path, dirs: &[PathBuf]) -> PathBuf {
+    let bare = wad.parent().is_none_or(|p| p.as_os_str().is_empty());
+    if wad.exists() || !bare {
+        return wad.to_path_buf();
+    }
+    dirs.iter().map(|d| d.join(wad)).find(|p| p.is_file()).unwrap_or_else(|| wad.to_path_buf())
 }
 
 /// `Campaign(name: "...", maps: [CampaignMap(map: "a.ron"), ...])`: maps
@@ -315,6 +340,22 @@ fn episode_map(name: &str) -> Option<(u32, u32)> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_bare_wad_name_is_looked_for_in_the_wad_directories() {
+        let dir = tempfile::tempdir().unwrap();
+        let (empty, full) = (dir.path().join("empty"), dir.path().join("full"));
+        std::fs::create_dir_all(&empty).unwrap();
+        std::fs::create_dir_all(&full).unwrap();
+        std::fs::write(full.join("only-here.wad"), b"IWAD").unwrap();
+        let dirs = [empty.clone(), full.clone()];
+        let find = |name: &str| find_wad(Path::new(name), &dirs);
+        assert_eq!(find("only-here.wad"), full.join("only-here.wad"));
+        // Not found anywhere, or named with a directory: as given.
+        assert_eq!(find("nowhere.wad"), PathBuf::from("nowhere.wad"));
+        let with_dir = empty.join("only-here.wad");
+        assert_eq!(find_wad(&with_dir, &dirs), with_dir);
+    }
 
     #[test]
     fn doom_order() {

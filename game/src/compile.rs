@@ -2,6 +2,7 @@
 
 use anyhow::Result;
 use sightline::bsp::{build, file, BuildOptions};
+use sightline::campaign::MapRef;
 use sightline::level::{check_not_input, write_atomic, LevelError};
 use sightline::map::load_map;
 
@@ -9,6 +10,13 @@ use crate::cli::CompileArgs;
 
 pub fn run(args: &CompileArgs) -> Result<()> {
     check_not_input(&args.map, &args.output)?;
+    if matches!(MapRef::parse(&args.map.to_string_lossy(), None), MapRef::Wad { .. }) {
+        anyhow::bail!(
+            "{}: compile takes a RON map; a WAD's maps are compiled as they are played \
+             (`sightline import` writes one out as RON with its textures)",
+            args.map.display()
+        );
+    }
     if is_compiled_file(&args.map) {
         anyhow::bail!("{}: is already a compiled map; compile its .ron source", args.map.display());
     }

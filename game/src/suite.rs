@@ -9,15 +9,16 @@ use anyhow::{Context, Result};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use sightline::bsp::BuildOptions;
-use sightline::level::{open_level, Level};
+use sightline::campaign::{open, MapRef};
+use sightline::level::Level;
 use sightline::study::{self, Effort, Settings, Study};
 
 use crate::cli::parse_size;
 
 #[derive(Args, Debug)]
 pub struct SuiteArgs {
-    /// Maps to study (RON or compiled). Default: every map in maps/.
-    pub maps: Vec<PathBuf>,
+    /// Maps to study (RON, compiled, or `WAD:MAP`). Default: every map in maps/.
+    pub maps: Vec<String>,
     /// Frame size the studies render at.
     #[arg(long, default_value = "320x200", value_parser = parse_size)]
     pub size: (usize, usize),
@@ -48,12 +49,21 @@ const STUDIES: [(&str, Run); 5] = [
 pub fn run(args: &SuiteArgs) -> Result<()> {
     let out = args.out.as_deref().context("--out DIR is required")?;
     let started = Instant::now();
-    let paths = if args.maps.is_empty() { shipped_maps()? } else { args.maps.clone() };
+    let paths: Vec<String> = if args.maps.is_empty() {
+        shipped_maps()?.iter().map(|p| p.display().to_string()).collect()
+    } else {
+        args.maps.clone()
+    };
     let mut levels = Vec::with_capacity(paths.len());
     for path in &paths {
-        let level = open_level(path, &BuildOptions::default())?;
-        let name = path.file_stem().map_or_else(|| path.display().to_string(), |s| s.to_string_lossy().into_owned());
-        levels.push((name, level));
+        let map = MapRef::parse(path, None);
+        let name = match &map {
+            MapRef::File(p) => {
+                p.file_stem().map_or_else(|| p.display().to_string(), |s| s.to_string_lossy().into_owned())
+            }
+            wad => wad.short_name().to_ascii_lowercase(),
+        };
+        levels.push((name, open(&map, &BuildOptions::default())?.level));
     }
     let named: Vec<(String, &Level)> = levels.iter().map(|(n, l)| (n.clone(), l)).collect();
     let settings = Settings {
@@ -76,7 +86,7 @@ pub fn run(args: &SuiteArgs) -> Result<()> {
     bar.finish_and_clear();
     let command = format!(
         "sightline bench{} --size {}x{}{} --out {}{}",
-        args.maps.iter().map(|p| format!(" {}", p.display())).collect::<String>(),
+        args.maps.iter().map(|p| format!(" {p}")).collect::<String>(),
         args.size.0,
         args.size.1,
         if args.quick { " --quick" } else { "" },

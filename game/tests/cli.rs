@@ -377,6 +377,7 @@ fn compile_of_a_bad_map_leaves_the_output_alone() {
         (compile("missing.ron"), &["missing.ron", "cannot read"]),
         (compile("dir.ron"), &["dir.ron", "cannot read"]),
         (compile("compiled.slbsp"), &["compiled.slbsp", "already a compiled map"]),
+        (compile("missing.wad:E1M1"), &["missing.wad:E1M1", "sightline import"]),
     ]);
 }
 
