@@ -25,7 +25,7 @@ use sightline::play::{Game, TickInput};
 use sightline::render::{render_frame, Frame, RenderOptions, Renderer, View};
 use sightline::tour::tour;
 use sightline::wad::import::{convert, write_art, Art};
-use sightline::wad::Wad;
+use sightline::wad::{wad_bytes, Wad};
 use sightline::Framebuffer;
 use sightline_tests::{
     assert_agree, assert_agree_on_two_sided_lines, freedoom_wads, points_on_two_sided_lines, random_inputs,
@@ -425,25 +425,9 @@ fn a_pwad_plays_on_its_iwad_without_importing() {
     for k in 1..=10 {
         lumps.push((iwad.lumps[marker + k].name.clone(), iwad.bytes(marker + k).to_vec()));
     }
-    // A PWAD: header, lumps, directory.
-    let mut data = b"PWAD".to_vec();
-    data.extend((lumps.len() as i32).to_le_bytes());
-    data.extend(0i32.to_le_bytes());
-    let mut dir = Vec::new();
-    for (name, bytes) in &lumps {
-        dir.extend((data.len() as i32).to_le_bytes());
-        dir.extend((bytes.len() as i32).to_le_bytes());
-        let mut n = [0u8; 8];
-        n[..name.len()].copy_from_slice(name.as_bytes());
-        dir.extend(n);
-        data.extend(bytes);
-    }
-    let table = data.len() as i32;
-    data[8..12].copy_from_slice(&table.to_le_bytes());
-    data.extend(dir);
     let tmp = tempfile::tempdir().unwrap();
     let pwad = tmp.path().join("mymap.wad");
-    std::fs::write(&pwad, data).unwrap();
+    std::fs::write(&pwad, wad_bytes(b"PWAD", &lumps)).unwrap();
 
     let text = format!("{}:MAP01", pwad.display());
     let opened =

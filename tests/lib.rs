@@ -4,10 +4,9 @@
 use std::path::{Path, PathBuf};
 
 use glam::DVec2;
-use rand::rngs::ChaCha8Rng;
-use rand::{RngExt, SeedableRng};
 use sightline::bsp::BuildOptions;
 use sightline::level::{open_level, Level};
+use sightline::play::input::wander;
 use sightline::play::TickInput;
 use sightline::render::{render_frame, Frame, RenderOptions, Renderer, Shade, View};
 use sightline::Framebuffer;
@@ -250,35 +249,8 @@ pub fn assert_agree_on_two_sided_lines(
     frames
 }
 
-/// Seeded input that mostly runs into things: a direction held for a random
-/// stretch, turning in bursts (now and then a mouse fling), use pressed now
-/// and then.
+/// Seeded input that mostly runs into things, use pressed now and then
+/// ([`wander`] with presses).
 pub fn random_inputs(seed: u64, ticks: usize) -> Vec<TickInput> {
-    let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let mut inputs = Vec::with_capacity(ticks);
-    while inputs.len() < ticks {
-        let hold = rng.random_range(1..=140usize);
-        let forward = [1, 1, 1, 0, -1][rng.random_range(0..5usize)];
-        let strafe = [0, 0, 0, 1, -1][rng.random_range(0..5usize)];
-        let run = rng.random_range(0..10) < 7;
-        let turn: f32 = match rng.random_range(0..10) {
-            0..=5 => 0.0,
-            6..=8 => rng.random_range(-8.0..8.0),
-            _ => rng.random_range(-180.0..180.0),
-        };
-        let burst = rng.random_range(1..=hold);
-        for k in 0..hold {
-            let use_line = rng.random_range(0..25) == 0;
-            inputs.push(TickInput {
-                forward,
-                strafe,
-                turn: if k < burst { turn } else { 0.0 },
-                run,
-                use_line,
-                fire: false,
-            });
-        }
-    }
-    inputs.truncate(ticks);
-    inputs
+    wander(seed, ticks, true)
 }

@@ -41,13 +41,12 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use criterion::Criterion;
-use rand::rngs::ChaCha8Rng;
-use rand::{RngExt, SeedableRng};
 use sightline::bsp::{build, BuildOptions, CompiledMap};
 use sightline::campaign::{open, MapRef};
 use sightline::level::Level;
 use sightline::map::load::parse_map;
 use sightline::materials::Materials;
+use sightline::play::input::wander;
 use sightline::play::world::Thinker;
 use sightline::play::{Game, TickInput};
 use sightline::texture::Library;
@@ -84,30 +83,10 @@ fn main() {
     }
 }
 
-/// Seeded random walking, the tests' `random_inputs` without use or fire
-/// (pressing use could set off an exit): runs of 1 to 140 ticks holding a
-/// direction, sometimes turning.
+/// Seeded random walking without use or fire (pressing use could set off
+/// an exit).
 fn walking(seed: u64, ticks: usize) -> Vec<TickInput> {
-    let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let mut inputs = Vec::with_capacity(ticks);
-    while inputs.len() < ticks {
-        let hold = rng.random_range(1..=140usize);
-        let forward = [1, 1, 1, 0, -1][rng.random_range(0..5usize)];
-        let strafe = [0, 0, 0, 1, -1][rng.random_range(0..5usize)];
-        let run = rng.random_range(0..10) < 7;
-        let turn: f32 = match rng.random_range(0..10) {
-            0..=5 => 0.0,
-            6..=8 => rng.random_range(-8.0..8.0),
-            _ => rng.random_range(-180.0..180.0),
-        };
-        let burst = rng.random_range(1..=hold);
-        for k in 0..hold {
-            let turn = if k < burst { turn } else { 0.0 };
-            inputs.push(TickInput { forward, strafe, turn, run, ..Default::default() });
-        }
-    }
-    inputs.truncate(ticks);
-    inputs
+    wander(seed, ticks, false)
 }
 
 fn median(times: &mut [Duration]) -> f64 {

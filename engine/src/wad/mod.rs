@@ -186,6 +186,30 @@ impl Wad {
     }
 }
 
+/// A WAD's bytes: `kind` (`b"IWAD"` or `b"PWAD"`), the lumps in order, the
+/// directory at the end, as Doom editors write one. A name longer than 8
+/// bytes is cut to 8.
+pub fn wad_bytes<N: AsRef<str>, B: AsRef<[u8]>>(kind: &[u8; 4], lumps: &[(N, B)]) -> Vec<u8> {
+    let mut data = kind.to_vec();
+    data.extend((lumps.len() as i32).to_le_bytes());
+    data.extend(0i32.to_le_bytes()); // the directory's offset, known at the end
+    let mut dir = Vec::with_capacity(lumps.len() * ENTRY);
+    for (name, bytes) in lumps {
+        let (name, bytes) = (name.as_ref().as_bytes(), bytes.as_ref());
+        dir.extend((data.len() as i32).to_le_bytes());
+        dir.extend((bytes.len() as i32).to_le_bytes());
+        let mut padded = [0u8; 8];
+        let n = name.len().min(8);
+        padded[..n].copy_from_slice(&name[..n]);
+        dir.extend(padded);
+        data.extend(bytes);
+    }
+    let table = data.len() as i32;
+    data[8..12].copy_from_slice(&table.to_le_bytes());
+    data.extend(dir);
+    data
+}
+
 /// A lump name: up to 8 bytes, NUL-padded, upper-cased as Doom does
 /// (W_CheckNumForName compares upper case). Bytes outside printable ASCII
 /// are shown escaped so that a corrupt name still prints.

@@ -9,22 +9,7 @@ use super::*;
 
 /// Builds a WAD from `(name, bytes)` lumps, directory at the end.
 pub(crate) fn build(kind: &[u8; 4], lumps: &[(&str, Vec<u8>)]) -> Vec<u8> {
-    let mut data = kind.to_vec();
-    data.extend((lumps.len() as i32).to_le_bytes());
-    data.extend(0i32.to_le_bytes()); // patched below
-    let mut dir = Vec::new();
-    for (name, bytes) in lumps {
-        dir.extend((data.len() as i32).to_le_bytes());
-        dir.extend((bytes.len() as i32).to_le_bytes());
-        let mut n = [0u8; 8];
-        n[..name.len()].copy_from_slice(name.as_bytes());
-        dir.extend(n);
-        data.extend(bytes);
-    }
-    let table = data.len() as i32;
-    data[8..12].copy_from_slice(&table.to_le_bytes());
-    data.extend(dir);
-    data
+    wad_bytes(kind, lumps)
 }
 
 fn name8(s: &str) -> [u8; 8] {
