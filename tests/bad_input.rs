@@ -851,7 +851,7 @@ fn unknown_thing_kinds_in_version_2_are_named_with_a_suggestion() {
             "a thing kind like no other",
             with_things(&v2(&two_rooms()), "Thing(kind: \"qqqqqqqqqqqq\", x: 128.0, y: 64.0),"),
             vec![Problem::UnknownThing { thing: 1, kind: "qqqqqqqqqqqq".into(), nearest: None }],
-            &["thing 1: no thing type is named \"qqqqqqqqqqqq\" (the types are listed in engine/data/things.ron)"],
+            &["thing 1: no thing type is named \"qqqqqqqqqqqq\" (the actors are listed in engine/data/actors.ron)"],
         ),
     ]);
     // In version 1 a kind names the sprite drawn: anything goes.

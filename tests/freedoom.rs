@@ -10,12 +10,12 @@
 use std::path::{Path, PathBuf};
 
 use glam::DVec2;
+use sightline::actors::KeyForm;
 use sightline::bsp::check::check_invariants;
 use sightline::bsp::{build, BuildOptions, SplitterKind};
 use sightline::geom::{exact_side, Side};
 use sightline::level::open_level;
 use sightline::map::special::KeyColour;
-use sightline::map::things::KeyForm;
 use sightline::map::validate::validate;
 use sightline::map::{Action, Activation};
 use sightline::play::events::Event;

@@ -13,8 +13,8 @@
 use std::path::PathBuf;
 
 use glam::DVec2;
+use sightline::actors::KeyForm;
 use sightline::map::special::{Damage, KeyColour, LightEffect, SectorSpecial};
-use sightline::map::things::KeyForm;
 use sightline::play::events::{Event, Origin};
 use sightline::play::player::Key;
 use sightline::play::world::doors::DoorState;

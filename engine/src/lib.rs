@@ -15,6 +15,7 @@
 //! `play` runs a level as a game: a fixed 35 Hz simulation (movement,
 //! collision, doors) from per-tick inputs, which demos record and replay.
 
+pub mod actors;
 pub mod bsp;
 pub mod campaign;
 pub mod framebuffer;

@@ -6,7 +6,7 @@
 use std::collections::{BTreeSet, HashMap};
 use std::path::PathBuf;
 
-use crate::map::things::ThingTypes;
+use crate::actors::ActorTable;
 use crate::map::{Map, Side, PLAYER_START, SKY};
 use crate::texture::animdefs::AnimDefs;
 use crate::texture::{Library, TextureError, TextureId, TextureKind, TextureSet};
@@ -136,7 +136,7 @@ impl Materials {
             } else if map.version >= 2 {
                 // A thing type names its first frame; its front view is
                 // rotation 0 (all sides alike) or 1 (facing the viewer).
-                match ThingTypes::doom().get(&t.kind).and_then(|ty| ty.first_frame()) {
+                match ActorTable::doom().get(&t.kind).and_then(|ty| ActorTable::doom().first_frame(ty)) {
                     None => None,
                     Some(stem) => {
                         let all_sides = format!("{stem}0");

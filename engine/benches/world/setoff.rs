@@ -11,9 +11,9 @@
 //! reverses it, as in Doom, and would undo what the first side set going.
 
 use glam::DVec2;
+use sightline::actors::KeyForm;
 use sightline::geom::{exact_side, Side};
 use sightline::map::special::{Action, Activation, KeyColour};
-use sightline::map::things::KeyForm;
 use sightline::map::{LineSpecial, Map};
 use sightline::play::events::Event;
 use sightline::play::player::Key;

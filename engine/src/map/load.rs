@@ -211,7 +211,7 @@ pub enum Problem {
         at: SpecialAt,
         to: usize,
     },
-    /// A version-2 thing kind that is not in the thing table.
+    /// A version-2 thing kind that is not in the actor table.
     UnknownThing {
         thing: usize,
         kind: String,
@@ -341,7 +341,7 @@ impl fmt::Display for Problem {
                 write!(f, "thing {thing}: no thing type is named {kind:?}")?;
                 match nearest {
                     Some(n) => write!(f, "; did you mean {n:?}?"),
-                    None => write!(f, " (the types are listed in engine/data/things.ron)"),
+                    None => write!(f, " (the actors are listed in engine/data/actors.ron)"),
                 }
             }
         }

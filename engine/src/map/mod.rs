@@ -8,7 +8,6 @@ pub mod load;
 pub mod semantics;
 pub mod source;
 pub mod special;
-pub mod things;
 pub mod validate;
 
 use glam::DVec2;

@@ -6,15 +6,15 @@
 
 use super::load::{Problem, SpecialAt};
 use super::special::{Action, KeyColour, LineSpecial};
-use super::things::{Category, ThingTypes};
 use super::Map;
+use crate::actors::{ActorTable, Category};
 
 /// The thing kind teleporters aim for.
 pub const TELEPORT_DESTINATION: &str = "teleport_destination";
 
 pub fn check(map: &Map) -> Vec<Problem> {
     let mut problems = Vec::new();
-    let types = ThingTypes::doom();
+    let types = ActorTable::doom();
     if map.version >= 2 {
         for (i, t) in map.things.iter().enumerate() {
             if types.get(&t.kind).is_none() {
@@ -83,7 +83,7 @@ fn check_special(
 /// Is `kind` a teleport destination? (Both versions use the type's name.)
 pub fn is_teleport_destination(kind: &str) -> bool {
     kind == TELEPORT_DESTINATION
-        || ThingTypes::doom().get(kind).is_some_and(|t| t.category == Category::TeleportDestination)
+        || ActorTable::doom().get(kind).is_some_and(|t| t.category == Category::TeleportDestination)
 }
 
 /// The teleport destination Doom's EV_Teleport would pick: in the first

@@ -16,7 +16,7 @@ use super::special::{Action, Activation, Scroll, SectorSpecial, SkillBand, Who};
 pub struct MapSource {
     /// The format version: 1 (the default) or 2. In version 2 a thing's
     /// `kind` names a thing type (`"imp"`, `"blue_card"`), checked against
-    /// the thing table; in version 1 it names the sprite drawn.
+    /// the actor table; in version 1 it names the sprite drawn.
     #[serde(default = "version_1", skip_serializing_if = "is_version_1")]
     pub version: i64,
     pub name: String,

@@ -38,10 +38,10 @@ pub mod world;
 
 use glam::DVec2;
 
+use crate::actors::{ActorFlag, ActorTable};
 use crate::geom::sin_cos_degrees;
 use crate::level::Level;
 use crate::map::special::Activation;
-use crate::map::things::{ThingFlag, ThingTypes};
 use crate::render::View;
 use blockmap::{Blockmap, LineQuery};
 use collision::World as Collision;
@@ -149,12 +149,12 @@ impl Game {
         if level.compiled.locate(start.pos).is_none() {
             return Err(PlayError::Outside { map: map.name.clone(), x: start.pos.x, y: start.pos.y });
         }
-        let types = ThingTypes::doom();
+        let types = ActorTable::doom();
         let mut totals = (0, 0);
         for t in map.things.iter().filter(|t| t.in_single_player(options.skill) && map.version >= 2) {
             if let Some(ty) = types.get(&t.kind) {
-                totals.0 += u32::from(ty.has(ThingFlag::CountKill));
-                totals.1 += u32::from(ty.has(ThingFlag::CountItem));
+                totals.0 += u32::from(ty.has(ActorFlag::CountKill));
+                totals.1 += u32::from(ty.has(ActorFlag::CountItem));
             }
         }
         level.show_skill(options.skill);

@@ -4,8 +4,8 @@
 
 use super::events::{sound, Event, Origin};
 use super::player::{Key, Player, HEIGHT, RADIUS};
+use crate::actors::{ActorTable, Category, KeyForm};
 use crate::level::Level;
-use crate::map::things::{Category, KeyForm, ThingTypes};
 
 /// A thing that can be picked up, and what it gives.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -17,7 +17,7 @@ pub struct Pickup {
 
 /// The pickups among the things shown at the start of a game.
 pub fn pickups(level: &Level) -> Vec<Pickup> {
-    let types = ThingTypes::doom();
+    let types = ActorTable::doom();
     let map = &level.compiled.map;
     (0..map.things.len())
         .filter(|&i| level.thing_shown[i])

@@ -10,9 +10,9 @@ use glam::DVec2;
 
 use super::collision::Area;
 use super::input::TickInput;
+use crate::actors::KeyForm;
 use crate::geom::sin_cos_degrees;
 use crate::map::special::KeyColour;
-use crate::map::things::KeyForm;
 use crate::render::view::EYE_HEIGHT;
 
 /// The body is a circle of this radius (Doom's player radius, 16).

@@ -25,11 +25,11 @@ use super::art::{self, Image, Palette, TextureDef};
 use super::level::{flags, WadLine, WadMap};
 use super::specials::{sector_special, translate, Effect};
 use super::{Wad, WadError};
+use crate::actors::ActorTable;
 use crate::map::source::{
     LineSource, LineSpecialSource, MapSource, SectorSource, SideSource, ThingSource, TriggerLineSource,
 };
 use crate::map::special::{Action, Activation, Scroll, SkillBand, Who};
-use crate::map::things::ThingTypes;
 use crate::map::validate::validate;
 use crate::map::{GameMode, Problem, SpecialAt, SKY};
 
@@ -58,7 +58,7 @@ pub struct Report {
     pub sector_specials: usize,
     /// Specials and sector types with no translation: `linedef 12: ...`.
     pub unsupported_specials: Vec<String>,
-    /// Things of a type the thing table does not know.
+    /// Things of a type the actor table does not know.
     pub unknown_things: Vec<String>,
     /// Specials that Doom and Boom ignore (other ports' numbers), with why.
     pub ignored: Vec<String>,
@@ -533,14 +533,14 @@ fn convert_things(
     const MULTIPLAYER: u16 = 0x0010;
     const NOT_DEATHMATCH: u16 = 0x0020;
     const NOT_COOP: u16 = 0x0040;
-    let types = ThingTypes::doom();
+    let types = ActorTable::doom();
     let mut things = Vec::new();
     for (i, t) in map.things.iter().enumerate() {
         let Some(ty) = types.by_doomednum(t.kind) else {
             report.unknown_things.push(format!("thing {i}: type {} at ({}, {})", t.kind, t.x, t.y));
             continue;
         };
-        if let Some(lump) = ty.first_frame().and_then(|stem| find_sprite(art, &stem)) {
+        if let Some(lump) = types.first_frame(ty).and_then(|stem| find_sprite(art, &stem)) {
             sprites.insert(lump);
         }
         let bands = [(EASY, SkillBand::Easy), (MEDIUM, SkillBand::Medium), (HARD, SkillBand::Hard)];

@@ -544,7 +544,7 @@ proptest! {
         let given = lines.iter().filter(|l| l.0 != 0).count();
         let r = &c.report;
         prop_assert!(r.specials + r.ignored.len() + r.unsupported_specials.len() >= given, "{r:?}");
-        let unknown = things.iter().filter(|t| crate::map::things::ThingTypes::doom().by_doomednum(t.2).is_none()).count();
+        let unknown = things.iter().filter(|t| crate::actors::ActorTable::doom().by_doomednum(t.2).is_none()).count();
         prop_assert_eq!(r.unknown_things.len(), unknown);
     }
 }

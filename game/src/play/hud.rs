@@ -6,9 +6,9 @@
 use std::time::Duration;
 
 use font8x8::{UnicodeFonts, BASIC_FONTS};
+use sightline::actors::KeyForm;
 use sightline::framebuffer::rgb;
 use sightline::map::special::KeyColour;
-use sightline::map::things::KeyForm;
 use sightline::play::playthrough::Phase;
 use sightline::play::{Player, TICRATE};
 use sightline::Framebuffer;
