@@ -442,3 +442,53 @@ fn a_pwad_plays_on_its_iwad_without_importing() {
     let err = open(&MapRef::parse(&text, None), &BuildOptions::default()).err().expect("no art without its IWAD");
     assert!(err.to_string().contains("mymap.wad") && err.to_string().contains("PLAYPAL"), "{err}");
 }
+
+/// E1M1's monsters as a game draws them: a zombieman seen from eight sides
+/// shows eight different views (Doom's rotations, the mirrored ones
+/// included), the BSP renderer agrees with the reference in `ids` shading
+/// on each, and the frames are written for a person to look at
+/// (`target/e1m1-rotations/`).
+#[test]
+#[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
+fn e1m1_monsters_are_drawn_from_every_side() {
+    use sightline::campaign::MapRef;
+    use sightline::play::playthrough::Playthrough;
+    use sightline::play::GameOptions;
+
+    let wad = wad_path("freedoom1.wad");
+    let map = format!("{}:E1M1", wad.display());
+    let mut play =
+        Playthrough::of(&MapRef::parse(&map, None), GameOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+    play.tick(&TickInput::default()).unwrap();
+    let level = play.game.level();
+    let (zombie, pos) = {
+        let map = &level.compiled.map;
+        let i = map
+            .things
+            .iter()
+            .position(|t| t.kind == "zombieman" && t.in_single_player(3))
+            .expect("E1M1 has a zombieman");
+        (i, map.things[i].pos)
+    };
+    let drawn = *level.things.iter().find(|t| t.key == zombie).expect("the zombieman is drawn");
+    let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("e1m1-rotations");
+    std::fs::create_dir_all(&out).unwrap();
+    let mut seen = Vec::new();
+    for k in 0..8 {
+        // From direction k+1: 0 is in front of it, then round anticlockwise... as
+        // Doom numbers them (1 front, 2 front-left of the viewer, ...).
+        let from = drawn.angle + 45.0 * k as f64;
+        let (s, c) = from.to_radians().sin_cos();
+        let eye = pos + DVec2::new(c, s) * 96.0;
+        seen.push(drawn.texture_seen_from(eye));
+        let Ok(()) = play.game.teleport(eye, from + 180.0) else { continue };
+        let view = play.game.view(1.0);
+        let level = play.game.level();
+        assert_agree(level, &view, (160, 100), &format!("E1M1 zombieman from side {}", k + 1));
+        let mut fb = Framebuffer::new(320, 200);
+        render_frame(level, &view, &RenderOptions::default(), &mut Frame::new(), &mut fb);
+        std::fs::write(out.join(format!("side{}.png", k + 1)), fb.to_png()).unwrap();
+    }
+    let distinct: std::collections::BTreeSet<_> = seen.iter().map(|t| t.0).collect();
+    assert_eq!(distinct.len(), 8, "the eight sides show {seen:?}");
+}

@@ -37,6 +37,9 @@ pub struct Level {
     /// Whether each thing is drawn: a thing not on the game's skill, or
     /// picked up, is not. All are, until a game says otherwise.
     pub thing_shown: Vec<bool>,
+    /// The things drawn this tick: the map's shown things until a game
+    /// starts, then its actors as they stand ([`crate::play::Game`] writes it).
+    pub things: Vec<DrawnThing>,
     /// Ticks since play began: scrolling walls are drawn scrolled by it.
     pub time: u64,
     /// Per sector, the lines with it on either side, in line order (Doom's
@@ -46,6 +49,39 @@ pub struct Level {
     pub sector_centres: Vec<glam::DVec2>,
     /// What the ray-caster needs of a grid map.
     pub grid: Option<GridLevel>,
+}
+
+/// A thing as the renderers draw it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DrawnThing {
+    /// Orders things at equal depth and names the thing in `ids` shading:
+    /// the map thing's index, or an index past the map's things for what
+    /// play spawned.
+    pub key: usize,
+    pub pos: glam::DVec2,
+    /// The height its sprite's origin (the bottom middle) stands at.
+    pub z: f64,
+    /// The sector whose light it takes.
+    pub sector: usize,
+    /// Where it faces, degrees anticlockwise from east.
+    pub angle: f64,
+    /// The textures seen from Doom's eight directions (0: from in front).
+    pub views: [crate::texture::TextureId; 8],
+    /// Drawn at full brightness.
+    pub bright: bool,
+}
+
+impl DrawnThing {
+    /// The view an eye at `eye` sees (Doom's R_ProjectSprite): the
+    /// direction from the eye to the thing against the way it faces, in
+    /// eighths centred on the eight directions. An eye in front of it sees
+    /// view 0. Both renderers ask this, so their sprites agree.
+    pub fn texture_seen_from(&self, eye: glam::DVec2) -> crate::texture::TextureId {
+        let d = self.pos - eye;
+        let towards = d.y.atan2(d.x).to_degrees();
+        let eighth = ((towards - self.angle + 180.0 + 22.5) / 45.0).floor();
+        self.views[eighth.rem_euclid(8.0) as usize % 8]
+    }
 }
 
 /// A grid map's faces and doors, for the ray-caster.
@@ -117,7 +153,35 @@ impl Level {
         }
         let sector_centres = boxes.iter().map(|b| (b.min + b.max) / 2.0).collect();
         let grid = compiled.grid.as_ref().map(GridLevel::new);
-        Level { compiled, materials, thing_sectors, thing_shown, time: 0, sector_lines, sector_centres, grid }
+        let mut level = Level {
+            compiled,
+            materials,
+            thing_sectors,
+            thing_shown,
+            things: Vec::new(),
+            time: 0,
+            sector_lines,
+            sector_centres,
+            grid,
+        };
+        level.draw_map_things();
+        level
+    }
+
+    /// Draws the map's shown things as they stand in the map: their first
+    /// frame, on their sector's floor (before a game moves them).
+    pub fn draw_map_things(&mut self) {
+        self.things = (0..self.compiled.map.things.len()).filter_map(|i| self.map_thing_drawn(i)).collect();
+    }
+
+    /// Map thing `i` drawn as it stands in the map, if it is shown and has
+    /// a sprite: its first frame, on its sector's floor.
+    pub fn map_thing_drawn(&self, i: usize) -> Option<DrawnThing> {
+        let texture = self.materials.sprites[i].filter(|_| self.thing_shown[i])?;
+        let map = &self.compiled.map;
+        let (t, sector) = (&map.things[i], self.thing_sectors[i]);
+        let z = map.sectors[sector].floor;
+        Some(DrawnThing { key: i, pos: t.pos, z, sector, angle: t.angle, views: [texture; 8], bright: false })
     }
 
     /// Shows the things a single-player game at `skill` (1 to 5) has, by
@@ -126,6 +190,7 @@ impl Level {
         for (shown, t) in self.thing_shown.iter_mut().zip(&self.compiled.map.things) {
             *shown = t.in_single_player(skill);
         }
+        self.draw_map_things();
     }
 
     /// The grid and its ray-casting data, for a grid map.

@@ -35,6 +35,12 @@ pub struct Materials {
     /// Per thing: its sprite (`None` for things that are not drawn, such as
     /// the player start).
     pub sprites: Vec<Option<TextureId>>,
+    /// Per actor sprite and frame ([`Materials::view_index`]), the textures
+    /// it shows from Doom's eight directions (index 0 is direction 1, the
+    /// front), for every actor the map's things can bring into play; `None`
+    /// where the art has no such frame. Mirrored views are textures of
+    /// their own (see `wad::import::sprite_view`).
+    pub sprite_views: Vec<Option<[TextureId; 8]>>,
     /// The panorama shown by `"SKY"` ceilings and floors, if any sector has one.
     pub sky: Option<TextureId>,
     /// Some two-sided line has a see-through middle texture.
@@ -50,6 +56,9 @@ pub struct Materials {
     /// in list order).
     pub switches: HashMap<TextureId, (TextureId, usize)>,
 }
+
+/// Frames a sprite may have: `A` to `]` (Doom's 29).
+const SPRITE_FRAMES: usize = 29;
 
 /// An animation's frames, as texture ids.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -165,7 +174,45 @@ impl Materials {
             error,
         })?;
         m.add_animations(map, library, own.as_ref().unwrap_or(AnimDefs::doom()));
+        if map.version >= 2 {
+            m.add_sprite_views(map, library);
+        }
         Ok(m)
+    }
+
+    /// The index of sprite `sprite`'s frame `frame` in [`Self::sprite_views`].
+    pub fn view_index(sprite: u16, frame: u8) -> usize {
+        usize::from(sprite) * SPRITE_FRAMES + usize::from(frame)
+    }
+
+    /// Resolves every view of every frame of the actors the map's things
+    /// can bring into play (the effects every game makes included). A view
+    /// the art lacks takes the frame's first view; a frame with none stays
+    /// `None`, and the actor keeps the last frame it could show.
+    fn add_sprite_views(&mut self, map: &Map, library: &Library) {
+        let table = ActorTable::doom();
+        let roots = map.things.iter().filter_map(|t| table.index(&t.kind));
+        let effects = ["bullet_puff", "blood", "teleport_fog", "item_fog"].into_iter().filter_map(|n| table.index(n));
+        self.sprite_views = vec![None; table.sprites.len() * SPRITE_FRAMES];
+        for actor in table.closure(roots.chain(effects)) {
+            for id in table.states_of(&table.actors[actor]) {
+                let state = table.state(id);
+                let slot = Materials::view_index(state.sprite, state.frame);
+                if self.sprite_views[slot].is_some() {
+                    continue;
+                }
+                let stem = format!("{}{}", table.sprites[usize::from(state.sprite)], char::from(b'A' + state.frame));
+                let mut find =
+                    |view: char| self.textures.resolve_in(&format!("{stem}{view}"), TextureKind::Sprite, library).ok();
+                self.sprite_views[slot] = match find('0') {
+                    Some(all) => Some([all; 8]),
+                    None => {
+                        let views: Vec<Option<TextureId>> = ('1'..='8').map(&mut find).collect();
+                        views.iter().flatten().next().map(|&first| std::array::from_fn(|k| views[k].unwrap_or(first)))
+                    }
+                };
+            }
+        }
     }
 
     /// Resolves the frames of every animation, and the partner of every

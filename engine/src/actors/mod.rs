@@ -470,6 +470,43 @@ impl ActorTable {
         Some(format!("{}{}", self.sprites[usize::from(state.sprite)], char::from(b'A' + state.frame)))
     }
 
+    /// The states an actor can be in: every state its labels lead to.
+    pub fn states_of(&self, actor: &ActorDef) -> Vec<StateId> {
+        let mut seen: Vec<StateId> = Vec::new();
+        for &(_, start) in &actor.labels {
+            let mut at = Some(start);
+            while let Some(id) = at.filter(|id| !seen.contains(id)) {
+                seen.push(id);
+                at = self.state(id).next;
+            }
+        }
+        seen.sort();
+        seen
+    }
+
+    /// `roots` and every actor they can bring into play: what spawns in
+    /// their place, what they drop, and what their actions spawn (missiles,
+    /// fire, lost souls...), sorted.
+    pub fn closure(&self, roots: impl IntoIterator<Item = usize>) -> Vec<usize> {
+        let mut seen = vec![false; self.actors.len()];
+        let mut todo: Vec<usize> = roots.into_iter().collect();
+        while let Some(i) = todo.pop() {
+            if std::mem::replace(&mut seen[i], true) {
+                continue;
+            }
+            let a = &self.actors[i];
+            todo.extend(a.replaced_by.iter().chain(&a.drop));
+            for id in self.states_of(a) {
+                let args = self.state(id).action.iter().flat_map(|c| &c.args);
+                todo.extend(args.filter_map(|arg| match arg {
+                    Arg::Actor(n) => Some(*n),
+                    _ => None,
+                }));
+            }
+        }
+        (0..seen.len()).filter(|&i| seen[i]).collect()
+    }
+
     /// The known actor name nearest to `name` (by edit distance), for "did
     /// you mean".
     pub fn nearest(&self, name: &str) -> Option<&str> {

@@ -24,6 +24,7 @@
 //! [`pickups`] (keys), [`events`] (sounds and messages out), [`random`],
 //! [`demo`] (recorded inputs, saved and loaded).
 
+pub mod actors;
 pub mod blockmap;
 pub mod collision;
 pub mod demo;
@@ -122,6 +123,7 @@ pub struct Game {
     /// Sectors the body overlaps (scratch).
     touched: Vec<usize>,
     pickups: Vec<Pickup>,
+    actors: actors::Actors,
     rng: GameRng,
     events: Vec<Event>,
     exit: Option<Exit>,
@@ -164,6 +166,9 @@ impl Game {
         let mut rng = GameRng::new(options.seed);
         let world = World::new(&mut level, &mut rng);
         let pickups = pickups::pickups(&level);
+        let fast = options.skill == 5;
+        let actors = actors::Actors::spawn_map_things(&level, ActorTable::doom().clone(), fast, &mut rng);
+        actors.draw(&mut level);
         let mut query = LineQuery::default();
         let collision = Collision { compiled: &level.compiled, blockmap: &blockmap };
         let near = collision.lines_near(&mut query, start.pos, RADIUS + 1.0);
@@ -180,6 +185,7 @@ impl Game {
             scratch: Scratch::default(),
             touched: Vec::new(),
             pickups,
+            actors,
             rng,
             events: Vec::new(),
             exit: None,
@@ -346,6 +352,8 @@ impl Game {
         pickups::touch(&mut self.pickups, &mut self.level, &mut self.player, &mut self.events);
         let (world, mut ctx) = self.ctx();
         world.tick(&mut ctx);
+        self.actors.tick(&self.level.materials);
+        self.actors.draw(&mut self.level);
     }
 
     /// The level as it is now: sectors at their current heights and light,

@@ -264,21 +264,19 @@ struct Billboard<'a> {
 
 fn things_in_front<'a>(level: &'a Level, cam: &Camera) -> Vec<Billboard<'a>> {
     let mut out = Vec::new();
-    for (thing, t) in level.map.things.iter().enumerate() {
-        let Some(id) = level.materials.sprites[thing].filter(|_| level.thing_shown[thing]) else { continue };
+    for t in &level.things {
         let q = cam.to_camera(t.pos);
         if q.x < NEAR {
             continue;
         }
-        let texture = level.materials.textures.get(id);
-        let sector = &level.map.sectors[level.thing_sectors[thing]];
+        let texture = level.materials.textures.get(t.texture_seen_from(cam.eye));
         out.push(Billboard {
-            thing,
+            thing: t.key,
             depth: q.x,
             left: q.y - texture.width as f64 / 2.0,
             texture,
-            floor: sector.floor,
-            light: sector.light,
+            floor: t.z,
+            light: if t.bright { u8::MAX } else { level.map.sectors[t.sector].light },
         });
     }
     out

@@ -34,8 +34,8 @@ pub(crate) struct VisSprite {
 /// Finds the things in view and sorts them far to near, into `sprites`.
 pub(crate) fn collect(level: &Level, cam: &Camera, sprites: &mut Vec<VisSprite>) {
     sprites.clear();
-    for (thing, t) in level.map.things.iter().enumerate() {
-        let Some(texture) = level.materials.sprites[thing].filter(|_| level.thing_shown[thing]) else { continue };
+    for t in &level.things {
+        let texture = t.texture_seen_from(cam.eye);
         let q = cam.to_camera(t.pos);
         if q.x < NEAR {
             continue;
@@ -48,8 +48,8 @@ pub(crate) fn collect(level: &Level, cam: &Camera, sprites: &mut Vec<VisSprite>)
         if x0 >= x1 {
             continue;
         }
-        let sector = &level.map.sectors[level.thing_sectors[thing]];
-        sprites.push(VisSprite { thing, depth: q.x, left, floor: sector.floor, light: sector.light, texture, x0, x1 });
+        let light = if t.bright { u8::MAX } else { level.map.sectors[t.sector].light };
+        sprites.push(VisSprite { thing: t.key, depth: q.x, left, floor: t.z, light, texture, x0, x1 });
     }
     // Far to near. At equal depth the lower-numbered thing is drawn last, on
     // top, and a sprite goes over a masked middle: the reference walks near

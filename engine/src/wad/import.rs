@@ -740,6 +740,22 @@ pub fn sprite_lump(art: &Art, name: &str) -> Option<usize> {
     })
 }
 
+/// The lump that shows sprite view `name` (`TROOA8`: frame A from
+/// direction 8), and whether it must be mirrored: the lump of that name, the
+/// first half of a pair (`TROOA8A2` shows 8 as drawn), or
+/// the second half of a pair (`TROOA2A8` shows 8 mirrored), as Doom reads
+/// sprite names.
+pub fn sprite_view(art: &Art, name: &str) -> Option<(usize, bool)> {
+    if let Some(lump) = sprite_lump(art, name) {
+        return Some((lump, false));
+    }
+    let (stem, view) = (name.get(..4)?, name.get(4..6)?);
+    let mut pairs: Vec<_> =
+        art.sprites.iter().filter(|(k, _)| k.len() == 8 && k.starts_with(stem) && &k[6..8] == view).collect();
+    pairs.sort();
+    pairs.first().map(|(_, &i)| (i, true))
+}
+
 /// Writes the PNGs `converted` maps need under `dir`: wall textures in
 /// `textures/`, flats in `flats/`, sprites in `sprites/`. A sprite is padded
 /// so that Doom's origin (its offsets) lands at the middle of its bottom edge,

@@ -5,7 +5,7 @@
 //! the same.
 
 use super::art::{self, Image};
-use super::import::{sprite_lump, stand_on_origin, Art};
+use super::import::{sprite_view, stand_on_origin, Art};
 use super::{Wad, WadError};
 use crate::texture::{Texture, TextureError, TextureKind, MAX_SIDE};
 
@@ -29,7 +29,7 @@ impl WadArt {
             TextureKind::Wall | TextureKind::Flat => {
                 self.art.textures.contains_key(&name) || self.art.flats.contains_key(&name)
             }
-            TextureKind::Sprite => sprite_lump(&self.art, &name).is_some(),
+            TextureKind::Sprite => sprite_view(&self.art, &name).is_some(),
         }
     }
 
@@ -49,14 +49,29 @@ impl WadArt {
                 art::compose(&self.wad, def, &self.art.palette).map_err(|e| bad(e.to_string()))?
             }
             TextureKind::Sprite => {
-                let lump = sprite_lump(&self.art, name).ok_or_else(|| bad("not in the WAD".into()))?;
-                stand_on_origin(&art::picture(self.wad.bytes(lump), &self.art.palette).map_err(bad)?)
+                let (lump, mirrored) = sprite_view(&self.art, name).ok_or_else(|| bad("not in the WAD".into()))?;
+                let image = stand_on_origin(&art::picture(self.wad.bytes(lump), &self.art.palette).map_err(bad)?);
+                // Padded about its origin, so mirroring keeps the origin.
+                if mirrored {
+                    mirror(&image)
+                } else {
+                    image
+                }
             }
             TextureKind::Wall => return Err(bad("not in the WAD".into())),
         };
         texture_of(&image)
             .ok_or_else(|| bad(format!("{}x{} is not 1 to {MAX_SIDE} on a side", image.width, image.height)))
     }
+}
+
+/// An image flipped left to right.
+fn mirror(image: &Image) -> Image {
+    let mut rgba = image.rgba.clone();
+    for row in rgba.chunks_mut(image.width.max(1)) {
+        row.reverse();
+    }
+    Image { rgba, left: image.width as i32 - image.left, ..image.clone() }
 }
 
 /// An RGBA image as a column-major texture.
