@@ -14,10 +14,12 @@
 //! input --turn, thrust--> velocity --collision::slide--> position --walk triggers (trace)
 //!       --friction, fall--> z --use, fire (trace)--> line specials
 //!       --sector under the feet (damage, secret)--> pickups --world thinkers--> sector heights,
-//!         light, switch textures --animation--> texture frames
+//!         light, switch textures --animation--> texture frames --actors (states, actions)-->
+//!         monsters look, chase and attack --draw--> Level::things
 //! ```
 //!
-//! Modules: [`input`] (what a tick reads), [`player`] (the body's physics and
+//! Modules: [`actors`] (the things in play and their state machines),
+//! [`sight`] (sight and shots, fast and brute force), [`input`] (what a tick reads), [`player`] (the body's physics and
 //! constants), [`blockmap`] (lines by grid cell), [`collision`] (sweeping the
 //! body's circle against lines), [`trace`] (what a move, a use or a shot
 //! crosses), [`world`] (the level's machinery: specials and thinkers),
@@ -34,6 +36,7 @@ pub mod pickups;
 pub mod player;
 pub mod playthrough;
 pub mod random;
+pub mod sight;
 pub mod trace;
 pub mod world;
 
@@ -124,6 +127,7 @@ pub struct Game {
     touched: Vec<usize>,
     pickups: Vec<Pickup>,
     actors: actors::Actors,
+    sight: sight::Scratch,
     rng: GameRng,
     events: Vec<Event>,
     exit: Option<Exit>,
@@ -186,6 +190,7 @@ impl Game {
             touched: Vec::new(),
             pickups,
             actors,
+            sight: sight::Scratch::default(),
             rng,
             events: Vec::new(),
             exit: None,
@@ -352,8 +357,10 @@ impl Game {
         pickups::touch(&mut self.pickups, &mut self.level, &mut self.player, &mut self.events);
         let (world, mut ctx) = self.ctx();
         world.tick(&mut ctx);
-        self.actors.tick(&self.level.materials);
-        self.actors.draw(&mut self.level);
+        let Game { level, player, actors, blockmap, query, sight, rng, events, options, .. } = self;
+        let mut ctx = actors::ActorCtx { level, player, rng, events, blockmap, query, sight, skill: options.skill };
+        actors.tick(&mut ctx);
+        actors.draw(&mut self.level);
     }
 
     /// The level as it is now: sectors at their current heights and light,
@@ -378,6 +385,11 @@ impl Game {
             prev.eye + (now.eye - prev.eye) * a,
             (prev.angle + turned * a).rem_euclid(360.0),
         )
+    }
+
+    /// The things in play.
+    pub fn actors(&self) -> &actors::Actors {
+        &self.actors
     }
 
     pub fn player(&self) -> &Player {

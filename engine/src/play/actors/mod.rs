@@ -6,20 +6,31 @@
 //! After the tick, [`Actors::draw`] hands the renderers each actor's frame
 //! (its eight views) where it stands.
 //!
-//! What actors do (their actions: looking, chasing, attacking), moving
-//! them, and what they spawn come next; so far states advance and actors
-//! are drawn, and a state's action is not yet run.
+//! Entering a state runs its action (`actions.rs`: the registry's names
+//! bound to Rust functions; `monsters.rs`: looking, chasing, attacking);
+//! `movement.rs` is how a monster steps. An action the engine does not yet
+//! implement is skipped (`actions::function` lists the ones it does).
 
 use std::sync::Arc;
 
 use glam::DVec2;
 
-use crate::actors::{ActorFlag, ActorTable, StateId};
+pub mod actions;
+pub mod monsters;
+pub mod movement;
+
+use crate::actors::{ActorFlag, ActorFlags, ActorTable, StateId};
 use crate::level::{DrawnThing, Level};
 use crate::materials::Materials;
 use crate::texture::TextureId;
 
+use super::blockmap::{Blockmap, LineQuery};
+use super::events::Event;
+use super::player::Player;
 use super::random::GameRng;
+use super::sight;
+use actions::ActionFn;
+use movement::NO_DIR;
 
 /// One thing in play.
 #[derive(Clone, Debug, PartialEq)]
@@ -46,6 +57,38 @@ pub struct Actor {
     pub removed: bool,
     /// On the list of actors a tick visits.
     listed: bool,
+    /// Its flags now (the table's, changed by play: `Ambush` from the map,
+    /// `Solid` lost in death, `Corpse` gained).
+    pub flags: ActorFlags,
+    pub health: i32,
+    /// Chasing the player (the only target until monsters fight each other).
+    pub target: bool,
+    /// Doom's `movedir` (0..8, [`NO_DIR`]) and `movecount`: steps left before
+    /// choosing a new direction.
+    pub movedir: u8,
+    pub movecount: i32,
+    /// Ticks before it may first attack (Doom's `reactiontime`).
+    pub reaction_time: i32,
+    /// Just attacked: the next chase step moves instead (Doom's MF_JUSTATTACKED).
+    pub just_attacked: bool,
+    /// Just hurt: the next missile check fires (Doom's MF_JUSTHIT).
+    pub just_hit: bool,
+    /// Highest floor and lowest ceiling under its box.
+    pub floor: f64,
+    pub ceiling: f64,
+}
+
+/// What actions reach besides the actors: the level, the player, the
+/// random generator, the events out, and scratch for lines and sight.
+pub struct ActorCtx<'a> {
+    pub level: &'a mut Level,
+    pub player: &'a mut Player,
+    pub rng: &'a mut GameRng,
+    pub events: &'a mut Vec<Event>,
+    pub blockmap: &'a Blockmap,
+    pub query: &'a mut LineQuery,
+    pub sight: &'a mut sight::Scratch,
+    pub skill: u8,
 }
 
 /// Every actor of a game.
@@ -60,6 +103,8 @@ pub struct Actors {
     /// Map things with no actor that are drawn as they stand (a version-1
     /// map names sprites, not actors).
     still: Vec<usize>,
+    /// Per action of the registry, its function (`None`: not implemented).
+    run: Vec<Option<ActionFn>>,
 }
 
 impl Actors {
@@ -68,7 +113,8 @@ impl Actors {
     /// so that a room of monsters does not breathe in step.
     pub fn spawn_map_things(level: &Level, table: Arc<ActorTable>, fast: bool, rng: &mut GameRng) -> Actors {
         let map = &level.compiled.map;
-        let mut actors = Actors { table, list: Vec::new(), awake: Vec::new(), fast, still: Vec::new() };
+        let run = crate::actors::actions::REGISTRY.iter().map(|a| actions::function(a.name)).collect();
+        let mut actors = Actors { table, list: Vec::new(), awake: Vec::new(), fast, still: Vec::new(), run };
         for (i, t) in map.things.iter().enumerate() {
             if !level.thing_shown[i] {
                 continue;
@@ -86,25 +132,14 @@ impl Actors {
             let sector = level.thing_sectors[i];
             let s = &map.sectors[sector];
             let z = if def.has(ActorFlag::SpawnCeiling) { s.ceiling - def.height } else { s.floor };
-            let first = level.materials.sprites[i].map(|id| [id; 8]);
-            let actor = Actor {
-                kind,
-                thing: Some(i),
-                key: i,
-                pos: t.pos,
-                z,
-                angle: t.angle,
-                sector,
-                state,
-                tics: 0,
-                views: first,
-                bright: false,
-                removed: false,
-                listed: false,
-            };
+            let mut actor = actors.new_actor(kind, t.pos, z, t.angle, (sector, s.floor, s.ceiling), i);
+            actor.thing = Some(i);
+            actor.views = level.materials.sprites[i].map(|id| [id; 8]);
+            actor.flags.set(ActorFlag::Ambush, t.ambush || def.has(ActorFlag::Ambush));
             actors.list.push(actor);
             let n = actors.list.len() - 1;
-            actors.enter(n, state, &level.materials);
+            // The first state's action does not run at spawn (Doom's P_SpawnMobj).
+            actors.show(n, state, &level.materials);
             let a = &mut actors.list[n];
             if a.tics > 0 {
                 a.tics = 1 + i32::from(rng.byte()) % a.tics;
@@ -113,8 +148,59 @@ impl Actors {
         actors
     }
 
-    /// Puts actor `n` into `state`: its frame, its timer, awake or asleep.
-    fn enter(&mut self, n: usize, state: StateId, materials: &Materials) {
+    /// A new actor of `kind` standing at `pos`, `z` in `area` (its sector,
+    /// floor and ceiling), known to the renderers as `key`.
+    fn new_actor(&self, kind: usize, pos: DVec2, z: f64, angle: f64, area: (usize, f64, f64), key: usize) -> Actor {
+        let def = &self.table.actors[kind];
+        Actor {
+            kind,
+            thing: None,
+            key,
+            pos,
+            z,
+            angle,
+            sector: area.0,
+            state: StateId(0),
+            tics: 0,
+            views: None,
+            bright: false,
+            removed: false,
+            listed: false,
+            flags: def.flags,
+            health: def.health,
+            target: false,
+            movedir: NO_DIR,
+            movecount: 0,
+            reaction_time: def.reaction_time,
+            just_attacked: false,
+            just_hit: false,
+            floor: area.1,
+            ceiling: area.2,
+        }
+    }
+
+    /// Brings a new actor of `kind` (or what replaces it) into play at
+    /// `pos`, `z`, in its first state (Doom's P_SpawnMobj: the state's
+    /// action does not run). Returns its index, or `None` if the actor has
+    /// no `Spawn` label.
+    pub fn spawn(&mut self, kind: usize, pos: DVec2, z: f64, angle: f64, ctx: &mut ActorCtx) -> Option<usize> {
+        let kind = self.table.spawned(kind);
+        let state = self.table.actors[kind].label("Spawn")?;
+        let compiled = &ctx.level.compiled;
+        let sector = compiled.sector_at(pos);
+        let s = &compiled.map.sectors[sector];
+        // Keys past the map's things, never reused: the list only grows.
+        let key = compiled.map.things.len() + self.list.len();
+        let actor = self.new_actor(kind, pos, z, angle, (sector, s.floor, s.ceiling), key);
+        self.list.push(actor);
+        let n = self.list.len() - 1;
+        self.show(n, state, &ctx.level.materials);
+        Some(n)
+    }
+
+    /// Puts actor `n` into `state`: its frame, its timer, awake or asleep
+    /// (Doom's P_SetMobjState without the action).
+    fn show(&mut self, n: usize, state: StateId, materials: &Materials) {
         let s = self.table.state(state);
         let tics = if self.fast && s.fast && s.tics > 0 { (s.tics + 1) / 2 } else { s.tics };
         let actor = &mut self.list[n];
@@ -130,10 +216,36 @@ impl Actors {
         }
     }
 
+    /// Puts actor `n` into `state` and runs its action; states of 0 tics
+    /// give way at once to the next, whose actions run too (Doom's
+    /// P_SetMobjState; loading has proven such states cannot loop). `None`
+    /// removes the actor.
+    pub fn set_state(&mut self, n: usize, state: Option<StateId>, ctx: &mut ActorCtx) {
+        let mut at = state;
+        loop {
+            let Some(state) = at else {
+                self.list[n].removed = true;
+                return;
+            };
+            self.show(n, state, &ctx.level.materials);
+            if let Some(call) = &self.table.state(state).action {
+                if let Some(run) = self.run[usize::from(call.action.0)] {
+                    let args = call.args.clone();
+                    run(self, n, &args, ctx);
+                }
+            }
+            let a = &self.list[n];
+            // The action may have moved it on (or removed it) already.
+            if a.removed || a.state != state || a.tics != 0 {
+                return;
+            }
+            at = self.table.state(state).next;
+        }
+    }
+
     /// Steps every awake actor's state timer; a state whose time is up
-    /// gives way to the next (several in one tick through states of 0
-    /// tics, which loading has proven cannot loop).
-    pub fn tick(&mut self, materials: &Materials) {
+    /// gives way to the next, whose action runs.
+    pub fn tick(&mut self, ctx: &mut ActorCtx) {
         let mut k = 0;
         while k < self.awake.len() {
             let n = self.awake[k] as usize;
@@ -142,14 +254,10 @@ impl Actors {
             if actor.removed || actor.tics < 0 {
                 continue;
             }
-            if actor.tics > 0 {
-                actor.tics -= 1;
-            }
-            while self.list[n].tics == 0 && !self.list[n].removed {
-                match self.table.state(self.list[n].state).next {
-                    Some(next) => self.enter(n, next, materials),
-                    None => self.list[n].removed = true,
-                }
+            actor.tics -= 1;
+            if actor.tics <= 0 {
+                let next = self.table.state(actor.state).next;
+                self.set_state(n, next, ctx);
             }
         }
         // Asleep (for ever) or gone: off the list, keeping the order.

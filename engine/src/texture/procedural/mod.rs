@@ -41,6 +41,18 @@ const SPRITES: &[&str] = &[
     "RSKUA0", "BAR1A0", "COLUA0",
 ];
 
+/// The trooper's frames (`sprites::trooper`): the zombieman's sprite
+/// names, A-G from eight directions and H-U from all sides alike.
+fn trooper_names() -> &'static [&'static str] {
+    static NAMES: std::sync::OnceLock<Vec<&'static str>> = std::sync::OnceLock::new();
+    NAMES.get_or_init(|| {
+        let standing = (b'A'..=b'G').flat_map(|f| (1..=8).map(move |v| format!("POSS{}{v}", char::from(f))));
+        let down = (b'H'..=b'U').map(|f| format!("POSS{}0", char::from(f)));
+        // Made once for the life of the program, like the other names.
+        standing.chain(down).map(|n| &*Box::leak(n.into_boxed_str())).collect()
+    })
+}
+
 /// Names of the built-in textures of each kind, upper case.
 pub fn names(kind: TextureKind) -> &'static [&'static str] {
     match kind {
@@ -50,9 +62,16 @@ pub fn names(kind: TextureKind) -> &'static [&'static str] {
     }
 }
 
+/// Every built-in name of `kind`: the listed ones, and for sprites the
+/// trooper's frames.
+fn all_names(kind: TextureKind) -> impl Iterator<Item = &'static str> {
+    let figures = if kind == TextureKind::Sprite { trooper_names() } else { &[] };
+    names(kind).iter().chain(figures).copied()
+}
+
 /// The listed spelling of built-in `name` (any case) of `kind`, if there is one.
 pub fn canonical(name: &str, kind: TextureKind) -> Option<&'static str> {
-    names(kind).iter().copied().find(|n| n.eq_ignore_ascii_case(name))
+    all_names(kind).find(|n| n.eq_ignore_ascii_case(name))
 }
 
 /// The built-in texture `name` (any case) of `kind`, or `None` when there is
@@ -97,7 +116,7 @@ pub fn generate(name: &str, kind: TextureKind) -> Option<Texture> {
         "BSKUA0" | "YSKUA0" | "RSKUA0" => machinery::skull(name),
         "BAR1A0" => sprites::barrel(paint::seed_of("BARREL")),
         "COLUA0" => sprites::lamp(paint::seed_of("LAMP")),
-        other => unreachable!("{other} is listed but has no painter"),
+        other => sprites::trooper(other).unwrap_or_else(|| unreachable!("{other} is listed but has no painter")),
     })
 }
 
@@ -114,7 +133,7 @@ mod tests {
     #[test]
     fn every_name_generates_with_its_stated_opacity() {
         for kind in KINDS {
-            for &name in names(kind) {
+            for name in all_names(kind) {
                 let t = generate(name, kind).unwrap_or_else(|| panic!("{name} {kind:?}"));
                 assert!(t.width >= 1 && t.height >= 1);
                 assert_eq!(t.texels.len(), t.width * t.height, "{name}");
@@ -158,7 +177,7 @@ mod tests {
     #[test]
     fn generation_is_deterministic_and_case_blind() {
         for kind in KINDS {
-            for &name in names(kind) {
+            for name in all_names(kind) {
                 let a = generate(name, kind).unwrap();
                 let b = generate(&name.to_lowercase(), kind).unwrap();
                 assert!(a == b, "{name} differs between runs");

@@ -306,3 +306,102 @@ pub fn statue(seed: u32) -> Texture {
     });
     paint(w, h, vec![pedestal, staff, body, arms, head])
 }
+
+/// A trooper in the zombieman's frames, by Doom's sprite naming (`POSSA1`:
+/// frame A seen from direction 1, the front; `POSSH0`: a death frame seen
+/// alike from every side), so that a test level plays with a monster and
+/// no art files. 32x56: helmet, face or back of the head by direction, a
+/// rifle on the side the figure turns to, legs that stride in frames A-D,
+/// a raised rifle in E and its flash in F, a flinch in G; H-L fall and
+/// M-U burst into a heap. `None` for other names.
+pub fn trooper(name: &str) -> Option<Texture> {
+    let b = name.as_bytes();
+    if b.len() != 6 || &name[..4] != "POSS" {
+        return None;
+    }
+    let (frame, view) = (b[4], b[5].wrapping_sub(b'0'));
+    let standing = (b'A'..=b'G').contains(&frame) && (1..=8).contains(&view);
+    let down = (b'H'..=b'U').contains(&frame) && view == 0;
+    if !standing && !down {
+        return None;
+    }
+    let (w, h) = (32usize, 56usize);
+    let cx = 16.0f32;
+    let khaki = hex(0x6b6a3a);
+    let boots = hex(0x3a2a1c);
+    let skin = hex(0xc08a68);
+    let helmet = hex(0x4a5a32);
+    let red = hex(0x9a1010);
+    if down {
+        // Falling, then a body on the floor; from M on, a bloody heap.
+        let k = f32::from(frame - b'H');
+        let height = if frame <= b'L' { 56.0 - k * 11.0 } else { 12.0 - (k - 5.0).min(6.0) };
+        let shapes: Vec<Shape> = vec![Box::new(move |x, y| {
+            let top = h as f32 - height;
+            let half = if frame <= b'L' { 6.0 + k * 2.5 } else { 12.0 };
+            if y < top || (x - cx).abs() > half {
+                return None;
+            }
+            let gore = frame > b'L' || (y - top) < 3.0;
+            Some(scale(if gore { red } else { khaki }, cylinder(x, cx, half)))
+        })];
+        return Some(paint(w, h, shapes));
+    }
+    // Directions 1 (front) round to 5 (back): how far the figure has turned
+    // and to which side (3 and 7 are its profiles).
+    let turn = match view {
+        1 => 0.0,
+        2 => -0.5,
+        3 => -1.0,
+        4 => -0.5,
+        5 => 0.0,
+        6 => 0.5,
+        7 => 1.0,
+        _ => 0.5,
+    };
+    let back = (4..=6).contains(&view);
+    let half = 8.0 - 3.0 * f32::abs(turn);
+    let stride = match frame {
+        b'A' | b'C' => 3.0,
+        _ => 0.0,
+    };
+    let aiming = frame == b'E' || frame == b'F';
+    let flinch = if frame == b'G' { 1.0 } else { 0.0 };
+    let torso: Shape = Box::new(move |x, y| {
+        ((16.0..36.0).contains(&y) && (x - cx - flinch).abs() < half)
+            .then(|| scale(khaki, cylinder(x, cx, half) * if back { 0.8 } else { 1.0 }))
+    });
+    let legs: Shape = Box::new(move |x, y| {
+        let left = (x - (cx - 3.0 - stride)).abs() < 2.5;
+        let right = (x - (cx + 3.0 + stride * 0.5)).abs() < 2.5;
+        ((36.0..56.0).contains(&y) && (left || right)).then(|| if y > 50.0 { boots } else { scale(khaki, 0.8) })
+    });
+    let head: Shape = Box::new(move |x, y| {
+        let d = ((x - cx - flinch).powi(2) + (y - 10.0).powi(2)).sqrt();
+        (d < 5.5).then(|| {
+            let face = !back && y > 9.0 && (x - cx - turn * 3.0 - flinch).abs() < 3.0;
+            if face {
+                skin
+            } else {
+                scale(helmet, cylinder(x, cx, 5.5))
+            }
+        })
+    });
+    // The rifle: across the body, towards the side the figure turns to,
+    // raised when aiming.
+    let gun_y = if aiming { 20.0 } else { 26.0 };
+    let side = if turn == 0.0 { 1.0 } else { turn.signum() };
+    let reach = 6.0 + 8.0 * f32::abs(turn);
+    let gun: Shape = Box::new(move |x, y| {
+        let along = (x - cx) * side;
+        ((gun_y..gun_y + 3.0).contains(&y) && (-2.0..reach).contains(&along)).then(|| hex(0x202020))
+    });
+    let mut shapes = vec![legs, torso, head, gun];
+    if frame == b'F' {
+        let tip = cx + side * (reach + 2.0);
+        shapes.push(Box::new(move |x, y| {
+            (((x - tip).powi(2) + (y - gun_y - 1.5).powi(2)).sqrt() < 3.0).then(|| hex(0xffe070))
+        }));
+    }
+    Some(paint(w, h, shapes))
+}

@@ -1,0 +1,481 @@
+//! What monsters do, as actions their states call (Doom's `p_enemy.c`
+//! rules, written anew): look for the player, chase it in steps of their
+//! speed around what blocks them, face it, and attack when in range and
+//! in sight; pain, death cries and falling bodies.
+//!
+//! The player is the only target so far: monsters do not yet fight each
+//! other, hear shots, open doors or fire missiles.
+
+use glam::DVec2;
+
+use super::actions::sound;
+use super::movement::{opposite, Blocker, Ground, Mover, DIR_STEP, NO_DIR};
+use super::{ActorCtx, Actors};
+use crate::actors::{ActorFlag, Arg};
+use crate::play::events::{Event, Origin};
+use crate::play::player::{HEIGHT as PLAYER_HEIGHT, RADIUS as PLAYER_RADIUS};
+use crate::play::sight::{self, Body, Ray, Struck, MELEE_RANGE};
+use crate::play::SHOT_RANGE;
+
+/// The player's index among bodies and blockers.
+pub const PLAYER: usize = usize::MAX;
+
+/// Doom's P_AproxDistance: the sum of the legs less half the shorter,
+/// which monsters' decisions are tuned to.
+pub fn approx_distance(d: DVec2) -> f64 {
+    let (x, y) = (d.x.abs(), d.y.abs());
+    x + y - x.min(y) / 2.0
+}
+
+/// `degrees` wrapped into `(-180, 180]`.
+fn wrap(degrees: f64) -> f64 {
+    let d = degrees.rem_euclid(360.0);
+    if d > 180.0 {
+        d - 360.0
+    } else {
+        d
+    }
+}
+
+/// A random byte difference as an angle: Doom's `(P_Random() - P_Random())
+/// << shift`, in degrees.
+fn spread(ctx: &mut ActorCtx, shift: u32) -> f64 {
+    let d = f64::from(ctx.rng.byte()) - f64::from(ctx.rng.byte());
+    d * f64::from(1u32 << shift) * 360.0 / 4_294_967_296.0
+}
+
+impl Actors {
+    fn body(&self, n: usize) -> Body {
+        let (a, def) = (&self.list[n], &self.table.actors[self.list[n].kind]);
+        Body { pos: a.pos, z: a.z, height: def.height, radius: def.radius, index: n }
+    }
+
+    fn sound_at(&self, n: usize, sound: Option<usize>, ctx: &mut ActorCtx) {
+        let Some(s) = sound else { return };
+        let name = crate::actors::sounds::doom()[s].name.as_str();
+        let def = &self.table.actors[self.list[n].kind];
+        // Bosses are heard everywhere at full volume.
+        let origin = if def.has(ActorFlag::FullVolumeSounds) { Origin::Player } else { Origin::At(self.list[n].pos) };
+        ctx.events.push(Event::Sound { sound: name, origin });
+    }
+
+    /// One of Doom's sound sets picked at random (`posit1`..`posit3`,
+    /// `bgsit1`/`bgsit2`, `podth1`..`podth3`, `bgdth1`/`bgdth2`), else the sound.
+    fn varied(&self, sound: Option<usize>, ctx: &mut ActorCtx) -> Option<usize> {
+        let sounds = crate::actors::sounds::doom();
+        let name = sounds.get(sound?)?.name.as_str();
+        let set: &[&str] = match name {
+            "posit1" | "posit2" | "posit3" => &["posit1", "posit2", "posit3"],
+            "bgsit1" | "bgsit2" => &["bgsit1", "bgsit2"],
+            "podth1" | "podth2" | "podth3" => &["podth1", "podth2", "podth3"],
+            "bgdth1" | "bgdth2" => &["bgdth1", "bgdth2"],
+            _ => return sound,
+        };
+        let pick = set[usize::from(ctx.rng.byte()) % set.len()];
+        sounds.iter().position(|s| s.name == pick)
+    }
+
+    fn sees_player(&self, n: usize, ctx: &mut ActorCtx) -> bool {
+        let looker = self.body(n);
+        sight::sight(&ctx.level.compiled, ctx.sight, &looker, &player_body(ctx))
+    }
+
+    /// Doom's P_LookForPlayers: a live player in sight, in front (or all
+    /// round), or behind but within melee range.
+    fn look_for_player(&mut self, n: usize, all_round: bool, ctx: &mut ActorCtx) -> bool {
+        if ctx.player.dead() {
+            return false;
+        }
+        let a = &self.list[n];
+        let to = ctx.player.pos - a.pos;
+        if !all_round {
+            let off = wrap(to.y.atan2(to.x).to_degrees() - a.angle).abs();
+            if off > 90.0 && approx_distance(to) > MELEE_RANGE {
+                return false;
+            }
+        }
+        if !self.sees_player(n, ctx) {
+            return false;
+        }
+        self.list[n].target = true;
+        true
+    }
+
+    /// Doom's P_CheckMeleeRange.
+    fn in_melee_range(&self, n: usize, ctx: &mut ActorCtx) -> bool {
+        let a = &self.list[n];
+        if !a.target || ctx.player.dead() {
+            return false;
+        }
+        let reach = MELEE_RANGE - 20.0 + PLAYER_RADIUS;
+        approx_distance(ctx.player.pos - a.pos) < reach && self.sees_player(n, ctx)
+    }
+
+    /// Doom's P_CheckMissileRange: in sight, then a random draw against
+    /// the distance (nearer is likelier), tuned per monster by flags.
+    fn wants_to_shoot(&mut self, n: usize, ctx: &mut ActorCtx) -> bool {
+        if !self.sees_player(n, ctx) {
+            return false;
+        }
+        let a = &mut self.list[n];
+        if std::mem::take(&mut a.just_hit) {
+            return true;
+        }
+        if a.reaction_time > 0 {
+            return false;
+        }
+        let def = &self.table.actors[a.kind];
+        let mut dist = approx_distance(ctx.player.pos - a.pos) - 64.0;
+        if def.label("Melee").is_none() {
+            dist -= 128.0;
+        }
+        if def.has(ActorFlag::ShortMissileRange) && dist > 14.0 * 64.0 {
+            return false;
+        }
+        if def.has(ActorFlag::LongMelee) {
+            if dist < 196.0 {
+                return false;
+            }
+            dist /= 2.0;
+        }
+        if def.has(ActorFlag::RangeHalf) {
+            dist /= 2.0;
+        }
+        dist = dist.min(200.0);
+        if def.has(ActorFlag::HigherMissileProbability) {
+            dist = dist.min(160.0);
+        }
+        f64::from(ctx.rng.byte()) >= dist.floor()
+    }
+
+    /// One step along `movedir` (Doom's P_Move): taken if the box fits there.
+    fn step(&mut self, n: usize, ctx: &mut ActorCtx) -> bool {
+        let a = &self.list[n];
+        if a.movedir == NO_DIR {
+            return false;
+        }
+        let def = &self.table.actors[a.kind];
+        let to = a.pos + DIR_STEP[usize::from(a.movedir)] * def.speed;
+        let mover = Mover {
+            index: n,
+            radius: def.radius,
+            height: def.height,
+            z: a.z,
+            may_drop: def.has(ActorFlag::DropOff) || def.has(ActorFlag::Float),
+            no_clip: a.flags.has(ActorFlag::NoClip),
+        };
+        let blockers = self.blockers(ctx);
+        let ground = Ground { compiled: &ctx.level.compiled, blockmap: ctx.blockmap, blockers: &blockers };
+        let Some(o) = ground.try_move(ctx.query, &mover, to) else { return false };
+        let a = &mut self.list[n];
+        a.pos = to;
+        (a.sector, a.floor, a.ceiling) = (o.sector, o.floor, o.ceiling);
+        if !def.has(ActorFlag::Float) {
+            a.z = o.floor;
+        }
+        true
+    }
+
+    /// The boxes that block a step: solid actors still there, and the player.
+    fn blockers(&self, ctx: &ActorCtx) -> Vec<Blocker> {
+        let mut out: Vec<Blocker> = self
+            .list
+            .iter()
+            .enumerate()
+            .filter(|(_, a)| !a.removed && a.flags.has(ActorFlag::Solid))
+            .filter(|(_, a)| a.thing.is_none_or(|i| ctx.level.thing_shown[i]))
+            .map(|(i, a)| {
+                let def = &self.table.actors[a.kind];
+                Blocker { pos: a.pos, radius: def.radius, z: a.z, top: a.z + def.height, index: i }
+            })
+            .collect();
+        if !ctx.player.dead() {
+            let p = &ctx.player;
+            out.push(Blocker { pos: p.pos, radius: PLAYER_RADIUS, z: p.z, top: p.z + PLAYER_HEIGHT, index: PLAYER });
+        }
+        out
+    }
+
+    /// Sets off in `dir` for a few steps, if a first step that way works
+    /// (Doom's P_TryWalk).
+    fn try_walk(&mut self, n: usize, dir: u8, ctx: &mut ActorCtx) -> bool {
+        self.list[n].movedir = dir;
+        if !self.step(n, ctx) {
+            return false;
+        }
+        self.list[n].movecount = i32::from(ctx.rng.byte() & 15);
+        true
+    }
+
+    /// Chooses a new direction towards the player (Doom's P_NewChaseDir):
+    /// straight at it (diagonally if both ways are open), else along one
+    /// axis, else on as before, else any direction in a random order, and
+    /// turning back only as a last resort.
+    fn new_chase_dir(&mut self, n: usize, ctx: &mut ActorCtx) {
+        let (old, from) = (self.list[n].movedir, self.list[n].pos);
+        let back = opposite(old);
+        let delta = ctx.player.pos - from;
+        let mut d = [
+            if delta.x > 10.0 {
+                0
+            } else if delta.x < -10.0 {
+                4
+            } else {
+                NO_DIR
+            },
+            if delta.y < -10.0 {
+                6
+            } else if delta.y > 10.0 {
+                2
+            } else {
+                NO_DIR
+            },
+        ];
+        // Both ways: the diagonal between them.
+        if d[0] != NO_DIR && d[1] != NO_DIR {
+            let diagonal = match (d[0], d[1]) {
+                (0, 2) => 1,
+                (4, 2) => 3,
+                (4, 6) => 5,
+                _ => 7,
+            };
+            if diagonal != back && self.try_walk(n, diagonal, ctx) {
+                return;
+            }
+        }
+        if ctx.rng.byte() > 200 || delta.y.abs() > delta.x.abs() {
+            d.swap(0, 1);
+        }
+        for dir in &mut d {
+            if *dir == back {
+                *dir = NO_DIR;
+            }
+        }
+        for dir in d {
+            if dir != NO_DIR && self.try_walk(n, dir, ctx) {
+                return;
+            }
+        }
+        if old != NO_DIR && self.try_walk(n, old, ctx) {
+            return;
+        }
+        let order: Vec<u8> = if ctx.rng.byte() & 1 == 1 { (0..8).collect() } else { (0..8).rev().collect() };
+        for dir in order {
+            if dir != back && self.try_walk(n, dir, ctx) {
+                return;
+            }
+        }
+        if back != NO_DIR && self.try_walk(n, back, ctx) {
+            return;
+        }
+        self.list[n].movedir = NO_DIR;
+    }
+
+    /// Fires one bullet at the player (Doom's P_LineAttack from a monster):
+    /// aimed up or down at it, turned by `spread`, hurting it if it hits; a
+    /// puff where it hits a wall.
+    fn bullet(&mut self, n: usize, angle: f64, damage: i32, ctx: &mut ActorCtx) {
+        let a = &self.list[n];
+        let def = &self.table.actors[a.kind];
+        let z = a.z + def.height / 2.0 + 8.0;
+        let bodies = if ctx.player.dead() { Vec::new() } else { vec![player_body(ctx)] };
+        let aim = Ray { origin: a.pos, z, angle: a.angle, range: SHOT_RANGE, shooter: Some(n) };
+        let slope = sight::aim_slope(&ctx.level.compiled, ctx.sight, &aim, &bodies).map_or(0.0, |aimed| aimed.slope);
+        let ray = Ray { angle, ..aim };
+        let Some(hit) = sight::hitscan(&ctx.level.compiled, ctx.sight, &ray, slope, &bodies) else { return };
+        match hit.struck {
+            Struck::Body { index: PLAYER } => hurt_player(damage, ctx),
+            Struck::Wall { .. } => {
+                if let (Some(p), Some(puff)) = (hit.puff, self.table.index("bullet_puff")) {
+                    if let Some(k) = self.spawn(puff, p.truncate(), p.z, 0.0, ctx) {
+                        // Doom's P_SpawnPuff: a random head start, at least a tick left.
+                        let a = &mut self.list[k];
+                        a.tics = (a.tics - i32::from(ctx.rng.byte() & 3)).max(1);
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+}
+
+/// The player as sight and shots see it.
+fn player_body(ctx: &ActorCtx) -> Body {
+    let p = &ctx.player;
+    Body { pos: p.pos, z: p.z, height: PLAYER_HEIGHT, radius: PLAYER_RADIUS, index: PLAYER }
+}
+
+/// The player takes `damage` (armour comes with pickups).
+fn hurt_player(damage: i32, ctx: &mut ActorCtx) {
+    if ctx.player.dead() {
+        return;
+    }
+    ctx.player.hurt(damage);
+    let cry = if ctx.player.dead() { "pldeth" } else { "plpain" };
+    ctx.events.push(Event::Sound { sound: cry, origin: Origin::Player });
+}
+
+/// A_Look: wait for the player to come into view (a deaf, `ambush`
+/// monster too), then cry out and give chase.
+pub fn look(actors: &mut Actors, n: usize, _: &[Arg], ctx: &mut ActorCtx) {
+    if !actors.look_for_player(n, false, ctx) {
+        return;
+    }
+    let def = &actors.table.actors[actors.list[n].kind];
+    let (see_sound, see) = (def.sounds.see, def.label("See"));
+    let cry = actors.varied(see_sound, ctx);
+    actors.sound_at(n, cry, ctx);
+    if see.is_some() {
+        actors.set_state(n, see, ctx);
+    }
+}
+
+/// A_Chase: turn towards the way it walks, attack if it can, else step.
+pub fn chase(actors: &mut Actors, n: usize, _: &[Arg], ctx: &mut ActorCtx) {
+    let a = &mut actors.list[n];
+    if a.reaction_time > 0 {
+        a.reaction_time -= 1;
+    }
+    // Face the way it walks, 45 degrees a step.
+    if a.movedir != NO_DIR {
+        let snapped = (a.angle / 45.0).floor() * 45.0;
+        let off = wrap(snapped - f64::from(a.movedir) * 45.0);
+        a.angle = (snapped - 45.0 * off.signum() * f64::from(u8::from(off != 0.0))).rem_euclid(360.0);
+    }
+    let def = &actors.table.actors[a.kind];
+    let (spawn, melee, missile, attack_sound, active) =
+        (def.label("Spawn"), def.label("Melee"), def.label("Missile"), def.sounds.attack, def.sounds.active);
+    if !a.target || ctx.player.dead() {
+        a.target = false;
+        if !actors.look_for_player(n, true, ctx) {
+            actors.set_state(n, spawn, ctx);
+        }
+        return;
+    }
+    let nightmare = ctx.skill == 5;
+    if std::mem::take(&mut a.just_attacked) {
+        if !nightmare {
+            actors.new_chase_dir(n, ctx);
+        }
+        return;
+    }
+    if melee.is_some() && actors.in_melee_range(n, ctx) {
+        actors.sound_at(n, attack_sound, ctx);
+        actors.set_state(n, melee, ctx);
+        return;
+    }
+    let waits = !nightmare && actors.list[n].movecount > 0;
+    if missile.is_some() && !waits && actors.wants_to_shoot(n, ctx) {
+        actors.set_state(n, missile, ctx);
+        actors.list[n].just_attacked = true;
+        return;
+    }
+    actors.list[n].movecount -= 1;
+    if actors.list[n].movecount < 0 || !actors.step(n, ctx) {
+        actors.new_chase_dir(n, ctx);
+    }
+    if active.is_some() && ctx.rng.byte() < 3 {
+        actors.sound_at(n, active, ctx);
+    }
+}
+
+/// A_FaceTarget: turn to the player (off by a little if it is unseen).
+pub fn face_target(actors: &mut Actors, n: usize, _: &[Arg], ctx: &mut ActorCtx) {
+    let a = &mut actors.list[n];
+    if !a.target {
+        return;
+    }
+    a.flags.set(ActorFlag::Ambush, false);
+    let d = ctx.player.pos - a.pos;
+    a.angle = d.y.atan2(d.x).to_degrees().rem_euclid(360.0);
+}
+
+pub fn pain(actors: &mut Actors, n: usize, _: &[Arg], ctx: &mut ActorCtx) {
+    let s = actors.table.actors[actors.list[n].kind].sounds.pain;
+    actors.sound_at(n, s, ctx);
+}
+
+pub fn scream(actors: &mut Actors, n: usize, _: &[Arg], ctx: &mut ActorCtx) {
+    let s = actors.table.actors[actors.list[n].kind].sounds.death;
+    let s = actors.varied(s, ctx);
+    actors.sound_at(n, s, ctx);
+}
+
+pub fn xscream(actors: &mut Actors, n: usize, _: &[Arg], ctx: &mut ActorCtx) {
+    let slop = crate::actors::sounds::doom().iter().position(|s| s.name == "slop");
+    actors.sound_at(n, slop, ctx);
+}
+
+/// A_Fall: the body no longer blocks.
+pub fn fall(actors: &mut Actors, n: usize, _: &[Arg], _: &mut ActorCtx) {
+    actors.list[n].flags.set(ActorFlag::Solid, false);
+}
+
+pub fn play_sound(actors: &mut Actors, n: usize, args: &[Arg], ctx: &mut ActorCtx) {
+    actors.sound_at(n, sound(args, 0), ctx);
+}
+
+/// The zombieman: one bullet, 3 to 15 damage.
+pub fn pos_attack(actors: &mut Actors, n: usize, args: &[Arg], ctx: &mut ActorCtx) {
+    if !actors.list[n].target {
+        return;
+    }
+    face_target(actors, n, args, ctx);
+    let pistol = crate::actors::sounds::doom().iter().position(|s| s.name == "pistol");
+    actors.sound_at(n, pistol, ctx);
+    let angle = actors.list[n].angle + spread(ctx, 20);
+    let damage = (i32::from(ctx.rng.byte()) % 5 + 1) * 3;
+    actors.bullet(n, angle, damage, ctx);
+}
+
+/// The shotgun guy: three pellets.
+pub fn spos_attack(actors: &mut Actors, n: usize, args: &[Arg], ctx: &mut ActorCtx) {
+    if !actors.list[n].target {
+        return;
+    }
+    face_target(actors, n, args, ctx);
+    let shotgun = crate::actors::sounds::doom().iter().position(|s| s.name == "shotgn");
+    actors.sound_at(n, shotgun, ctx);
+    for _ in 0..3 {
+        let angle = actors.list[n].angle + spread(ctx, 20);
+        let damage = (i32::from(ctx.rng.byte()) % 5 + 1) * 3;
+        actors.bullet(n, angle, damage, ctx);
+    }
+}
+
+/// The chaingunner: one bullet a shot.
+pub fn cpos_attack(actors: &mut Actors, n: usize, args: &[Arg], ctx: &mut ActorCtx) {
+    if !actors.list[n].target {
+        return;
+    }
+    face_target(actors, n, args, ctx);
+    let shotgun = crate::actors::sounds::doom().iter().position(|s| s.name == "shotgn");
+    actors.sound_at(n, shotgun, ctx);
+    let angle = actors.list[n].angle + spread(ctx, 20);
+    let damage = (i32::from(ctx.rng.byte()) % 5 + 1) * 3;
+    actors.bullet(n, angle, damage, ctx);
+}
+
+/// Keeps firing while the player is in sight (stopping now and then).
+pub fn cpos_refire(actors: &mut Actors, n: usize, args: &[Arg], ctx: &mut ActorCtx) {
+    face_target(actors, n, args, ctx);
+    if ctx.rng.byte() < 40 {
+        return;
+    }
+    if !actors.list[n].target || ctx.player.dead() || !actors.sees_player(n, ctx) {
+        let see = actors.table.actors[actors.list[n].kind].label("See");
+        actors.set_state(n, see, ctx);
+    }
+}
+
+/// The demon's bite: 4 to 40 damage in melee range.
+pub fn sarg_attack(actors: &mut Actors, n: usize, args: &[Arg], ctx: &mut ActorCtx) {
+    if !actors.list[n].target {
+        return;
+    }
+    face_target(actors, n, args, ctx);
+    if actors.in_melee_range(n, ctx) {
+        let damage = (i32::from(ctx.rng.byte()) % 10 + 1) * 4;
+        hurt_player(damage, ctx);
+    }
+}

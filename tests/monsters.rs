@@ -1,0 +1,65 @@
+//! Monsters on small maps, driven tick by tick: a zombieman that does not
+//! see the player stays put; one that does wakes, fires, and follows the
+//! player around a pillar.
+
+use glam::DVec2;
+use sightline::play::{Game, TickInput};
+use sightline_tests::{load, root};
+
+fn game(name: &str) -> Game {
+    let p = root().join("tests").join("maps").join(format!("{name}.ron"));
+    assert!(p.exists(), "missing fixture {}", p.display());
+    Game::new(load(&p)).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// The first actor of that name.
+fn actor<'g>(g: &'g Game, name: &str) -> &'g sightline::play::actors::Actor {
+    let table = &g.actors().table;
+    g.actors().list.iter().find(|a| table.actors[a.kind].name == name).expect("the actor is in play")
+}
+
+fn idle(g: &mut Game, ticks: usize) {
+    for _ in 0..ticks {
+        g.tick(&TickInput::default());
+    }
+}
+
+#[test]
+fn a_zombieman_wakes_on_sight_fires_and_walks_round_a_pillar() {
+    let mut g = game("monsters");
+    g.player_mut().health = 1_000_000;
+    let start = actor(&g, "zombieman").pos;
+    // Hidden behind the pillar: it sleeps, where it stands.
+    idle(&mut g, 105);
+    let z = actor(&g, "zombieman");
+    assert!(!z.target && z.pos == start, "woke or moved without seeing the player");
+    // North of the pillar the player is in its view: it wakes within its
+    // look period (A_Look every 10 ticks).
+    g.teleport(DVec2::new(64.0, 480.0), 0.0).unwrap();
+    idle(&mut g, 11);
+    assert!(actor(&g, "zombieman").target, "did not wake on sight");
+    // It shoots: the player is hurt within 20 s.
+    let mut hurt = false;
+    for _ in 0..35 * 20 {
+        g.tick(&TickInput::default());
+        if g.player().health < 1_000_000 {
+            hurt = true;
+            break;
+        }
+    }
+    assert!(hurt, "the zombieman never hit the player");
+    // Back behind the pillar: it comes round after the player.
+    g.teleport(DVec2::new(64.0, 256.0), 0.0).unwrap();
+    let mut rounded = false;
+    for _ in 0..35 * 30 {
+        g.tick(&TickInput::default());
+        let z = actor(&g, "zombieman");
+        assert!(z.pos.is_finite() && (16.0..=1008.0).contains(&z.pos.x) && (16.0..=496.0).contains(&z.pos.y));
+        assert!(!((448.0 - 20.0..576.0 + 20.0).contains(&z.pos.x) && (192.0 - 20.0..320.0 + 20.0).contains(&z.pos.y)));
+        if z.pos.x < 448.0 {
+            rounded = true;
+            break;
+        }
+    }
+    assert!(rounded, "the zombieman did not come round the pillar: {:?}", actor(&g, "zombieman").pos);
+}
