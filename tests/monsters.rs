@@ -63,3 +63,28 @@ fn a_zombieman_wakes_on_sight_fires_and_walks_round_a_pillar() {
     }
     assert!(rounded, "the zombieman did not come round the pillar: {:?}", actor(&g, "zombieman").pos);
 }
+
+#[test]
+fn the_player_s_shots_kill_a_zombieman_which_drops_a_clip() {
+    let mut g = game("monsters");
+    g.player_mut().health = 1_000_000;
+    g.teleport(DVec2::new(700.0, 256.0), 0.0).unwrap();
+    let fire = TickInput { fire: true, ..TickInput::default() };
+    let mut shots = 0;
+    while g.stats().kills.0 == 0 && shots < 20 {
+        // Fire goes off once per press.
+        g.tick(&fire);
+        g.tick(&TickInput::default());
+        shots += 1;
+    }
+    assert_eq!(g.stats().kills, (1, 1), "after {shots} shots");
+    assert!(shots >= 2, "a zombieman has 20 health and a shot does at most 15");
+    idle(&mut g, 70);
+    let z = actor(&g, "zombieman");
+    let table = &g.actors().table;
+    assert!(!z.flags.has(sightline::actors::ActorFlag::Solid) && !z.removed, "the body stays and can be walked over");
+    assert_eq!(z.tics, -1, "the body lies still: nothing left to run");
+    let clip = actor(&g, "clip");
+    assert!(clip.flags.has(sightline::actors::ActorFlag::Dropped) && clip.pos == z.pos);
+    assert_eq!(table.actors[clip.kind].name, "clip");
+}

@@ -128,6 +128,8 @@ pub struct Game {
     pickups: Vec<Pickup>,
     actors: actors::Actors,
     sight: sight::Scratch,
+    /// Monsters killed so far.
+    kills: u32,
     rng: GameRng,
     events: Vec<Event>,
     exit: Option<Exit>,
@@ -191,6 +193,7 @@ impl Game {
             pickups,
             actors,
             sight: sight::Scratch::default(),
+            kills: 0,
             rng,
             events: Vec::new(),
             exit: None,
@@ -266,6 +269,12 @@ impl Game {
         (world, Ctx { level, bodies, rng, time: *ticks, events, exit })
     }
 
+    /// The actors, and a context for their actions.
+    fn actor_ctx(&mut self) -> (&mut actors::Actors, actors::ActorCtx<'_>) {
+        let Game { level, player, actors, blockmap, query, sight, rng, events, options, kills, .. } = self;
+        (actors, actors::ActorCtx { level, player, rng, events, blockmap, query, sight, skill: options.skill, kills })
+    }
+
     /// The lines with walk specials the body's centre crossed.
     fn walk_triggers(&mut self, from: DVec2, to: DVec2) {
         if self.player.dead() {
@@ -308,25 +317,39 @@ impl Game {
         }
     }
 
-    /// A shot straight ahead (Doom's P_LineAttack without a target to aim
-    /// at): every line with a shoot special it crosses goes off; it stops at
-    /// a wall, or where an opening's floor or ceiling is in its way.
+    /// A shot (Doom's pistol, A_FirePistol's first, accurate shot): aimed
+    /// up or down at the first shootable actor in the window of auto-aim,
+    /// it hurts what it hits (5, 10 or 15) or leaves a puff on the wall.
+    /// Lines with shoot specials that it crosses before that go off.
     fn shoot(&mut self) {
+        self.events.push(sound("pistol", Origin::Player));
         let (sin, cos) = sin_cos_degrees(self.player.angle);
         let from = self.player.pos;
         let to = from + DVec2::new(cos, sin) * SHOT_RANGE;
         let z = self.player.z + SHOT_HEIGHT;
+        let ray = sight::Ray { origin: from, z, angle: self.player.angle, range: SHOT_RANGE, shooter: None };
+        let bodies = self.actors.shootable(&self.level);
+        let compiled = &self.level.compiled;
+        let slope = sight::aim_slope(compiled, &mut self.sight, &ray, &bodies).map_or(0.0, |a| a.slope);
+        let hit = sight::hitscan(compiled, &mut self.sight, &ray, slope, &bodies);
+        let reach = hit.map_or(1.0, |h| h.fraction);
         let lines = Lines { map: &self.level.compiled.map, walls: &self.blockmap, triggers: &self.triggers };
         let crossings = lines.along(&mut self.scratch, from, to);
-        for c in crossings {
+        for c in crossings.into_iter().filter(|c| c.t <= reach) {
             let (world, mut ctx) = self.ctx();
             activate(world, &mut ctx, c.line, Activation::Shoot, Activator::Player, c.from_front);
-            if let SpecialLine::Wall(i) = c.line {
-                match self.opening(i) {
-                    Some((bottom, top)) if bottom <= z && z <= top => {}
-                    _ => return,
+        }
+        let Some(hit) = hit else { return };
+        let damage = 5 * (i32::from(self.rng.byte()) % 3 + 1);
+        let (actors, mut ctx) = self.actor_ctx();
+        match hit.struck {
+            sight::Struck::Body { index } => actors.damage(index, damage, &mut ctx),
+            sight::Struck::Wall { .. } => {
+                if let (Some(p), Some(puff)) = (hit.puff, actors.table.index("bullet_puff")) {
+                    actors.spawn(puff, p.truncate(), p.z, 0.0, &mut ctx);
                 }
             }
+            sight::Struck::Sky { .. } => {}
         }
     }
 
@@ -357,10 +380,9 @@ impl Game {
         pickups::touch(&mut self.pickups, &mut self.level, &mut self.player, &mut self.events);
         let (world, mut ctx) = self.ctx();
         world.tick(&mut ctx);
-        let Game { level, player, actors, blockmap, query, sight, rng, events, options, .. } = self;
-        let mut ctx = actors::ActorCtx { level, player, rng, events, blockmap, query, sight, skill: options.skill };
+        let (actors, mut ctx) = self.actor_ctx();
         actors.tick(&mut ctx);
-        actors.draw(&mut self.level);
+        self.actors.draw(&mut self.level);
     }
 
     /// The level as it is now: sectors at their current heights and light,
@@ -447,7 +469,7 @@ impl Game {
     /// Kills, items and secrets found of the level's totals, and the time.
     pub fn stats(&self) -> Stats {
         Stats {
-            kills: (0, self.totals.0),
+            kills: (self.kills, self.totals.0),
             items: (0, self.totals.1),
             secrets: (self.world.secrets.1, self.world.secrets.0),
             ticks: self.ticks,

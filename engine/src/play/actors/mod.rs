@@ -89,6 +89,8 @@ pub struct ActorCtx<'a> {
     pub query: &'a mut LineQuery,
     pub sight: &'a mut sight::Scratch,
     pub skill: u8,
+    /// Monsters killed this game (for the intermission).
+    pub kills: &'a mut u32,
 }
 
 /// Every actor of a game.

@@ -11,7 +11,7 @@ use glam::DVec2;
 use super::actions::sound;
 use super::movement::{opposite, Blocker, Ground, Mover, DIR_STEP, NO_DIR};
 use super::{ActorCtx, Actors};
-use crate::actors::{ActorFlag, Arg};
+use crate::actors::{ActorFlag, Arg, StateId};
 use crate::play::events::{Event, Origin};
 use crate::play::player::{HEIGHT as PLAYER_HEIGHT, RADIUS as PLAYER_RADIUS};
 use crate::play::sight::{self, Body, Ray, Struck, MELEE_RANGE};
@@ -477,5 +477,74 @@ pub fn sarg_attack(actors: &mut Actors, n: usize, args: &[Arg], ctx: &mut ActorC
     if actors.in_melee_range(n, ctx) {
         let damage = (i32::from(ctx.rng.byte()) % 10 + 1) * 4;
         hurt_player(damage, ctx);
+    }
+}
+
+impl Actors {
+    /// The bodies shots can hit: shootable actors still there.
+    pub fn shootable(&self, level: &crate::level::Level) -> Vec<Body> {
+        (0..self.list.len())
+            .filter(|&n| {
+                let a = &self.list[n];
+                !a.removed && a.flags.has(ActorFlag::Shootable) && a.thing.is_none_or(|i| level.thing_shown[i])
+            })
+            .map(|n| self.body(n))
+            .collect()
+    }
+
+    /// Actor `n` takes `damage` from the player (Doom's P_DamageMobj): it
+    /// dies at 0 health (gibbed below minus its spawn health, when it has
+    /// the frames), or may flinch by its pain chance, and in any case turns
+    /// on the player.
+    pub fn damage(&mut self, n: usize, damage: i32, ctx: &mut ActorCtx) {
+        let a = &mut self.list[n];
+        if a.removed || !a.flags.has(ActorFlag::Shootable) {
+            return;
+        }
+        a.health -= damage;
+        let def = &self.table.actors[a.kind];
+        if a.health <= 0 {
+            self.kill(n, ctx);
+            return;
+        }
+        let (pain, see, spawn) = (def.label("Pain"), def.label("See"), def.label("Spawn"));
+        let chance = def.pain_chance;
+        a.reaction_time = 0;
+        a.target = true;
+        if i32::from(ctx.rng.byte()) < chance && pain.is_some() {
+            a.just_hit = true;
+            self.set_state(n, pain, ctx);
+        } else if see.is_some() && self.list[n].state == spawn.unwrap_or(StateId(u32::MAX)) {
+            self.set_state(n, see, ctx);
+        }
+    }
+
+    /// Actor `n` dies (Doom's P_KillMobj): no longer shootable, a corpse,
+    /// counted, its death (or gibbing) frames, and what it drops.
+    fn kill(&mut self, n: usize, ctx: &mut ActorCtx) {
+        let a = &mut self.list[n];
+        let def = &self.table.actors[a.kind];
+        a.flags.set(ActorFlag::Shootable, false);
+        a.flags.set(ActorFlag::Float, false);
+        a.flags.set(ActorFlag::Corpse, true);
+        a.target = false;
+        if def.has(ActorFlag::CountKill) {
+            *ctx.kills += 1;
+        }
+        let gib = def.label("XDeath").filter(|_| a.health < -def.health);
+        let death = gib.or(def.label("Death"));
+        let (pos, angle, drop) = (a.pos, a.angle, def.drop);
+        self.set_state(n, death, ctx);
+        let a = &mut self.list[n];
+        if !a.removed && a.tics > 0 {
+            // Doom's random head start, so a row of deaths falls out of step.
+            a.tics = (a.tics - i32::from(ctx.rng.byte() & 3)).max(1);
+        }
+        if let Some(item) = drop {
+            let z = ctx.level.compiled.map.sectors[ctx.level.compiled.sector_at(pos)].floor;
+            if let Some(k) = self.spawn(item, pos, z, angle, ctx) {
+                self.list[k].flags.set(ActorFlag::Dropped, true);
+            }
+        }
     }
 }
