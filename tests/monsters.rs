@@ -88,3 +88,23 @@ fn the_player_s_shots_kill_a_zombieman_which_drops_a_clip() {
     assert!(clip.flags.has(sightline::actors::ActorFlag::Dropped) && clip.pos == z.pos);
     assert_eq!(table.actors[clip.kind].name, "clip");
 }
+
+/// The zombiemen of `hearing.ron`, west to east: whether each has woken.
+fn awake(g: &Game) -> Vec<bool> {
+    let table = &g.actors().table;
+    g.actors().list.iter().filter(|a| table.actors[a.kind].name == "zombieman").map(|a| a.target).collect()
+}
+
+#[test]
+fn a_shot_is_heard_across_one_sound_blocking_line_not_two() {
+    let mut g = game("hearing");
+    g.player_mut().health = 1_000_000;
+    idle(&mut g, 35);
+    assert_eq!(awake(&g), [false, false], "they face away: nothing to see or hear");
+    // A shot into the wall: the next room hears it, the far one does not.
+    g.tick(&TickInput { fire: true, ..TickInput::default() });
+    idle(&mut g, 11);
+    assert_eq!(awake(&g), [true, false]);
+    idle(&mut g, 70);
+    assert!(!awake(&g)[1], "the far zombieman stays asleep");
+}

@@ -90,6 +90,8 @@ pub struct LineFlags {
     pub upper_unpegged: bool,
     pub lower_unpegged: bool,
     pub impassable: bool,
+    pub block_monsters: bool,
+    pub block_sound: bool,
     /// See-through middles drawn half transparent.
     pub translucent: bool,
 }
@@ -342,6 +344,8 @@ impl Map {
                     upper_unpegged: l.flags.upper_unpegged,
                     lower_unpegged: l.flags.lower_unpegged,
                     impassable: l.flags.impassable,
+                    block_monsters: l.flags.block_monsters,
+                    block_sound: l.flags.block_sound,
                     door: false,
                     trigger: None,
                     special: l.special.as_ref().map(special),

@@ -124,6 +124,13 @@ pub struct LineSource {
     /// Blocks movement even when two-sided (a fence, a window).
     #[serde(default, skip_serializing_if = "is_false")]
     pub impassable: bool,
+    /// Blocks monsters, not the player (Doom's ML_BLOCKMONSTERS).
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub block_monsters: bool,
+    /// Half a wall to sound: a noise crosses one such line, not two
+    /// (Doom's ML_SOUNDBLOCK).
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub block_sound: bool,
     /// A door: using this line opens its back sector: raises its ceiling, or on a
     /// grid map slides its panel (see `play::world::doors`).
     #[serde(default, skip_serializing_if = "is_false")]

@@ -148,6 +148,8 @@ fn check_elements(src: &MapSource) -> Result<Map, Vec<Problem>> {
             upper_unpegged: l.upper_unpegged,
             lower_unpegged: l.lower_unpegged,
             impassable: l.impassable,
+            block_monsters: l.block_monsters,
+            block_sound: l.block_sound,
             translucent: l.translucent,
         };
         let special = line_special(i, l, &mut problems);

@@ -320,9 +320,11 @@ impl Game {
     /// A shot (Doom's pistol, A_FirePistol's first, accurate shot): aimed
     /// up or down at the first shootable actor in the window of auto-aim,
     /// it hurts what it hits (5, 10 or 15) or leaves a puff on the wall.
+    /// Monsters in the sectors its noise reaches wake.
     /// Lines with shoot specials that it crosses before that go off.
     fn shoot(&mut self) {
         self.events.push(sound("pistol", Origin::Player));
+        self.actors.noise_alert(&self.level, self.player.sector);
         let (sin, cos) = sin_cos_degrees(self.player.angle);
         let from = self.player.pos;
         let to = from + DVec2::new(cos, sin) * SHOT_RANGE;

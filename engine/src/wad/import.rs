@@ -291,6 +291,8 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
             upper_unpegged: l.flags & flags::UPPER_UNPEGGED != 0,
             lower_unpegged: l.flags & flags::LOWER_UNPEGGED != 0,
             impassable: l.flags & flags::BLOCKING != 0,
+            block_monsters: l.flags & flags::BLOCK_MONSTERS != 0,
+            block_sound: l.flags & flags::BLOCK_SOUND != 0,
             special: special_of(i),
             ..LineSource::default()
         };

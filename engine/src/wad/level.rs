@@ -38,9 +38,11 @@ pub struct WadLine {
 /// Linedef flag bits (Doom's `ML_*`).
 pub mod flags {
     pub const BLOCKING: u16 = 0x0001;
+    pub const BLOCK_MONSTERS: u16 = 0x0002;
     pub const TWO_SIDED: u16 = 0x0004;
     pub const UPPER_UNPEGGED: u16 = 0x0008;
     pub const LOWER_UNPEGGED: u16 = 0x0010;
+    pub const BLOCK_SOUND: u16 = 0x0040;
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -107,6 +107,8 @@ pub struct Actors {
     still: Vec<usize>,
     /// Per action of the registry, its function (`None`: not implemented).
     run: Vec<Option<ActionFn>>,
+    /// Per sector: the player was heard there (Doom's `soundtarget`).
+    heard: Vec<bool>,
 }
 
 impl Actors {
@@ -116,7 +118,8 @@ impl Actors {
     pub fn spawn_map_things(level: &Level, table: Arc<ActorTable>, fast: bool, rng: &mut GameRng) -> Actors {
         let map = &level.compiled.map;
         let run = crate::actors::actions::REGISTRY.iter().map(|a| actions::function(a.name)).collect();
-        let mut actors = Actors { table, list: Vec::new(), awake: Vec::new(), fast, still: Vec::new(), run };
+        let heard = vec![false; map.sectors.len()];
+        let mut actors = Actors { table, list: Vec::new(), awake: Vec::new(), fast, still: Vec::new(), run, heard };
         for (i, t) in map.things.iter().enumerate() {
             if !level.thing_shown[i] {
                 continue;

@@ -4,7 +4,8 @@
 //! in sight; pain, death cries and falling bodies.
 //!
 //! The player is the only target so far: monsters do not yet fight each
-//! other, hear shots, open doors or fire missiles.
+//! other, open doors or fire missiles. They hear the player's shots
+//! ([`Actors::noise_alert`]).
 
 use glam::DVec2;
 
@@ -315,10 +316,19 @@ fn hurt_player(damage: i32, ctx: &mut ActorCtx) {
     ctx.events.push(Event::Sound { sound: cry, origin: Origin::Player });
 }
 
-/// A_Look: wait for the player to come into view (a deaf, `ambush`
-/// monster too), then cry out and give chase.
+/// A_Look: wait for the player to be heard in the monster's sector (an
+/// `ambush` monster must also see it) or to come into view, then cry out
+/// and give chase.
 pub fn look(actors: &mut Actors, n: usize, _: &[Arg], ctx: &mut ActorCtx) {
-    if !actors.look_for_player(n, false, ctx) {
+    let a = &actors.list[n];
+    let heard = actors.heard.get(a.sector).copied().unwrap_or(false) && !ctx.player.dead();
+    let woken = if heard && (!a.flags.has(ActorFlag::Ambush) || actors.sees_player(n, ctx)) {
+        actors.list[n].target = true;
+        true
+    } else {
+        actors.look_for_player(n, false, ctx)
+    };
+    if !woken {
         return;
     }
     let def = &actors.table.actors[actors.list[n].kind];
@@ -544,6 +554,42 @@ impl Actors {
             let z = ctx.level.compiled.map.sectors[ctx.level.compiled.sector_at(pos)].floor;
             if let Some(k) = self.spawn(item, pos, z, angle, ctx) {
                 self.list[k].flags.set(ActorFlag::Dropped, true);
+            }
+        }
+    }
+}
+
+impl Actors {
+    /// The player made a noise in `sector` (a shot: Doom's P_NoiseAlert):
+    /// it floods through every open two-sided line, and crosses at most one
+    /// line that blocks sound; every sector it reaches remembers, for the
+    /// rest of the level, that the player was heard there.
+    pub fn noise_alert(&mut self, level: &crate::level::Level, sector: usize) {
+        let map = &level.compiled.map;
+        self.heard.resize(map.sectors.len(), false);
+        // Per sector, the fewest sound-blocking lines crossed to reach it
+        // (Doom visits a sector again only with fewer).
+        let mut best = vec![u8::MAX; map.sectors.len()];
+        let mut todo = vec![(sector, 0u8)];
+        while let Some((s, blocks)) = todo.pop() {
+            if best[s] <= blocks {
+                continue;
+            }
+            best[s] = blocks;
+            self.heard[s] = true;
+            for &i in &level.sector_lines[s] {
+                let line = &map.lines[i as usize];
+                let Some(back) = &line.back else { continue };
+                let other = if line.front.sector == s { back.sector } else { line.front.sector };
+                let (f, b) = (&map.sectors[line.front.sector], &map.sectors[back.sector]);
+                if f.ceiling.min(b.ceiling) <= f.floor.max(b.floor) {
+                    continue; // a closed door
+                }
+                match (line.flags.block_sound, blocks) {
+                    (false, _) => todo.push((other, blocks)),
+                    (true, 0) => todo.push((other, 1)),
+                    (true, _) => {}
+                }
             }
         }
     }

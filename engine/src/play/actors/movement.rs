@@ -1,7 +1,7 @@
 //! How monsters walk (Doom's P_TryMove, P_Move and P_NewChaseDir, for
 //! actors): in steps of their speed along one of eight directions, each step
 //! taken only where the actor's box fits. A step is refused where
-//! - a line the box touches is one-sided or blocks monsters (impassable);
+//! - a line the box touches is one-sided, impassable or blocks monsters;
 //! - the opening under the box is lower than the actor, or its ceiling is
 //!   below the actor's top (it would have to duck), or its floor is more
 //!   than a 24-unit step above the feet;
@@ -105,7 +105,7 @@ impl Ground<'_> {
                 continue;
             }
             let Some(back) = &line.back else { return None };
-            if line.flags.impassable {
+            if line.flags.impassable || line.flags.block_monsters {
                 return None;
             }
             let (f, k) = (&map.sectors[line.front.sector], &map.sectors[back.sector]);
