@@ -87,6 +87,16 @@ fn the_player_s_shots_kill_a_zombieman_which_drops_a_clip() {
     let clip = actor(&g, "clip");
     assert!(clip.flags.has(sightline::actors::ActorFlag::Dropped) && clip.pos == z.pos);
     assert_eq!(table.actors[clip.kind].name, "clip");
+    // Walked over, the clip gives half a clip, as a dropped one does.
+    let (at, bullets) = (clip.pos, g.player().ammo[0]);
+    g.teleport(at + DVec2::new(-8.0, 0.0), 0.0).unwrap();
+    g.tick(&TickInput::default());
+    assert_eq!(g.player().ammo[0], bullets + 5);
+    assert!(g
+        .events()
+        .iter()
+        .any(|e| matches!(e, sightline::play::events::Event::Message(m) if m == "Picked up a clip.")));
+    assert!(actor(&g, "clip").removed);
 }
 
 /// The zombiemen of `hearing.ron`, west to east: whether each has woken.

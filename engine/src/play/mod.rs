@@ -23,7 +23,7 @@
 //! constants), [`blockmap`] (lines by grid cell), [`collision`] (sweeping the
 //! body's circle against lines), [`trace`] (what a move, a use or a shot
 //! crosses), [`world`] (the level's machinery: specials and thinkers),
-//! [`pickups`] (keys), [`events`] (sounds and messages out), [`random`],
+//! [`pickups`] (what walking over an item gives), [`events`] (sounds and messages out), [`random`],
 //! [`demo`] (recorded inputs, saved and loaded).
 
 pub mod actors;
@@ -50,7 +50,6 @@ use crate::render::View;
 use blockmap::{Blockmap, LineQuery};
 use collision::World as Collision;
 use events::{sound, Event, Origin};
-use pickups::Pickup;
 use player::{HEIGHT, RADIUS};
 use random::GameRng;
 use trace::{Lines, Scratch};
@@ -125,11 +124,11 @@ pub struct Game {
     scratch: Scratch,
     /// Sectors the body overlaps (scratch).
     touched: Vec<usize>,
-    pickups: Vec<Pickup>,
     actors: actors::Actors,
     sight: sight::Scratch,
-    /// Monsters killed so far.
+    /// Monsters killed and items picked up so far.
     kills: u32,
+    items: u32,
     rng: GameRng,
     events: Vec<Event>,
     exit: Option<Exit>,
@@ -171,7 +170,6 @@ impl Game {
         let triggers = Blockmap::of_trigger_lines(&level.compiled.map);
         let mut rng = GameRng::new(options.seed);
         let world = World::new(&mut level, &mut rng);
-        let pickups = pickups::pickups(&level);
         let fast = options.skill == 5;
         let actors = actors::Actors::spawn_map_things(&level, ActorTable::doom().clone(), fast, &mut rng);
         actors.draw(&mut level);
@@ -190,10 +188,10 @@ impl Game {
             query,
             scratch: Scratch::default(),
             touched: Vec::new(),
-            pickups,
             actors,
             sight: sight::Scratch::default(),
             kills: 0,
+            items: 0,
             rng,
             events: Vec::new(),
             exit: None,
@@ -379,7 +377,8 @@ impl Game {
         }
         let (world, mut ctx) = self.ctx();
         world::sectors::player_in_sector(world, &mut ctx);
-        pickups::touch(&mut self.pickups, &mut self.level, &mut self.player, &mut self.events);
+        self.items +=
+            pickups::touch(&mut self.actors, &mut self.level, &mut self.player, &mut self.events, self.options.skill);
         let (world, mut ctx) = self.ctx();
         world.tick(&mut ctx);
         let (actors, mut ctx) = self.actor_ctx();
@@ -472,7 +471,7 @@ impl Game {
     pub fn stats(&self) -> Stats {
         Stats {
             kills: (self.kills, self.totals.0),
-            items: (0, self.totals.1),
+            items: (self.items, self.totals.1),
             secrets: (self.world.secrets.1, self.world.secrets.0),
             ticks: self.ticks,
         }

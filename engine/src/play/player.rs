@@ -63,6 +63,11 @@ pub struct Key {
     pub form: KeyForm,
 }
 
+/// Bullets a player starts with (Doom's `initial_bullets`).
+pub const START_BULLETS: i32 = 50;
+/// Doom's ammunition limits (`maxammo`): bullets, shells, rockets, cells.
+pub const MAX_AMMO: [i32; 4] = [200, 50, 50, 300];
+
 /// The player: where the body is and how it moves.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Player {
@@ -91,6 +96,20 @@ pub struct Player {
     pub health: i32,
     /// Keys picked up, in the order found.
     pub keys: Vec<Key>,
+    /// Armour points and class: 1 (green) absorbs a third of each hurt, 2
+    /// (blue) a half; 0 is none.
+    pub armor: i32,
+    pub armor_class: u8,
+    /// Ammunition by kind ([`crate::actors::AmmoKind::ALL`] order), and its limits (doubled
+    /// by a backpack).
+    pub ammo: [i32; 4],
+    pub max_ammo: [i32; 4],
+    pub backpack: bool,
+    /// Weapons owned, by actor index (the fist and pistol from the start).
+    pub weapons: Vec<usize>,
+    /// Power-ups: ticks left (the computer map and berserk last the level:
+    /// 1 while owned).
+    pub powers: [i32; 6],
     /// Ticks left during which input is ignored (after a teleport: Doom's
     /// `reactiontime`).
     pub freeze: u32,
@@ -116,6 +135,13 @@ impl Player {
             view_delta: 0.0,
             health: START_HEALTH,
             keys: Vec::new(),
+            armor: 0,
+            armor_class: 0,
+            ammo: [START_BULLETS, 0, 0, 0],
+            max_ammo: MAX_AMMO,
+            backpack: false,
+            weapons: Vec::new(),
+            powers: [0; 6],
             freeze: 0,
             use_held: false,
             fire_held: false,
@@ -126,11 +152,25 @@ impl Player {
         self.health <= 0
     }
 
-    /// Loses `amount` health (at least nothing; death at 0).
+    /// Loses `amount` health (at least nothing; death at 0), less what
+    /// the armour absorbs (Doom's P_DamageMobj): a third for class 1, a
+    /// half for class 2, never more than the armour has left, which then
+    /// is gone.
     pub fn hurt(&mut self, amount: i32) {
-        if !self.dead() {
-            self.health = (self.health - amount.max(0)).max(0);
+        if self.dead() {
+            return;
         }
+        let mut amount = amount.max(0);
+        if self.armor_class > 0 {
+            let mut saved = if self.armor_class == 1 { amount / 3 } else { amount / 2 };
+            if self.armor <= saved {
+                saved = self.armor;
+                self.armor_class = 0;
+            }
+            self.armor -= saved;
+            amount -= saved;
+        }
+        self.health = (self.health - amount).max(0);
     }
 
     /// Puts the body at `pos` facing `angle`, still, on the floor of `area`,

@@ -109,6 +109,8 @@ pub struct Actors {
     run: Vec<Option<ActionFn>>,
     /// Per sector: the player was heard there (Doom's `soundtarget`).
     heard: Vec<bool>,
+    /// The actors the player may pick up (`pickups.rs` visits only these).
+    pub pickups: Vec<u32>,
 }
 
 impl Actors {
@@ -119,7 +121,16 @@ impl Actors {
         let map = &level.compiled.map;
         let run = crate::actors::actions::REGISTRY.iter().map(|a| actions::function(a.name)).collect();
         let heard = vec![false; map.sectors.len()];
-        let mut actors = Actors { table, list: Vec::new(), awake: Vec::new(), fast, still: Vec::new(), run, heard };
+        let mut actors = Actors {
+            table,
+            list: Vec::new(),
+            awake: Vec::new(),
+            fast,
+            still: Vec::new(),
+            run,
+            heard,
+            pickups: Vec::new(),
+        };
         for (i, t) in map.things.iter().enumerate() {
             if !level.thing_shown[i] {
                 continue;
@@ -141,7 +152,7 @@ impl Actors {
             actor.thing = Some(i);
             actor.views = level.materials.sprites[i].map(|id| [id; 8]);
             actor.flags.set(ActorFlag::Ambush, t.ambush || def.has(ActorFlag::Ambush));
-            actors.list.push(actor);
+            actors.push(actor);
             let n = actors.list.len() - 1;
             // The first state's action does not run at spawn (Doom's P_SpawnMobj).
             actors.show(n, state, &level.materials);
@@ -197,10 +208,18 @@ impl Actors {
         // Keys past the map's things, never reused: the list only grows.
         let key = compiled.map.things.len() + self.list.len();
         let actor = self.new_actor(kind, pos, z, angle, (sector, s.floor, s.ceiling), key);
-        self.list.push(actor);
+        self.push(actor);
         let n = self.list.len() - 1;
         self.show(n, state, &ctx.level.materials);
         Some(n)
+    }
+
+    /// Adds an actor to the list (and to the pickups, if it is one).
+    fn push(&mut self, actor: Actor) {
+        if actor.flags.has(ActorFlag::Special) && self.table.actors[actor.kind].pickup.is_some() {
+            self.pickups.push(self.list.len() as u32);
+        }
+        self.list.push(actor);
     }
 
     /// Puts actor `n` into `state`: its frame, its timer, awake or asleep
