@@ -25,8 +25,9 @@ pub const MAGIC: &[u8] = b"SIGHTLINE-DEMO\n";
 /// Bumped whenever the layout or the simulation's meaning of an input changes.
 /// Version 2: skill and seed in the header, fire, and use acting once per
 /// press (the world's machinery came with it, so version 1 games would not
-/// replay the same).
-pub const VERSION: u8 = 2;
+/// replay the same). Version 3: actors run (monsters wake, chase and
+/// shoot; pickups give), and fire shoots them.
+pub const VERSION: u8 = 3;
 /// Longest map string accepted (a path, not a map).
 pub const MAX_MAP_BYTES: u32 = 4096;
 const RECORD: usize = 7;
