@@ -425,45 +425,35 @@ pub fn play_sound(actors: &mut Actors, n: usize, args: &[Arg], ctx: &mut ActorCt
     actors.sound_at(n, sound(args, 0), ctx);
 }
 
-/// The zombieman: one bullet, 3 to 15 damage.
-pub fn pos_attack(actors: &mut Actors, n: usize, args: &[Arg], ctx: &mut ActorCtx) {
+/// A hitscan attack: face the player, the weapon's sound, then `bullets`
+/// shots each turned by Doom's spread and doing 3 to 15 damage.
+fn volley(actors: &mut Actors, n: usize, ctx: &mut ActorCtx, sound: &str, bullets: usize) {
     if !actors.list[n].target {
         return;
     }
-    face_target(actors, n, args, ctx);
-    let pistol = crate::actors::sounds::doom().iter().position(|s| s.name == "pistol");
-    actors.sound_at(n, pistol, ctx);
-    let angle = actors.list[n].angle + spread(ctx, 20);
-    let damage = (i32::from(ctx.rng.byte()) % 5 + 1) * 3;
-    actors.bullet(n, angle, damage, ctx);
-}
-
-/// The shotgun guy: three pellets.
-pub fn spos_attack(actors: &mut Actors, n: usize, args: &[Arg], ctx: &mut ActorCtx) {
-    if !actors.list[n].target {
-        return;
-    }
-    face_target(actors, n, args, ctx);
-    let shotgun = crate::actors::sounds::doom().iter().position(|s| s.name == "shotgn");
-    actors.sound_at(n, shotgun, ctx);
-    for _ in 0..3 {
+    face_target(actors, n, &[], ctx);
+    let s = crate::actors::sounds::doom().iter().position(|s| s.name == sound);
+    actors.sound_at(n, s, ctx);
+    for _ in 0..bullets {
         let angle = actors.list[n].angle + spread(ctx, 20);
         let damage = (i32::from(ctx.rng.byte()) % 5 + 1) * 3;
         actors.bullet(n, angle, damage, ctx);
     }
 }
 
-/// The chaingunner: one bullet a shot.
-pub fn cpos_attack(actors: &mut Actors, n: usize, args: &[Arg], ctx: &mut ActorCtx) {
-    if !actors.list[n].target {
-        return;
-    }
-    face_target(actors, n, args, ctx);
-    let shotgun = crate::actors::sounds::doom().iter().position(|s| s.name == "shotgn");
-    actors.sound_at(n, shotgun, ctx);
-    let angle = actors.list[n].angle + spread(ctx, 20);
-    let damage = (i32::from(ctx.rng.byte()) % 5 + 1) * 3;
-    actors.bullet(n, angle, damage, ctx);
+/// The zombieman: one bullet.
+pub fn pos_attack(actors: &mut Actors, n: usize, _: &[Arg], ctx: &mut ActorCtx) {
+    volley(actors, n, ctx, "pistol", 1);
+}
+
+/// The shotgun guy: three pellets.
+pub fn spos_attack(actors: &mut Actors, n: usize, _: &[Arg], ctx: &mut ActorCtx) {
+    volley(actors, n, ctx, "shotgn", 3);
+}
+
+/// The chaingunner: one bullet a shot (with the shotgun's sound, as Doom's).
+pub fn cpos_attack(actors: &mut Actors, n: usize, _: &[Arg], ctx: &mut ActorCtx) {
+    volley(actors, n, ctx, "shotgn", 1);
 }
 
 /// Keeps firing while the player is in sight (stopping now and then).
