@@ -18,6 +18,22 @@ fn actor<'g>(g: &'g Game, name: &str) -> &'g sightline::play::actors::Actor {
     g.actors().list.iter().find(|a| table.actors[a.kind].name == name).expect("the actor is in play")
 }
 
+/// What the renderers draw is every actor still there, where it stands
+/// (`Actors::draw` updates only the actors that changed).
+fn assert_drawn_as_they_stand(g: &Game) {
+    let mut drawn: Vec<_> = g.level().things.iter().map(|t| (t.key, t.pos.to_array(), t.angle.to_bits())).collect();
+    let mut want: Vec<_> = g
+        .actors()
+        .list
+        .iter()
+        .filter(|a| !a.removed && a.views.is_some())
+        .map(|a| (a.key, a.pos.to_array(), a.angle.to_bits()))
+        .collect();
+    drawn.sort_by(|a, b| a.0.cmp(&b.0));
+    want.sort_by(|a, b| a.0.cmp(&b.0));
+    assert_eq!(drawn, want);
+}
+
 fn idle(g: &mut Game, ticks: usize) {
     for _ in 0..ticks {
         g.tick(&TickInput::default());
@@ -62,6 +78,7 @@ fn a_zombieman_wakes_on_sight_fires_and_walks_round_a_pillar() {
         }
     }
     assert!(rounded, "the zombieman did not come round the pillar: {:?}", actor(&g, "zombieman").pos);
+    assert_drawn_as_they_stand(&g);
 }
 
 #[test]
@@ -97,6 +114,7 @@ fn the_player_s_shots_kill_a_zombieman_which_drops_a_clip() {
         .iter()
         .any(|e| matches!(e, sightline::play::events::Event::Message(m) if m == "Picked up a clip.")));
     assert!(actor(&g, "clip").removed);
+    assert_drawn_as_they_stand(&g);
 }
 
 /// The zombiemen of `hearing.ron`, west to east: whether each has woken.

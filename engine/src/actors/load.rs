@@ -380,14 +380,16 @@ impl Resolver<'_> {
                     let action = match &line.action {
                         None => None,
                         Some((name, args)) => {
-                            Some(self.action(name, args, labels, &own).map_err(|m| state_error(k, &current, m))?)
+                            let made_so_far = made.len() as u32;
+                            let call = self.action(name, args, labels, (&own, made_so_far));
+                            Some(call.map_err(|m| state_error(k, &current, m))?)
                         }
                     };
                     let first = made.len() as u32;
                     for name in waiting.drain(..) {
                         own.push((name, first));
                     }
-                    if !own.is_empty() && own.last().is_some_and(|&(_, s)| s == first) {
+                    if own.last().is_some_and(|&(_, s)| s == first) {
                         label_start = Some(first);
                     }
                     for &frame in &line.frames {
@@ -475,12 +477,11 @@ impl Resolver<'_> {
                     let known: Vec<&str> = resolved.iter().map(|(l, _)| l.as_str()).collect();
                     format!("no label {label} (this actor has {})", known.join(", "))
                 })?;
-            let id = start.0 + offset;
-            let in_range = if start.0 >= base { id < base + count } else { (id as usize) < existing };
-            if !in_range {
-                return Err(format!("{label}+{offset} is past the last state"));
+            let end = if start.0 >= base { base + count } else { existing as u32 };
+            match start.0.checked_add(offset).filter(|&id| id < end) {
+                Some(id) => Ok(StateId(id)),
+                None => Err(format!("{label}+{offset} is past the last state")),
             }
-            Ok(StateId(id))
         };
         for (name, k) in &aliases {
             let EntryKind::Goto { label, offset } = &entries[*k].kind else { unreachable!("aliases are gotos") };
@@ -531,7 +532,7 @@ impl Resolver<'_> {
         name: &str,
         args: &[RawArg],
         inherited: &[(String, StateId)],
-        own: &[(String, u32)],
+        own: (&[(String, u32)], u32),
     ) -> Result<ActionCall, String> {
         let id = actions::find(name).ok_or_else(|| {
             let hint = nearest(name, actions::REGISTRY.iter().map(|a| a.name))
@@ -585,17 +586,22 @@ impl Resolver<'_> {
     }
 
     /// A label argument: an inherited label, or one of this actor's labels
-    /// defined so far (a label later in the text is not yet known: write
-    /// jumps forward with `goto`).
-    fn label_arg(&self, word: &str, inherited: &[(String, StateId)], own: &[(String, u32)]) -> Option<StateId> {
+    /// with a state written before this line (`own`: its labels and how
+    /// many states it has so far; a later label is not yet known: write
+    /// jumps forward with `goto`). `None` when no such state exists.
+    fn label_arg(&self, word: &str, inherited: &[(String, StateId)], own: (&[(String, u32)], u32)) -> Option<StateId> {
         let (label, offset) = match word.split_once('+') {
             Some((l, o)) => (l, o.parse::<u32>().ok()?),
             None => (word, 0),
         };
         let base = self.states.len() as u32;
-        own.iter().find(|(l, _)| l.eq_ignore_ascii_case(label)).map(|&(_, s)| StateId(base + s + offset)).or_else(
-            || inherited.iter().find(|(l, _)| l.eq_ignore_ascii_case(label)).map(|&(_, s)| StateId(s.0 + offset)),
-        )
+        let (labels, made) = own;
+        let same = |l: &&(String, u32)| l.0.eq_ignore_ascii_case(label);
+        if let Some(&(_, s)) = labels.iter().find(same) {
+            return s.checked_add(offset).filter(|&k| k < made).map(|k| StateId(base + k));
+        }
+        let (_, s) = inherited.iter().find(|(l, _)| l.eq_ignore_ascii_case(label))?;
+        s.0.checked_add(offset).filter(|&id| id < base).map(StateId)
     }
 }
 

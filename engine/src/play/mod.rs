@@ -171,8 +171,8 @@ impl Game {
         let mut rng = GameRng::new(options.seed);
         let world = World::new(&mut level, &mut rng);
         let fast = options.skill == 5;
-        let actors = actors::Actors::spawn_map_things(&level, ActorTable::doom().clone(), fast, &mut rng);
-        actors.draw(&mut level);
+        let mut actors = actors::Actors::spawn_map_things(&level, ActorTable::doom().clone(), fast, &mut rng);
+        actors.draw_all(&mut level);
         let mut query = LineQuery::default();
         let collision = Collision { compiled: &level.compiled, blockmap: &blockmap };
         let near = collision.lines_near(&mut query, start.pos, RADIUS + 1.0);
@@ -328,7 +328,7 @@ impl Game {
         let to = from + DVec2::new(cos, sin) * SHOT_RANGE;
         let z = self.player.z + SHOT_HEIGHT;
         let ray = sight::Ray { origin: from, z, angle: self.player.angle, range: SHOT_RANGE, shooter: None };
-        let bodies = self.actors.shootable(&self.level);
+        let bodies = self.actors.shootable();
         let compiled = &self.level.compiled;
         let slope = sight::aim_slope(compiled, &mut self.sight, &ray, &bodies).map_or(0.0, |a| a.slope);
         let hit = sight::hitscan(compiled, &mut self.sight, &ray, slope, &bodies);

@@ -126,7 +126,7 @@ pub fn touch(actors: &mut Actors, level: &mut Level, player: &mut Player, events
     for k in 0..actors.pickups.len() {
         let n = actors.pickups[k] as usize;
         let a = &actors.list[n];
-        if a.removed || a.thing.is_some_and(|i| !level.thing_shown[i]) {
+        if a.removed {
             continue;
         }
         let def = &table.actors[a.kind];
@@ -141,11 +141,10 @@ pub fn touch(actors: &mut Actors, level: &mut Level, player: &mut Player, events
             continue;
         }
         items += u32::from(def.has(ActorFlag::CountItem));
-        let a = &mut actors.list[n];
-        a.removed = true;
-        if let Some(i) = a.thing {
+        if let Some(i) = actors.list[n].thing {
             level.thing_shown[i] = false;
         }
+        actors.remove(n);
         events.push(Event::Message(pickup.message.clone()));
         if let Some(s) = crate::actors::sounds::doom().iter().find(|s| s.name == pickup.sound) {
             events.push(Event::Sound { sound: s.name.as_str(), origin: Origin::Player });

@@ -3,8 +3,10 @@
 //! machine from the table ([`crate::actors`]). A tick steps the states of
 //! the actors whose timer runs; an actor in a state that lasts for ever (a
 //! lamp, a body) is asleep and costs nothing until something wakes it.
-//! After the tick, [`Actors::draw`] hands the renderers each actor's frame
-//! (its eight views) where it stands.
+//! After the tick, [`Actors::draw`] updates what the renderers draw
+//! (`Level::things`) for the actors that changed: those whose state was
+//! entered (every change to an actor, its actions' included, follows one)
+//! and those removed. A sleeping actor is not visited to draw it either.
 //!
 //! Entering a state runs its action (`actions.rs`: the registry's names
 //! bound to Rust functions; `monsters.rs`: looking, chasing, attacking);
@@ -111,7 +113,16 @@ pub struct Actors {
     heard: Vec<bool>,
     /// The actors the player may pick up (`pickups.rs` visits only these).
     pub pickups: Vec<u32>,
+    /// Per actor, its place in `Level::things` ([`NOT_DRAWN`]: none); per
+    /// place, the actor there ([`NOT_DRAWN`]: a still map thing).
+    slots: Vec<u32>,
+    owners: Vec<u32>,
+    /// Actors changed since the last [`Actors::draw`] (repeats are harmless).
+    dirty: Vec<u32>,
 }
+
+/// No place in `Level::things`, or no actor in a place.
+const NOT_DRAWN: u32 = u32::MAX;
 
 impl Actors {
     /// The actors of the things `level` shows (after `Level::show_skill`).
@@ -130,6 +141,9 @@ impl Actors {
             run,
             heard,
             pickups: Vec::new(),
+            slots: Vec::new(),
+            owners: Vec::new(),
+            dirty: Vec::new(),
         };
         for (i, t) in map.things.iter().enumerate() {
             if !level.thing_shown[i] {
@@ -148,14 +162,12 @@ impl Actors {
             let sector = level.thing_sectors[i];
             let s = &map.sectors[sector];
             let z = if def.has(ActorFlag::SpawnCeiling) { s.ceiling - def.height } else { s.floor };
+            let ambush = t.ambush || def.has(ActorFlag::Ambush);
             let mut actor = actors.new_actor(kind, t.pos, z, t.angle, (sector, s.floor, s.ceiling), i);
             actor.thing = Some(i);
             actor.views = level.materials.sprites[i].map(|id| [id; 8]);
-            actor.flags.set(ActorFlag::Ambush, t.ambush || def.has(ActorFlag::Ambush));
-            actors.push(actor);
-            let n = actors.list.len() - 1;
-            // The first state's action does not run at spawn (Doom's P_SpawnMobj).
-            actors.show(n, state, &level.materials);
+            actor.flags.set(ActorFlag::Ambush, ambush);
+            let n = actors.place(actor, state, &level.materials);
             let a = &mut actors.list[n];
             if a.tics > 0 {
                 a.tics = 1 + i32::from(rng.byte()) % a.tics;
@@ -208,18 +220,28 @@ impl Actors {
         // Keys past the map's things, never reused: the list only grows.
         let key = compiled.map.things.len() + self.list.len();
         let actor = self.new_actor(kind, pos, z, angle, (sector, s.floor, s.ceiling), key);
-        self.push(actor);
-        let n = self.list.len() - 1;
-        self.show(n, state, &ctx.level.materials);
-        Some(n)
+        Some(self.place(actor, state, &ctx.level.materials))
     }
 
-    /// Adds an actor to the list (and to the pickups, if it is one).
-    fn push(&mut self, actor: Actor) {
+    /// Adds an actor to the list (and to the pickups, if it is one) in its
+    /// first state, whose action does not run (Doom's P_SpawnMobj).
+    /// Returns its index.
+    fn place(&mut self, actor: Actor, state: StateId, materials: &Materials) -> usize {
+        let n = self.list.len();
         if actor.flags.has(ActorFlag::Special) && self.table.actors[actor.kind].pickup.is_some() {
-            self.pickups.push(self.list.len() as u32);
+            self.pickups.push(n as u32);
         }
         self.list.push(actor);
+        self.slots.push(NOT_DRAWN);
+        self.show(n, state, materials);
+        n
+    }
+
+    /// Takes actor `n` out of play (its state sequence ended, or it was
+    /// picked up).
+    pub fn remove(&mut self, n: usize) {
+        self.list[n].removed = true;
+        self.dirty.push(n as u32);
     }
 
     /// Puts actor `n` into `state`: its frame, its timer, awake or asleep
@@ -227,6 +249,7 @@ impl Actors {
     fn show(&mut self, n: usize, state: StateId, materials: &Materials) {
         let s = self.table.state(state);
         let tics = if self.fast && s.fast && s.tics > 0 { (s.tics + 1) / 2 } else { s.tics };
+        self.dirty.push(n as u32);
         let actor = &mut self.list[n];
         actor.state = state;
         actor.tics = tics;
@@ -248,7 +271,7 @@ impl Actors {
         let mut at = state;
         loop {
             let Some(state) = at else {
-                self.list[n].removed = true;
+                self.remove(n);
                 return;
             };
             self.show(n, state, &ctx.level.materials);
@@ -298,18 +321,23 @@ impl Actors {
         self.awake.len()
     }
 
-    /// The actors as the renderers draw them: those still there, whose map
-    /// thing was not picked up, with a frame the art has.
-    pub fn draw(&self, level: &mut Level) {
-        let mut out = std::mem::take(&mut level.things);
-        out.clear();
-        out.extend(self.still.iter().filter_map(|&i| level.map_thing_drawn(i)));
-        for a in self.list.iter().filter(|a| !a.removed) {
-            if a.thing.is_some_and(|i| !level.thing_shown[i]) {
-                continue;
-            }
-            let Some(views) = a.views else { continue };
-            out.push(DrawnThing {
+    /// Draws every actor afresh into `level.things` (with the map things
+    /// that have no actor): at the start of a game.
+    pub fn draw_all(&mut self, level: &mut Level) {
+        level.things = self.still.iter().filter_map(|&i| level.map_thing_drawn(i)).collect();
+        self.owners = vec![NOT_DRAWN; level.things.len()];
+        self.slots.fill(NOT_DRAWN);
+        self.dirty = (0..self.list.len() as u32).collect();
+        self.draw(level);
+    }
+
+    /// Brings `level.things` up to date with the actors changed since the
+    /// last call: an actor still there with a frame the art has is drawn
+    /// where it stands; one gone leaves its place to the last entry.
+    pub fn draw(&mut self, level: &mut Level) {
+        for n in std::mem::take(&mut self.dirty) {
+            let a = &self.list[n as usize];
+            let drawn = a.views.filter(|_| !a.removed).map(|views| DrawnThing {
                 key: a.key,
                 pos: a.pos,
                 z: a.z,
@@ -318,7 +346,26 @@ impl Actors {
                 views,
                 bright: a.bright,
             });
+            let slot = self.slots[n as usize];
+            match (slot, drawn) {
+                (NOT_DRAWN, Some(d)) => {
+                    self.slots[n as usize] = level.things.len() as u32;
+                    self.owners.push(n);
+                    level.things.push(d);
+                }
+                (NOT_DRAWN, None) => {}
+                (s, Some(d)) => level.things[s as usize] = d,
+                (s, None) => {
+                    level.things.swap_remove(s as usize);
+                    self.owners.swap_remove(s as usize);
+                    if let Some(&moved) = self.owners.get(s as usize) {
+                        if moved != NOT_DRAWN {
+                            self.slots[moved as usize] = s;
+                        }
+                    }
+                    self.slots[n as usize] = NOT_DRAWN;
+                }
+            }
         }
-        level.things = out;
     }
 }

@@ -184,7 +184,6 @@ impl Actors {
             .iter()
             .enumerate()
             .filter(|(_, a)| !a.removed && a.flags.has(ActorFlag::Solid))
-            .filter(|(_, a)| a.thing.is_none_or(|i| ctx.level.thing_shown[i]))
             .map(|(i, a)| {
                 let def = &self.table.actors[a.kind];
                 Blocker { pos: a.pos, radius: def.radius, z: a.z, top: a.z + def.height, index: i }
@@ -350,7 +349,14 @@ pub fn chase(actors: &mut Actors, n: usize, _: &[Arg], ctx: &mut ActorCtx) {
     if a.movedir != NO_DIR {
         let snapped = (a.angle / 45.0).floor() * 45.0;
         let off = wrap(snapped - f64::from(a.movedir) * 45.0);
-        a.angle = (snapped - 45.0 * off.signum() * f64::from(u8::from(off != 0.0))).rem_euclid(360.0);
+        let turned = if off > 0.0 {
+            snapped - 45.0
+        } else if off < 0.0 {
+            snapped + 45.0
+        } else {
+            snapped
+        };
+        a.angle = turned.rem_euclid(360.0);
     }
     let def = &actors.table.actors[a.kind];
     let (spawn, melee, missile, attack_sound, active) =
@@ -425,8 +431,10 @@ pub fn play_sound(actors: &mut Actors, n: usize, args: &[Arg], ctx: &mut ActorCt
     actors.sound_at(n, sound(args, 0), ctx);
 }
 
-/// A hitscan attack: face the player, the weapon's sound, then `bullets`
-/// shots each turned by Doom's spread and doing 3 to 15 damage.
+/// A hitscan attack: face the player, the weapon's sound (named in the
+/// action, as Doom's are: the shotgun guy's table has no attack sound),
+/// then `bullets` shots each turned by Doom's spread and doing 3 to 15
+/// damage.
 fn volley(actors: &mut Actors, n: usize, ctx: &mut ActorCtx, sound: &str, bullets: usize) {
     if !actors.list[n].target {
         return;
@@ -482,12 +490,9 @@ pub fn sarg_attack(actors: &mut Actors, n: usize, args: &[Arg], ctx: &mut ActorC
 
 impl Actors {
     /// The bodies shots can hit: shootable actors still there.
-    pub fn shootable(&self, level: &crate::level::Level) -> Vec<Body> {
+    pub fn shootable(&self) -> Vec<Body> {
         (0..self.list.len())
-            .filter(|&n| {
-                let a = &self.list[n];
-                !a.removed && a.flags.has(ActorFlag::Shootable) && a.thing.is_none_or(|i| level.thing_shown[i])
-            })
+            .filter(|&n| !self.list[n].removed && self.list[n].flags.has(ActorFlag::Shootable))
             .map(|n| self.body(n))
             .collect()
     }
