@@ -32,8 +32,10 @@ fn game_from(text: &str) -> Game {
     Game::new(level_from(text)).unwrap_or_else(|e| panic!("{e}"))
 }
 
-const RUN_EAST: TickInput = TickInput { forward: 1, strafe: 0, turn: 0.0, run: true, use_line: false, fire: false };
-const IDLE: TickInput = TickInput { forward: 0, strafe: 0, turn: 0.0, run: false, use_line: false, fire: false };
+const RUN_EAST: TickInput =
+    TickInput { forward: 1, strafe: 0, turn: 0.0, run: true, use_line: false, fire: false, weapon: 0 };
+const IDLE: TickInput =
+    TickInput { forward: 0, strafe: 0, turn: 0.0, run: false, use_line: false, fire: false, weapon: 0 };
 
 fn distance_to_segment(p: DVec2, a: DVec2, b: DVec2) -> f64 {
     let d = b - a;

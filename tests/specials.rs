@@ -36,7 +36,8 @@ fn game(name: &str) -> Game {
     Game::new(load(&map(name))).unwrap_or_else(|e| panic!("{e}"))
 }
 
-const IDLE: TickInput = TickInput { forward: 0, strafe: 0, turn: 0.0, run: false, use_line: false, fire: false };
+const IDLE: TickInput =
+    TickInput { forward: 0, strafe: 0, turn: 0.0, run: false, use_line: false, fire: false, weapon: 0 };
 const WALK: TickInput = TickInput { forward: 1, ..IDLE };
 const RUN: TickInput = TickInput { forward: 1, run: true, ..IDLE };
 const USE: TickInput = TickInput { use_line: true, ..IDLE };
@@ -1199,23 +1200,43 @@ fn a_once_only_walk_line_works_once_and_a_repeatable_one_every_time() {
 // ---------------------------------------------------------------------------
 // Shoot lines (tests/maps/shoot.ron: A 0, B 1, R1 2 (tag 1), R2 3 (tag 2))
 
+/// Fires the pistol once: waits for it to be ready, holds fire until the
+/// shot, and returns that tick's events.
+fn shoot(g: &mut Game) -> Vec<Event> {
+    let ready = g.actors().table.get("pistol").and_then(|p| p.label("Ready"));
+    for _ in 0..60 {
+        if g.player().psprites[0].state == ready {
+            break;
+        }
+        tick(g, IDLE);
+    }
+    let bullets = g.player().ammo[0];
+    for _ in 0..20 {
+        let e = tick(g, FIRE);
+        if g.player().ammo[0] < bullets {
+            return e;
+        }
+    }
+    panic!("the pistol did not fire");
+}
+
 #[test]
 fn a_shot_sets_off_a_shoot_line_through_an_opening_but_not_through_a_wall() {
     let mut g = game("shoot");
     let (g1, g2) = (line_tagged(&g, 1), line_tagged(&g, 2));
     // Facing east across A and the open line into B, at G1 on B's far wall.
-    let e = tick(&mut g, FIRE);
+    let e = shoot(&mut g);
     assert_eq!(specials_set_off(&e), [(SpecialLine::Wall(g1), true)]);
     assert_eq!(middle(&g, g1), "SW2COMM");
     idle(&mut g, 10);
     assert_eq!(floor(&g, 2), 8.0);
     // Once only.
-    tick(&mut g, FIRE);
+    shoot(&mut g);
     idle(&mut g, 10);
     assert_eq!(floor(&g, 2), 8.0);
     // G2 with the pillar between: the shot stops at the pillar.
     stand(&mut g, 128.0, 64.0, 90.0);
-    let e = tick(&mut g, FIRE);
+    let e = shoot(&mut g);
     assert_eq!(specials_set_off(&e), []);
     idle(&mut g, 10);
     assert_eq!(floor(&g, 3), 0.0);
@@ -1224,7 +1245,7 @@ fn a_shot_sets_off_a_shoot_line_through_an_opening_but_not_through_a_wall() {
     let e = press_use(&mut g);
     assert_eq!((specials_set_off(&e), sounds(&e)), (vec![], vec!["noway"]));
     // Shot from in front of it: it goes off.
-    let e = tick(&mut g, FIRE);
+    let e = shoot(&mut g);
     assert_eq!(specials_set_off(&e), [(SpecialLine::Wall(g2), true)]);
     idle(&mut g, 10);
     assert_eq!(floor(&g, 3), 8.0);

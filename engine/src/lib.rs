@@ -26,6 +26,7 @@ pub mod map;
 pub mod materials;
 pub mod play;
 pub mod render;
+pub mod screen;
 pub mod study;
 pub mod texture;
 pub mod tour;

@@ -41,6 +41,9 @@ pub struct Materials {
     /// where the art has no such frame. Mirrored views are textures of
     /// their own (see `wad::import::sprite_view`).
     pub sprite_views: Vec<Option<[TextureId; 8]>>,
+    /// Per sprite frame (indexed as `sprite_views`), the screen picture of
+    /// a weapon's frame (the weapons' states only).
+    pub screen_views: Vec<Option<TextureId>>,
     /// The panorama shown by `"SKY"` ceilings and floors, if any sector has one.
     pub sky: Option<TextureId>,
     /// Some two-sided line has a see-through middle texture.
@@ -94,7 +97,7 @@ impl Materials {
             let other = match kind {
                 TextureKind::Wall => Some(TextureKind::Flat),
                 TextureKind::Flat => Some(TextureKind::Wall),
-                TextureKind::Sprite => None,
+                TextureKind::Sprite | TextureKind::Screen => None,
             };
             m.textures
                 .resolve_in(name, kind, library)
@@ -193,8 +196,28 @@ impl Materials {
         let table = ActorTable::doom();
         let roots = map.things.iter().filter_map(|t| table.index(&t.kind));
         let effects = ["bullet_puff", "blood", "teleport_fog", "item_fog"].into_iter().filter_map(|n| table.index(n));
+        let weapons: Vec<usize> = (0..table.actors.len()).filter(|&i| table.actors[i].weapon.is_some()).collect();
         self.sprite_views = vec![None; table.sprites.len() * SPRITE_FRAMES];
-        for actor in table.closure(roots.chain(effects)) {
+        self.screen_views = vec![None; table.sprites.len() * SPRITE_FRAMES];
+        for &w in &weapons {
+            for label in ["Ready", "Deselect", "Select", "Fire", "Flash"] {
+                let Some(start) = table.actors[w].label(label) else { continue };
+                // A label's sequence, up to the next label of the actor or a loop back.
+                let mut at = Some(start);
+                for _ in 0..64 {
+                    let Some(id) = at else { break };
+                    let state = table.state(id);
+                    let slot = Materials::view_index(state.sprite, state.frame);
+                    if self.screen_views[slot].is_none() {
+                        let name =
+                            format!("{}{}0", table.sprites[usize::from(state.sprite)], char::from(b'A' + state.frame));
+                        self.screen_views[slot] = self.textures.resolve_in(&name, TextureKind::Screen, library).ok();
+                    }
+                    at = state.next.filter(|n| n.0 > id.0);
+                }
+            }
+        }
+        for actor in table.closure(roots.chain(effects).chain(weapons.iter().copied())) {
             for id in table.states_of(&table.actors[actor]) {
                 let state = table.state(id);
                 let slot = Materials::view_index(state.sprite, state.frame);

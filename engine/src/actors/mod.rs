@@ -377,6 +377,14 @@ pub struct ActorDef {
 }
 
 impl ActorDef {
+    /// Its speed, or its fast speed (skill 5, `-fast`) if it has one.
+    pub fn speed(&self, fast: bool) -> f64 {
+        match (fast, self.fast_speed) {
+            (true, Some(s)) => s,
+            _ => self.speed,
+        }
+    }
+
     pub fn has(&self, flag: ActorFlag) -> bool {
         self.flags.has(flag)
     }

@@ -11,7 +11,7 @@
 //! | next 1 | skill, 1 to 5 |
 //! | next 8 | the game's random seed (u64) |
 //! | next 4 | tick count `T` (u32) |
-//! | rest | `T` records of 7 bytes: forward (i8), strafe (i8), flags (bit 0 run, bit 1 use, bit 2 fire), turn (f32, degrees) |
+//! | rest | `T` records of 7 bytes: forward (i8), strafe (i8), flags (bit 0 run, bit 1 use, bit 2 fire, bits 3-5 the weapon number asked for, 0 for none), turn (f32, degrees) |
 //!
 //! Every length is checked against the bytes actually present before
 //! anything is allocated, so a corrupt file is an error, never a panic or a
@@ -26,14 +26,18 @@ pub const MAGIC: &[u8] = b"SIGHTLINE-DEMO\n";
 /// Version 2: skill and seed in the header, fire, and use acting once per
 /// press (the world's machinery came with it, so version 1 games would not
 /// replay the same). Version 3: actors run (monsters wake, chase and
-/// shoot; pickups give), and fire shoots them.
-pub const VERSION: u8 = 3;
+/// shoot; pickups give), and fire shoots them. Version 4: weapons (fire
+/// held keeps firing, weapon numbers in the flags), missiles and infighting.
+pub const VERSION: u8 = 4;
 /// Longest map string accepted (a path, not a map).
 pub const MAX_MAP_BYTES: u32 = 4096;
 const RECORD: usize = 7;
 const RUN: u8 = 1;
 const USE: u8 = 2;
 const FIRE: u8 = 4;
+/// The weapon number, in bits 3 to 5.
+const WEAPON_SHIFT: u8 = 3;
+const WEAPON_BITS: u8 = 7 << WEAPON_SHIFT;
 
 /// A recorded game.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -84,7 +88,8 @@ impl Demo {
         for input in &self.inputs {
             let flags = if input.run { RUN } else { 0 }
                 | if input.use_line { USE } else { 0 }
-                | if input.fire { FIRE } else { 0 };
+                | if input.fire { FIRE } else { 0 }
+                | (input.weapon.min(7) << WEAPON_SHIFT);
             body.extend([input.forward as u8, input.strafe as u8, flags]);
             body.extend(input.turn.to_le_bytes());
         }
@@ -162,7 +167,7 @@ impl Demo {
         }
         let mut inputs = Vec::with_capacity(ticks);
         for (tick, r) in reader.bytes.chunks_exact(RECORD).enumerate() {
-            if r[2] & !(RUN | USE | FIRE) != 0 {
+            if r[2] & !(RUN | USE | FIRE | WEAPON_BITS) != 0 {
                 return Err(DemoError::Corrupt {
                     path: path(),
                     what: format!("tick {tick}: unknown flags {:#04x}", r[2]),
@@ -174,6 +179,7 @@ impl Demo {
                 run: r[2] & RUN != 0,
                 use_line: r[2] & USE != 0,
                 fire: r[2] & FIRE != 0,
+                weapon: (r[2] & WEAPON_BITS) >> WEAPON_SHIFT,
                 turn: f32::from_le_bytes([r[3], r[4], r[5], r[6]]),
             });
         }

@@ -21,9 +21,13 @@ pub struct TickInput {
     /// Use (open a door, press a switch) was held or pressed during this tick;
     /// it acts once per press.
     pub use_line: bool,
-    /// Fire was held or pressed during this tick (until weapons come, a shot
-    /// only sets off the lines it crosses); it acts once per press.
+    /// Fire was held or pressed during this tick: the weapon fires, and
+    /// keeps firing while it is held.
     pub fire: bool,
+    /// A weapon asked for by its number key (1 to 7; 0: none): the first
+    /// owned in that slot, or the next in the slot after the one in hand.
+    #[serde(default)]
+    pub weapon: u8,
 }
 
 impl TickInput {
@@ -36,6 +40,7 @@ impl TickInput {
             run: self.run,
             use_line: self.use_line,
             fire: self.fire,
+            weapon: if self.weapon <= 7 { self.weapon } else { 0 },
         }
     }
 }
@@ -61,7 +66,7 @@ pub fn wander(seed: u64, ticks: usize, presses: bool) -> Vec<TickInput> {
         for k in 0..hold {
             let use_line = presses && rng.random_range(0..25) == 0;
             let turn = if k < burst { turn } else { 0.0 };
-            inputs.push(TickInput { forward, strafe, turn, run, use_line, fire: false });
+            inputs.push(TickInput { forward, strafe, turn, run, use_line, fire: false, weapon: 0 });
         }
     }
     inputs.truncate(ticks);

@@ -38,6 +38,7 @@ pub mod playthrough;
 pub mod random;
 pub mod sight;
 pub mod trace;
+pub mod weapons;
 pub mod world;
 
 use glam::DVec2;
@@ -126,6 +127,9 @@ pub struct Game {
     touched: Vec<usize>,
     actors: actors::Actors,
     sight: sight::Scratch,
+    /// What the actors asked of the world this tick, and the player's shots.
+    requests: Vec<actors::attacks::Request>,
+    shots: Vec<(DVec2, DVec2)>,
     /// Monsters killed and items picked up so far.
     kills: u32,
     items: u32,
@@ -177,7 +181,8 @@ impl Game {
         let collision = Collision { compiled: &level.compiled, blockmap: &blockmap };
         let near = collision.lines_near(&mut query, start.pos, RADIUS + 1.0);
         let area = collision.area(near, start.pos);
-        let player = Player::new(start.pos, start.angle, area.sector, area.floor, area.ceiling);
+        let mut player = Player::new(start.pos, start.angle, area.sector, area.floor, area.ceiling);
+        weapons::arm(&actors, &mut player);
         let previous = pose(&player);
         Ok(Game {
             level,
@@ -190,6 +195,8 @@ impl Game {
             touched: Vec::new(),
             actors,
             sight: sight::Scratch::default(),
+            requests: Vec::new(),
+            shots: Vec::new(),
             kills: 0,
             items: 0,
             rng,
@@ -216,18 +223,16 @@ impl Game {
         let to = self.player.pos;
         self.walk_triggers(from, to);
         let use_pressed = input.use_line && !self.player.use_held;
-        let fire_pressed = input.fire && !self.player.fire_held;
         (self.player.use_held, self.player.fire_held) = (input.use_line, input.fire);
         // Held after a teleport the body cannot move or turn, but it can
         // still use and fire (Doom's reactiontime stops P_MovePlayer only).
-        if !self.player.dead() {
-            if use_pressed {
-                self.use_lines();
-            }
-            if fire_pressed {
-                self.shoot();
-            }
+        if !self.player.dead() && use_pressed {
+            self.use_lines();
         }
+        self.player.tick_powers();
+        let (actors, mut ctx) = self.actor_ctx();
+        weapons::tick(actors, input.weapon, &mut ctx);
+        self.shoot_lines();
         if self.player.pos != to {
             // A teleport: do not draw the way between.
             self.previous = pose(&self.player);
@@ -269,8 +274,11 @@ impl Game {
 
     /// The actors, and a context for their actions.
     fn actor_ctx(&mut self) -> (&mut actors::Actors, actors::ActorCtx<'_>) {
-        let Game { level, player, actors, blockmap, query, sight, rng, events, options, kills, .. } = self;
-        (actors, actors::ActorCtx { level, player, rng, events, blockmap, query, sight, skill: options.skill, kills })
+        let Game {
+            level, player, actors, blockmap, query, sight, rng, events, options, kills, requests, shots, ..
+        } = self;
+        let skill = options.skill;
+        (actors, actors::ActorCtx { level, player, rng, events, blockmap, query, sight, skill, kills, requests, shots })
     }
 
     /// The lines with walk specials the body's centre crossed.
@@ -315,41 +323,29 @@ impl Game {
         }
     }
 
-    /// A shot (Doom's pistol, A_FirePistol's first, accurate shot): aimed
-    /// up or down at the first shootable actor in the window of auto-aim,
-    /// it hurts what it hits (5, 10 or 15) or leaves a puff on the wall.
-    /// Monsters in the sectors its noise reaches wake.
-    /// Lines with shoot specials that it crosses before that go off.
-    fn shoot(&mut self) {
-        self.events.push(sound("pistol", Origin::Player));
-        self.actors.noise_alert(&self.level, self.player.sector);
-        let (sin, cos) = sin_cos_degrees(self.player.angle);
-        let from = self.player.pos;
-        let to = from + DVec2::new(cos, sin) * SHOT_RANGE;
-        let z = self.player.z + SHOT_HEIGHT;
-        let ray = sight::Ray { origin: from, z, angle: self.player.angle, range: SHOT_RANGE, shooter: None };
-        let bodies = self.actors.shootable();
-        let compiled = &self.level.compiled;
-        let slope = sight::aim_slope(compiled, &mut self.sight, &ray, &bodies).map_or(0.0, |a| a.slope);
-        let hit = sight::hitscan(compiled, &mut self.sight, &ray, slope, &bodies);
-        let reach = hit.map_or(1.0, |h| h.fraction);
-        let lines = Lines { map: &self.level.compiled.map, walls: &self.blockmap, triggers: &self.triggers };
-        let crossings = lines.along(&mut self.scratch, from, to);
-        for c in crossings.into_iter().filter(|c| c.t <= reach) {
-            let (world, mut ctx) = self.ctx();
-            activate(world, &mut ctx, c.line, Activation::Shoot, Activator::Player, c.from_front);
-        }
-        let Some(hit) = hit else { return };
-        let damage = 5 * (i32::from(self.rng.byte()) % 3 + 1);
-        let (actors, mut ctx) = self.actor_ctx();
-        match hit.struck {
-            sight::Struck::Body { index } => actors.damage(index, damage, &mut ctx),
-            sight::Struck::Wall { .. } => {
-                if let (Some(p), Some(puff)) = (hit.puff, actors.table.index("bullet_puff")) {
-                    actors.spawn(puff, p.truncate(), p.z, 0.0, &mut ctx);
-                }
+    /// The lines with shoot specials that this tick's shots crossed before
+    /// what they hit.
+    fn shoot_lines(&mut self) {
+        for (from, to) in std::mem::take(&mut self.shots) {
+            let lines = Lines { map: &self.level.compiled.map, walls: &self.blockmap, triggers: &self.triggers };
+            let crossings = lines.along(&mut self.scratch, from, to);
+            for c in crossings {
+                let (world, mut ctx) = self.ctx();
+                activate(world, &mut ctx, c.line, Activation::Shoot, Activator::Player, c.from_front);
             }
-            sight::Struck::Sky { .. } => {}
+        }
+    }
+
+    /// What the actors asked of the world: a boss's tagged special, an exit.
+    fn do_requests(&mut self) {
+        for r in std::mem::take(&mut self.requests) {
+            let (world, mut ctx) = self.ctx();
+            match r {
+                actors::attacks::Request::Tagged(action, tag) => {
+                    world::specials::perform_tagged(world, &mut ctx, action, tag);
+                }
+                actors::attacks::Request::Exit => *ctx.exit = Some(Exit::Normal),
+            }
         }
     }
 
@@ -383,6 +379,8 @@ impl Game {
         world.tick(&mut ctx);
         let (actors, mut ctx) = self.actor_ctx();
         actors.tick(&mut ctx);
+        self.shoot_lines();
+        self.do_requests();
         self.actors.draw(&mut self.level);
     }
 

@@ -3,12 +3,16 @@
 //! actor's `give` list (health, armour, ammunition, weapons, keys, power-ups,
 //! the backpack), its message and sound. A pickup that would give nothing
 //! is left where it is, unless it is always taken (bonuses, spheres).
+//! Only the items in the grid cells near the player are looked at.
 
 use super::actors::Actors;
 use super::events::{Event, Origin};
 use super::player::{Key, Player, HEIGHT, RADIUS};
 use crate::actors::{ActorFlag, ActorTable, AmmoKind, Give, Pickup, Power};
 use crate::level::Level;
+
+/// The gold tint a pickup adds (Doom's BONUSADD).
+const BONUS_ADD: i32 = 6;
 
 /// Ticks each power-up lasts (Doom's INVULNTICS, INVISTICS, IRONTICS,
 /// INFRATICS); berserk and the map last the level.
@@ -123,8 +127,10 @@ pub fn touch(actors: &mut Actors, level: &mut Level, player: &mut Player, events
     }
     let mut items = 0;
     let table = actors.table.clone();
-    for k in 0..actors.pickups.len() {
-        let n = actors.pickups[k] as usize;
+    let reach = glam::DVec2::splat(RADIUS);
+    let near = actors.near(player.pos - reach, player.pos + reach);
+    for &n in &near {
+        let n = n as usize;
         let a = &actors.list[n];
         if a.removed {
             continue;
@@ -145,13 +151,13 @@ pub fn touch(actors: &mut Actors, level: &mut Level, player: &mut Player, events
             level.thing_shown[i] = false;
         }
         actors.remove(n);
+        player.bonus_count = (player.bonus_count + BONUS_ADD).min(100);
         events.push(Event::Message(pickup.message.clone()));
         if let Some(s) = crate::actors::sounds::doom().iter().find(|s| s.name == pickup.sound) {
             events.push(Event::Sound { sound: s.name.as_str(), origin: Origin::Player });
         }
     }
-    let list = &actors.list;
-    actors.pickups.retain(|&n| !list[n as usize].removed);
+    actors.give_back(near);
     items
 }
 

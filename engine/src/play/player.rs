@@ -117,6 +117,38 @@ pub struct Player {
     /// as Doom's `usedown` makes use.
     pub use_held: bool,
     pub fire_held: bool,
+    /// The weapon in hand and the one being changed to (actor indices).
+    pub ready_weapon: Option<usize>,
+    pub pending_weapon: Option<usize>,
+    /// The weapon's sprite and its flash, on screen (Doom's psprites).
+    pub psprites: [PSprite; 2],
+    /// Shots fired with the trigger held (the pistol and chaingun are
+    /// accurate only on the first).
+    pub refire: i32,
+    /// Fire was held when the weapon last looked (rockets and the BFG need
+    /// a fresh press).
+    pub attack_down: bool,
+    /// The weapon's light on the room (0 to 2: Doom's `extralight`).
+    pub extra_light: i32,
+    /// Recent hurt and pickups, for the screen's red and gold tints.
+    pub damage_count: i32,
+    pub bonus_count: i32,
+}
+
+/// The weapon layer and the flash layer of [`Player::psprites`].
+pub const WEAPON_LAYER: usize = 0;
+pub const FLASH_LAYER: usize = 1;
+
+/// A sprite drawn on the screen rather than in the world: the weapon or
+/// its flash (Doom's `pspdef_t`). `sx`, `sy` place its origin on Doom's
+/// 320x200 screen.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PSprite {
+    /// `None`: not shown.
+    pub state: Option<crate::actors::StateId>,
+    pub tics: i32,
+    pub sx: f64,
+    pub sy: f64,
 }
 
 impl Player {
@@ -145,7 +177,32 @@ impl Player {
             freeze: 0,
             use_held: false,
             fire_held: false,
+            ready_weapon: None,
+            pending_weapon: None,
+            psprites: [PSprite::default(); 2],
+            refire: 0,
+            attack_down: false,
+            extra_light: 0,
+            damage_count: 0,
+            bonus_count: 0,
         }
+    }
+
+    /// Power-ups run down (berserk and the map last the level), and the
+    /// screen's tints fade.
+    pub fn tick_powers(&mut self) {
+        use crate::actors::Power;
+        for power in [Power::Invulnerability, Power::Invisibility, Power::IronFeet, Power::Infrared] {
+            let t = &mut self.powers[crate::play::pickups::power_slot(power)];
+            *t = (*t - 1).max(0);
+        }
+        // Berserk counts up while owned: the screen's red fades with it.
+        let strength = &mut self.powers[crate::play::pickups::power_slot(Power::Strength)];
+        if *strength > 0 {
+            *strength = strength.saturating_add(1);
+        }
+        self.damage_count = (self.damage_count - 1).max(0);
+        self.bonus_count = (self.bonus_count - 1).max(0);
     }
 
     pub fn dead(&self) -> bool {

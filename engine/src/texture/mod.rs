@@ -129,6 +129,10 @@ pub enum TextureKind {
     Wall,
     Flat,
     Sprite,
+    /// A picture drawn on the screen (a weapon, its flash), framed so that
+    /// texel (0, 0) lands on Doom's 320x200 screen at the origin of a
+    /// weapon at rest, less (1, 32) (see [`crate::screen::weapon`]).
+    Screen,
 }
 
 impl TextureKind {
@@ -139,6 +143,7 @@ impl TextureKind {
             TextureKind::Wall => &["textures"],
             TextureKind::Flat => &["flats", "textures"],
             TextureKind::Sprite => &["sprites"],
+            TextureKind::Screen => &["screens"],
         }
     }
 }
@@ -149,6 +154,7 @@ impl fmt::Display for TextureKind {
             TextureKind::Wall => "wall texture",
             TextureKind::Flat => "flat",
             TextureKind::Sprite => "sprite",
+            TextureKind::Screen => "screen picture",
         })
     }
 }

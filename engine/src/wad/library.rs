@@ -30,6 +30,7 @@ impl WadArt {
                 self.art.textures.contains_key(&name) || self.art.flats.contains_key(&name)
             }
             TextureKind::Sprite => sprite_view(&self.art, &name).is_some(),
+            TextureKind::Screen => self.art.sprites.contains_key(&name),
         }
     }
 
@@ -58,11 +59,42 @@ impl WadArt {
                     image
                 }
             }
+            TextureKind::Screen => {
+                let lump = self.art.sprites.get(name).ok_or_else(|| bad("not in the WAD".into()))?;
+                on_screen(&art::picture(self.wad.bytes(*lump), &self.art.palette).map_err(bad)?)
+            }
             TextureKind::Wall => return Err(bad("not in the WAD".into())),
         };
         texture_of(&image)
             .ok_or_else(|| bad(format!("{}x{} is not 1 to {MAX_SIDE} on a side", image.width, image.height)))
     }
+}
+
+/// Re-frames a weapon picture for [`TextureKind::Screen`]: placed where
+/// Doom draws it with the weapon at rest (origin at (1, 32) on the 320x200
+/// screen, less its offsets), on a canvas whose top-left is the screen's.
+/// What falls left of or above the screen is cut.
+fn on_screen(image: &Image) -> Image {
+    let (dx, dy) = (1 - image.left, 32 - image.top);
+    let (w, h) = (image.width as i32, image.height as i32);
+    let width = (dx + w).clamp(1, 1024);
+    let height = (dy + h).clamp(1, 1024);
+    let mut out = Image {
+        width: width as usize,
+        height: height as usize,
+        rgba: vec![[0; 4]; (width * height) as usize],
+        left: 0,
+        top: 0,
+    };
+    for y in 0..h {
+        for x in 0..w {
+            let (ox, oy) = (x + dx, y + dy);
+            if (0..width).contains(&ox) && (0..height).contains(&oy) {
+                out.rgba[(oy * width + ox) as usize] = image.rgba[(y * w + x) as usize];
+            }
+        }
+    }
+    out
 }
 
 /// An image flipped left to right.

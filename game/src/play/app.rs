@@ -40,6 +40,8 @@ pub struct App {
     fb: Framebuffer,
     clock: TickClock,
     hud: Hud,
+    /// The status bar or the minimal HUD.
+    status: sightline::screen::Hud,
     automap: Automap,
     pub timings: Timings,
     grabbed: bool,
@@ -77,6 +79,7 @@ impl App {
             fb: Framebuffer::new(w as usize, h as usize),
             clock: TickClock::new(sightline::play::TICRATE),
             hud: Hud::new(options.hud),
+            status: sightline::screen::Hud::StatusBar,
             automap,
             timings: Timings::default(),
             grabbed: false,
@@ -116,6 +119,7 @@ impl App {
         let start = Instant::now();
         render_frame(level, &view, &self.options, &mut self.frame, &mut self.fb);
         let render = start.elapsed();
+        sightline::screen::draw(&mut self.fb, level, play.game.player(), self.status);
         self.automap.accumulate(self.frame.seen_lines());
         if self.automap.visible {
             self.automap.draw(&level.map, (view.pos.x, view.pos.y), view.angle, &mut self.fb);
@@ -147,6 +151,10 @@ impl App {
                 }
             }
             Action::ToggleHud => self.hud.visible = !self.hud.visible,
+            Action::ToggleStatusBar => {
+                use sightline::screen::Hud;
+                self.status = if self.status == Hud::StatusBar { Hud::Minimal } else { Hud::StatusBar };
+            }
             Action::ToggleAutomap => self.automap.visible = !self.automap.visible,
             // A screenshot that cannot be written is reported, not fatal.
             Action::Screenshot => match screenshot::save(&self.fb, Path::new(".")) {

@@ -5,12 +5,10 @@
 
 use std::time::Duration;
 
-use font8x8::{UnicodeFonts, BASIC_FONTS};
-use sightline::actors::KeyForm;
 use sightline::framebuffer::rgb;
-use sightline::map::special::KeyColour;
 use sightline::play::playthrough::Phase;
 use sightline::play::{Player, TICRATE};
+use sightline::screen::text::GLYPH;
 use sightline::Framebuffer;
 
 /// How long a message stays on screen (Doom's MESSAGETICS, 4 s).
@@ -21,9 +19,6 @@ const MESSAGES_SHOWN: usize = 3;
 /// Frame time shown as an average over this long, so the figures can be read
 /// rather than flicker with every frame.
 const SMOOTHING_WINDOW: Duration = Duration::from_millis(500);
-
-/// Glyph cell in font pixels; the font is 8x8 (font8x8's public-domain set).
-const GLYPH: usize = 8;
 
 pub struct Hud {
     pub visible: bool,
@@ -77,12 +72,9 @@ impl Hud {
         }
     }
 
-    /// The player's health and keys at the bottom left, the game's messages
-    /// under the figures.
+    /// The game's messages under the figures, and how to restart when dead
+    /// (health, armour, ammunition and keys are on the status bar).
     pub fn draw_status(&self, fb: &mut Framebuffer, player: &Player) {
-        if !self.visible {
-            return;
-        }
         let scale = text_scale(fb);
         let line = (GLYPH + 2) * scale;
         let mut y = scale * 4 + 2 * line;
@@ -90,24 +82,8 @@ impl Hud {
             draw_text(fb, scale * 4, y, scale, text);
             y += line;
         }
-        let bottom = fb.height.saturating_sub(line + scale * 4);
-        let health =
-            if player.dead() { "DEAD: press use to restart".to_string() } else { format!("HEALTH {}", player.health) };
-        draw_text(fb, scale * 4, bottom, scale, &health);
-        // Keys: a coloured box each, a card square, a skull with a dot.
-        let mut x = fb.width.saturating_sub(scale * 4);
-        for key in player.keys.iter().rev() {
-            let size = GLYPH * scale;
-            x = x.saturating_sub(size + 2 * scale);
-            let colour = match key.colour {
-                KeyColour::Blue => rgb(40, 80, 255),
-                KeyColour::Yellow => rgb(250, 220, 40),
-                KeyColour::Red => rgb(230, 30, 30),
-            };
-            fill_rect(fb, x, bottom, size, size, colour);
-            if key.form == KeyForm::Skull {
-                fill_rect(fb, x + size / 4, bottom + size / 4, size / 2, size / 2, rgb(240, 240, 230));
-            }
+        if player.dead() {
+            draw_text(fb, scale * 4, fb.height / 3, scale, "You are dead: press use to restart");
         }
     }
 
@@ -182,40 +158,7 @@ pub fn text_scale(fb: &Framebuffer) -> usize {
     (fb.height / 400).max(1)
 }
 
-/// Draws `text` with its top-left corner at (`x`, `y`), each font pixel
-/// `scale` screen pixels, in white over a one-pixel dark shadow so it reads on
-/// any background. Characters outside ASCII draw as `?`; whatever falls off
-/// the frame is clipped.
-pub fn draw_text(fb: &mut Framebuffer, x: usize, y: usize, scale: usize, text: &str) {
-    for (i, c) in text.chars().enumerate() {
-        let glyph = BASIC_FONTS.get(c).or_else(|| BASIC_FONTS.get('?')).unwrap_or([0; 8]);
-        let gx = x + i * GLYPH * scale;
-        draw_glyph(fb, gx + scale, y + scale, scale, &glyph, rgb(0, 0, 0));
-        draw_glyph(fb, gx, y, scale, &glyph, rgb(255, 255, 255));
-    }
-}
-
-fn draw_glyph(fb: &mut Framebuffer, x: usize, y: usize, scale: usize, glyph: &[u8; 8], colour: u32) {
-    for (row, bits) in glyph.iter().enumerate() {
-        for col in 0..GLYPH {
-            // font8x8 stores each row with bit 0 as the leftmost pixel.
-            if bits >> col & 1 == 0 {
-                continue;
-            }
-            fill_rect(fb, x + col * scale, y + row * scale, scale, scale, colour);
-        }
-    }
-}
-
-/// Fills the part of the rectangle that lies on the frame.
-pub fn fill_rect(fb: &mut Framebuffer, x: usize, y: usize, w: usize, h: usize, colour: u32) {
-    let x1 = (x + w).min(fb.width);
-    let y1 = (y + h).min(fb.height);
-    for yy in y.min(y1)..y1 {
-        let row = yy * fb.width;
-        fb.pixels[row + x.min(x1)..row + x1].fill(colour);
-    }
-}
+pub use sightline::screen::text::draw_text;
 
 #[cfg(test)]
 mod tests {

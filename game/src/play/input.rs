@@ -22,6 +22,8 @@ pub enum Action {
     ToggleAutomap,
     Screenshot,
     CycleRenderer,
+    /// The status bar, or the minimal full-screen HUD (Doom's `-` and `=`).
+    ToggleStatusBar,
 }
 
 /// Movement keys, as bits of `Controls::held` and `Controls::pressed`.
@@ -53,6 +55,20 @@ fn binding(key: KeyCode) -> Option<Move> {
     })
 }
 
+/// The weapon number a key asks for (the number keys 1 to 7).
+fn weapon_key(key: KeyCode) -> Option<u8> {
+    Some(match key {
+        KeyCode::Digit1 => 1,
+        KeyCode::Digit2 => 2,
+        KeyCode::Digit3 => 3,
+        KeyCode::Digit4 => 4,
+        KeyCode::Digit5 => 5,
+        KeyCode::Digit6 => 6,
+        KeyCode::Digit7 => 7,
+        _ => return None,
+    })
+}
+
 /// The window action of a key event: fresh presses only (auto-repeat does
 /// not repeat actions).
 pub fn window_action(key: KeyCode, down: bool, repeat: bool) -> Option<Action> {
@@ -67,6 +83,7 @@ pub fn window_action(key: KeyCode, down: bool, repeat: bool) -> Option<Action> {
         KeyCode::Tab => Action::ToggleAutomap,
         KeyCode::F12 => Action::Screenshot,
         KeyCode::KeyR => Action::CycleRenderer,
+        KeyCode::Minus | KeyCode::Equal => Action::ToggleStatusBar,
         _ => return None,
     })
 }
@@ -82,6 +99,8 @@ pub struct Controls {
     mouse_dx: f64,
     /// Degrees per mouse count.
     sensitivity: f32,
+    /// The weapon number last pressed since the last tick (0: none).
+    weapon: u8,
 }
 
 impl Controls {
@@ -92,6 +111,12 @@ impl Controls {
     /// A key went down (`down`) or up. Returns the window action of a fresh
     /// press (auto-repeat does not repeat actions).
     pub fn key(&mut self, key: KeyCode, down: bool, repeat: bool) -> Option<Action> {
+        if let Some(slot) = weapon_key(key) {
+            if down {
+                self.weapon = slot;
+            }
+            return None;
+        }
         if let Some(m) = binding(key) {
             self.set(m, down);
             return None;
@@ -143,6 +168,7 @@ impl Controls {
             run,
             use_line: on(Move::Use),
             fire: on(Move::Fire),
+            weapon: std::mem::take(&mut self.weapon),
         };
         self.pressed = 0;
         self.mouse_dx = 0.0;
@@ -178,6 +204,11 @@ mod tests {
         c.key(KeyCode::ArrowLeft, true, false);
         c.key(KeyCode::ShiftLeft, false, false);
         assert!((c.tick_input().turn - 3.515625).abs() < 1e-6);
+
+        // A number key asks for a weapon once.
+        c.key(KeyCode::Digit3, true, false);
+        assert_eq!(c.tick_input().weapon, 3);
+        assert_eq!(c.tick_input().weapon, 0);
 
         assert_eq!(c.key(KeyCode::Tab, true, false), Some(Action::ToggleAutomap));
         assert_eq!(c.key(KeyCode::Tab, true, true), None);

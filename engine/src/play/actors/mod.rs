@@ -15,11 +15,14 @@
 
 use std::sync::Arc;
 
-use glam::DVec2;
+use glam::{DVec2, DVec3};
 
 pub mod actions;
+pub mod attacks;
+pub mod grid;
 pub mod monsters;
 pub mod movement;
+pub mod physics;
 
 use crate::actors::{ActorFlag, ActorFlags, ActorTable, StateId};
 use crate::level::{DrawnThing, Level};
@@ -32,7 +35,18 @@ use super::player::Player;
 use super::random::GameRng;
 use super::sight;
 use actions::ActionFn;
+use grid::{ThingGrid, UNLISTED};
 use movement::NO_DIR;
+
+/// Whom an actor is after (or, for a missile, who fired it).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Target {
+    #[default]
+    None,
+    Player,
+    /// An actor, by index.
+    Actor(u32),
+}
 
 /// One thing in play.
 #[derive(Clone, Debug, PartialEq)]
@@ -63,8 +77,27 @@ pub struct Actor {
     /// `Solid` lost in death, `Corpse` gained).
     pub flags: ActorFlags,
     pub health: i32,
-    /// Chasing the player (the only target until monsters fight each other).
-    pub target: bool,
+    /// What it chases and attacks (Doom's `target`).
+    pub target: Target,
+    /// A missile's shooter, an explosion's cause: whom its damage is
+    /// charged to (Doom keeps this in a missile's `target`).
+    pub source: Target,
+    /// A homing missile's quarry, the arch-vile's fire's victim, the
+    /// corpse being raised (Doom's `tracer`).
+    pub tracer: Target,
+    /// Ticks it keeps chasing a monster that hurt it before it may switch
+    /// to another (Doom's `threshold`).
+    pub threshold: i32,
+    /// Momentum, units per tick: pushes, falls, missiles' flight.
+    pub vel: DVec3,
+    /// A lost soul in its charge (Doom's MF_SKULLFLY).
+    pub skull_fly: bool,
+    /// Rising or sinking towards its target this tick (Doom's MF_INFLOAT).
+    pub in_float: bool,
+    /// Its cell in the grid ([`UNLISTED`]: not in it).
+    cell: u32,
+    /// On the list of actors physics moves.
+    moving: bool,
     /// Doom's `movedir` (0..8, [`NO_DIR`]) and `movecount`: steps left before
     /// choosing a new direction.
     pub movedir: u8,
@@ -93,6 +126,11 @@ pub struct ActorCtx<'a> {
     pub skill: u8,
     /// Monsters killed this game (for the intermission).
     pub kills: &'a mut u32,
+    /// What actions ask of the world, done after the tick.
+    pub requests: &'a mut Vec<attacks::Request>,
+    /// The player's shots this tick, from where to where they reached
+    /// (the lines they cross may have shoot specials).
+    pub shots: &'a mut Vec<(DVec2, DVec2)>,
 }
 
 /// Every actor of a game.
@@ -109,10 +147,14 @@ pub struct Actors {
     still: Vec<usize>,
     /// Per action of the registry, its function (`None`: not implemented).
     run: Vec<Option<ActionFn>>,
+    /// The actors that block, can be shot, picked up or raised, by cell.
+    pub grid: ThingGrid,
+    /// The actors with momentum or off the ground (`physics.rs` moves only these).
+    movers: Vec<u32>,
+    /// Scratch for grid queries.
+    near: Vec<u32>,
     /// Per sector: the player was heard there (Doom's `soundtarget`).
     heard: Vec<bool>,
-    /// The actors the player may pick up (`pickups.rs` visits only these).
-    pub pickups: Vec<u32>,
     /// Per actor, its place in `Level::things` ([`NOT_DRAWN`]: none); per
     /// place, the actor there ([`NOT_DRAWN`]: a still map thing).
     slots: Vec<u32>,
@@ -132,7 +174,17 @@ impl Actors {
         let map = &level.compiled.map;
         let run = crate::actors::actions::REGISTRY.iter().map(|a| actions::function(a.name)).collect();
         let heard = vec![false; map.sectors.len()];
+        let (mut min, mut max) = (DVec2::splat(f64::MAX), DVec2::splat(f64::MIN));
+        for v in &map.vertices {
+            (min, max) = (min.min(*v), max.max(*v));
+        }
+        if min.x > max.x {
+            (min, max) = (DVec2::ZERO, DVec2::ONE);
+        }
         let mut actors = Actors {
+            grid: ThingGrid::new(min, max),
+            movers: Vec::new(),
+            near: Vec::new(),
             table,
             list: Vec::new(),
             awake: Vec::new(),
@@ -140,7 +192,6 @@ impl Actors {
             still: Vec::new(),
             run,
             heard,
-            pickups: Vec::new(),
             slots: Vec::new(),
             owners: Vec::new(),
             dirty: Vec::new(),
@@ -196,7 +247,15 @@ impl Actors {
             listed: false,
             flags: def.flags,
             health: def.health,
-            target: false,
+            target: Target::None,
+            source: Target::None,
+            tracer: Target::None,
+            threshold: 0,
+            vel: DVec3::ZERO,
+            skull_fly: false,
+            in_float: false,
+            cell: UNLISTED,
+            moving: false,
             movedir: NO_DIR,
             movecount: 0,
             reaction_time: def.reaction_time,
@@ -223,23 +282,72 @@ impl Actors {
         Some(self.place(actor, state, &ctx.level.materials))
     }
 
-    /// Adds an actor to the list (and to the pickups, if it is one) in its
-    /// first state, whose action does not run (Doom's P_SpawnMobj).
+    /// Adds an actor to the list (and the grid) in its first state, whose action does not run (Doom's P_SpawnMobj).
     /// Returns its index.
     fn place(&mut self, actor: Actor, state: StateId, materials: &Materials) -> usize {
         let n = self.list.len();
-        if actor.flags.has(ActorFlag::Special) && self.table.actors[actor.kind].pickup.is_some() {
-            self.pickups.push(n as u32);
-        }
         self.list.push(actor);
         self.slots.push(NOT_DRAWN);
+        self.link(n);
         self.show(n, state, materials);
         n
+    }
+
+    /// Lists actor `n` in the grid, unless it stays out of it (`NoBlockmap`).
+    fn link(&mut self, n: usize) {
+        let a = &self.list[n];
+        if a.removed || a.flags.has(ActorFlag::NoBlockmap) || a.cell != UNLISTED {
+            return;
+        }
+        let cell = self.grid.cell(a.pos);
+        self.grid.insert(n as u32, cell, self.table.actors[a.kind].radius);
+        self.list[n].cell = cell;
+    }
+
+    fn unlink(&mut self, n: usize) {
+        let cell = std::mem::replace(&mut self.list[n].cell, UNLISTED);
+        if cell != UNLISTED {
+            self.grid.remove(n as u32, cell);
+        }
+    }
+
+    /// Moves actor `n` to `pos` (its grid cell follows) and redraws it.
+    pub fn set_pos(&mut self, n: usize, pos: DVec2) {
+        let a = &mut self.list[n];
+        a.pos = pos;
+        self.dirty.push(n as u32);
+        if a.cell != UNLISTED && self.grid.cell(pos) != a.cell {
+            self.unlink(n);
+            self.link(n);
+        }
+    }
+
+    /// Puts actor `n` on the list physics moves (it has momentum, or may fall).
+    pub fn wake_physics(&mut self, n: usize) {
+        let a = &mut self.list[n];
+        if !a.moving && !a.removed {
+            a.moving = true;
+            self.movers.push(n as u32);
+        }
+    }
+
+    /// The actors listed in the grid near the box `min..max` (scratch,
+    /// handed back with [`Actors::give_back`]).
+    pub fn near(&mut self, min: DVec2, max: DVec2) -> Vec<u32> {
+        let mut out = std::mem::take(&mut self.near);
+        out.clear();
+        self.grid.near(min, max, &mut out);
+        out
+    }
+
+    pub fn give_back(&mut self, scratch: Vec<u32>) {
+        self.near = scratch;
     }
 
     /// Takes actor `n` out of play (its state sequence ended, or it was
     /// picked up).
     pub fn remove(&mut self, n: usize) {
+        self.unlink(n);
         self.list[n].removed = true;
         self.dirty.push(n as u32);
     }
@@ -290,9 +398,24 @@ impl Actors {
         }
     }
 
-    /// Steps every awake actor's state timer; a state whose time is up
-    /// gives way to the next, whose action runs.
+    /// Moves the actors that have momentum or are in the air
+    /// (`physics.rs`), then steps every awake actor's state timer; a state
+    /// whose time is up gives way to the next, whose action runs.
     pub fn tick(&mut self, ctx: &mut ActorCtx) {
+        let mut k = 0;
+        while k < self.movers.len() {
+            let n = self.movers[k] as usize;
+            k += 1;
+            if !self.list[n].removed {
+                self.physics(n, ctx);
+            }
+        }
+        let list = &mut self.list;
+        self.movers.retain(|&n| {
+            let a = &mut list[n as usize];
+            a.moving = !a.removed && a.in_motion();
+            a.moving
+        });
         let mut k = 0;
         while k < self.awake.len() {
             let n = self.awake[k] as usize;

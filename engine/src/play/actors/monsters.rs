@@ -3,19 +3,20 @@
 //! speed around what blocks them, face it, and attack when in range and
 //! in sight; pain, death cries and falling bodies.
 //!
-//! The player is the only target so far: monsters do not yet fight each
-//! other, open doors or fire missiles. They hear the player's shots
+//! A monster's target is the player or, once another monster hurts it,
+//! that monster (`attacks.rs`: infighting). They hear the player's shots
 //! ([`Actors::noise_alert`]).
 
 use glam::DVec2;
 
 use super::actions::sound;
-use super::movement::{opposite, Blocker, Ground, Mover, DIR_STEP, NO_DIR};
-use super::{ActorCtx, Actors};
-use crate::actors::{ActorFlag, Arg, StateId};
+use super::movement::{opposite, DIR_STEP, NO_DIR};
+use super::physics::{Blocked, FLOAT_SPEED};
+use super::{ActorCtx, Actors, Target};
+use crate::actors::{ActorFlag, Arg};
 use crate::play::events::{Event, Origin};
 use crate::play::player::{HEIGHT as PLAYER_HEIGHT, RADIUS as PLAYER_RADIUS};
-use crate::play::sight::{self, Body, Ray, Struck, MELEE_RANGE};
+use crate::play::sight::{self, Body, Ray, MELEE_RANGE};
 use crate::play::SHOT_RANGE;
 
 /// The player's index among bodies and blockers.
@@ -40,18 +41,18 @@ fn wrap(degrees: f64) -> f64 {
 
 /// A random byte difference as an angle: Doom's `(P_Random() - P_Random())
 /// << shift`, in degrees.
-fn spread(ctx: &mut ActorCtx, shift: u32) -> f64 {
+pub fn spread(ctx: &mut ActorCtx, shift: u32) -> f64 {
     let d = f64::from(ctx.rng.byte()) - f64::from(ctx.rng.byte());
     d * f64::from(1u32 << shift) * 360.0 / 4_294_967_296.0
 }
 
 impl Actors {
-    fn body(&self, n: usize) -> Body {
+    pub fn body(&self, n: usize) -> Body {
         let (a, def) = (&self.list[n], &self.table.actors[self.list[n].kind]);
         Body { pos: a.pos, z: a.z, height: def.height, radius: def.radius, index: n }
     }
 
-    fn sound_at(&self, n: usize, sound: Option<usize>, ctx: &mut ActorCtx) {
+    pub(super) fn sound_at(&self, n: usize, sound: Option<usize>, ctx: &mut ActorCtx) {
         let Some(s) = sound else { return };
         let name = crate::actors::sounds::doom()[s].name.as_str();
         let def = &self.table.actors[self.list[n].kind];
@@ -76,9 +77,64 @@ impl Actors {
         sounds.iter().position(|s| s.name == pick)
     }
 
-    fn sees_player(&self, n: usize, ctx: &mut ActorCtx) -> bool {
+    /// The body of `target`, alive or dead, while it is in play.
+    pub fn body_of(&self, target: Target, ctx: &ActorCtx) -> Option<Body> {
+        match target {
+            Target::None => None,
+            Target::Player => Some(player_body(ctx)),
+            Target::Actor(k) => (!self.list[k as usize].removed).then(|| self.body(k as usize)),
+        }
+    }
+
+    /// A floater chasing rises or sinks towards its target's middle
+    /// (Doom's P_ZMovement for MF_FLOAT), within its floor and ceiling.
+    fn float_towards_target(&mut self, n: usize, ctx: &ActorCtx) {
+        let a = &self.list[n];
+        if !a.flags.has(ActorFlag::Float) || a.skull_fly || a.in_float {
+            return;
+        }
+        let Some(t) = self.target_body(n, ctx) else { return };
+        let height = self.table.actors[a.kind].height;
+        let dist = approx_distance(t.pos - a.pos);
+        let delta = t.z + height / 2.0 - a.z;
+        let dz = if delta < 0.0 && dist < -(delta * 3.0) {
+            -FLOAT_SPEED
+        } else if delta > 0.0 && dist < delta * 3.0 {
+            FLOAT_SPEED
+        } else {
+            return;
+        };
+        let a = &mut self.list[n];
+        a.z = (a.z + dz).min(a.ceiling - height).max(a.floor);
+        self.dirty.push(n as u32);
+    }
+
+    /// The body of `target` if it is alive (a live player, a shootable actor).
+    pub fn live(&self, target: Target, ctx: &ActorCtx) -> Option<Body> {
+        match target {
+            Target::None => None,
+            Target::Player => (!ctx.player.dead()).then(|| player_body(ctx)),
+            Target::Actor(k) => {
+                let b = &self.list[k as usize];
+                (!b.removed && b.health > 0 && b.flags.has(ActorFlag::Shootable)).then(|| self.body(k as usize))
+            }
+        }
+    }
+
+    /// Actor `n`'s target, alive.
+    pub fn target_body(&self, n: usize, ctx: &ActorCtx) -> Option<Body> {
+        self.live(self.list[n].target, ctx)
+    }
+
+    /// Can actor `n` see `body`?
+    pub(super) fn sees(&self, n: usize, body: &Body, ctx: &mut ActorCtx) -> bool {
         let looker = self.body(n);
-        sight::sight(&ctx.level.compiled, ctx.sight, &looker, &player_body(ctx))
+        sight::sight(&ctx.level.compiled, ctx.sight, &looker, body)
+    }
+
+    /// Can actor `n` see its live target?
+    pub(super) fn sees_target(&self, n: usize, ctx: &mut ActorCtx) -> bool {
+        self.target_body(n, ctx).is_some_and(|t| self.sees(n, &t, ctx))
     }
 
     /// Doom's P_LookForPlayers: a live player in sight, in front (or all
@@ -95,27 +151,25 @@ impl Actors {
                 return false;
             }
         }
-        if !self.sees_player(n, ctx) {
+        if !self.sees(n, &player_body(ctx), ctx) {
             return false;
         }
-        self.list[n].target = true;
+        self.list[n].target = Target::Player;
         true
     }
 
     /// Doom's P_CheckMeleeRange.
-    fn in_melee_range(&self, n: usize, ctx: &mut ActorCtx) -> bool {
-        let a = &self.list[n];
-        if !a.target || ctx.player.dead() {
-            return false;
-        }
-        let reach = MELEE_RANGE - 20.0 + PLAYER_RADIUS;
-        approx_distance(ctx.player.pos - a.pos) < reach && self.sees_player(n, ctx)
+    pub(super) fn in_melee_range(&self, n: usize, ctx: &mut ActorCtx) -> bool {
+        let Some(t) = self.target_body(n, ctx) else { return false };
+        let reach = MELEE_RANGE - 20.0 + t.radius;
+        approx_distance(t.pos - self.list[n].pos) < reach && self.sees(n, &t, ctx)
     }
 
     /// Doom's P_CheckMissileRange: in sight, then a random draw against
     /// the distance (nearer is likelier), tuned per monster by flags.
     fn wants_to_shoot(&mut self, n: usize, ctx: &mut ActorCtx) -> bool {
-        if !self.sees_player(n, ctx) {
+        let Some(t) = self.target_body(n, ctx) else { return false };
+        if !self.sees(n, &t, ctx) {
             return false;
         }
         let a = &mut self.list[n];
@@ -126,7 +180,7 @@ impl Actors {
             return false;
         }
         let def = &self.table.actors[a.kind];
-        let mut dist = approx_distance(ctx.player.pos - a.pos) - 64.0;
+        let mut dist = approx_distance(t.pos - a.pos) - 64.0;
         if def.label("Melee").is_none() {
             dist -= 128.0;
         }
@@ -149,51 +203,30 @@ impl Actors {
         f64::from(ctx.rng.byte()) >= dist.floor()
     }
 
-    /// One step along `movedir` (Doom's P_Move): taken if the box fits there.
+    /// One step along `movedir` (Doom's P_Move): taken if the box fits
+    /// there; a floater at the wrong height for the opening rises or sinks
+    /// towards it instead.
     fn step(&mut self, n: usize, ctx: &mut ActorCtx) -> bool {
         let a = &self.list[n];
         if a.movedir == NO_DIR {
             return false;
         }
         let def = &self.table.actors[a.kind];
-        let to = a.pos + DIR_STEP[usize::from(a.movedir)] * def.speed;
-        let mover = Mover {
-            index: n,
-            radius: def.radius,
-            height: def.height,
-            z: a.z,
-            may_drop: def.has(ActorFlag::DropOff) || def.has(ActorFlag::Float),
-            no_clip: a.flags.has(ActorFlag::NoClip),
-        };
-        let blockers = self.blockers(ctx);
-        let ground = Ground { compiled: &ctx.level.compiled, blockmap: ctx.blockmap, blockers: &blockers };
-        let Some(o) = ground.try_move(ctx.query, &mover, to) else { return false };
-        let a = &mut self.list[n];
-        a.pos = to;
-        (a.sector, a.floor, a.ceiling) = (o.sector, o.floor, o.ceiling);
-        if !def.has(ActorFlag::Float) {
-            a.z = o.floor;
+        let to = a.pos + DIR_STEP[usize::from(a.movedir)] * def.speed(ctx.skill == 5);
+        match self.try_move(n, to, ctx) {
+            Ok(()) => {
+                self.list[n].in_float = false;
+                true
+            }
+            Err(Blocked::Float { floor }) => {
+                let a = &mut self.list[n];
+                a.z += if a.z < floor { FLOAT_SPEED } else { -FLOAT_SPEED };
+                a.in_float = true;
+                self.dirty.push(n as u32);
+                true
+            }
+            Err(_) => false,
         }
-        true
-    }
-
-    /// The boxes that block a step: solid actors still there, and the player.
-    fn blockers(&self, ctx: &ActorCtx) -> Vec<Blocker> {
-        let mut out: Vec<Blocker> = self
-            .list
-            .iter()
-            .enumerate()
-            .filter(|(_, a)| !a.removed && a.flags.has(ActorFlag::Solid))
-            .map(|(i, a)| {
-                let def = &self.table.actors[a.kind];
-                Blocker { pos: a.pos, radius: def.radius, z: a.z, top: a.z + def.height, index: i }
-            })
-            .collect();
-        if !ctx.player.dead() {
-            let p = &ctx.player;
-            out.push(Blocker { pos: p.pos, radius: PLAYER_RADIUS, z: p.z, top: p.z + PLAYER_HEIGHT, index: PLAYER });
-        }
-        out
     }
 
     /// Sets off in `dir` for a few steps, if a first step that way works
@@ -214,7 +247,11 @@ impl Actors {
     fn new_chase_dir(&mut self, n: usize, ctx: &mut ActorCtx) {
         let (old, from) = (self.list[n].movedir, self.list[n].pos);
         let back = opposite(old);
-        let delta = ctx.player.pos - from;
+        let Some(t) = self.target_body(n, ctx) else {
+            self.list[n].movedir = NO_DIR;
+            return;
+        };
+        let delta = t.pos - from;
         let mut d = [
             if delta.x > 10.0 {
                 0
@@ -271,48 +308,23 @@ impl Actors {
         self.list[n].movedir = NO_DIR;
     }
 
-    /// Fires one bullet at the player (Doom's P_LineAttack from a monster):
-    /// aimed up or down at it, turned by `spread`, hurting it if it hits; a
-    /// puff where it hits a wall.
+    /// Fires one bullet (Doom's P_LineAttack from a monster): aimed up or
+    /// down at what it faces, turned by `angle`, hurting what it hits
+    /// (its target or another in the way); a puff where it hits a wall.
     fn bullet(&mut self, n: usize, angle: f64, damage: i32, ctx: &mut ActorCtx) {
         let a = &self.list[n];
         let def = &self.table.actors[a.kind];
         let z = a.z + def.height / 2.0 + 8.0;
-        let bodies = if ctx.player.dead() { Vec::new() } else { vec![player_body(ctx)] };
         let aim = Ray { origin: a.pos, z, angle: a.angle, range: SHOT_RANGE, shooter: Some(n) };
-        let slope = sight::aim_slope(&ctx.level.compiled, ctx.sight, &aim, &bodies).map_or(0.0, |aimed| aimed.slope);
-        let ray = Ray { angle, ..aim };
-        let Some(hit) = sight::hitscan(&ctx.level.compiled, ctx.sight, &ray, slope, &bodies) else { return };
-        match hit.struck {
-            Struck::Body { index: PLAYER } => hurt_player(damage, ctx),
-            Struck::Wall { .. } => {
-                if let (Some(p), Some(puff)) = (hit.puff, self.table.index("bullet_puff")) {
-                    if let Some(k) = self.spawn(puff, p.truncate(), p.z, 0.0, ctx) {
-                        // Doom's P_SpawnPuff: a random head start, at least a tick left.
-                        let a = &mut self.list[k];
-                        a.tics = (a.tics - i32::from(ctx.rng.byte() & 3)).max(1);
-                    }
-                }
-            }
-            _ => {}
-        }
+        let (slope, _) = self.aim(&aim, ctx);
+        self.line_attack(Target::Actor(n as u32), &Ray { angle, ..aim }, slope, damage, ctx);
     }
 }
 
 /// The player as sight and shots see it.
-fn player_body(ctx: &ActorCtx) -> Body {
+pub fn player_body(ctx: &ActorCtx) -> Body {
     let p = &ctx.player;
     Body { pos: p.pos, z: p.z, height: PLAYER_HEIGHT, radius: PLAYER_RADIUS, index: PLAYER }
-}
-
-/// The player takes `damage` (armour comes with pickups).
-fn hurt_player(damage: i32, ctx: &mut ActorCtx) {
-    if ctx.player.dead() {
-        return;
-    }
-    ctx.player.hurt(damage);
-    let cry = if ctx.player.dead() { "pldeth" } else { "plpain" };
-    ctx.events.push(Event::Sound { sound: cry, origin: Origin::Player });
 }
 
 /// A_Look: wait for the player to be heard in the monster's sector (an
@@ -321,8 +333,8 @@ fn hurt_player(damage: i32, ctx: &mut ActorCtx) {
 pub fn look(actors: &mut Actors, n: usize, _: &[Arg], ctx: &mut ActorCtx) {
     let a = &actors.list[n];
     let heard = actors.heard.get(a.sector).copied().unwrap_or(false) && !ctx.player.dead();
-    let woken = if heard && (!a.flags.has(ActorFlag::Ambush) || actors.sees_player(n, ctx)) {
-        actors.list[n].target = true;
+    let woken = if heard && (!a.flags.has(ActorFlag::Ambush) || actors.sees(n, &player_body(ctx), ctx)) {
+        actors.list[n].target = Target::Player;
         true
     } else {
         actors.look_for_player(n, false, ctx)
@@ -358,16 +370,20 @@ pub fn chase(actors: &mut Actors, n: usize, _: &[Arg], ctx: &mut ActorCtx) {
         };
         a.angle = turned.rem_euclid(360.0);
     }
+    if a.threshold > 0 {
+        a.threshold -= 1;
+    }
     let def = &actors.table.actors[a.kind];
     let (spawn, melee, missile, attack_sound, active) =
         (def.label("Spawn"), def.label("Melee"), def.label("Missile"), def.sounds.attack, def.sounds.active);
-    if !a.target || ctx.player.dead() {
-        a.target = false;
+    if actors.target_body(n, ctx).is_none() {
+        actors.list[n].target = Target::None;
         if !actors.look_for_player(n, true, ctx) {
             actors.set_state(n, spawn, ctx);
         }
         return;
     }
+    let a = &mut actors.list[n];
     let nightmare = ctx.skill == 5;
     if std::mem::take(&mut a.just_attacked) {
         if !nightmare {
@@ -390,6 +406,7 @@ pub fn chase(actors: &mut Actors, n: usize, _: &[Arg], ctx: &mut ActorCtx) {
     if actors.list[n].movecount < 0 || !actors.step(n, ctx) {
         actors.new_chase_dir(n, ctx);
     }
+    actors.float_towards_target(n, ctx);
     if active.is_some() && ctx.rng.byte() < 3 {
         actors.sound_at(n, active, ctx);
     }
@@ -397,13 +414,22 @@ pub fn chase(actors: &mut Actors, n: usize, _: &[Arg], ctx: &mut ActorCtx) {
 
 /// A_FaceTarget: turn to the player (off by a little if it is unseen).
 pub fn face_target(actors: &mut Actors, n: usize, _: &[Arg], ctx: &mut ActorCtx) {
+    let Some(t) = actors.body_of(actors.list[n].target, ctx) else { return };
+    let shadow = match actors.list[n].target {
+        Target::Actor(k) => actors.list[k as usize].flags.has(ActorFlag::Shadow),
+        Target::Player => ctx.player.powers[crate::play::pickups::power_slot(crate::actors::Power::Invisibility)] > 0,
+        Target::None => false,
+    };
     let a = &mut actors.list[n];
-    if !a.target {
-        return;
-    }
     a.flags.set(ActorFlag::Ambush, false);
-    let d = ctx.player.pos - a.pos;
+    let d = t.pos - a.pos;
     a.angle = d.y.atan2(d.x).to_degrees().rem_euclid(360.0);
+    if shadow {
+        let turn = spread(ctx, 21);
+        let a = &mut actors.list[n];
+        a.angle = (a.angle + turn).rem_euclid(360.0);
+    }
+    actors.dirty.push(n as u32);
 }
 
 pub fn pain(actors: &mut Actors, n: usize, _: &[Arg], ctx: &mut ActorCtx) {
@@ -436,7 +462,7 @@ pub fn play_sound(actors: &mut Actors, n: usize, args: &[Arg], ctx: &mut ActorCt
 /// then `bullets` shots each turned by Doom's spread and doing 3 to 15
 /// damage.
 fn volley(actors: &mut Actors, n: usize, ctx: &mut ActorCtx, sound: &str, bullets: usize) {
-    if !actors.list[n].target {
+    if actors.target_body(n, ctx).is_none() {
         return;
     }
     face_target(actors, n, &[], ctx);
@@ -470,7 +496,7 @@ pub fn cpos_refire(actors: &mut Actors, n: usize, args: &[Arg], ctx: &mut ActorC
     if ctx.rng.byte() < 40 {
         return;
     }
-    if !actors.list[n].target || ctx.player.dead() || !actors.sees_player(n, ctx) {
+    if !actors.sees_target(n, ctx) {
         let see = actors.table.actors[actors.list[n].kind].label("See");
         actors.set_state(n, see, ctx);
     }
@@ -478,79 +504,13 @@ pub fn cpos_refire(actors: &mut Actors, n: usize, args: &[Arg], ctx: &mut ActorC
 
 /// The demon's bite: 4 to 40 damage in melee range.
 pub fn sarg_attack(actors: &mut Actors, n: usize, args: &[Arg], ctx: &mut ActorCtx) {
-    if !actors.list[n].target {
+    if actors.target_body(n, ctx).is_none() {
         return;
     }
     face_target(actors, n, args, ctx);
     if actors.in_melee_range(n, ctx) {
         let damage = (i32::from(ctx.rng.byte()) % 10 + 1) * 4;
-        hurt_player(damage, ctx);
-    }
-}
-
-impl Actors {
-    /// The bodies shots can hit: shootable actors still there.
-    pub fn shootable(&self) -> Vec<Body> {
-        (0..self.list.len())
-            .filter(|&n| !self.list[n].removed && self.list[n].flags.has(ActorFlag::Shootable))
-            .map(|n| self.body(n))
-            .collect()
-    }
-
-    /// Actor `n` takes `damage` from the player (Doom's P_DamageMobj): it
-    /// dies at 0 health (gibbed below minus its spawn health, when it has
-    /// the frames), or may flinch by its pain chance, and in any case turns
-    /// on the player.
-    pub fn damage(&mut self, n: usize, damage: i32, ctx: &mut ActorCtx) {
-        let a = &mut self.list[n];
-        if a.removed || !a.flags.has(ActorFlag::Shootable) {
-            return;
-        }
-        a.health -= damage;
-        let def = &self.table.actors[a.kind];
-        if a.health <= 0 {
-            self.kill(n, ctx);
-            return;
-        }
-        let (pain, see, spawn) = (def.label("Pain"), def.label("See"), def.label("Spawn"));
-        let chance = def.pain_chance;
-        a.reaction_time = 0;
-        a.target = true;
-        if i32::from(ctx.rng.byte()) < chance && pain.is_some() {
-            a.just_hit = true;
-            self.set_state(n, pain, ctx);
-        } else if see.is_some() && self.list[n].state == spawn.unwrap_or(StateId(u32::MAX)) {
-            self.set_state(n, see, ctx);
-        }
-    }
-
-    /// Actor `n` dies (Doom's P_KillMobj): no longer shootable, a corpse,
-    /// counted, its death (or gibbing) frames, and what it drops.
-    fn kill(&mut self, n: usize, ctx: &mut ActorCtx) {
-        let a = &mut self.list[n];
-        let def = &self.table.actors[a.kind];
-        a.flags.set(ActorFlag::Shootable, false);
-        a.flags.set(ActorFlag::Float, false);
-        a.flags.set(ActorFlag::Corpse, true);
-        a.target = false;
-        if def.has(ActorFlag::CountKill) {
-            *ctx.kills += 1;
-        }
-        let gib = def.label("XDeath").filter(|_| a.health < -def.health);
-        let death = gib.or(def.label("Death"));
-        let (pos, angle, drop) = (a.pos, a.angle, def.drop);
-        self.set_state(n, death, ctx);
-        let a = &mut self.list[n];
-        if !a.removed && a.tics > 0 {
-            // Doom's random head start, so a row of deaths falls out of step.
-            a.tics = (a.tics - i32::from(ctx.rng.byte() & 3)).max(1);
-        }
-        if let Some(item) = drop {
-            let z = ctx.level.compiled.map.sectors[ctx.level.compiled.sector_at(pos)].floor;
-            if let Some(k) = self.spawn(item, pos, z, angle, ctx) {
-                self.list[k].flags.set(ActorFlag::Dropped, true);
-            }
-        }
+        actors.hurt(actors.list[n].target, damage, Some(n), Target::Actor(n as u32), ctx);
     }
 }
 

@@ -7,7 +7,8 @@
 //!   than a 24-unit step above the feet;
 //! - the box would hang over a drop of more than 24 units (unless the actor
 //!   may drop off or floats);
-//! - a solid actor's box overlaps it (and the player's).
+//! - a solid actor's box overlaps it, or the player's (`physics.rs`
+//!   asks the grid of actors).
 //!
 //! Boxes are squares of side `2 radius`, axis aligned, as Doom's; a line
 //! touches a box when it crosses its interior (a line along an edge does
@@ -46,18 +47,6 @@ pub fn opposite(dir: u8) -> u8 {
     }
 }
 
-/// A box that blocks others: a solid actor or the player.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Blocker {
-    pub pos: DVec2,
-    pub radius: f64,
-    /// Its feet and top.
-    pub z: f64,
-    pub top: f64,
-    /// The caller's name for it (an actor's index, or `usize::MAX` for the player).
-    pub index: usize,
-}
-
 /// What the area under a box allows.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Opening {
@@ -66,12 +55,14 @@ pub struct Opening {
     pub floor: f64,
     pub ceiling: f64,
     pub dropoff: f64,
+    /// The sector whose ceiling is the lowest (a missile that hits it is
+    /// gone without a blast if it is sky: Doom's `ceilingline`).
+    pub ceiling_sector: usize,
 }
 
 /// A body asking to move.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Mover {
-    pub index: usize,
     pub radius: f64,
     pub height: f64,
     pub z: f64,
@@ -79,23 +70,35 @@ pub struct Mover {
     pub may_drop: bool,
     /// Passes through bodies and lines (Doom's MF_NOCLIP).
     pub no_clip: bool,
+    /// A missile: lines that block walkers (impassable, monster-blocking)
+    /// let it through; it must fit the opening at its own height.
+    pub missile: bool,
 }
 
-/// The map as movement sees it.
+/// Why a move was refused.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Refusal {
+    /// A line the box touches is a wall to it.
+    Line(usize),
+    /// The opening there does not fit (too low, a step too high, a drop).
+    Fit(Opening),
+}
+
+/// The map's lines as movement sees them.
 pub struct Ground<'a> {
     pub compiled: &'a CompiledMap,
     pub blockmap: &'a Blockmap,
-    pub blockers: &'a [Blocker],
 }
 
 impl Ground<'_> {
-    /// The opening under a box of `radius` at `p`, or `None` if a line
-    /// the box touches blocks it outright.
-    pub fn opening(&self, query: &mut LineQuery, p: DVec2, radius: f64) -> Option<Opening> {
+    /// The opening under a box of `radius` at `p`, or the line that blocks
+    /// it outright (one-sided; impassable or blocking monsters, unless
+    /// `missile`).
+    pub fn opening(&self, query: &mut LineQuery, p: DVec2, radius: f64, missile: bool) -> Result<Opening, usize> {
         let map = &self.compiled.map;
         let sector = self.compiled.sector_at(p);
         let s = &map.sectors[sector];
-        let mut o = Opening { sector, floor: s.floor, ceiling: s.ceiling, dropoff: s.floor };
+        let mut o = Opening { sector, floor: s.floor, ceiling: s.ceiling, dropoff: s.floor, ceiling_sector: sector };
         let r = DVec2::splat(radius);
         let (min, max) = (p - r, p + r);
         for &i in query.run(self.blockmap, map.lines.len(), min, max) {
@@ -104,34 +107,37 @@ impl Ground<'_> {
             if !crosses_box(a, b, min, max) {
                 continue;
             }
-            let Some(back) = &line.back else { return None };
-            if line.flags.impassable || line.flags.block_monsters {
-                return None;
+            let Some(back) = &line.back else { return Err(i as usize) };
+            if !missile && (line.flags.impassable || line.flags.block_monsters) {
+                return Err(i as usize);
             }
             let (f, k) = (&map.sectors[line.front.sector], &map.sectors[back.sector]);
             o.floor = o.floor.max(f.floor.max(k.floor));
-            o.ceiling = o.ceiling.min(f.ceiling.min(k.ceiling));
+            let low = if f.ceiling <= k.ceiling { line.front.sector } else { back.sector };
+            if map.sectors[low].ceiling < o.ceiling {
+                (o.ceiling, o.ceiling_sector) = (map.sectors[low].ceiling, low);
+            }
             o.dropoff = o.dropoff.min(f.floor.min(k.floor));
         }
-        Some(o)
+        Ok(o)
     }
 
-    /// Where `mover` would stand at `to`, if it may step there.
-    pub fn try_move(&self, query: &mut LineQuery, mover: &Mover, to: DVec2) -> Option<Opening> {
+    /// Where `mover` would stand at `to`, if the lines let it (Doom's
+    /// P_TryMove without the things: the caller checks those).
+    pub fn try_move(&self, query: &mut LineQuery, mover: &Mover, to: DVec2) -> Result<Opening, Refusal> {
         if mover.no_clip {
-            return self.opening(query, to, 0.0);
+            return self.opening(query, to, 0.0, true).map_err(Refusal::Line);
         }
-        let o = self.opening(query, to, mover.radius)?;
+        let o = self.opening(query, to, mover.radius, mover.missile).map_err(Refusal::Line)?;
         let fits = o.ceiling - o.floor >= mover.height
             && o.ceiling - mover.z >= mover.height
             && o.floor - mover.z <= MAX_STEP
-            && (mover.may_drop || o.floor - o.dropoff <= MAX_STEP);
-        let blocked = self.blockers.iter().any(|b| {
-            b.index != mover.index
-                && (b.pos.x - to.x).abs() < b.radius + mover.radius
-                && (b.pos.y - to.y).abs() < b.radius + mover.radius
-        });
-        (fits && !blocked).then_some(o)
+            && (mover.missile || mover.may_drop || o.floor - o.dropoff <= MAX_STEP);
+        if fits {
+            Ok(o)
+        } else {
+            Err(Refusal::Fit(o))
+        }
     }
 }
 

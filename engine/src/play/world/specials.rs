@@ -60,6 +60,13 @@ pub fn activate(
     started
 }
 
+/// Does `action` to the sectors tagged `tag`, as if a line had (a boss's
+/// death: Doom's A_BossDeath, A_KeenDie). Returns whether anything started.
+pub fn perform_tagged(world: &mut World, ctx: &mut Ctx, action: Action, tag: u16) -> bool {
+    let special = LineSpecial { on: Activation::Walk, repeat: true, by: Default::default(), tag, action };
+    perform(world, ctx, SpecialLine::Trigger(usize::MAX), &special, true)
+}
+
 /// Carries out `special`'s action. Returns whether anything started.
 fn perform(world: &mut World, ctx: &mut Ctx, line: SpecialLine, special: &LineSpecial, from_front: bool) -> bool {
     let sectors = target_sectors(ctx.level, line, special);

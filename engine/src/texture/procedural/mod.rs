@@ -41,6 +41,9 @@ const SPRITES: &[&str] = &[
     "RSKUA0", "BAR1A0", "COLUA0",
 ];
 
+/// The built-in weapon: the pistol's frames and flash (`sprites::pistol`).
+const SCREENS: &[&str] = &["PISGA0", "PISGB0", "PISGC0", "PISFA0"];
+
 /// The trooper's frames (`sprites::trooper`): the zombieman's sprite
 /// names, A-G from eight directions and H-U from all sides alike.
 fn trooper_names() -> &'static [&'static str] {
@@ -59,6 +62,7 @@ pub fn names(kind: TextureKind) -> &'static [&'static str] {
         TextureKind::Wall => WALLS,
         TextureKind::Flat => FLATS,
         TextureKind::Sprite => SPRITES,
+        TextureKind::Screen => SCREENS,
     }
 }
 
@@ -116,6 +120,7 @@ pub fn generate(name: &str, kind: TextureKind) -> Option<Texture> {
         "BSKUA0" | "YSKUA0" | "RSKUA0" => machinery::skull(name),
         "BAR1A0" => sprites::barrel(paint::seed_of("BARREL")),
         "COLUA0" => sprites::lamp(paint::seed_of("LAMP")),
+        "PISGA0" | "PISGB0" | "PISGC0" | "PISFA0" => sprites::pistol(name)?,
         other => sprites::trooper(other).unwrap_or_else(|| unreachable!("{other} is listed but has no painter")),
     })
 }

@@ -405,3 +405,48 @@ pub fn trooper(name: &str) -> Option<Texture> {
     }
     Some(paint(w, h, shapes))
 }
+
+/// The built-in pistol on the screen (`PISGA0` at rest, `PISGB0` kicked
+/// up, `PISGC0` coming down, `PISFA0` its muzzle flash), framed as
+/// [`crate::texture::TextureKind::Screen`] pictures: a 200 by 200 canvas
+/// whose top-left is the screen's with the weapon at rest. A dark slide and
+/// barrel pointing up the middle of the screen, held in a gloved hand.
+pub fn pistol(name: &str) -> Option<Texture> {
+    let kick = match name {
+        "PISGA0" => 0.0,
+        "PISGB0" => -10.0,
+        "PISGC0" => -5.0,
+        "PISFA0" => return Some(pistol_flash()),
+        _ => return None,
+    };
+    let (w, h) = (200usize, 200usize);
+    let steel = hex(0x50545a);
+    let glove = hex(0x5a3a22);
+    let cx = 161.0f32;
+    let top = 146.0 + kick;
+    let shapes: Vec<Shape> = vec![
+        // The grip and the hand around it.
+        Box::new(move |x, y| {
+            let inside = inside_box(x, y, cx - 16.0, cx + 16.0, top + 30.0, 200.0);
+            inside.then(|| scale(glove, 0.7 + 0.3 * cylinder(x, cx, 16.0)))
+        }),
+        // The slide: lit along its ridge.
+        Box::new(move |x, y| {
+            inside_box(x, y, cx - 8.0, cx + 8.0, top, top + 40.0)
+                .then(|| scale(steel, 0.6 + 0.6 * cylinder(x, cx, 8.0)))
+        }),
+        // The sight on top.
+        Box::new(move |x, y| inside_box(x, y, cx - 2.0, cx + 2.0, top - 4.0, top).then(|| hex(0x202020))),
+    ];
+    Some(paint(w, h, shapes))
+}
+
+/// The pistol's flash: a yellow-white burst above the muzzle.
+fn pistol_flash() -> Texture {
+    let (cx, cy) = (161.0f32, 128.0f32);
+    let shapes: Vec<Shape> = vec![Box::new(move |x, y| {
+        let d = ((x - cx).powi(2) + ((y - cy) * 1.4).powi(2)).sqrt();
+        (d < 14.0).then(|| mix(hex(0xfff6c0), hex(0xff8a10), smoothstep(0.0, 14.0, d)))
+    })];
+    paint(200, 150, shapes)
+}

@@ -1,0 +1,49 @@
+//! What is drawn over the rendered view, in screen space: the weapon in
+//! hand (Doom's player sprites), the palette flashes as tints, and the
+//! status bar or the minimal full-screen HUD. The renderers draw the world;
+//! [`draw`] finishes a frame of play the same way for the window, `replay`
+//! captures and the golden-frame tests.
+//!
+//! Screen positions are Doom's 320x200, scaled by the frame's height and
+//! centred across its width (a wide frame has margins beside the weapon,
+//! not a stretched one).
+
+pub mod status;
+pub mod text;
+pub mod tint;
+pub mod weapon;
+
+use crate::framebuffer::Framebuffer;
+use crate::level::Level;
+use crate::play::Player;
+
+/// How the bottom of the screen shows the player's state.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Hud {
+    /// Doom's status bar across the bottom (32 of 200 rows).
+    #[default]
+    StatusBar,
+    /// Figures in the corners over the full view.
+    Minimal,
+    /// Nothing (captures of the world alone).
+    Off,
+}
+
+/// Draws the weapon, the tints and the HUD of `player` over a rendered view of `level`.
+pub fn draw(fb: &mut Framebuffer, level: &Level, player: &Player, hud: Hud) {
+    tint::apply(fb, player);
+    weapon::draw(fb, level, player, hud == Hud::StatusBar);
+    match hud {
+        Hud::StatusBar => status::status_bar(fb, level, player),
+        Hud::Minimal => status::minimal(fb, level, player),
+        Hud::Off => {}
+    }
+}
+
+/// Doom's screen scale for `fb`: pixels per 320x200 unit, and the left
+/// margin that centres the 320 units.
+pub fn scale(fb: &Framebuffer) -> (f64, f64) {
+    let s = fb.height as f64 / 200.0;
+    let margin = ((fb.width as f64 - 320.0 * s) / 2.0).max(0.0);
+    (s.min(fb.width as f64 / 320.0).max(1e-9), margin)
+}
