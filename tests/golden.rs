@@ -53,3 +53,52 @@ fn frames_match_golden_images() {
     }
     assert!(failures.is_empty(), "golden frames changed:\n{}", failures.join("\n"));
 }
+
+/// A frame of play with no Freedoom: `tests/maps/monsters.ron` with its
+/// trooper in view (the procedural sprite), the procedural pistol raised and
+/// firing (its flash), and the status bar; then the minimal HUD with a
+/// pickup's gold tint. Compared as the frames above.
+#[test]
+fn play_frames_with_the_status_bar_and_a_weapon_match_golden_images() {
+    use sightline::play::{Game, TickInput};
+    use sightline::screen::{draw, Hud};
+    let bless = std::env::var_os("SIGHTLINE_BLESS").is_some();
+    let mut g = Game::new(load(&root().join("tests/maps/monsters.ron"))).unwrap();
+    g.player_mut().health = 1_000_000;
+    g.teleport(glam::DVec2::new(700.0, 256.0), 0.0).unwrap();
+    for _ in 0..20 {
+        g.tick(&TickInput::default());
+    }
+    let mut frames = Vec::new();
+    for (name, hud, fire) in
+        [("play-status", Hud::StatusBar, 0), ("play-firing", Hud::StatusBar, 5), ("play-minimal", Hud::Minimal, 0)]
+    {
+        for _ in 0..fire {
+            g.tick(&TickInput { fire: true, ..TickInput::default() });
+        }
+        if hud == Hud::Minimal {
+            g.player_mut().health = 75;
+            g.player_mut().bonus_count = 6;
+        }
+        g.player_mut().health = g.player().health.min(100);
+        let mut frame = render(g.level(), &g.view(1.0), SIZE, Renderer::Bsp, Shade::Textured);
+        draw(&mut frame, g.level(), g.player(), hud);
+        frames.push((name, frame));
+    }
+    let dir = root().join("tests/images");
+    for (name, frame) in frames {
+        let file = dir.join(format!("{name}.png"));
+        if bless {
+            std::fs::write(&file, frame.to_png()).unwrap();
+            continue;
+        }
+        let golden = Framebuffer::read_png(&file)
+            .unwrap_or_else(|e| panic!("missing golden image ({e}); create it with SIGHTLINE_BLESS=1 and look at it"));
+        let diff = difference(&frame, &golden);
+        let out = std::env::temp_dir().join(format!("golden-{name}.png"));
+        if diff.pixels != 0 {
+            std::fs::write(&out, frame.to_png()).unwrap();
+        }
+        assert_eq!(diff.pixels, 0, "{}: frame changed (got {})", file.display(), out.display());
+    }
+}

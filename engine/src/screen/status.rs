@@ -51,9 +51,11 @@ impl Layout {
     fn text(&self, units: f64) -> usize {
         ((units * self.s / GLYPH as f64).round() as usize).max(1)
     }
-    /// `text` centred in the box `u0..u1` at row `v`, glyphs `units` high.
+    /// `text` centred in the box `u0..u1` at row `v`, glyphs `units` high
+    /// (smaller if it would not fit the box's width).
     fn centred(&self, fb: &mut Framebuffer, u0: f64, u1: f64, v: f64, units: f64, text: &str, colour: u32) {
-        let k = self.text(units);
+        let room = self.x(u1).saturating_sub(self.x(u0)) / (text.len().max(1) * GLYPH);
+        let k = self.text(units).min(room.max(1));
         let width = text.len() * GLYPH * k;
         let mid = (self.x(u0) + self.x(u1)) / 2;
         draw_text_in(fb, mid.saturating_sub(width / 2), self.y(v), k, text, colour);
@@ -77,7 +79,7 @@ pub fn status_bar(fb: &mut Framebuffer, _level: &Level, player: &Player) {
         l.centred(fb, 0.0, 48.0, 5.0, 16.0, &ammo.to_string(), RED);
     }
     l.centred(fb, 0.0, 48.0, 23.0, 6.0, "AMMO", GREY);
-    l.centred(fb, 48.0, 104.0, 5.0, 16.0, &format!("{}%", player.health.max(0)), RED);
+    l.centred(fb, 48.0, 104.0, 5.0, 16.0, &format!("{}%", player.health.clamp(0, 999)), RED);
     l.centred(fb, 48.0, 104.0, 23.0, 6.0, "HEALTH", GREY);
     // Arms: 2 3 4 / 5 6 7, lit when a weapon of that slot is owned.
     let table = ActorTable::doom();
@@ -100,11 +102,10 @@ pub fn status_bar(fb: &mut Framebuffer, _level: &Level, player: &Player) {
             key_box(fb, l.x(239.0), l.y(v), l.len(8.0), key.colour, key.form);
         }
     }
-    let names = ["BULL", "SHEL", "RCKT", "CELL"];
-    for (k, name) in names.iter().enumerate() {
-        let text = format!("{name} {:>3}/{:<3}", player.ammo[k], player.max_ammo[k]);
-        let kk = l.text(6.0);
-        draw_text_in(fb, l.x(252.0), l.y(3.0 + 7.0 * k as f64), kk, &text, GOLD);
+    // Bullets, shells, rockets, cells: what is carried of the limit.
+    for k in 0..4 {
+        let text = format!("{:>3}/{:<3}", player.ammo[k].clamp(0, 999), player.max_ammo[k].clamp(0, 999));
+        l.centred(fb, 250.0, 320.0, 0.5 + 7.75 * k as f64, 7.0, &text, GOLD);
     }
 }
 
@@ -143,7 +144,7 @@ pub fn minimal(fb: &mut Framebuffer, _level: &Level, player: &Player) {
     let (s, margin) = scale(fb);
     let l = Layout { s, margin, top: fb.height as f64 - 20.0 * s };
     let k = l.text(10.0);
-    let left = format!("{}% {}%", player.health.max(0), player.armor);
+    let left = format!("{}% {}%", player.health.clamp(0, 999), player.armor);
     draw_text_in(fb, l.x(4.0), l.y(4.0), k, &left, RED);
     if let Some((ammo, _)) = current_ammo(player) {
         let text = ammo.to_string();
