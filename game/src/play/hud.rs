@@ -75,6 +75,9 @@ impl Hud {
     /// The game's messages under the figures, and how to restart when dead
     /// (health, armour, ammunition and keys are on the status bar).
     pub fn draw_status(&self, fb: &mut Framebuffer, player: &Player) {
+        if !self.visible {
+            return;
+        }
         let scale = text_scale(fb);
         let line = (GLYPH + 2) * scale;
         let mut y = scale * 4 + 2 * line;
