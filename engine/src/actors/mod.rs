@@ -213,6 +213,11 @@ pub enum AmmoKind {
 
 impl AmmoKind {
     pub const ALL: [AmmoKind; 4] = [AmmoKind::Bullets, AmmoKind::Shells, AmmoKind::Rockets, AmmoKind::Cells];
+
+    /// Its place in [`Self::ALL`] (and in the player's ammunition arrays).
+    pub fn index(self) -> usize {
+        self as usize
+    }
 }
 
 /// Doom's power-ups.

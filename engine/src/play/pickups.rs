@@ -32,7 +32,7 @@ pub fn power_slot(power: Power) -> usize {
 }
 
 fn ammo_slot(kind: AmmoKind) -> usize {
-    AmmoKind::ALL.iter().position(|&k| k == kind).unwrap_or(0)
+    kind.index()
 }
 
 /// Gives what `pickup` gives; whether anything was taken. `dropped`: a

@@ -20,7 +20,7 @@ use super::player::{Player, FLASH_LAYER, WEAPON_LAYER};
 use super::sight::{Ray, MELEE_RANGE};
 use super::SHOT_RANGE;
 use crate::actors::actions::REGISTRY;
-use crate::actors::{AmmoKind, Arg, Power, StateId};
+use crate::actors::{ActorTable, Arg, Power, StateId};
 use crate::play::events::{Event, Origin};
 use crate::play::pickups::power_slot;
 
@@ -183,15 +183,15 @@ fn label(actors: &Actors, ctx: &ActorCtx, name: &str) -> Option<StateId> {
     actors.table.actors[ctx.player.ready_weapon?].label(name)
 }
 
-/// The ammunition the weapon in hand uses, and how much a shot takes.
-fn ammo_of(actors: &Actors, weapon: usize) -> Option<(usize, i32)> {
-    let w = actors.table.actors[weapon].weapon.as_ref()?;
-    let kind = w.ammo?;
-    Some((AmmoKind::ALL.iter().position(|&k| k == kind)?, w.ammo_use.max(1)))
+/// The ammunition `weapon` uses (its index in the player's arrays), and
+/// how much a shot takes.
+pub fn ammo_of(table: &ActorTable, weapon: usize) -> Option<(usize, i32)> {
+    let w = table.actors.get(weapon)?.weapon.as_ref()?;
+    Some((w.ammo?.index(), w.ammo_use.max(1)))
 }
 
 fn use_ammo(actors: &Actors, ctx: &mut ActorCtx) {
-    if let Some((k, n)) = ctx.player.ready_weapon.and_then(|w| ammo_of(actors, w)) {
+    if let Some((k, n)) = ctx.player.ready_weapon.and_then(|w| ammo_of(&actors.table, w)) {
         ctx.player.ammo[k] = (ctx.player.ammo[k] - n).max(0);
     }
 }
@@ -202,7 +202,7 @@ fn use_ammo(actors: &Actors, ctx: &mut ActorCtx) {
 /// goes down.
 fn check_ammo(actors: &mut Actors, ctx: &mut ActorCtx) -> bool {
     let Some(ready) = ctx.player.ready_weapon else { return false };
-    let enough = |w: usize, p: &Player| ammo_of(actors, w).is_none_or(|(k, n)| p.ammo[k] >= n);
+    let enough = |w: usize, p: &Player| ammo_of(&actors.table, w).is_none_or(|(k, n)| p.ammo[k] >= n);
     if enough(ready, ctx.player) {
         return true;
     }

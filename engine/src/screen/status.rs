@@ -9,7 +9,7 @@
 
 use super::scale;
 use super::text::{draw_text_in, fill_rect, GLYPH};
-use crate::actors::{ActorTable, AmmoKind, KeyForm};
+use crate::actors::{ActorTable, KeyForm};
 use crate::framebuffer::{rgb, Framebuffer};
 use crate::level::Level;
 use crate::map::special::KeyColour;
@@ -24,9 +24,7 @@ const GREY: u32 = rgb(150, 150, 150);
 
 /// The ammunition of the weapon in hand, if it uses any.
 fn current_ammo(player: &Player) -> Option<(i32, i32)> {
-    let table = ActorTable::doom();
-    let kind = table.actors.get(player.ready_weapon?)?.weapon.as_ref()?.ammo?;
-    let k = AmmoKind::ALL.iter().position(|&a| a == kind)?;
+    let (k, _) = crate::play::weapons::ammo_of(ActorTable::doom(), player.ready_weapon?)?;
     Some((player.ammo[k], player.max_ammo[k]))
 }
 

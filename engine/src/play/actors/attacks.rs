@@ -49,6 +49,20 @@ impl Actors {
     /// `inflictor` (an actor: a missile, a shooter), charged to `source`.
     pub fn hurt(&mut self, target: Target, damage: i32, inflictor: Option<usize>, source: Target, ctx: &mut ActorCtx) {
         let from = inflictor.filter(|&i| !self.list[i].removed).map(|i| (self.list[i].pos, self.list[i].z));
+        self.hurt_from(target, damage, from, source, ctx);
+    }
+
+    /// [`Actors::hurt`] pushed away from a place (`from`: its position
+    /// and height) rather than an actor: the player's shots come from the
+    /// player, who is not one.
+    fn hurt_from(
+        &mut self,
+        target: Target,
+        damage: i32,
+        from: Option<(DVec2, f64)>,
+        source: Target,
+        ctx: &mut ActorCtx,
+    ) {
         match target {
             Target::None => {}
             Target::Player => self.hurt_player(damage, from, ctx),
@@ -114,7 +128,7 @@ impl Actors {
         let a = &mut self.list[n];
         a.health -= damage;
         if a.health <= 0 {
-            self.kill(n, source, ctx);
+            self.kill(n, ctx);
             return;
         }
         let (pain, see, spawn) = (def.label("Pain"), def.label("See"), def.label("Spawn"));
@@ -151,7 +165,7 @@ impl Actors {
     /// Actor `n` dies (Doom's P_KillMobj): no longer shootable, a corpse,
     /// counted if the player or anyone killed it, its death (or gibbing)
     /// frames, and what it drops.
-    pub fn kill(&mut self, n: usize, _source: Target, ctx: &mut ActorCtx) {
+    pub fn kill(&mut self, n: usize, ctx: &mut ActorCtx) {
         let a = &mut self.list[n];
         let def = &self.table.actors[a.kind];
         a.flags.set(ActorFlag::Shootable, false);
@@ -245,10 +259,8 @@ impl Actors {
             ctx.shots.push((ray.origin, ray.origin + (ray.end() - ray.origin) * reach));
         }
         let hit = hit?;
-        let inflictor = match shooter {
-            Target::Actor(s) => Some(s as usize),
-            _ => None,
-        };
+        // The shot pushes its victim away from the shooter.
+        let from = self.body_of(shooter, ctx).map(|b| (b.pos, b.z));
         match hit.struck {
             Struck::Body { index } => {
                 let t = self.whose(index);
@@ -257,11 +269,7 @@ impl Actors {
                     let effect = if bloodless { "bullet_puff" } else { "blood" };
                     self.spawn_effect(effect, p, damage, ctx);
                 }
-                if inflictor.is_none() {
-                    self.push_player_shot(t, ray, damage, ctx);
-                } else {
-                    self.hurt(t, damage, inflictor, shooter, ctx);
-                }
+                self.hurt_from(t, damage, from, shooter, ctx);
                 Some(t)
             }
             Struck::Wall { .. } => {
@@ -271,14 +279,6 @@ impl Actors {
                 None
             }
             Struck::Sky { .. } => None,
-        }
-    }
-
-    /// The player's shot pushes from the player's place.
-    fn push_player_shot(&mut self, t: Target, _ray: &Ray, damage: i32, ctx: &mut ActorCtx) {
-        if let Target::Actor(k) = t {
-            let from = Some((ctx.player.pos, ctx.player.z));
-            self.hurt_actor(k as usize, damage, from, Target::Player, ctx);
         }
     }
 
@@ -447,8 +447,7 @@ fn push(velocity: &mut DVec2, from: DVec2, to: DVec2, damage: i32, mass: i32) {
 // ---- The monsters' actions ----
 
 fn sound(actors: &Actors, n: usize, name: &str, ctx: &mut ActorCtx) {
-    let s = crate::actors::sounds::doom().iter().position(|s| s.name == name);
-    actors.sound_at(n, s, ctx);
+    actors.sound_named(n, name, ctx);
 }
 
 /// Melee if in range (`damage`, a sound), else a missile of the action's argument.
@@ -1069,21 +1068,12 @@ pub fn spawn_fly(actors: &mut Actors, n: usize, args: &[Arg], ctx: &mut ActorCtx
     if let Some(kind) = actors.table.index(name) {
         if let Some(m) = actors.spawn(kind, pos, z, 0.0, ctx) {
             let see = actors.table.actors[actors.list[m].kind].label("See");
-            if actors.look_for(m, ctx) {
+            // It looks round for the player at once.
+            if !ctx.player.dead() {
+                actors.list[m].target = Target::Player;
                 actors.set_state(m, see, ctx);
             }
         }
     }
     actors.remove(n);
-}
-
-impl Actors {
-    /// A new monster looks round for the player at once.
-    fn look_for(&mut self, m: usize, ctx: &mut ActorCtx) -> bool {
-        if ctx.player.dead() {
-            return false;
-        }
-        self.list[m].target = Target::Player;
-        true
-    }
 }

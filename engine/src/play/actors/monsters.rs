@@ -61,6 +61,12 @@ impl Actors {
         ctx.events.push(Event::Sound { sound: name, origin });
     }
 
+    /// The sound of that name (Doom's, without `DS`) from actor `n`.
+    pub(super) fn sound_named(&self, n: usize, name: &str, ctx: &mut ActorCtx) {
+        let s = crate::actors::sounds::doom().iter().position(|s| s.name == name);
+        self.sound_at(n, s, ctx);
+    }
+
     /// One of Doom's sound sets picked at random (`posit1`..`posit3`,
     /// `bgsit1`/`bgsit2`, `podth1`..`podth3`, `bgdth1`/`bgdth2`), else the sound.
     fn varied(&self, sound: Option<usize>, ctx: &mut ActorCtx) -> Option<usize> {
@@ -444,8 +450,7 @@ pub fn scream(actors: &mut Actors, n: usize, _: &[Arg], ctx: &mut ActorCtx) {
 }
 
 pub fn xscream(actors: &mut Actors, n: usize, _: &[Arg], ctx: &mut ActorCtx) {
-    let slop = crate::actors::sounds::doom().iter().position(|s| s.name == "slop");
-    actors.sound_at(n, slop, ctx);
+    actors.sound_named(n, "slop", ctx);
 }
 
 /// A_Fall: the body no longer blocks.
@@ -466,8 +471,7 @@ fn volley(actors: &mut Actors, n: usize, ctx: &mut ActorCtx, sound: &str, bullet
         return;
     }
     face_target(actors, n, &[], ctx);
-    let s = crate::actors::sounds::doom().iter().position(|s| s.name == sound);
-    actors.sound_at(n, s, ctx);
+    actors.sound_named(n, sound, ctx);
     for _ in 0..bullets {
         let angle = actors.list[n].angle + spread(ctx, 20);
         let damage = (i32::from(ctx.rng.byte()) % 5 + 1) * 3;
