@@ -263,3 +263,44 @@ fn a_fight_replays_to_the_same_state_and_frames_twice() {
     assert!(first.1 == second.1, "the frames differ between two replays");
     assert!(first.0.contains("Player"), "the zombieman never noticed the player");
 }
+
+#[test]
+fn a_monster_opens_a_door_and_another_takes_a_monsters_teleporter() {
+    let mut g = game("monster_lines");
+    g.player_mut().health = 1_000_000;
+    let door = 1;
+    idle(&mut g, 35);
+    assert_eq!(g.level().compiled.map.sectors[door].ceiling, 0.0, "the door opened by itself");
+    let of_thing = |g: &Game, t: usize| g.actors().list.iter().find(|a| a.thing == Some(t)).unwrap().clone();
+    let walker = of_thing(&g, 2);
+    assert_eq!(walker.pos, DVec2::new(448.0, 512.0), "the second zombieman moved while asleep");
+    g.wake_monsters();
+    let mut opened = false;
+    let mut through = false;
+    for _ in 0..35 * 30 {
+        g.tick(&TickInput::default());
+        opened |= g.level().compiled.map.sectors[door].ceiling > 56.0;
+        through |= of_thing(&g, 1).pos.x < 256.0;
+        if opened && through {
+            break;
+        }
+    }
+    assert!(opened, "the zombieman never opened the door");
+    assert!(through, "the zombieman never came through the door");
+    let walker = of_thing(&g, 2);
+    assert!(walker.pos.y > 768.0 && walker.pos.x < 256.0, "it did not teleport: it is at {}", walker.pos);
+    assert_eq!(walker.z, 16.0, "it does not stand on room B's floor");
+    assert_drawn_as_they_stand(&g);
+}
+
+#[test]
+fn the_player_does_not_set_off_a_monsters_only_teleporter() {
+    let mut g = game("monster_lines");
+    g.teleport(DVec2::new(448.0, 512.0 - 40.0), 180.0).unwrap();
+    let forward = TickInput { forward: 1, ..TickInput::default() };
+    for _ in 0..70 {
+        g.tick(&forward);
+    }
+    let p = g.player().pos;
+    assert!(p.x < 256.0 && p.y < 640.0, "the player crossed into T-west or was teleported: {p}");
+}

@@ -130,6 +130,11 @@ pub struct Game {
     /// What the actors asked of the world this tick, and the player's shots.
     requests: Vec<actors::attacks::Request>,
     shots: Vec<(DVec2, DVec2)>,
+    /// Damage the world's movers and teleports did to actors, dealt after
+    /// the world's turn.
+    harmed: Vec<(u32, i32)>,
+    /// The map has walk lines monsters may set off.
+    monster_walks: bool,
     /// Monsters killed and items picked up so far.
     kills: u32,
     items: u32,
@@ -184,6 +189,10 @@ impl Game {
         let mut player = Player::new(start.pos, start.angle, area.sector, area.floor, area.ceiling);
         weapons::arm(&actors, &mut player);
         let previous = pose(&player);
+        let monster_walk = |s: &crate::map::LineSpecial| s.on == Activation::Walk && s.by.monsters();
+        let map = &level.compiled.map;
+        let monster_walks = map.lines.iter().filter_map(|l| l.special.as_ref()).any(monster_walk)
+            || map.trigger_lines.iter().any(|t| monster_walk(&t.special));
         Ok(Game {
             level,
             player,
@@ -197,6 +206,8 @@ impl Game {
             sight: sight::Scratch::default(),
             requests: Vec::new(),
             shots: Vec::new(),
+            harmed: Vec::new(),
+            monster_walks,
             kills: 0,
             items: 0,
             rng,
@@ -267,18 +278,47 @@ impl Game {
 
     /// A context for the world's specials and thinkers.
     fn ctx(&mut self) -> (&mut World, Ctx<'_>) {
-        let Game { level, player, world, blockmap, query, touched, rng, events, exit, ticks, .. } = self;
-        let bodies = Bodies { player, touched, blockmap, query };
+        let Game { level, player, world, blockmap, query, touched, actors, harmed, rng, events, exit, ticks, .. } =
+            self;
+        let bodies = Bodies { player, touched, actors, harmed, blockmap, query };
         (world, Ctx { level, bodies, rng, time: *ticks, events, exit })
     }
 
     /// The actors, and a context for their actions.
     fn actor_ctx(&mut self) -> (&mut actors::Actors, actors::ActorCtx<'_>) {
         let Game {
-            level, player, actors, blockmap, query, sight, rng, events, options, kills, requests, shots, ..
+            level,
+            player,
+            actors,
+            blockmap,
+            query,
+            sight,
+            rng,
+            events,
+            options,
+            kills,
+            requests,
+            shots,
+            monster_walks,
+            ..
         } = self;
         let skill = options.skill;
-        (actors, actors::ActorCtx { level, player, rng, events, blockmap, query, sight, skill, kills, requests, shots })
+        let monster_walks = *monster_walks;
+        let ctx = actors::ActorCtx {
+            level,
+            player,
+            rng,
+            events,
+            blockmap,
+            query,
+            sight,
+            skill,
+            kills,
+            requests,
+            shots,
+            monster_walks,
+        };
+        (actors, ctx)
     }
 
     /// The lines with walk specials the body's centre crossed.
@@ -336,16 +376,53 @@ impl Game {
         }
     }
 
-    /// What the actors asked of the world: a boss's tagged special, an exit.
+    /// What the actors asked of the world: a boss's tagged special, an
+    /// exit, the lines monsters crossed and the doors they pushed.
     fn do_requests(&mut self) {
+        use actors::attacks::Request;
         for r in std::mem::take(&mut self.requests) {
-            let (world, mut ctx) = self.ctx();
             match r {
-                actors::attacks::Request::Tagged(action, tag) => {
+                Request::Tagged(action, tag) => {
+                    let (world, mut ctx) = self.ctx();
                     world::specials::perform_tagged(world, &mut ctx, action, tag);
                 }
-                actors::attacks::Request::Exit => *ctx.exit = Some(Exit::Normal),
+                Request::Exit => self.exit = Some(Exit::Normal),
+                Request::Cross { actor, from, to } => {
+                    let lines =
+                        Lines { map: &self.level.compiled.map, walls: &self.blockmap, triggers: &self.triggers };
+                    for c in lines.crossed(&mut self.scratch, from, to) {
+                        if self.actors.list[actor as usize].removed {
+                            break;
+                        }
+                        let (world, mut ctx) = self.ctx();
+                        activate(world, &mut ctx, c.line, Activation::Walk, Activator::Monster(actor), c.from_front);
+                    }
+                }
+                Request::Use { actor, line } => {
+                    let (world, mut ctx) = self.ctx();
+                    activate(
+                        world,
+                        &mut ctx,
+                        SpecialLine::Wall(line),
+                        Activation::Use,
+                        Activator::Monster(actor),
+                        true,
+                    );
+                }
             }
+        }
+        self.deal_harm();
+    }
+
+    /// The damage the world did to actors this tick (crushing, telefrags).
+    fn deal_harm(&mut self) {
+        if self.harmed.is_empty() {
+            return;
+        }
+        let harmed = std::mem::take(&mut self.harmed);
+        let (actors, mut ctx) = self.actor_ctx();
+        for &(n, damage) in &harmed {
+            actors.hurt(actors::Target::Actor(n), damage, None, actors::Target::None, &mut ctx);
         }
     }
 
@@ -377,6 +454,7 @@ impl Game {
             pickups::touch(&mut self.actors, &mut self.level, &mut self.player, &mut self.events, self.options.skill);
         let (world, mut ctx) = self.ctx();
         world.tick(&mut ctx);
+        self.deal_harm();
         let (actors, mut ctx) = self.actor_ctx();
         actors.tick(&mut ctx);
         self.shoot_lines();
@@ -406,6 +484,15 @@ impl Game {
             prev.eye + (now.eye - prev.eye) * a,
             (prev.angle + turned * a).rem_euclid(360.0),
         )
+    }
+
+    /// Wakes every monster waiting for the player, as if it had seen it
+    /// ([`actors::Actors::wake_all`]).
+    pub fn wake_monsters(&mut self) {
+        let (actors, mut ctx) = self.actor_ctx();
+        actors.wake_all(&mut ctx);
+        self.do_requests();
+        self.actors.draw(&mut self.level);
     }
 
     /// The things in play.

@@ -177,8 +177,15 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
         }
         match translate(l.special, l.tag) {
             Ok(Effect::Ignored(why)) => report.ignored.push(format!("linedef {i}: special {}: {why}", l.special)),
-            Ok(effect) => {
+            Ok(mut effect) => {
                 report.specials += 1;
+                // Monsters never use a line marked secret (Doom's
+                // P_UseSpecialLine): a hidden door stays the player's.
+                if let Effect::Special(s) = &mut effect {
+                    if l.flags & flags::SECRET != 0 && s.on == crate::map::special::Activation::Use {
+                        s.by = crate::map::special::Who::Players;
+                    }
+                }
                 deferred.extend(match effect {
                     Effect::LightTransfer { floor } => Some(Deferred::LightTransfer { linedef: i, floor }),
                     Effect::Translucent => Some(Deferred::Translucent { linedef: i }),

@@ -42,6 +42,8 @@ pub mod flags {
     pub const TWO_SIDED: u16 = 0x0004;
     pub const UPPER_UNPEGGED: u16 = 0x0008;
     pub const LOWER_UNPEGGED: u16 = 0x0010;
+    /// Shown as one-sided on the automap; monsters do not use it.
+    pub const SECRET: u16 = 0x0020;
     pub const BLOCK_SOUND: u16 = 0x0040;
 }
 

@@ -42,6 +42,12 @@ pub enum Request {
     Tagged(Action, u16),
     /// The level ends (the boss brain died, E2M8's cyberdemon).
     Exit,
+    /// An actor stepped from `from` to `to`: the walk lines it crossed
+    /// that monsters may set off go off.
+    Cross { actor: u32, from: DVec2, to: DVec2 },
+    /// An actor blocked by a door pushes it open (Doom's P_Move trying
+    /// the lines it touched with P_UseSpecialLine).
+    Use { actor: u32, line: usize },
 }
 
 impl Actors {

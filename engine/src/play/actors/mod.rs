@@ -131,6 +131,9 @@ pub struct ActorCtx<'a> {
     /// The player's shots this tick, from where to where they reached
     /// (the lines they cross may have shoot specials).
     pub shots: &'a mut Vec<(DVec2, DVec2)>,
+    /// The map has walk lines monsters may set off (if not, their steps
+    /// are not traced).
+    pub monster_walks: bool,
 }
 
 /// Every actor of a game.

@@ -10,10 +10,12 @@
 use glam::DVec2;
 
 use super::actions::sound;
-use super::movement::{opposite, DIR_STEP, NO_DIR};
+use super::attacks::Request;
+use super::movement::{opposite, Ground, DIR_STEP, NO_DIR};
 use super::physics::{Blocked, FLOAT_SPEED};
 use super::{ActorCtx, Actors, Target};
 use crate::actors::{ActorFlag, Arg};
+use crate::map::special::{Action, Activation};
 use crate::play::events::{Event, Origin};
 use crate::play::player::{HEIGHT as PLAYER_HEIGHT, RADIUS as PLAYER_RADIUS};
 use crate::play::sight::{self, Body, Ray, MELEE_RANGE};
@@ -231,8 +233,34 @@ impl Actors {
                 self.dirty.push(n as u32);
                 true
             }
-            Err(_) => false,
+            Err(Blocked::Thing(_)) => false,
+            Err(_) => self.push_doors(n, to, ctx),
         }
+    }
+
+    /// Actor `n`, stopped on its way to `to`, pushes the doors it touches
+    /// there that monsters may open (Doom's P_Move using the lines in
+    /// `spechit`); a door with a key stays shut to it. Returns whether it
+    /// pushed one (then it keeps its direction, waiting for the door).
+    fn push_doors(&mut self, n: usize, to: DVec2, ctx: &mut ActorCtx) -> bool {
+        let a = &self.list[n];
+        if a.flags.has(ActorFlag::Missile) || a.flags.has(ActorFlag::NoClip) {
+            return false;
+        }
+        let radius = self.table.actors[a.kind].radius;
+        let ground = Ground { compiled: &ctx.level.compiled, blockmap: ctx.blockmap };
+        let map = &ctx.level.compiled.map;
+        let mut pushed = false;
+        for line in ground.passable_touched(ctx.query, to, radius) {
+            let opens = map.lines[line].special.as_ref().is_some_and(|s| {
+                s.on == Activation::Use && s.by.monsters() && matches!(s.action, Action::Door { key: None, .. })
+            });
+            if opens {
+                ctx.requests.push(Request::Use { actor: n as u32, line });
+                pushed = true;
+            }
+        }
+        pushed
     }
 
     /// Sets off in `dir` for a few steps, if a first step that way works
@@ -519,6 +547,24 @@ pub fn sarg_attack(actors: &mut Actors, n: usize, args: &[Arg], ctx: &mut ActorC
 }
 
 impl Actors {
+    /// Wakes every monster that is waiting for the player (in a state
+    /// whose action is `A_Look`): it takes the player as its target and
+    /// goes to its `See` state, as if it had seen it (for benchmarks and
+    /// stress tests: every monster of a map awake at once).
+    pub fn wake_all(&mut self, ctx: &mut ActorCtx) {
+        let Some(look) = crate::actors::actions::find("A_Look") else { return };
+        for n in 0..self.list.len() {
+            let a = &self.list[n];
+            let waiting = self.table.state(a.state).action.as_ref().is_some_and(|c| c.action == look);
+            let see = self.table.actors[a.kind].label("See");
+            if a.removed || !waiting || see.is_none() {
+                continue;
+            }
+            self.list[n].target = Target::Player;
+            self.set_state(n, see, ctx);
+        }
+    }
+
     /// The player made a noise in `sector` (a shot: Doom's P_NoiseAlert):
     /// it floods through every open two-sided line, and crosses at most one
     /// line that blocks sound; every sector it reaches remembers, for the

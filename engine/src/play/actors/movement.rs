@@ -122,6 +122,28 @@ impl Ground<'_> {
         Ok(o)
     }
 
+    /// The lines a box of `radius` at `p` touches that it could pass
+    /// (two-sided, not blocking walkers): those a monster stopped there
+    /// may push, in the blockmap's order.
+    pub fn passable_touched<'q>(
+        &self,
+        query: &'q mut LineQuery,
+        p: DVec2,
+        radius: f64,
+    ) -> impl Iterator<Item = usize> + 'q
+    where
+        Self: 'q,
+    {
+        let map = &self.compiled.map;
+        let r = DVec2::splat(radius);
+        let (min, max) = (p - r, p + r);
+        query.run(self.blockmap, map.lines.len(), min, max).iter().map(|&i| i as usize).filter(move |&i| {
+            let line = &map.lines[i];
+            let (a, b) = map.line_points(line);
+            line.back.is_some() && !line.flags.impassable && !line.flags.block_monsters && crosses_box(a, b, min, max)
+        })
+    }
+
     /// Where `mover` would stand at `to`, if the lines let it (Doom's
     /// P_TryMove without the things: the caller checks those).
     pub fn try_move(&self, query: &mut LineQuery, mover: &Mover, to: DVec2) -> Result<Opening, Refusal> {

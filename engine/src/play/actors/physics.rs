@@ -20,9 +20,12 @@
 
 use glam::{DVec2, DVec3};
 
+use super::attacks::Request;
+use super::movement::Opening;
 use super::movement::{Ground, Mover, Refusal};
 use super::{Actor, ActorCtx, Actors, Target};
 use crate::actors::ActorFlag;
+use crate::play::blockmap::LineQuery;
 use crate::play::player::{FRICTION, GRAVITY, HEIGHT as PLAYER_HEIGHT, RADIUS as PLAYER_RADIUS, STOP_SPEED};
 
 /// The longest piece of a move tried at once (Doom's MAXMOVE / 2).
@@ -135,6 +138,12 @@ impl Actors {
             return Err(Blocked::Thing(t));
         }
         let walker = !mover.missile && !self.list[n].flags.has(ActorFlag::Float);
+        // A body that is not a missile sets off the walk lines monsters may
+        // use (Doom's P_CrossSpecialLine for a thing): the game looks for
+        // them after the actors' turn.
+        if ctx.monster_walks && !mover.missile && !mover.no_clip {
+            ctx.requests.push(Request::Cross { actor: n as u32, from: self.list[n].pos, to });
+        }
         let a = &mut self.list[n];
         let on_ground = a.z <= a.floor;
         (a.sector, a.floor, a.ceiling) = (o.sector, o.floor, o.ceiling);
@@ -146,6 +155,50 @@ impl Actors {
             self.wake_physics(n);
         }
         Ok(())
+    }
+
+    /// Re-clips actor `n` to the opening under it after a floor or ceiling
+    /// moved (Doom's P_ThingHeightClip): on its floor it rides it, else a
+    /// ceiling come down pushes it down. Returns whether it fits; a corpse
+    /// and a thing that cannot be shot always do (Doom squashes a corpse
+    /// to gibs of no height).
+    pub fn settle(&mut self, n: usize, ground: &Ground, query: &mut LineQuery) -> bool {
+        let a = &self.list[n];
+        if a.removed {
+            return true;
+        }
+        let def = &self.table.actors[a.kind];
+        let Ok(o): Result<Opening, usize> = ground.opening(query, a.pos, def.radius, true) else { return true };
+        let yielding = a.flags.has(ActorFlag::Corpse) || !a.flags.has(ActorFlag::Shootable);
+        let height = if yielding { 0.0 } else { def.height };
+        let (z0, floor0, ceiling0) = (a.z, a.floor, a.ceiling);
+        let a = &mut self.list[n];
+        let on_floor = a.z <= a.floor;
+        (a.floor, a.ceiling) = (o.floor, o.ceiling);
+        if a.flags.has(ActorFlag::SpawnCeiling) && a.flags.has(ActorFlag::NoGravity) && a.z + def.height >= ceiling0 {
+            a.z = o.ceiling - def.height;
+        } else if on_floor {
+            a.z = o.floor;
+        } else if a.z + height > o.ceiling {
+            a.z = (o.ceiling - height).max(o.floor);
+        }
+        if a.z != z0 || a.floor != floor0 || a.ceiling != ceiling0 {
+            self.dirty.push(n as u32);
+            if self.list[n].in_motion() {
+                self.wake_physics(n);
+            }
+        }
+        o.ceiling - o.floor >= height
+    }
+
+    /// Puts actor `n` at `to` facing `angle`, standing still on the floor
+    /// of the opening `o` there (a teleport).
+    pub fn teleport(&mut self, n: usize, to: DVec2, angle: f64, o: Opening) {
+        self.set_pos(n, to);
+        let a = &mut self.list[n];
+        (a.sector, a.floor, a.ceiling, a.z) = (o.sector, o.floor, o.ceiling, o.floor);
+        a.angle = angle;
+        a.vel = DVec3::ZERO;
     }
 
     /// One tick of motion for actor `n`: along its momentum in the plane,

@@ -241,6 +241,7 @@ pub fn start(
     speed: f64,
     waits: (u32, u32),
     manual: bool,
+    closes: bool,
 ) -> bool {
     let mut started = false;
     for &sector in sectors {
@@ -250,7 +251,7 @@ pub fn start(
                 _ => None,
             }) {
                 if kind == DoorKind::Raise {
-                    reuse(door);
+                    reuse(door, closes);
                     started = true;
                 }
                 continue;
@@ -272,8 +273,13 @@ pub fn start(
     started
 }
 
-/// Using a manual raise door that is already at work.
-fn reuse(door: &mut Door) {
+/// Using a manual raise door that is already at work: one closing opens
+/// again; an open one closes, if the user `closes` doors (the player does,
+/// a monster does not).
+fn reuse(door: &mut Door, closes: bool) {
+    if !closes && door.state != DoorState::Closing {
+        return;
+    }
     door.state = match (door.state, &door.motion) {
         (DoorState::Closing, _) => DoorState::Opening,
         (DoorState::Open { .. }, Motion::Slide { .. }) => DoorState::Open { wait: door.wait },

@@ -49,11 +49,16 @@ pub enum Exit {
     Secret,
 }
 
-/// The bodies the world moves and hurts: for now the player.
+/// The bodies the world moves and hurts: the player and the actors.
 pub struct Bodies<'a> {
     pub player: &'a mut Player,
     /// Sectors the player's circle overlaps (sorted), as of this tick's move.
     pub touched: &'a [usize],
+    pub actors: &'a mut crate::play::actors::Actors,
+    /// Damage the world did to actors (crushed, telefragged): actor and
+    /// amount, dealt by the game after the world's turn (hurting an actor
+    /// runs its state machine, which needs the actors' context).
+    pub harmed: &'a mut Vec<(u32, i32)>,
     pub blockmap: &'a Blockmap,
     pub query: &'a mut LineQuery,
 }

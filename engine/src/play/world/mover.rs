@@ -5,7 +5,10 @@
 //! lowering ceiling is pushed down, and a body that no longer fits either
 //! stops the plane or, when the plane crushes, is hurt while it keeps going.
 
+use glam::DVec2;
+
 use super::Ctx;
+use crate::play::actors::movement::Ground;
 use crate::play::player::{HEIGHT, RADIUS};
 
 /// Which plane of a sector moves.
@@ -90,12 +93,14 @@ fn set_height(ctx: &mut Ctx, sector: usize, plane: Plane, h: f64) {
 /// to the floor and ceiling under it (on the floor: it rides the floor;
 /// else a low ceiling pushes it down), and one that no longer fits is hurt
 /// when `crush`. A dead body has no height (Doom's PIT_ChangeSector turns a
-/// corpse into gibs of height 0), so it always fits. Returns whether every
-/// body fits.
+/// corpse into gibs of height 0), so it always fits, and so does an actor
+/// that cannot be shot (a lamp, an item). Returns whether every body fits.
 fn settle_bodies(ctx: &mut Ctx, sector: usize, crush: bool) -> bool {
-    if !ctx.bodies.touched.contains(&sector) {
-        return true;
-    }
+    let player_fits = !ctx.bodies.touched.contains(&sector) || settle_player(ctx, crush);
+    settle_actors(ctx, sector, crush) && player_fits
+}
+
+fn settle_player(ctx: &mut Ctx, crush: bool) -> bool {
     let player = &mut *ctx.bodies.player;
     let height = if player.dead() { 0.0 } else { HEIGHT };
     let on_floor = player.z <= player.floor;
@@ -112,5 +117,33 @@ fn settle_bodies(ctx: &mut Ctx, sector: usize, crush: bool) -> bool {
     if !fits && crush && ctx.time % 4 == 0 {
         player.hurt(CRUSH_DAMAGE);
     }
+    fits
+}
+
+/// The actors listed in the grid over the box of `sector`'s lines, each
+/// re-clipped to the opening under it (an actor whose box does not reach
+/// the sector finds its opening unchanged).
+fn settle_actors(ctx: &mut Ctx, sector: usize, crush: bool) -> bool {
+    let map = &ctx.level.compiled.map;
+    let (mut min, mut max) = (DVec2::INFINITY, DVec2::NEG_INFINITY);
+    for &i in &ctx.level.sector_lines[sector] {
+        let (a, b) = map.line_points(&map.lines[i as usize]);
+        (min, max) = (min.min(a.min(b)), max.max(a.max(b)));
+    }
+    if min.x > max.x {
+        return true;
+    }
+    let ground = Ground { compiled: &ctx.level.compiled, blockmap: ctx.bodies.blockmap };
+    let near = ctx.bodies.actors.near(min, max);
+    let mut fits = true;
+    for &n in &near {
+        if !ctx.bodies.actors.settle(n as usize, &ground, ctx.bodies.query) {
+            fits = false;
+            if crush && ctx.time % 4 == 0 {
+                ctx.bodies.harmed.push((n, CRUSH_DAMAGE));
+            }
+        }
+    }
+    ctx.bodies.actors.give_back(near);
     fits
 }

@@ -14,6 +14,8 @@ use crate::play::events::{sound, Origin};
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Activator {
     Player,
+    /// An actor (by index): a monster walking or pushing a door.
+    Monster(u32),
 }
 
 /// Sets off the special of `line` by `on`, if it goes off that way for
@@ -31,12 +33,16 @@ pub fn activate(
     let Some(special) = world.special(ctx.level, line) else { return false };
     let allowed = match who {
         Activator::Player => special.by.players(),
+        Activator::Monster(_) => special.by.monsters(),
     };
     if special.on != on || !allowed {
         return false;
     }
     let manual = special.tag == 0 && special.action.moves_sectors();
     if let Action::Door { key: Some(colour), .. } = special.action {
+        if who != Activator::Player {
+            return false;
+        }
         if !has_key(ctx.bodies.player, colour) {
             let what = if manual { "open this door" } else { "activate this object" };
             say(ctx, format!("You need a {} key to {what}", colour.name()));
@@ -44,7 +50,7 @@ pub fn activate(
             return false;
         }
     }
-    let started = perform(world, ctx, line, &special, from_front);
+    let started = perform(world, ctx, line, &special, from_front, who);
     ctx.events.push(crate::play::events::Event::Special { line, started });
     if started && !special.repeat {
         world.spend(ctx.level, line);
@@ -64,11 +70,18 @@ pub fn activate(
 /// death: Doom's A_BossDeath, A_KeenDie). Returns whether anything started.
 pub fn perform_tagged(world: &mut World, ctx: &mut Ctx, action: Action, tag: u16) -> bool {
     let special = LineSpecial { on: Activation::Walk, repeat: true, by: Default::default(), tag, action };
-    perform(world, ctx, SpecialLine::Trigger(usize::MAX), &special, true)
+    perform(world, ctx, SpecialLine::Trigger(usize::MAX), &special, true, Activator::Player)
 }
 
 /// Carries out `special`'s action. Returns whether anything started.
-fn perform(world: &mut World, ctx: &mut Ctx, line: SpecialLine, special: &LineSpecial, from_front: bool) -> bool {
+fn perform(
+    world: &mut World,
+    ctx: &mut Ctx,
+    line: SpecialLine,
+    special: &LineSpecial,
+    from_front: bool,
+    who: Activator,
+) -> bool {
     let sectors = target_sectors(ctx.level, line, special);
     let front = match line {
         SpecialLine::Wall(i) => Some(ctx.level.compiled.map.lines[i].front.sector),
@@ -77,7 +90,9 @@ fn perform(world: &mut World, ctx: &mut Ctx, line: SpecialLine, special: &LineSp
     match &special.action {
         Action::Door { kind, speed, wait, shut, .. } => {
             let manual = special.tag == 0;
-            doors::start(world, ctx, &sectors, *kind, *speed, (*wait, *shut), manual)
+            // Monsters never close a door (Doom's EV_VerticalDoor).
+            let closes = who == Activator::Player;
+            doors::start(world, ctx, &sectors, *kind, *speed, (*wait, *shut), manual, closes)
         }
         Action::Lift { speed, wait } => plats::start_lift(world, ctx, &sectors, *speed, *wait, special.tag),
         Action::PerpetualLift { speed, wait } => {
@@ -98,9 +113,11 @@ fn perform(world: &mut World, ctx: &mut Ctx, line: SpecialLine, special: &LineSp
         Action::Stairs { step, speed, crush } => floors::stairs(world, ctx, special.tag, *step, *speed, *crush),
         Action::Donut { speed } => floors::donut(world, ctx, &sectors, *speed),
         Action::Light(change) => lights::change(world, ctx, &sectors, *change),
-        Action::Teleport => from_front && teleport::teleport(ctx, special.tag),
+        Action::Teleport => from_front && teleport::teleport(ctx, special.tag, who),
         Action::LineTeleport { to } => match line {
-            SpecialLine::Wall(from) if from_front => teleport::line_teleport(ctx, from, *to),
+            SpecialLine::Wall(from) if from_front && who == Activator::Player => {
+                teleport::line_teleport(ctx, from, *to)
+            }
             _ => false,
         },
         Action::Exit | Action::SecretExit => {

@@ -5,17 +5,23 @@
 
 use glam::DVec2;
 
+use super::specials::Activator;
 use super::Ctx;
+use crate::actors::ActorFlag;
 use crate::geom::sin_cos_degrees;
 use crate::map::semantics::teleport_destination;
+use crate::play::actors::movement::Ground;
 use crate::play::events::{sound, Origin};
 use crate::play::player::RADIUS;
 
 /// Ticks the player cannot move after teleporting (Doom's reactiontime 18).
 pub const TELEPORT_FREEZE: u32 = 18;
 
-/// Teleports the player through a line tagged `tag`. Returns whether it did.
-pub fn teleport(ctx: &mut Ctx, tag: u16) -> bool {
+/// Teleports `who` through a line tagged `tag`. Returns whether it did.
+/// The player kills any shootable actor standing where it arrives (a
+/// telefrag); a monster goes only where no shootable body stands (Doom's
+/// P_TeleportMove, outside MAP30).
+pub fn teleport(ctx: &mut Ctx, tag: u16, who: Activator) -> bool {
     let map = &ctx.level.compiled.map;
     let sectors = &ctx.level.thing_sectors;
     let Some(dest) = teleport_destination(map, tag, |i| Some(sectors[i])) else { return false };
@@ -24,17 +30,67 @@ pub fn teleport(ctx: &mut Ctx, tag: u16) -> bool {
     // by 45, truncated).
     let angle = (thing.angle / 45.0).trunc() * 45.0;
     let to = thing.pos;
-    let from = ctx.bodies.player.pos;
-    let world = crate::play::collision::World { compiled: &ctx.level.compiled, blockmap: ctx.bodies.blockmap };
-    let near = world.lines_near(ctx.bodies.query, to, RADIUS + 1.0);
-    let area = world.area(near, to);
-    ctx.bodies.player.teleport_to(to, angle, area, TELEPORT_FREEZE);
+    let from = match who {
+        Activator::Player => {
+            let from = ctx.bodies.player.pos;
+            let world = crate::play::collision::World { compiled: &ctx.level.compiled, blockmap: ctx.bodies.blockmap };
+            let near = world.lines_near(ctx.bodies.query, to, RADIUS + 1.0);
+            let area = world.area(near, to);
+            ctx.bodies.player.teleport_to(to, angle, area, TELEPORT_FREEZE);
+            for n in bodies_at(ctx, to, RADIUS, None) {
+                ctx.bodies.harmed.push((n, TELEFRAG));
+            }
+            from
+        }
+        Activator::Monster(n) => {
+            let actors = &*ctx.bodies.actors;
+            let (a, def) = (&actors.list[n as usize], &actors.table.actors[actors.list[n as usize].kind]);
+            let (from, radius) = (a.pos, def.radius);
+            let player = &ctx.bodies.player;
+            let on_player = !player.dead()
+                && (player.pos.x - to.x).abs() < RADIUS + radius
+                && (player.pos.y - to.y).abs() < RADIUS + radius;
+            if on_player || !bodies_at(ctx, to, radius, Some(n)).is_empty() {
+                return false;
+            }
+            let ground = Ground { compiled: &ctx.level.compiled, blockmap: ctx.bodies.blockmap };
+            let Ok(o) = ground.opening(ctx.bodies.query, to, radius, true) else { return false };
+            ctx.bodies.actors.teleport(n as usize, to, angle, o);
+            from
+        }
+    };
     // The fog (and its sound) appears where the body left and 20 units in
     // front of where it arrives.
     let (sin, cos) = sin_cos_degrees(angle);
     ctx.events.push(sound("telept", Origin::At(from)));
     ctx.events.push(sound("telept", Origin::At(to + DVec2::new(cos, sin) * 20.0)));
     true
+}
+
+/// Damage that kills whatever it meets (Doom's telefrag: 10000).
+pub const TELEFRAG: i32 = 10_000;
+
+/// The shootable actors (but `except`) whose box overlaps a box of
+/// `radius` at `at`.
+fn bodies_at(ctx: &mut Ctx, at: DVec2, radius: f64, except: Option<u32>) -> Vec<u32> {
+    let actors = &mut *ctx.bodies.actors;
+    let r = DVec2::splat(radius);
+    let near = actors.near(at - r, at + r);
+    let hit = near
+        .iter()
+        .copied()
+        .filter(|&k| {
+            let b = &actors.list[k as usize];
+            let br = actors.table.actors[b.kind].radius;
+            Some(k) != except
+                && !b.removed
+                && b.flags.has(ActorFlag::Shootable)
+                && (b.pos.x - at.x).abs() < br + radius
+                && (b.pos.y - at.y).abs() < br + radius
+        })
+        .collect();
+    actors.give_back(near);
+    hit
 }
 
 /// Boom's silent line teleport (244): the body goes to the same place along
