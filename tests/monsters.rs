@@ -304,3 +304,26 @@ fn the_player_does_not_set_off_a_monsters_only_teleporter() {
     let p = g.player().pos;
     assert!(p.x < 256.0 && p.y < 640.0, "the player crossed into T-west or was teleported: {p}");
 }
+
+#[test]
+fn a_user_actor_file_replaces_the_zombieman() {
+    let path = root().join("tests").join("actors").join("user.ron");
+    assert!(path.exists(), "missing fixture {}", path.display());
+    let table = sightline::actors::ActorTable::with_file(&path).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(table.get("sturdy_zombieman").map(|a| a.health), Some(400));
+    let level = load(&root().join("tests").join("maps").join("monsters.ron"));
+    let options = sightline::play::GameOptions::default();
+    let mut g = Game::with_table(level, options, std::sync::Arc::new(table)).unwrap();
+    g.player_mut().health = 1_000_000;
+    g.teleport(DVec2::new(700.0, 256.0), 0.0).unwrap();
+    let bullets = g.player().ammo[0];
+    for _ in 0..35 * 10 {
+        if g.stats().kills.0 > 0 {
+            break;
+        }
+        g.tick(&TickInput { fire: true, ..TickInput::default() });
+    }
+    // The shipped zombieman takes two shots at least (see above).
+    assert_eq!(g.stats().kills, (1, 1));
+    assert_eq!(bullets - g.player().ammo[0], 1, "the user's zombieman has 1 health");
+}

@@ -148,7 +148,7 @@ impl Materials {
             } else if map.version >= 2 {
                 // A thing type names its first frame; its front view is
                 // rotation 0 (all sides alike) or 1 (facing the viewer).
-                match ActorTable::doom().get(&t.kind).and_then(|ty| ActorTable::doom().first_frame(ty)) {
+                match ActorTable::active().get(&t.kind).and_then(|ty| ActorTable::active().first_frame(ty)) {
                     None => None,
                     Some(stem) => {
                         let all_sides = format!("{stem}0");
@@ -193,7 +193,7 @@ impl Materials {
     /// the art lacks takes the frame's first view; a frame with none stays
     /// `None`, and the actor keeps the last frame it could show.
     fn add_sprite_views(&mut self, map: &Map, library: &Library) {
-        let table = ActorTable::doom();
+        let table = ActorTable::active();
         let roots = map.things.iter().filter_map(|t| table.index(&t.kind));
         let effects = ["bullet_puff", "blood", "teleport_fog", "item_fog"].into_iter().filter_map(|n| table.index(n));
         let weapons: Vec<usize> = (0..table.actors.len()).filter(|&i| table.actors[i].weapon.is_some()).collect();

@@ -20,6 +20,11 @@ pub struct Cli {
     /// Without a subcommand, `sightline [MAP] [OPTIONS]` is `sightline play`.
     #[command(flatten)]
     pub play: PlayArgs,
+    /// A RON actor file whose actors are added to the shipped table, or
+    /// replace the shipped actors of the same name, for this run (any
+    /// command that loads, plays or imports a map).
+    #[arg(long, global = true, value_name = "FILE")]
+    pub actors: Option<PathBuf>,
 }
 
 #[derive(Subcommand)]

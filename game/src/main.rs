@@ -18,6 +18,13 @@ use clap::Parser;
 
 fn main() -> ExitCode {
     let cli = cli::Cli::parse();
+    if let Some(path) = &cli.actors {
+        let installed = sightline::actors::ActorTable::with_file(path).and_then(sightline::actors::ActorTable::install);
+        if let Err(e) = installed {
+            eprintln!("sightline: --actors: {e}");
+            return ExitCode::FAILURE;
+        }
+    }
     let result = match cli.command {
         Some(cli::Command::Compile(args)) => compile::run(&args),
         Some(cli::Command::Capture(args)) => capture::run(&args),

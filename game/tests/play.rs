@@ -140,3 +140,30 @@ fn bad_maps_and_demos_get_their_errors() {
     let out = sightline(dir.path(), &["play", "--demo", "a", "--record", "b"]);
     assert_eq!(out.status.code(), Some(2), "stderr: {}", text(&out.stderr));
 }
+
+/// `--actors FILE` reaches map checking and play: a map naming an actor
+/// only the user's file defines loads with it and is refused without it; a
+/// broken file is an error naming it.
+#[test]
+fn a_user_actor_file_is_used_by_commands_that_play() {
+    let dir = tempfile::tempdir().unwrap();
+    let user = shipped_map("../tests/actors/user.ron");
+    let room = std::fs::read_to_string(shipped_map("../tests/maps/monsters.ron")).unwrap();
+    // The monsters' room with a sturdy zombieman by the player start.
+    let start = room.find("Thing(kind: \"player_start\"").expect("monsters.ron has a player start");
+    let mut map = room.clone();
+    map.insert_str(start, "Thing(kind: \"sturdy_zombieman\", x: 200.0, y: 256.0),\n        ");
+    std::fs::write(dir.path().join("sturdy.ron"), &map).unwrap();
+    let demo = write_demo(dir.path(), &dir.path().join("sturdy.ron"), scripted_walk());
+    let replay = |extra: &[&str]| {
+        let mut args = vec!["replay", demo.to_str().unwrap()];
+        args.extend_from_slice(extra);
+        sightline(dir.path(), &args)
+    };
+    assert_refused(&replay(&[]), &["sturdy_zombieman"]);
+    let out = replay(&["--actors", user.to_str().unwrap()]);
+    assert!(out.status.success(), "stderr: {}", text(&out.stderr));
+    std::fs::write(dir.path().join("broken.ron"), "Actors(actors: [Actor(name: \"a\", based_on: \"impp\")])").unwrap();
+    let broken = dir.path().join("broken.ron");
+    assert_refused(&replay(&["--actors", broken.to_str().unwrap()]), &["broken.ron", "impp"]);
+}

@@ -37,6 +37,8 @@ pub enum ActorTableError {
     Actor { path: String, actor: String, message: String },
     #[error("{path}: actor {actor}, state {label} (states line {line}: `{text}`): {message}")]
     State { path: String, actor: String, label: String, line: usize, text: String, message: String },
+    #[error("an actor table is already in use: install a user's table before anything reads the active one")]
+    AlreadyActive,
 }
 
 /// Doom's mobjinfo defaults for a property left out (DECORATE's too).

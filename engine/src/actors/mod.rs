@@ -421,6 +421,8 @@ pub struct ActorTable {
     by_number: HashMap<u16, usize>,
 }
 
+static ACTIVE: OnceLock<Arc<ActorTable>> = OnceLock::new();
+
 impl ActorTable {
     /// Doom's and Doom II's actors, as shipped (checked by the tests, so
     /// this cannot fail in a release).
@@ -431,6 +433,20 @@ impl ActorTable {
                 .unwrap_or_else(|e| panic!("the shipped actor table is broken: {e}"));
             Arc::new(table)
         })
+    }
+
+    /// The table this process plays with: the one [`ActorTable::install`]ed
+    /// (a user's `--actors` file on the shipped table), else the shipped
+    /// one. Map validation, materials, games and the status bar read it.
+    pub fn active() -> &'static Arc<ActorTable> {
+        ACTIVE.get_or_init(|| ActorTable::doom().clone())
+    }
+
+    /// Makes `table` the [`ActorTable::active`] one for the rest of the
+    /// process. It must come before anything reads the active table (a
+    /// program does it first thing); afterwards it is refused.
+    pub fn install(table: ActorTable) -> Result<(), ActorTableError> {
+        ACTIVE.set(Arc::new(table)).map_err(|_| ActorTableError::AlreadyActive)
     }
 
     /// The shipped table with a user's file on top: its actors are added,

@@ -14,7 +14,7 @@ pub const TELEPORT_DESTINATION: &str = "teleport_destination";
 
 pub fn check(map: &Map) -> Vec<Problem> {
     let mut problems = Vec::new();
-    let types = ActorTable::doom();
+    let types = ActorTable::active();
     if map.version >= 2 {
         for (i, t) in map.things.iter().enumerate() {
             if types.get(&t.kind).is_none() {
@@ -83,7 +83,7 @@ fn check_special(
 /// Is `kind` a teleport destination? (Both versions use the type's name.)
 pub fn is_teleport_destination(kind: &str) -> bool {
     kind == TELEPORT_DESTINATION
-        || ActorTable::doom().get(kind).is_some_and(|t| t.category == Category::TeleportDestination)
+        || ActorTable::active().get(kind).is_some_and(|t| t.category == Category::TeleportDestination)
 }
 
 /// The teleport destination Doom's EV_Teleport would pick: in the first

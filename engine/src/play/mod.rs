@@ -41,6 +41,8 @@ pub mod trace;
 pub mod weapons;
 pub mod world;
 
+use std::sync::Arc;
+
 use glam::DVec2;
 
 use crate::actors::{ActorFlag, ActorTable};
@@ -156,7 +158,14 @@ impl Game {
         Game::with_options(level, GameOptions::default())
     }
 
-    pub fn with_options(mut level: Level, options: GameOptions) -> Result<Game, PlayError> {
+    /// A game with the [`ActorTable::active`] actors.
+    pub fn with_options(level: Level, options: GameOptions) -> Result<Game, PlayError> {
+        Game::with_table(level, options, ActorTable::active().clone())
+    }
+
+    /// A game whose things are `table`'s actors (a user's table: the level's
+    /// things must be its kinds, and its art must have been loaded for it).
+    pub fn with_table(mut level: Level, options: GameOptions, table: Arc<ActorTable>) -> Result<Game, PlayError> {
         if !(1..=5).contains(&options.skill) {
             return Err(PlayError::Skill(options.skill));
         }
@@ -165,7 +174,7 @@ impl Game {
         if level.compiled.locate(start.pos).is_none() {
             return Err(PlayError::Outside { map: map.name.clone(), x: start.pos.x, y: start.pos.y });
         }
-        let types = ActorTable::doom();
+        let types = &table;
         let mut totals = (0, 0);
         for t in map.things.iter().filter(|t| t.in_single_player(options.skill) && map.version >= 2) {
             if let Some(ty) = types.get(&t.kind) {
@@ -180,7 +189,7 @@ impl Game {
         let mut rng = GameRng::new(options.seed);
         let world = World::new(&mut level, &mut rng);
         let fast = options.skill == 5;
-        let mut actors = actors::Actors::spawn_map_things(&level, ActorTable::doom().clone(), fast, &mut rng);
+        let mut actors = actors::Actors::spawn_map_things(&level, table.clone(), fast, &mut rng);
         actors.draw_all(&mut level);
         let mut query = LineQuery::default();
         let collision = Collision { compiled: &level.compiled, blockmap: &blockmap };

@@ -24,7 +24,7 @@ const GREY: u32 = rgb(150, 150, 150);
 
 /// The ammunition of the weapon in hand, if it uses any.
 fn current_ammo(player: &Player) -> Option<(i32, i32)> {
-    let (k, _) = crate::play::weapons::ammo_of(ActorTable::doom(), player.ready_weapon?)?;
+    let (k, _) = crate::play::weapons::ammo_of(ActorTable::active(), player.ready_weapon?)?;
     Some((player.ammo[k], player.max_ammo[k]))
 }
 
@@ -80,7 +80,7 @@ pub fn status_bar(fb: &mut Framebuffer, _level: &Level, player: &Player) {
     l.centred(fb, 48.0, 104.0, 5.0, 16.0, &format!("{}%", player.health.clamp(0, 999)), RED);
     l.centred(fb, 48.0, 104.0, 23.0, 6.0, "HEALTH", GREY);
     // Arms: 2 3 4 / 5 6 7, lit when a weapon of that slot is owned.
-    let table = ActorTable::doom();
+    let table = ActorTable::active();
     for slot in 2..=7u8 {
         let owned = player
             .weapons

@@ -17,7 +17,7 @@ use crate::play::Player;
 pub const STATUS_LIFT: f64 = 16.0;
 
 pub fn draw(fb: &mut Framebuffer, level: &Level, player: &Player, status_bar: bool) {
-    let table = crate::actors::ActorTable::doom();
+    let table = crate::actors::ActorTable::active();
     let light = level.compiled.map.sectors.get(player.sector).map_or(255, |s| i32::from(s.light));
     let lit = ((light + 16 * player.extra_light) as f32 / 255.0).clamp(0.2, 1.0);
     let lift = if status_bar { STATUS_LIFT } else { 0.0 };

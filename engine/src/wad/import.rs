@@ -542,7 +542,7 @@ fn convert_things(
     const MULTIPLAYER: u16 = 0x0010;
     const NOT_DEATHMATCH: u16 = 0x0020;
     const NOT_COOP: u16 = 0x0040;
-    let types = ActorTable::doom();
+    let types = ActorTable::active();
     let mut things = Vec::new();
     for (i, t) in map.things.iter().enumerate() {
         let Some(ty) = types.by_doomednum(t.kind) else {
