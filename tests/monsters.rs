@@ -327,3 +327,27 @@ fn a_user_actor_file_replaces_the_zombieman() {
     assert_eq!(g.stats().kills, (1, 1));
     assert_eq!(bullets - g.player().ammo[0], 1, "the user's zombieman has 1 health");
 }
+
+/// A monster waiting in a part of the map the player cannot see or hear
+/// (no two-sided line leads there) is off the tick's list; it is back on
+/// it, and wakes as before, once the player is in its part.
+#[test]
+fn a_monster_out_of_the_player_s_reach_costs_nothing_until_the_player_comes() {
+    let mut g = game("monster_lines");
+    idle(&mut g, 2);
+    // The T-east zombieman is parked; the one beyond the door (the door
+    // is a two-sided line: the same part) is not.
+    assert_eq!(g.actors().parked(), 1);
+    let walker = |g: &Game| g.actors().list.iter().find(|a| a.thing == Some(2)).unwrap().clone();
+    let (state, tics) = (walker(&g).state, walker(&g).tics);
+    idle(&mut g, 35);
+    assert_eq!((walker(&g).state, walker(&g).tics), (state, tics), "a parked monster's timer ran");
+    // In T-west, in its view: it is back on the list and wakes; the
+    // zombieman behind the door, now out of reach, is parked instead.
+    g.teleport(DVec2::new(128.0, 512.0), 0.0).unwrap();
+    idle(&mut g, 12);
+    assert_eq!(walker(&g).target, Target::Player, "it did not wake on sight");
+    assert_eq!(g.actors().parked(), 1);
+    let behind_door = g.actors().list.iter().find(|a| a.thing == Some(1)).unwrap();
+    assert_eq!(behind_door.target, Target::None);
+}

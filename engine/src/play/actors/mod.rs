@@ -73,6 +73,9 @@ pub struct Actor {
     pub removed: bool,
     /// On the list of actors a tick visits.
     listed: bool,
+    /// Waiting for a player who is out of its reach: off the tick's list
+    /// until the player comes into its part of the map.
+    parked: bool,
     /// Its flags now (the table's, changed by play: `Ambush` from the map,
     /// `Solid` lost in death, `Corpse` gained).
     pub flags: ActorFlags,
@@ -158,12 +161,44 @@ pub struct Actors {
     near: Vec<u32>,
     /// Per sector: the player was heard there (Doom's `soundtarget`).
     heard: Vec<bool>,
+    /// Per sector, its part of the map: sectors joined by two-sided lines
+    /// (directly or through others) share a part. Nothing sees, hears or
+    /// shoots from one part into another.
+    parts: Vec<u32>,
+    /// The part the player is in (as of the last tick).
+    here: u32,
+    /// Monsters waiting (`A_Look`) in a part the player is not in: they
+    /// cannot see or hear it, so they are off the tick's list (may hold
+    /// actors since woken; [`Actor::parked`] says).
+    parked: Vec<u32>,
+    /// The registry's `A_Look`.
+    look: Option<crate::actors::ActionId>,
     /// Per actor, its place in `Level::things` ([`NOT_DRAWN`]: none); per
     /// place, the actor there ([`NOT_DRAWN`]: a still map thing).
     slots: Vec<u32>,
     owners: Vec<u32>,
     /// Actors changed since the last [`Actors::draw`] (repeats are harmless).
     dirty: Vec<u32>,
+}
+
+/// Each sector's part of the map: the sectors reached from it through
+/// two-sided lines, numbered by their lowest sector.
+fn parts(map: &crate::map::Map) -> Vec<u32> {
+    let mut part: Vec<u32> = (0..map.sectors.len() as u32).collect();
+    fn root(part: &mut [u32], mut s: u32) -> u32 {
+        while part[s as usize] != s {
+            part[s as usize] = part[part[s as usize] as usize];
+            s = part[s as usize];
+        }
+        s
+    }
+    for line in &map.lines {
+        if let Some(back) = &line.back {
+            let (a, b) = (root(&mut part, line.front.sector as u32), root(&mut part, back.sector as u32));
+            part[a.max(b) as usize] = a.min(b);
+        }
+    }
+    (0..part.len() as u32).map(|s| root(&mut part, s)).collect()
 }
 
 /// No place in `Level::things`, or no actor in a place.
@@ -195,6 +230,10 @@ impl Actors {
             still: Vec::new(),
             run,
             heard,
+            parts: parts(map),
+            here: u32::MAX,
+            parked: Vec::new(),
+            look: crate::actors::actions::find("A_Look"),
             slots: Vec::new(),
             owners: Vec::new(),
             dirty: Vec::new(),
@@ -248,6 +287,7 @@ impl Actors {
             bright: false,
             removed: false,
             listed: false,
+            parked: false,
             flags: def.flags,
             health: def.health,
             target: Target::None,
@@ -370,6 +410,7 @@ impl Actors {
         }
         if tics >= 0 && !actor.listed {
             actor.listed = true;
+            actor.parked = false;
             self.awake.push(n as u32);
         }
     }
@@ -405,6 +446,11 @@ impl Actors {
     /// (`physics.rs`), then steps every awake actor's state timer; a state
     /// whose time is up gives way to the next, whose action runs.
     pub fn tick(&mut self, ctx: &mut ActorCtx) {
+        let here = self.parts.get(ctx.player.sector).copied().unwrap_or(u32::MAX);
+        if here != self.here {
+            self.here = here;
+            self.unpark();
+        }
         let mut k = 0;
         while k < self.movers.len() {
             let n = self.movers[k] as usize;
@@ -433,13 +479,41 @@ impl Actors {
                 self.set_state(n, next, ctx);
             }
         }
-        // Asleep (for ever) or gone: off the list, keeping the order.
-        let list = &mut self.list;
+        // Asleep (for ever), gone or parked: off the list, keeping the order.
+        let Actors { list, table, parts, parked, look, here, .. } = self;
         self.awake.retain(|&n| {
             let a = &mut list[n as usize];
             a.listed = a.tics >= 0 && !a.removed;
+            let looking = table.state(a.state).action.as_ref().is_some_and(|c| Some(c.action) == *look);
+            if a.listed && looking && parts.get(a.sector).is_some_and(|p| p != here) {
+                (a.listed, a.parked) = (false, true);
+                parked.push(n);
+            }
             a.listed
         });
+    }
+
+    /// Puts the parked monsters of the player's part back on the tick's
+    /// list, in the order they were parked.
+    fn unpark(&mut self) {
+        let Actors { list, parts, parked, awake, here, .. } = self;
+        parked.retain(|&n| {
+            let a = &mut list[n as usize];
+            if !a.parked || a.removed {
+                return false;
+            }
+            if parts.get(a.sector) != Some(here) {
+                return true;
+            }
+            (a.parked, a.listed) = (false, true);
+            awake.push(n);
+            false
+        });
+    }
+
+    /// Monsters parked: waiting in a part of the map the player is not in.
+    pub fn parked(&self) -> usize {
+        self.parked.iter().filter(|&&n| self.list[n as usize].parked).count()
     }
 
     /// How many actors a tick visits.

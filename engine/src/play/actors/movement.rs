@@ -144,6 +144,20 @@ impl Ground<'_> {
         })
     }
 
+    /// The first one-sided line the centre's path `from-to` meets (touching
+    /// counts). Doom checks only where a move ends, so a fast missile can
+    /// pass a wall's corner between two pieces of its move and fly out of
+    /// the map; here the path between is checked too.
+    pub fn wall_across(&self, query: &mut LineQuery, from: DVec2, to: DVec2) -> Option<usize> {
+        let map = &self.compiled.map;
+        let lines = query.run(self.blockmap, map.lines.len(), from.min(to), from.max(to));
+        lines.iter().map(|&i| i as usize).find(|&i| {
+            let line = &map.lines[i];
+            let (a, b) = map.line_points(line);
+            line.back.is_none() && crate::play::trace::crossing(from, to, a, b).is_some()
+        })
+    }
+
     /// Where `mover` would stand at `to`, if the lines let it (Doom's
     /// P_TryMove without the things: the caller checks those).
     pub fn try_move(&self, query: &mut LineQuery, mover: &Mover, to: DVec2) -> Result<Opening, Refusal> {

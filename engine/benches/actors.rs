@@ -1,0 +1,234 @@
+//! What actors cost per tick (issue 13's benchmarks). A custom loop, as the
+//! world bench's: a tick can be timed only once from a given state (`Game`
+//! is not `Clone`), so each round starts a fresh game (untimed), sets it up,
+//! lets 35 ticks pass untimed, then times each of [`WINDOW`] ticks on its
+//! own. The setups of a study run in turn, the order rotating each round;
+//! the table gives the median of the per-round medians, so every ratio
+//! comes from one run on the same machine state.
+//!
+//! - **horde**: a generated map (format 2): a hall of 100 x 100 zombiemen,
+//!   64 units apart, and the player in a closed room of its own beside it.
+//!   Three setups: no monsters (the same things turned into markers, which
+//!   do not spawn), the monsters dormant (as the map starts them: waiting
+//!   for the player, whom they cannot see or hear), and all awake
+//!   (`Game::wake_monsters`: each chases the player and tries to shoot).
+//! - **freedoom**: E1M1 and the largest map of the two IWADs (MAP29 of
+//!   freedoom2.wad by lines), skill 4, the player standing at the start,
+//!   too tough to die: no monsters, dormant, and all awake.
+//!
+//! Run: `cargo bench -p sightline-engine --bench actors` (both), or with
+//! `-- horde` or `-- freedoom` for one; `--test` for one short round.
+//! The Freedoom study needs Freedoom's WADs (Debian: freedoom) in
+//! `/usr/share/games/doom` or `$SIGHTLINE_DOOM_DIR`.
+
+use std::fmt::Write;
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::time::Instant;
+
+use sightline::actors::{ActorFlag, ActorTable};
+use sightline::bsp::{build, BuildOptions};
+use sightline::campaign::{open, MapRef};
+use sightline::level::Level;
+use sightline::map::load::parse_map;
+use sightline::materials::Materials;
+use sightline::play::{Game, GameOptions, TickInput};
+use sightline::texture::Library;
+use sightline::wad::library::WadArt;
+use sightline::wad::Wad;
+
+/// Ticks timed per round.
+const WINDOW: usize = 105;
+/// Untimed ticks before the window (the awake monsters spread out).
+const SETTLE: usize = 35;
+const ROUNDS: usize = 7;
+/// Zombiemen across and down the hall, and their spacing.
+const HORDE: usize = 100;
+const SPACING: f64 = 64.0;
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let filter = args.iter().find(|a| !a.starts_with('-')).cloned();
+    let quick = args.iter().any(|a| a == "--test");
+    let wanted = |name: &str| filter.as_deref().is_none_or(|f| name.contains(f) || f.contains(name));
+    let rounds = if quick { 1 } else { ROUNDS };
+    if wanted("horde") {
+        let horde = |inside: bool| {
+            let map = parse_map(&horde_ron(inside), "horde").unwrap_or_else(|e| panic!("{e}"));
+            let compiled = build(&map, &BuildOptions::default()).unwrap_or_else(|e| panic!("horde: {e}"));
+            move || Level::with_builtin_textures(compiled.clone()).unwrap_or_else(|e| panic!("{e}"))
+        };
+        study("a hall of 10,000 zombiemen, the player in a room of its own", horde(false), &SETUPS, rounds);
+        let fighting = [Setup::NoMonsters, Setup::Awake];
+        study("the same hall with the player in it, 64 units east of the horde", horde(true), &fighting, rounds);
+    }
+    if wanted("freedoom") {
+        for map in ["freedoom1.wad:E1M1", "freedoom2.wad:MAP29"] {
+            let (file, name) = map.split_once(':').unwrap();
+            let label = format!("{}:{name}", doom_dir().join(file).display());
+            let opened = open(&MapRef::parse(&label, None), &BuildOptions::default()).unwrap_or_else(|e| {
+                panic!("{e}\nthe actors bench needs Freedoom (apt-get install freedoom) or SIGHTLINE_DOOM_DIR=dir")
+            });
+            let compiled = opened.level.compiled.clone();
+            let wad = Wad::open(&doom_dir().join(file)).unwrap_or_else(|e| panic!("{e}"));
+            let library =
+                Library { dirs: Vec::new(), wad: Some(Arc::new(WadArt::new(Wad::stack(vec![wad])).unwrap())) };
+            // A fresh level as `open` makes it, without compiling again.
+            let level = || {
+                let materials =
+                    Materials::resolve_in(&compiled.map, &library, &label).unwrap_or_else(|e| panic!("{e}"));
+                Level::new(compiled.clone(), materials)
+            };
+            study(map, level, &SETUPS, rounds);
+        }
+    }
+}
+
+/// Where Freedoom's WADs are (as the tests and the other benches look).
+fn doom_dir() -> PathBuf {
+    std::env::var_os("SIGHTLINE_DOOM_DIR").map_or_else(|| PathBuf::from("/usr/share/games/doom"), PathBuf::from)
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Setup {
+    NoMonsters,
+    Dormant,
+    Awake,
+}
+
+const SETUPS: [Setup; 3] = [Setup::NoMonsters, Setup::Dormant, Setup::Awake];
+
+/// A fresh game on `level` at skill 4 for `setup`, with the player unable
+/// to die and (awake) every monster after it.
+fn game(mut level: Level, setup: Setup) -> Game {
+    if setup == Setup::NoMonsters {
+        let table = ActorTable::active();
+        for t in &mut level.compiled.map.things {
+            if table.get(&t.kind).is_some_and(|a| a.has(ActorFlag::CountKill)) {
+                t.kind = "deathmatch_start".into();
+            }
+        }
+    }
+    let mut game = Game::with_options(level, GameOptions { skill: 4, seed: 1 }).unwrap_or_else(|e| panic!("{e}"));
+    game.player_mut().health = 1_000_000;
+    if setup == Setup::Awake {
+        game.wake_monsters();
+    }
+    game
+}
+
+fn median(values: &mut [f64]) -> f64 {
+    values.sort_by(f64::total_cmp);
+    let n = values.len();
+    if n.is_multiple_of(2) {
+        (values[n / 2 - 1] + values[n / 2]) / 2.0
+    } else {
+        values[n / 2]
+    }
+}
+
+/// Times the three setups on `level`, `rounds` times each in rotating
+/// order, and prints a markdown table.
+fn study(what: &str, level: impl Fn() -> Level, setups: &[Setup], rounds: usize) {
+    let mut medians: Vec<Vec<f64>> = vec![Vec::new(); setups.len()];
+    let mut census = vec![(0usize, 0usize, 0usize); setups.len()];
+    let still = TickInput::default();
+    for round in 0..rounds {
+        for k in 0..setups.len() {
+            let which = (k + round) % setups.len();
+            let mut game = game(level(), setups[which]);
+            for _ in 0..SETTLE {
+                game.tick(&still);
+            }
+            let mut times = Vec::with_capacity(WINDOW);
+            for _ in 0..WINDOW {
+                let start = Instant::now();
+                game.tick(&still);
+                times.push(start.elapsed().as_secs_f64() * 1e6);
+            }
+            medians[which].push(median(&mut times));
+            let alive = game.actors().list.iter().filter(|a| a.health > 0 && a.flags.has(ActorFlag::CountKill)).count();
+            census[which] = (alive, game.actors().awake(), game.actors().parked());
+        }
+    }
+    let m: Vec<f64> = medians.iter_mut().map(|v| median(v)).collect();
+    let spread = |v: &[f64]| {
+        let (lo, hi) = v.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), &x| (lo.min(x), hi.max(x)));
+        format!("{lo:.1}..{hi:.1}")
+    };
+    println!("\n## {what}: skill 4, {rounds} rounds of {WINDOW} ticks, median of the per-round medians\n");
+    println!("| setup | µs per tick | ticks per second | monsters alive at the end | actors a tick visits | parked |");
+    println!("|---|---:|---:|---:|---:|---:|");
+    for (k, setup) in setups.iter().enumerate() {
+        let name = match setup {
+            Setup::NoMonsters => "no monsters",
+            Setup::Dormant => "monsters dormant",
+            Setup::Awake => "monsters awake",
+        };
+        let (monsters, visited, parked) = census[k];
+        println!("| {name} | {:.1} | {:.0} | {monsters} | {visited} | {parked} |", m[k], 1e6 / m[k]);
+    }
+    if setups.len() < 3 {
+        println!(
+            "\nawake / none = {:.1}; per-round medians: none {}, awake {}",
+            m[1] / m[0],
+            spread(&medians[0]),
+            spread(&medians[1])
+        );
+        return;
+    }
+    println!(
+        "\ndormant / none = {:.3}; awake / none = {:.1}; per-round medians: none {}, dormant {}, awake {}",
+        m[1] / m[0],
+        m[2] / m[0],
+        spread(&medians[0]),
+        spread(&medians[1]),
+        spread(&medians[2])
+    );
+}
+
+/// The horde map's RON text: the hall (sector 0) with its zombiemen facing
+/// east, towards the player's room (sector 1), 512 units east of the
+/// hall's east wall, closed on every side; or (`inside`) the player in the
+/// hall, 64 units east of the last column.
+fn horde_ron(inside: bool) -> String {
+    let side = HORDE as f64 * SPACING + SPACING;
+    let (rx, rw) = (side + 512.0, 256.0);
+    let mut text = String::from("Map(\n    version: 2,\n    name: \"Horde\",\n    vertices: [\n");
+    for (x, y) in
+        [(0.0, 0.0), (0.0, side), (side, side), (side, 0.0), (rx, 0.0), (rx, rw), (rx + rw, rw), (rx + rw, 0.0)]
+    {
+        writeln!(text, "        ({x:.1}, {y:.1}),").unwrap();
+    }
+    text.push_str("    ],\n    sectors: [\n");
+    for _ in 0..2 {
+        text.push_str(
+            "        Sector(floor: 0.0, ceiling: 128.0, light: 160, floor_texture: \"FLOOR\", ceiling_texture: \"CEIL\"),\n",
+        );
+    }
+    text.push_str("    ],\n    lines: [\n");
+    // Clockwise seen from above: the inside is on each line's right.
+    for (base, sector) in [(0, 0), (4, 1)] {
+        for k in 0..4 {
+            writeln!(
+                text,
+                "        Line(from: {}, to: {}, front: Side(sector: {sector}, middle: \"STONE\")),",
+                base + k,
+                base + (k + 1) % 4
+            )
+            .unwrap();
+        }
+    }
+    text.push_str("    ],\n    things: [\n");
+    let start = if inside { (side - SPACING / 2.0, side / 2.0) } else { (rx + rw / 2.0, rw / 2.0) };
+    writeln!(text, "        Thing(kind: \"player_start\", x: {:.1}, y: {:.1}, angle: 180.0),", start.0, start.1)
+        .unwrap();
+    for j in 0..HORDE {
+        for i in 0..HORDE {
+            let (x, y) = ((i + 1) as f64 * SPACING, (j + 1) as f64 * SPACING);
+            writeln!(text, "        Thing(kind: \"zombieman\", x: {x:.1}, y: {y:.1}, angle: 0.0),").unwrap();
+        }
+    }
+    text.push_str("    ],\n)\n");
+    text
+}
