@@ -539,3 +539,56 @@ fn e1m1_monsters_are_drawn_from_every_side() {
     let distinct: std::collections::BTreeSet<_> = seen.iter().map(|t| t.0).collect();
     assert_eq!(distinct.len(), 8, "the eight sides show {seen:?}");
 }
+
+/// The BSP renderer and the reference agree in `ids` shading on frames full
+/// of actors: E1M1 and E3M9 (22 hanging things) on skill 4, every monster
+/// awake and 70 ticks into the fight, each of up to eight monsters seen
+/// from eight sides (every rotation) and every hanging thing from two.
+#[test]
+#[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
+fn frames_full_of_actors_agree_with_the_reference() {
+    use sightline::campaign::MapRef;
+    use sightline::play::playthrough::Playthrough;
+
+    let wad = wad_path("freedoom1.wad");
+    let (mut hanging, mut rotations) = (0, std::collections::BTreeSet::new());
+    for name in ["E1M1", "E3M9"] {
+        let map = format!("{}:{name}", wad.display());
+        let options = GameOptions { skill: 4, ..GameOptions::default() };
+        let mut play = Playthrough::of(&MapRef::parse(&map, None), options).unwrap_or_else(|e| panic!("{e}"));
+        play.game.player_mut().health = 1_000_000;
+        play.game.wake_monsters();
+        for _ in 0..70 {
+            play.tick(&TickInput::default()).unwrap();
+        }
+        let table = play.game.actors().table.clone();
+        let mut targets = Vec::new();
+        let mut monsters = 0;
+        for a in play.game.actors().list.iter().filter(|a| !a.removed && a.views.is_some()) {
+            let def = &table.actors[a.kind];
+            if def.has(ActorFlag::SpawnCeiling) {
+                targets.push((a.key, 2));
+                hanging += 1;
+            } else if def.has(ActorFlag::CountKill) && a.health > 0 && monsters < 8 {
+                targets.push((a.key, 8));
+                monsters += 1;
+            }
+        }
+        for (key, sides) in targets {
+            let Some(drawn) = play.game.level().things.iter().find(|t| t.key == key).copied() else { continue };
+            for k in 0..sides {
+                let from = drawn.angle + 360.0 / sides as f64 * k as f64;
+                let (s, c) = from.to_radians().sin_cos();
+                let eye = drawn.pos + DVec2::new(c, s) * 128.0;
+                if play.game.teleport(eye, from + 180.0).is_err() {
+                    continue;
+                }
+                let view = play.game.view(1.0);
+                rotations.insert(drawn.texture_seen_from(view.pos).0);
+                assert_agree(play.game.level(), &view, (160, 100), &format!("{name} thing {key} from {from:.0}"));
+            }
+        }
+    }
+    assert!(hanging >= 15, "only {hanging} hanging things were seen");
+    assert!(rotations.len() >= 40, "only {} distinct views were drawn", rotations.len());
+}

@@ -12,7 +12,7 @@
 //!   do not spawn), the monsters dormant (as the map starts them: waiting
 //!   for the player, whom they cannot see or hear), and all awake
 //!   (`Game::wake_monsters`: each chases the player and tries to shoot).
-//! - **freedoom**: E1M1 and the largest map of the two IWADs (MAP29 of
+//! - **freedoom**: E1M1 and the largest map of the two IWADs (MAP12 of
 //!   freedoom2.wad by lines), skill 4, the player standing at the start,
 //!   too tough to die: no monsters, dormant, and all awake.
 //!
@@ -63,7 +63,7 @@ fn main() {
         study("the same hall with the player in it, 64 units east of the horde", horde(true), &fighting, rounds);
     }
     if wanted("freedoom") {
-        for map in ["freedoom1.wad:E1M1", "freedoom2.wad:MAP29"] {
+        for map in ["freedoom1.wad:E1M1", "freedoom2.wad:MAP12"] {
             let (file, name) = map.split_once(':').unwrap();
             let label = format!("{}:{name}", doom_dir().join(file).display());
             let opened = open(&MapRef::parse(&label, None), &BuildOptions::default()).unwrap_or_else(|e| {
