@@ -69,6 +69,10 @@ pub struct DrawnThing {
     pub views: [crate::texture::TextureId; 8],
     /// Drawn at full brightness.
     pub bright: bool,
+    /// Drawn as Doom's spectre is: not its texels, but the picture behind
+    /// its shape, shifted a row up or down and darkened (textured shading
+    /// only; `ids` and flat draw it solid, so the renderers stay comparable).
+    pub fuzz: bool,
 }
 
 impl DrawnThing {
@@ -181,7 +185,11 @@ impl Level {
         let map = &self.compiled.map;
         let (t, sector) = (&map.things[i], self.thing_sectors[i]);
         let z = map.sectors[sector].floor;
-        Some(DrawnThing { key: i, pos: t.pos, z, sector, angle: t.angle, views: [texture; 8], bright: false })
+        let fuzz = map.version >= 2
+            && crate::actors::ActorTable::active()
+                .get(&t.kind)
+                .is_some_and(|a| a.has(crate::actors::ActorFlag::Shadow));
+        Some(DrawnThing { key: i, pos: t.pos, z, sector, angle: t.angle, views: [texture; 8], bright: false, fuzz })
     }
 
     /// Shows the things a single-player game at `skill` (1 to 5) has, by

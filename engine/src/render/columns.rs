@@ -96,6 +96,17 @@ impl ColumnWriter<'_> {
     /// translucent middle texture: Boom's default translucency table is
     /// about 66% opaque).
     #[inline]
+    /// The spectre's fuzz at `(x, y)`: the pixel `offset` rows away in the
+    /// same column (clamped to the column), darkened by a quarter.
+    pub fn put_fuzz(&mut self, x: usize, y: i32, offset: i32) {
+        let column = (x - self.x0) * self.height;
+        let from = (y + offset).clamp(0, self.height as i32 - 1) as usize;
+        let [r, g, b, a] = self.canvas[column + from].to_le_bytes();
+        let dark = |c: u8| (u16::from(c) * 3 / 4) as u8;
+        self.canvas[column + y as usize] = u32::from_le_bytes([dark(r), dark(g), dark(b), a]);
+        self.masked_written += 1;
+    }
+
     pub fn put_blended(&mut self, x: usize, y: i32, colour: u32) {
         let p = &mut self.canvas[(x - self.x0) * self.height + y as usize];
         let (a, b) = (colour.to_le_bytes(), p.to_le_bytes());

@@ -26,6 +26,7 @@ pub(crate) struct VisSprite {
     pub floor: f64,
     pub light: u8,
     pub texture: TextureId,
+    pub fuzz: bool,
     /// Columns it may cover (the predicate decides each).
     pub x0: usize,
     pub x1: usize,
@@ -49,7 +50,7 @@ pub(crate) fn collect(level: &Level, cam: &Camera, sprites: &mut Vec<VisSprite>)
             continue;
         }
         let light = if t.bright { u8::MAX } else { level.map.sectors[t.sector].light };
-        sprites.push(VisSprite { thing: t.key, depth: q.x, left, floor: t.z, light, texture, x0, x1 });
+        sprites.push(VisSprite { thing: t.key, depth: q.x, left, floor: t.z, light, texture, fuzz: t.fuzz, x0, x1 });
     }
     // Far to near. At equal depth the lower-numbered thing is drawn last, on
     // top, and a sprite goes over a masked middle: the reference walks near
@@ -114,6 +115,7 @@ impl MaskedPass<'_> {
         let paint = match self.scene.shade {
             Shade::Ids => Texels::Solid(ids_colour(Surface::Thing { thing: s.thing })),
             Shade::Flat => Texels::Solid(colour(Shade::Flat, Surface::Thing { thing: s.thing }, s.light, 1.0)),
+            Shade::Textured if s.fuzz => Texels::Fuzz(self.scene.level.time),
             Shade::Textured => Texels::Tinted(self.scene.lighting.tint(s.light, s.depth)),
         };
         let cam = self.cam;
@@ -182,6 +184,10 @@ impl MaskedPass<'_> {
             let c = match paint {
                 Texels::Solid(c) => c,
                 Texels::Tinted(t) => t.apply(texel),
+                Texels::Fuzz(time) => {
+                    out.put_fuzz(x, y, fuzz_offset(x, y, time));
+                    continue;
+                }
             };
             if translucent {
                 out.put_blended(x, y, c);
@@ -213,4 +219,18 @@ impl MaskedPass<'_> {
 enum Texels {
     Solid(u32),
     Tinted(super::light::Tint),
+    /// The spectre's fuzz at this tick.
+    Fuzz(u64),
+}
+
+/// The row the fuzz copies into pixel `(x, y)` at tick `time`: the one
+/// above or below, in a pattern that crawls a row a tick (a hash, so any
+/// strip computes the same pixel alike; Doom walks a fixed table of 50).
+fn fuzz_offset(x: usize, y: i32, time: u64) -> i32 {
+    let h = (x as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ (y as u64 + time).wrapping_mul(0xC2B2_AE3D_27D4_EB4F);
+    if (h >> 29) & 1 == 0 {
+        -1
+    } else {
+        1
+    }
 }

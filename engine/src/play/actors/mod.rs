@@ -545,6 +545,7 @@ impl Actors {
                 angle: a.angle,
                 views,
                 bright: a.bright,
+                fuzz: a.flags.has(ActorFlag::Shadow),
             });
             let slot = self.slots[n as usize];
             match (slot, drawn) {
