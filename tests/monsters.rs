@@ -351,3 +351,48 @@ fn a_monster_out_of_the_player_s_reach_costs_nothing_until_the_player_comes() {
     let behind_door = g.actors().list.iter().find(|a| a.thing == Some(1)).unwrap();
     assert_eq!(behind_door.target, Target::None);
 }
+
+/// Skill 5 (Doom's nightmare): a dead zombieman comes back where its map
+/// thing stood, no sooner than 12 s after it fell, as a new actor; its
+/// body goes.
+#[test]
+fn on_skill_5_a_dead_monster_comes_back_at_its_spot() {
+    let p = root().join("tests").join("maps").join("monsters.ron");
+    let options = sightline::play::GameOptions { skill: 5, seed: 3 };
+    let mut g = Game::with_options(load(&p), options).unwrap();
+    g.player_mut().health = 1_000_000;
+    let spot = actor(&g, "zombieman").pos;
+    g.teleport(DVec2::new(700.0, 256.0), 0.0).unwrap();
+    for _ in 0..35 * 10 {
+        if g.stats().kills.0 > 0 {
+            break;
+        }
+        g.tick(&TickInput { fire: true, ..TickInput::default() });
+    }
+    assert_eq!(g.stats().kills.0, 1, "the zombieman was not killed");
+    // Out of its sight, in the room's far corner.
+    g.teleport(DVec2::new(64.0, 64.0), 180.0).unwrap();
+    let died = g.ticks();
+    let zombies = |g: &Game| {
+        let t = &g.actors().table;
+        g.actors()
+            .list
+            .iter()
+            .filter(|a| !a.removed && t.actors[a.kind].name == "zombieman")
+            .cloned()
+            .collect::<Vec<_>>()
+    };
+    let mut back = None;
+    for _ in 0..35 * 300 {
+        g.tick(&TickInput::default());
+        if let Some(z) = zombies(&g).into_iter().find(|z| z.health > 0) {
+            back = Some((g.ticks(), z));
+            break;
+        }
+    }
+    let (at, z) = back.expect("no zombieman came back in 300 s");
+    assert!(at - died >= 12 * 35, "it came back {} ticks after dying", at - died);
+    assert_eq!((z.pos, z.health, z.thing), (spot, 20, Some(1)));
+    assert_eq!(zombies(&g).len(), 1, "the body stayed beside the new zombieman");
+    assert_drawn_as_they_stand(&g);
+}

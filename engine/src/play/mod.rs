@@ -190,6 +190,7 @@ impl Game {
         let world = World::new(&mut level, &mut rng);
         let fast = options.skill == 5;
         let mut actors = actors::Actors::spawn_map_things(&level, table.clone(), fast, &mut rng);
+        actors.respawn = options.skill == 5;
         actors.draw_all(&mut level);
         let mut query = LineQuery::default();
         let collision = Collision { compiled: &level.compiled, blockmap: &blockmap };

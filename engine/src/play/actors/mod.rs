@@ -105,6 +105,9 @@ pub struct Actor {
     /// choosing a new direction.
     pub movedir: u8,
     pub movecount: i32,
+    /// The tick it entered a state that lasts for ever (a corpse's last
+    /// frame): skill 5 brings a monster back some time after.
+    pub still_since: u64,
     /// Ticks before it may first attack (Doom's `reactiontime`).
     pub reaction_time: i32,
     /// Just attacked: the next chase step moves instead (Doom's MF_JUSTATTACKED).
@@ -173,6 +176,11 @@ pub struct Actors {
     parked: Vec<u32>,
     /// The registry's `A_Look`.
     look: Option<crate::actors::ActionId>,
+    /// Skill 5: monsters come back from the dead (Doom's `respawnmonsters`).
+    pub respawn: bool,
+    /// With `respawn`: the monsters that have lain still (may hold some
+    /// since raised or gone; `monsters::respawn` checks).
+    corpses: Vec<u32>,
     /// Per actor, its place in `Level::things` ([`NOT_DRAWN`]: none); per
     /// place, the actor there ([`NOT_DRAWN`]: a still map thing).
     slots: Vec<u32>,
@@ -234,6 +242,8 @@ impl Actors {
             here: u32::MAX,
             parked: Vec::new(),
             look: crate::actors::actions::find("A_Look"),
+            respawn: false,
+            corpses: Vec::new(),
             slots: Vec::new(),
             owners: Vec::new(),
             dirty: Vec::new(),
@@ -301,6 +311,7 @@ impl Actors {
             moving: false,
             movedir: NO_DIR,
             movecount: 0,
+            still_since: 0,
             reaction_time: def.reaction_time,
             just_attacked: false,
             just_hit: false,
@@ -446,6 +457,9 @@ impl Actors {
     /// (`physics.rs`), then steps every awake actor's state timer; a state
     /// whose time is up gives way to the next, whose action runs.
     pub fn tick(&mut self, ctx: &mut ActorCtx) {
+        if self.respawn && ctx.level.time % 32 == 0 {
+            self.respawn_monsters(ctx);
+        }
         let here = self.parts.get(ctx.player.sector).copied().unwrap_or(u32::MAX);
         if here != self.here {
             self.here = here;
@@ -480,10 +494,17 @@ impl Actors {
             }
         }
         // Asleep (for ever), gone or parked: off the list, keeping the order.
-        let Actors { list, table, parts, parked, look, here, .. } = self;
+        let Actors { list, table, parts, parked, look, here, respawn, corpses, .. } = self;
+        let now = ctx.level.time;
         self.awake.retain(|&n| {
             let a = &mut list[n as usize];
             a.listed = a.tics >= 0 && !a.removed;
+            if a.tics < 0 && !a.removed {
+                a.still_since = now;
+                if *respawn && a.flags.has(ActorFlag::CountKill) {
+                    corpses.push(n);
+                }
+            }
             let looking = table.state(a.state).action.as_ref().is_some_and(|c| Some(c.action) == *look);
             if a.listed && looking && parts.get(a.sector).is_some_and(|p| p != here) {
                 (a.listed, a.parked) = (false, true);

@@ -546,7 +546,85 @@ pub fn sarg_attack(actors: &mut Actors, n: usize, args: &[Arg], ctx: &mut ActorC
     }
 }
 
+/// Ticks a monster lies still before skill 5 may bring it back (Doom's
+/// 12 seconds), and the chance each 32nd tick after that (Doom's
+/// `P_Random() <= 4`: 5 in 256).
+pub const RESPAWN_AFTER: u64 = 12 * 35;
+
 impl Actors {
+    /// Skill 5, every 32nd tick (Doom's P_NightmareRespawn): each monster
+    /// that has lain still (a counted monster in a state that lasts for
+    /// ever) for [`RESPAWN_AFTER`] ticks comes back, with a chance of 5 in
+    /// 256, where its map thing stood, if nothing solid stands there: a
+    /// new actor of its kind with the map's ambush flag, held 18 ticks,
+    /// and a teleport fog where the body lay and where it appears.
+    pub(super) fn respawn_monsters(&mut self, ctx: &mut ActorCtx) {
+        let now = ctx.level.time;
+        let mut corpses = std::mem::take(&mut self.corpses);
+        corpses.retain(|&n| {
+            let a = &self.list[n as usize];
+            if a.removed || a.tics >= 0 {
+                return false; // raised, or gone
+            }
+            if now < a.still_since + RESPAWN_AFTER || ctx.rng.byte() > 4 {
+                return true;
+            }
+            !self.bring_back(n as usize, ctx)
+        });
+        corpses.append(&mut self.corpses);
+        self.corpses = corpses;
+    }
+
+    /// Brings monster `n` back at its map thing's spot; `false` if it has
+    /// none or the spot is taken.
+    fn bring_back(&mut self, n: usize, ctx: &mut ActorCtx) -> bool {
+        let a = &self.list[n];
+        let Some(i) = a.thing else { return false };
+        let (kind, body, z_body) = (a.kind, a.pos, a.z);
+        let thing = &ctx.level.compiled.map.things[i];
+        let (spot, angle, ambush) = (thing.pos, (thing.angle / 45.0).trunc() * 45.0, thing.ambush);
+        let def = &self.table.actors[kind];
+        let (radius, height, ceiling) = (def.radius, def.height, def.has(ActorFlag::SpawnCeiling));
+        let ground = Ground { compiled: &ctx.level.compiled, blockmap: ctx.blockmap };
+        let Ok(o) = ground.opening(ctx.query, spot, radius, false) else { return false };
+        if o.ceiling - o.floor < height {
+            return false;
+        }
+        let r = DVec2::splat(radius);
+        let near = self.near(spot - r, spot + r);
+        let taken = near.iter().any(|&k| {
+            let b = &self.list[k as usize];
+            let br = self.table.actors[b.kind].radius;
+            !b.removed
+                && b.flags.has(ActorFlag::Solid)
+                && (b.pos.x - spot.x).abs() < br + radius
+                && (b.pos.y - spot.y).abs() < br + radius
+        });
+        self.give_back(near);
+        let p = &ctx.player;
+        let on_player =
+            (p.pos.x - spot.x).abs() < PLAYER_RADIUS + radius && (p.pos.y - spot.y).abs() < PLAYER_RADIUS + radius;
+        if taken || (on_player && !p.dead()) {
+            return false;
+        }
+        let z = if ceiling { o.ceiling - height } else { o.floor };
+        let Some(k) = self.spawn(kind, spot, z, angle, ctx) else { return false };
+        let b = &mut self.list[k];
+        b.thing = Some(i);
+        b.reaction_time = 18;
+        if ambush {
+            b.flags.set(ActorFlag::Ambush, true);
+        }
+        if let Some(fog) = self.table.index("teleport_fog") {
+            self.spawn(fog, body, z_body, 0.0, ctx);
+            self.spawn(fog, spot, o.floor, 0.0, ctx);
+        }
+        ctx.events.push(Event::Sound { sound: "telept", origin: Origin::At(body) });
+        ctx.events.push(Event::Sound { sound: "telept", origin: Origin::At(spot) });
+        self.remove(n);
+        true
+    }
+
     /// Wakes every monster that is waiting for the player (in a state
     /// whose action is `A_Look`): it takes the player as its target and
     /// goes to its `See` state, as if it had seen it (for benchmarks and
