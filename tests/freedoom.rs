@@ -592,3 +592,174 @@ fn frames_full_of_actors_agree_with_the_reference() {
     assert!(hanging >= 15, "only {hanging} hanging things were seen");
     assert!(rotations.len() >= 40, "only {} distinct views were drawn", rotations.len());
 }
+
+/// E1M1 on skill 3 is a game that can be won: every monster can be
+/// fought and killed with the weapons found, and the exit switch ends the
+/// level. A scripted fighter (not a person, and it moves by teleporting)
+/// stands 128 to 320 units from each monster in turn, at the first spot
+/// it can stand on round it from which it sees it, faces it and fires
+/// (the shotgun, picked up first with the green armour), backing off from what comes near,
+/// nearest monsters first. It takes no cover and no medikits, as a person
+/// would: it is healed to 100 between fights and when below 30, and the
+/// health so given is printed beside what the map's items hold.
+#[test]
+#[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
+fn e1m1_can_be_fought_through_to_its_exit_on_skill_3() {
+    use sightline::campaign::MapRef;
+    use sightline::play::playthrough::Playthrough;
+
+    let wad = wad_path("freedoom1.wad");
+    let map = MapRef::parse(&format!("{}:E1M1", wad.display()), None);
+    let mut play = Playthrough::of(&map, GameOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+    let table = play.game.actors().table.clone();
+    let idle = TickInput::default();
+    let total = play.game.stats().kills.1;
+    assert!(total > 0, "E1M1 has monsters on skill 3");
+    let mut scratch = sightline::play::sight::Scratch::default();
+    use sightline::play::sight::{sight, Body};
+    let mut healed = 0;
+    let heal = |game: &mut Game, to: i32| {
+        let p = game.player_mut();
+        let more = (to - p.health).max(0);
+        p.health += more;
+        more
+    };
+    // The health the map holds (what a person would pick up).
+    let supply: i32 = play
+        .game
+        .actors()
+        .list
+        .iter()
+        .filter_map(|a| match table.actors[a.kind].name.as_str() {
+            "stimpack" => Some(10),
+            "medikit" => Some(25),
+            "health_bonus" => Some(1),
+            "soulsphere" => Some(100),
+            _ => None,
+        })
+        .sum();
+    // The shotgun and the armour first, where they lie.
+    for want in ["shotgun", "green_armor"] {
+        let item = play.game.actors().list.iter().find(|a| !a.removed && table.actors[a.kind].name == want);
+        if let Some(pos) = item.map(|a| a.pos) {
+            play.game.teleport(pos, 0.0).unwrap();
+            play.tick(&idle).unwrap();
+        }
+    }
+    for round in 0..3 {
+        // Nearest first, from where the fighter stands.
+        let here = play.game.player().pos;
+        let mut targets: Vec<usize> = (0..play.game.actors().list.len())
+            .filter(|&i| {
+                let a = &play.game.actors().list[i];
+                !a.removed && a.health > 0 && table.actors[a.kind].has(ActorFlag::CountKill)
+            })
+            .collect();
+        targets.sort_by(|&i, &j| {
+            let d = |k: usize| play.game.actors().list[k].pos.distance(here);
+            d(i).total_cmp(&d(j))
+        });
+        for i in targets {
+            // Between fights, healed to 100: a person takes cover and the
+            // map's health; the fighter stands in the open and does neither.
+            healed += heal(&mut play.game, 100);
+            // Low on ammunition: the nearest box or clip that lies about.
+            let ammo = play.game.player().ammo;
+            if ammo[1] < 4 && ammo[0] < 20 {
+                let here = play.game.player().pos;
+                let kinds = ["box_of_shells", "shotgun_shells", "box_of_bullets", "clip"];
+                let item = play
+                    .game
+                    .actors()
+                    .list
+                    .iter()
+                    .filter(|a| !a.removed && kinds.contains(&table.actors[a.kind].name.as_str()))
+                    .map(|a| a.pos)
+                    .min_by(|p, q| p.distance(here).total_cmp(&q.distance(here)));
+                if let Some(pos) = item.filter(|&p| play.game.teleport(p, 0.0).is_ok()) {
+                    let _ = pos;
+                    play.tick(&idle).unwrap();
+                }
+            }
+            // At most 20 s on one monster (a person gives up on one it cannot hit, for now).
+            let began = play.game.ticks();
+            'spots: for distance in [320.0, 224.0, 128.0] {
+                for k in 0..16 {
+                    let a = &play.game.actors().list[i];
+                    if a.health <= 0 || play.game.ticks() > began + 700 {
+                        break 'spots;
+                    }
+                    let from = 22.5 * k as f64;
+                    let (s, c) = from.to_radians().sin_cos();
+                    let eye = a.pos + DVec2::new(c, s) * distance;
+                    if play.game.teleport(eye, from + 180.0).is_err() {
+                        continue;
+                    }
+                    // Only where it can see the monster.
+                    let (me, it) = (play.game.player(), &play.game.actors().list[i]);
+                    let looker = Body { pos: me.pos, z: me.z, height: 56.0, radius: 16.0, index: usize::MAX };
+                    let def = &table.actors[it.kind];
+                    let target = Body { pos: it.pos, z: it.z, height: def.height, radius: def.radius, index: i };
+                    if !sight(&play.game.level().compiled, &mut scratch, &looker, &target) {
+                        continue;
+                    }
+                    for _ in 0..35 * 3 {
+                        let a = &play.game.actors().list[i];
+                        if a.health <= 0 {
+                            break 'spots;
+                        }
+                        // Keep facing it as it moves.
+                        let d = a.pos - play.game.player().pos;
+                        let turn = (d.y.atan2(d.x).to_degrees() - play.game.player().angle + 540.0) % 360.0 - 180.0;
+                        let weapon = if play.game.player().ammo[1] > 0 { 3 } else { 0 };
+                        // Back off from what comes close, as a person would.
+                        let forward = if d.length() < 160.0 { -1 } else { 0 };
+                        // Sidestep, a second each way, to dodge missiles.
+                        let strafe = if (play.game.ticks() / 35) % 2 == 0 { 1 } else { -1 };
+                        let input = TickInput { fire: true, turn: turn as f32, weapon, forward, strafe, ..idle };
+                        play.tick(&input).unwrap();
+                        if play.game.player().health < 30 {
+                            healed += heal(&mut play.game, 100);
+                        }
+                        assert!(
+                            !play.game.player().dead(),
+                            "round {round}: the fighter died facing actor {i} ({}), kills {:?}, tick {}",
+                            table.actors[play.game.actors().list[i].kind].name,
+                            play.game.stats().kills,
+                            play.game.ticks()
+                        );
+                    }
+                }
+            }
+        }
+    }
+    let kills = play.game.stats().kills;
+    let left: Vec<String> = play
+        .game
+        .actors()
+        .list
+        .iter()
+        .filter(|a| a.health > 0 && table.actors[a.kind].has(ActorFlag::CountKill))
+        .map(|a| format!("{} at {} (sector {}, target {:?})", table.actors[a.kind].name, a.pos, a.sector, a.target))
+        .collect();
+    assert_eq!(kills.0, kills.1, "monsters left alive: {left:?}");
+    // The exit switch, used from in front.
+    let level_map = play.game.level().compiled.map.clone();
+    let (i, line) = level_map
+        .lines
+        .iter()
+        .enumerate()
+        .find(|(_, l)| l.special.as_ref().is_some_and(|s| s.action == Action::Exit))
+        .expect("E1M1 has an exit line");
+    let (a, b) = level_map.line_points(line);
+    let d = (b - a).normalize();
+    let normal = DVec2::new(d.y, -d.x);
+    let angle = (-normal).y.atan2((-normal).x).to_degrees();
+    play.game.teleport((a + b) / 2.0 + normal * 20.0, angle).unwrap_or_else(|e| panic!("line {i}: {e}"));
+    play.tick(&TickInput { use_line: true, ..idle }).unwrap();
+    assert_eq!(play.game.exit(), Some(sightline::play::Exit::Normal), "the exit switch did not end the level");
+    eprintln!(
+        "E1M1: {kills:?} kills, health {} at the exit; healed {healed} in all, the map holds {supply}",
+        play.game.player().health
+    );
+}
