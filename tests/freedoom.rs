@@ -152,7 +152,10 @@ fn check_walls(game: &Game, ground: &Ground, query: &mut LineQuery, start: &[(DV
         let def = &table.actors[a.kind];
         let inside = game.level().compiled.locate(a.pos).is_some();
         assert!(inside, "{} {at}: actor {i} ({}) left the map at {}", path.display(), def.name, a.pos);
-        if !a.flags.has(ActorFlag::Solid) {
+        // A body still falling in its death frames may be where it was
+        // killed: a pain elemental's soul spawned into a wall dies there
+        // at once (Doom's A_PainShootSkull), solid until it falls.
+        if !a.flags.has(ActorFlag::Solid) || a.health <= 0 {
             continue;
         }
         if let Err(line) = ground.opening(query, a.pos, def.radius, true) {
