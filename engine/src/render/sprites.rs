@@ -36,11 +36,12 @@ pub(crate) struct VisSprite {
 pub(crate) fn collect(level: &Level, cam: &Camera, sprites: &mut Vec<VisSprite>) {
     sprites.clear();
     for t in &level.things {
-        let texture = t.texture_seen_from(cam.eye);
         let q = cam.to_camera(t.pos);
         if q.x < NEAR {
             continue;
         }
+        // The view after the cheap test: half the things are behind the eye.
+        let texture = t.texture_seen_from(cam.eye);
         let w = level.materials.textures.get(texture).width as f64;
         let left = q.y - w / 2.0;
         // One column of slack each side: the per-column predicate decides.
