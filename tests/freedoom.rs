@@ -603,6 +603,14 @@ fn frames_full_of_actors_agree_with_the_reference() {
                 let view = play.game.view(1.0);
                 rotations.insert(drawn.texture_seen_from(view.pos).0);
                 assert_agree(play.game.level(), &view, (160, 100), &format!("{name} thing {key} from {from:.0}"));
+                if sides == 2 && k == 0 {
+                    // Textured, to look at (hanging things hang).
+                    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("actors-in-view");
+                    std::fs::create_dir_all(&dir).unwrap();
+                    let mut fb = Framebuffer::new(320, 200);
+                    render_frame(play.game.level(), &view, &RenderOptions::default(), &mut Frame::new(), &mut fb);
+                    std::fs::write(dir.join(format!("{name}-{key}.png")), fb.to_png()).unwrap();
+                }
             }
         }
     }

@@ -179,16 +179,21 @@ impl Level {
     }
 
     /// Map thing `i` drawn as it stands in the map, if it is shown and has
-    /// a sprite: its first frame, on its sector's floor.
+    /// a sprite: its first frame, on its sector's floor (or, hanging, from
+    /// its ceiling, where play puts it).
     pub fn map_thing_drawn(&self, i: usize) -> Option<DrawnThing> {
         let texture = self.materials.sprites[i].filter(|_| self.thing_shown[i])?;
         let map = &self.compiled.map;
         let (t, sector) = (&map.things[i], self.thing_sectors[i]);
-        let z = map.sectors[sector].floor;
-        let fuzz = map.version >= 2
-            && crate::actors::ActorTable::active()
-                .get(&t.kind)
-                .is_some_and(|a| a.has(crate::actors::ActorFlag::Shadow));
+        use crate::actors::{ActorFlag, ActorTable};
+        let actor = ActorTable::active().get(&t.kind).filter(|_| map.version >= 2);
+        let s = &map.sectors[sector];
+        // Where play puts it: hanging things hang from the ceiling.
+        let z = match actor {
+            Some(a) if a.has(ActorFlag::SpawnCeiling) => s.ceiling - a.height,
+            _ => s.floor,
+        };
+        let fuzz = actor.is_some_and(|a| a.has(ActorFlag::Shadow));
         Some(DrawnThing { key: i, pos: t.pos, z, sector, angle: t.angle, views: [texture; 8], bright: false, fuzz })
     }
 
