@@ -396,3 +396,41 @@ fn on_skill_5_a_dead_monster_comes_back_at_its_spot() {
     assert_eq!(zombies(&g).len(), 1, "the body stayed beside the new zombieman");
     assert_drawn_as_they_stand(&g);
 }
+
+/// A lift carries what stands on it: a barrel on lift A of `lift.ron`
+/// goes down and up with its floor, tick by tick.
+#[test]
+fn a_lift_carries_a_barrel_down_and_up() {
+    use sightline::bsp::{build, BuildOptions};
+    use sightline::level::Level;
+    let path = root().join("tests").join("maps").join("lift.ron");
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    // Lift A spans x 256..384, y 160..256; the player walks east along y 208.
+    let start = text.find("Thing(kind: \"player_start\"").expect("lift.ron has a player start");
+    let mut text = text.clone();
+    text.insert_str(start, "Thing(kind: \"barrel\", x: 360.0, y: 184.0),\n        ");
+    let map = sightline::map::load::parse_map(&text, "lift.ron with a barrel").unwrap_or_else(|e| panic!("{e}"));
+    let compiled = build(&map, &BuildOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+    let library = sightline::texture::Library::dirs(&[path.parent().unwrap().to_path_buf()]);
+    let materials = sightline::materials::Materials::resolve_in(&compiled.map, &library, "lift.ron")
+        .unwrap_or_else(|e| panic!("{e}"));
+    let mut g = Game::new(Level::new(compiled, materials)).unwrap();
+    let lift = 1;
+    let floor = |g: &Game| g.level().compiled.map.sectors[lift].floor;
+    let barrel = |g: &Game| actor(g, "barrel").z;
+    assert_eq!((floor(&g), barrel(&g)), (64.0, 64.0));
+    // Walk east to the walk line at x 160, then stand still.
+    let walk = TickInput { forward: 1, ..TickInput::default() };
+    while g.player().pos.x < 170.0 {
+        g.tick(&walk);
+    }
+    let (mut low, mut seen) = (f64::MAX, 0);
+    for _ in 0..200 {
+        g.tick(&TickInput::default());
+        assert_eq!(barrel(&g), floor(&g), "the barrel left the lift's floor at tick {}", g.ticks());
+        low = low.min(floor(&g));
+        seen += 1;
+    }
+    assert_eq!((low, floor(&g), seen), (0.0, 64.0, 200), "the lift did not go down and back up");
+    assert_drawn_as_they_stand(&g);
+}
