@@ -329,27 +329,33 @@ fn a_user_actor_file_replaces_the_zombieman() {
 }
 
 /// A monster waiting in a part of the map the player cannot see or hear
-/// (no two-sided line leads there) is off the tick's list; it is back on
-/// it, and wakes as before, once the player is in its part.
+/// (no open two-sided line leads there: a wall, or a shut door) is off the
+/// tick's list; it is back on it, and wakes as before, once the player is
+/// in its part, by a teleport or by opening the door.
 #[test]
 fn a_monster_out_of_the_player_s_reach_costs_nothing_until_the_player_comes() {
     let mut g = game("monster_lines");
     idle(&mut g, 2);
-    // The T-east zombieman is parked; the one beyond the door (the door
-    // is a two-sided line: the same part) is not.
-    assert_eq!(g.actors().parked(), 1);
-    let walker = |g: &Game| g.actors().list.iter().find(|a| a.thing == Some(2)).unwrap().clone();
-    let (state, tics) = (walker(&g).state, walker(&g).tics);
+    // Both zombiemen are parked: one in the T rooms, one behind the shut door.
+    assert_eq!(g.actors().parked(), 2);
+    let of_thing = |g: &Game, t: usize| g.actors().list.iter().find(|a| a.thing == Some(t)).unwrap().clone();
+    let (state, tics) = (of_thing(&g, 2).state, of_thing(&g, 2).tics);
     idle(&mut g, 35);
-    assert_eq!((walker(&g).state, walker(&g).tics), (state, tics), "a parked monster's timer ran");
-    // In T-west, in its view: it is back on the list and wakes; the
-    // zombieman behind the door, now out of reach, is parked instead.
+    assert_eq!((of_thing(&g, 2).state, of_thing(&g, 2).tics), (state, tics), "a parked monster's timer ran");
+    // In T-west, in its view: it is back on the list and wakes.
     g.teleport(DVec2::new(128.0, 512.0), 0.0).unwrap();
     idle(&mut g, 12);
-    assert_eq!(walker(&g).target, Target::Player, "it did not wake on sight");
+    assert_eq!(of_thing(&g, 2).target, Target::Player, "it did not wake on sight");
     assert_eq!(g.actors().parked(), 1);
-    let behind_door = g.actors().list.iter().find(|a| a.thing == Some(1)).unwrap();
-    assert_eq!(behind_door.target, Target::None);
+    // Back in room W, the door opened: the zombieman beyond is in the
+    // player's part again and sees it.
+    g.teleport(DVec2::new(220.0, 128.0), 0.0).unwrap();
+    g.tick(&TickInput { use_line: true, ..TickInput::default() });
+    idle(&mut g, 60);
+    // (The T-rooms' zombieman, awake now, is not parked: only a monster
+    // waiting for the player is.)
+    assert_eq!(g.actors().parked(), 0);
+    assert_eq!(of_thing(&g, 1).target, Target::Player, "the zombieman beyond the door did not wake");
 }
 
 /// Skill 5 (Doom's nightmare): a dead zombieman comes back where its map

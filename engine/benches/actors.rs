@@ -7,10 +7,12 @@
 //! comes from one run on the same machine state.
 //!
 //! - **horde**: a generated map (format 2): a hall of 100 x 100 zombiemen,
-//!   64 units apart, and the player in a closed room of its own beside it.
+//!   64 units apart, and the player in a room off the hall behind a shut
+//!   door.
 //!   Three setups: no monsters (the same things turned into markers, which
 //!   do not spawn), the monsters dormant (as the map starts them: waiting
-//!   for the player, whom they cannot see or hear), and all awake
+//!   for the player, whom they cannot see or hear through the shut door:
+//!   parked), and all awake
 //!   (`Game::wake_monsters`: each chases the player and tries to shoot).
 //! - **freedoom**: E1M1 and the largest map of the two IWADs (MAP12 of
 //!   freedoom2.wad by lines), skill 4, the player standing at the start,
@@ -58,7 +60,12 @@ fn main() {
             let compiled = build(&map, &BuildOptions::default()).unwrap_or_else(|e| panic!("horde: {e}"));
             move || Level::with_builtin_textures(compiled.clone()).unwrap_or_else(|e| panic!("{e}"))
         };
-        study("a hall of 10,000 zombiemen, the player in a room of its own", horde(false), &SETUPS, rounds);
+        study(
+            "a hall of 10,000 zombiemen, the player in a room off it behind a shut door",
+            horde(false),
+            &SETUPS,
+            rounds,
+        );
         let fighting = [Setup::NoMonsters, Setup::Awake];
         study("the same hall with the player in it, 64 units east of the horde", horde(true), &fighting, rounds);
     }
@@ -188,39 +195,73 @@ fn study(what: &str, level: impl Fn() -> Level, setups: &[Setup], rounds: usize)
 }
 
 /// The horde map's RON text: the hall (sector 0) with its zombiemen facing
-/// east, towards the player's room (sector 1), 512 units east of the
-/// hall's east wall, closed on every side; or (`inside`) the player in the
-/// hall, 64 units east of the last column.
+/// east, towards the player's room (sector 2), which opens off the hall's
+/// east wall through a shut door (sector 1, 16 deep, a manual door anyone
+/// may open); or (`inside`) the player in the hall, 64 units east of the
+/// last column.
 fn horde_ron(inside: bool) -> String {
     let side = HORDE as f64 * SPACING + SPACING;
-    let (rx, rw) = (side + 512.0, 256.0);
+    let (mid, door, room) = (side / 2.0, 16.0, 256.0);
+    let (dx, rx) = (side + door, side + door + room);
     let mut text = String::from("Map(\n    version: 2,\n    name: \"Horde\",\n    vertices: [\n");
-    for (x, y) in
-        [(0.0, 0.0), (0.0, side), (side, side), (side, 0.0), (rx, 0.0), (rx, rw), (rx + rw, rw), (rx + rw, 0.0)]
-    {
+    let vertices = [
+        (0.0, 0.0),             // 0: the hall, clockwise from the south-west
+        (0.0, side),            // 1
+        (side, side),           // 2
+        (side, mid + 32.0),     // 3: the door's north-west corner
+        (side, mid - 32.0),     // 4: its south-west corner
+        (side, 0.0),            // 5
+        (dx, mid + 32.0),       // 6: the door's north-east corner
+        (dx, mid - 32.0),       // 7: its south-east corner
+        (dx, mid + room / 2.0), // 8: the room
+        (rx, mid + room / 2.0), // 9
+        (rx, mid - room / 2.0), // 10
+        (dx, mid - room / 2.0), // 11
+    ];
+    for (x, y) in vertices {
         writeln!(text, "        ({x:.1}, {y:.1}),").unwrap();
     }
     text.push_str("    ],\n    sectors: [\n");
-    for _ in 0..2 {
-        text.push_str(
-            "        Sector(floor: 0.0, ceiling: 128.0, light: 160, floor_texture: \"FLOOR\", ceiling_texture: \"CEIL\"),\n",
-        );
+    for ceiling in [128.0, 0.0, 128.0] {
+        writeln!(
+            text,
+            "        Sector(floor: 0.0, ceiling: {ceiling:.1}, light: 160, floor_texture: \"FLOOR\", ceiling_texture: \"CEIL\"),"
+        )
+        .unwrap();
     }
     text.push_str("    ],\n    lines: [\n");
-    // Clockwise seen from above: the inside is on each line's right.
-    for (base, sector) in [(0, 0), (4, 1)] {
-        for k in 0..4 {
-            writeln!(
+    let door_line = "special: LineSpecial(on: Use, repeat: true, by: Anyone, action: Door(kind: Raise))";
+    // The inside is on each line's right.
+    for (from, to, front, back) in [
+        (0, 1, 0, None),
+        (1, 2, 0, None),
+        (2, 3, 0, None),
+        (3, 4, 0, Some(1)),
+        (4, 5, 0, None),
+        (5, 0, 0, None),
+        (3, 6, 1, None),
+        (7, 4, 1, None),
+        (7, 6, 2, Some(1)),
+        (6, 8, 2, None),
+        (8, 9, 2, None),
+        (9, 10, 2, None),
+        (10, 11, 2, None),
+        (11, 7, 2, None),
+    ] {
+        match back {
+            None => writeln!(
                 text,
-                "        Line(from: {}, to: {}, front: Side(sector: {sector}, middle: \"STONE\")),",
-                base + k,
-                base + (k + 1) % 4
-            )
-            .unwrap();
+                "        Line(from: {from}, to: {to}, front: Side(sector: {front}, middle: \"STONE\")),"
+            ),
+            Some(b) => writeln!(
+                text,
+                "        Line(from: {from}, to: {to}, front: Side(sector: {front}, upper: \"DOOR\"), back: Some(Side(sector: {b}, upper: \"DOOR\")), {door_line}),"
+            ),
         }
+        .unwrap();
     }
     text.push_str("    ],\n    things: [\n");
-    let start = if inside { (side - SPACING / 2.0, side / 2.0) } else { (rx + rw / 2.0, rw / 2.0) };
+    let start = if inside { (side - SPACING / 2.0, mid) } else { (rx - room / 2.0, mid) };
     writeln!(text, "        Thing(kind: \"player_start\", x: {:.1}, y: {:.1}, angle: 180.0),", start.0, start.1)
         .unwrap();
     for j in 0..HORDE {

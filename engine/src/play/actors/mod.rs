@@ -170,6 +170,8 @@ pub struct Actors {
     parts: Vec<u32>,
     /// The part the player is in (as of the last tick).
     here: u32,
+    /// A door opened or shut since the parts were found: find them again.
+    parts_stale: bool,
     /// Monsters waiting (`A_Look`) in a part the player is not in: they
     /// cannot see or hear it, so they are off the tick's list (may hold
     /// actors since woken; [`Actor::parked`] says).
@@ -189,8 +191,16 @@ pub struct Actors {
     dirty: Vec<u32>,
 }
 
+/// Is two-sided `line` shut: no gap between the higher floor and the lower
+/// ceiling of its sides (a closed door)? Sight and sound stop there.
+fn shut(map: &crate::map::Map, line: &crate::map::Line) -> bool {
+    let Some(back) = &line.back else { return true };
+    let (f, b) = (&map.sectors[line.front.sector], &map.sectors[back.sector]);
+    f.ceiling.min(b.ceiling) <= f.floor.max(b.floor)
+}
+
 /// Each sector's part of the map: the sectors reached from it through
-/// two-sided lines, numbered by their lowest sector.
+/// two-sided lines that are not shut, numbered by their lowest sector.
 fn parts(map: &crate::map::Map) -> Vec<u32> {
     let mut part: Vec<u32> = (0..map.sectors.len() as u32).collect();
     fn root(part: &mut [u32], mut s: u32) -> u32 {
@@ -200,7 +210,7 @@ fn parts(map: &crate::map::Map) -> Vec<u32> {
         }
         s
     }
-    for line in &map.lines {
+    for line in map.lines.iter().filter(|l| !shut(map, l)) {
         if let Some(back) = &line.back {
             let (a, b) = (root(&mut part, line.front.sector as u32), root(&mut part, back.sector as u32));
             part[a.max(b) as usize] = a.min(b);
@@ -240,6 +250,7 @@ impl Actors {
             heard,
             parts: parts(map),
             here: u32::MAX,
+            parts_stale: false,
             parked: Vec::new(),
             look: crate::actors::actions::find("A_Look"),
             respawn: false,
@@ -460,8 +471,12 @@ impl Actors {
         if self.respawn && ctx.level.time % 32 == 0 {
             self.respawn_monsters(ctx);
         }
+        let stale = std::mem::take(&mut self.parts_stale);
+        if stale {
+            self.parts = parts(&ctx.level.compiled.map);
+        }
         let here = self.parts.get(ctx.player.sector).copied().unwrap_or(u32::MAX);
-        if here != self.here {
+        if here != self.here || stale {
             self.here = here;
             self.unpark();
         }
@@ -530,6 +545,24 @@ impl Actors {
             awake.push(n);
             false
         });
+    }
+
+    /// A plane of `sector` moved: if a line of it opened or shut (a door),
+    /// the parts of the map are found again before the next tick's actors.
+    pub fn plane_moved(&mut self, level: &Level, sector: usize) {
+        if self.parts_stale {
+            return;
+        }
+        let map = &level.compiled.map;
+        for &i in &level.sector_lines[sector] {
+            let line = &map.lines[i as usize];
+            let Some(back) = &line.back else { continue };
+            let joined = self.parts.get(line.front.sector) == self.parts.get(back.sector);
+            if joined == shut(map, line) {
+                self.parts_stale = true;
+                return;
+            }
+        }
     }
 
     /// Monsters parked: waiting in a part of the map the player is not in.

@@ -214,6 +214,7 @@ impl Door {
                 let sector = &mut ctx.level.compiled.map.sectors[self.sector];
                 // Passable only when fully open (see [`Slide`]).
                 sector.ceiling = if open >= 1.0 { slide.ceiling } else { sector.floor };
+                ctx.bodies.actors.plane_moved(ctx.level, self.sector);
                 if let Some(g) = ctx.level.grid.as_mut().and_then(|g| g.open.get_mut(slide.index)) {
                     *g = open;
                 }

@@ -87,6 +87,7 @@ fn set_height(ctx: &mut Ctx, sector: usize, plane: Plane, h: f64) {
         Plane::Floor => s.floor = h,
         Plane::Ceiling => s.ceiling = h,
     }
+    ctx.bodies.actors.plane_moved(ctx.level, sector);
 }
 
 /// Doom's P_ChangeSector for the bodies over `sector`: each is re-clipped
