@@ -24,7 +24,7 @@ use rand::{RngExt, SeedableRng};
 use random_maps::{compile, describe, generate, map_spec};
 use sightline::bsp::{build, BuildOptions, CompiledMap, LineSide, SplitterKind};
 use sightline::geom::{exact_side, Side};
-use sightline::map::source::{LineSource, MapSource, SectorSource, SideSource, ThingSource};
+use sightline::map::source::{MapSource, SectorSource, ThingSource};
 use sightline::map::validate::validate;
 use sightline::map::PLAYER_START;
 use sightline::play::sight::{
@@ -278,22 +278,6 @@ fn random_pairs_reach_ties_and_every_answer() {
     assert!(t.walls > 100 && t.parts > 20 && t.sky > 20 && t.bodies > 20 && t.misses > 20 && t.aimed > 100, "{t:?}");
 }
 
-/// Adds a closed ring of lines through `corners`, `front` on the right.
-fn ring(source: &mut MapSource, corners: &[(f64, f64)], front: usize, back: Option<usize>) {
-    let first = source.vertices.len();
-    source.vertices.extend_from_slice(corners);
-    let side = |s: usize| SideSource { sector: s as i64, ..SideSource::default() };
-    for k in 0..corners.len() {
-        source.lines.push(LineSource {
-            from: (first + k) as i64,
-            to: (first + (k + 1) % corners.len()) as i64,
-            front: side(front),
-            back: back.map(side),
-            ..LineSource::default()
-        });
-    }
-}
-
 /// The engine's tie map moved by `o`: a 1024x512 sky-ceilinged room
 /// (floor 0, ceiling 256) with a solid pillar at [256, 320]x[192, 256]
 /// (lines 4-7), a platform (floor 24) at [640, 704]x[192, 256] (lines
@@ -316,10 +300,10 @@ fn tie_map(o: DVec2) -> CompiledMap {
         things: vec![ThingSource::new(PLAYER_START, start.0, start.1, 0.0)],
         ..MapSource::default()
     };
-    ring(&mut source, &[at(0.0, 0.0), at(0.0, 512.0), at(1024.0, 512.0), at(1024.0, 0.0)], 0, None);
-    ring(&mut source, &square(256.0, 192.0, 320.0, 256.0), 0, None);
-    ring(&mut source, &square(640.0, 192.0, 704.0, 256.0), 0, Some(1));
-    ring(&mut source, &square(832.0, 320.0, 896.0, 384.0), 0, Some(2));
+    source.add_ring(&[at(0.0, 0.0), at(0.0, 512.0), at(1024.0, 512.0), at(1024.0, 0.0)], 0, None);
+    source.add_ring(&square(256.0, 192.0, 320.0, 256.0), 0, None);
+    source.add_ring(&square(640.0, 192.0, 704.0, 256.0), 0, Some(1));
+    source.add_ring(&square(832.0, 320.0, 896.0, 384.0), 0, Some(2));
     let map = validate(&source).unwrap_or_else(|p| panic!("{p:?}"));
     build(&map, &BuildOptions::default()).unwrap_or_else(|e| panic!("{e}"))
 }
@@ -421,8 +405,8 @@ fn huge_room_at_30000() {
         ..MapSource::default()
     };
     let r = 30_000.0;
-    ring(&mut source, &[(-r, -r), (-r, r), (r, r), (r, -r)], 0, None);
-    ring(&mut source, &[(-64.0, -64.0), (64.0, -64.0), (64.0, 64.0), (-64.0, 64.0)], 0, None);
+    source.add_ring(&[(-r, -r), (-r, r), (r, r), (r, -r)], 0, None);
+    source.add_ring(&[(-64.0, -64.0), (64.0, -64.0), (64.0, 64.0), (-64.0, 64.0)], 0, None);
     let map = validate(&source).unwrap_or_else(|p| panic!("{p:?}"));
     let level = build(&map, &BuildOptions::default()).unwrap_or_else(|e| panic!("{e}"));
     let b = |x: f64, y: f64| Body { pos: DVec2::new(x, y), z: 0.0, height: 56.0, radius: 16.0, index: 1 };

@@ -23,10 +23,12 @@
 //! The Freedoom study needs Freedoom's WADs (Debian: freedoom) in
 //! `/usr/share/games/doom` or `$SIGHTLINE_DOOM_DIR`.
 
+mod common;
+
 use std::fmt::Write;
-use std::path::PathBuf;
-use std::sync::Arc;
 use std::time::Instant;
+
+use common::{extent, median, open_wad, wad_library, Wanted};
 
 use sightline::actors::{ActorFlag, ActorTable};
 use sightline::bsp::{build, BuildOptions};
@@ -35,9 +37,6 @@ use sightline::level::Level;
 use sightline::map::load::parse_map;
 use sightline::materials::Materials;
 use sightline::play::{Game, GameOptions, TickInput};
-use sightline::texture::Library;
-use sightline::wad::library::WadArt;
-use sightline::wad::Wad;
 
 /// Ticks timed per round.
 const WINDOW: usize = 105;
@@ -49,12 +48,9 @@ const HORDE: usize = 100;
 const SPACING: f64 = 64.0;
 
 fn main() {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let filter = args.iter().find(|a| !a.starts_with('-')).cloned();
-    let quick = args.iter().any(|a| a == "--test");
-    let wanted = |name: &str| filter.as_deref().is_none_or(|f| name.contains(f) || f.contains(name));
-    let rounds = if quick { 1 } else { ROUNDS };
-    if wanted("horde") {
+    let wanted = Wanted::from_args();
+    let rounds = if wanted.quick { 1 } else { ROUNDS };
+    if wanted.wants("horde") {
         let horde = |inside: bool| {
             let map = parse_map(&horde_ron(inside), "horde").unwrap_or_else(|e| panic!("{e}"));
             let compiled = build(&map, &BuildOptions::default()).unwrap_or_else(|e| panic!("horde: {e}"));
@@ -69,31 +65,22 @@ fn main() {
         let fighting = [Setup::NoMonsters, Setup::Awake];
         study("the same hall with the player in it, 64 units east of the horde", horde(true), &fighting, rounds);
     }
-    if wanted("freedoom") {
-        for map in ["freedoom1.wad:E1M1", "freedoom2.wad:MAP12"] {
-            let (file, name) = map.split_once(':').unwrap();
-            let label = format!("{}:{name}", doom_dir().join(file).display());
-            let opened = open(&MapRef::parse(&label, None), &BuildOptions::default()).unwrap_or_else(|e| {
-                panic!("{e}\nthe actors bench needs Freedoom (apt-get install freedoom) or SIGHTLINE_DOOM_DIR=dir")
-            });
-            let compiled = opened.level.compiled.clone();
-            let wad = Wad::open(&doom_dir().join(file)).unwrap_or_else(|e| panic!("{e}"));
-            let library =
-                Library { dirs: Vec::new(), wad: Some(Arc::new(WadArt::new(Wad::stack(vec![wad])).unwrap())) };
+    if wanted.wants("freedoom") {
+        for (file, name) in [("freedoom1.wad", "E1M1"), ("freedoom2.wad", "MAP12")] {
+            let (path, wad) = open_wad(file);
+            let library = wad_library(wad);
+            let label = format!("{}:{name}", path.display());
+            let opened = open(&MapRef::parse(&label, None), &BuildOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+            let compiled = opened.level.compiled;
             // A fresh level as `open` makes it, without compiling again.
             let level = || {
                 let materials =
                     Materials::resolve_in(&compiled.map, &library, &label).unwrap_or_else(|e| panic!("{e}"));
                 Level::new(compiled.clone(), materials)
             };
-            study(map, level, &SETUPS, rounds);
+            study(&format!("{file}:{name}"), level, &SETUPS, rounds);
         }
     }
-}
-
-/// Where Freedoom's WADs are (as the tests and the other benches look).
-fn doom_dir() -> PathBuf {
-    std::env::var_os("SIGHTLINE_DOOM_DIR").map_or_else(|| PathBuf::from("/usr/share/games/doom"), PathBuf::from)
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
@@ -124,16 +111,6 @@ fn game(mut level: Level, setup: Setup) -> Game {
     game
 }
 
-fn median(values: &mut [f64]) -> f64 {
-    values.sort_by(f64::total_cmp);
-    let n = values.len();
-    if n.is_multiple_of(2) {
-        (values[n / 2 - 1] + values[n / 2]) / 2.0
-    } else {
-        values[n / 2]
-    }
-}
-
 /// Times the three setups on `level`, `rounds` times each in rotating
 /// order, and prints a markdown table.
 fn study(what: &str, level: impl Fn() -> Level, setups: &[Setup], rounds: usize) {
@@ -160,7 +137,7 @@ fn study(what: &str, level: impl Fn() -> Level, setups: &[Setup], rounds: usize)
     }
     let m: Vec<f64> = medians.iter_mut().map(|v| median(v)).collect();
     let spread = |v: &[f64]| {
-        let (lo, hi) = v.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), &x| (lo.min(x), hi.max(x)));
+        let (lo, hi) = extent(v);
         format!("{lo:.1}..{hi:.1}")
     };
     println!("\n## {what}: skill 4, {rounds} rounds of {WINDOW} ticks, median of the per-round medians\n");

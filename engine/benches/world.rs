@@ -31,15 +31,15 @@
 //! freedoom) in `/usr/share/games/doom` or `$SIGHTLINE_DOOM_DIR`, and fails
 //! if they are missing, as the compile bench does.
 
+mod common;
 #[path = "world/pillars.rs"]
 mod pillars;
 #[path = "world/setoff.rs"]
 mod setoff;
 
-use std::path::PathBuf;
-use std::sync::Arc;
 use std::time::{Duration, Instant};
 
+use common::{extent, median, open_wad, wad_library, Wanted};
 use criterion::Criterion;
 use sightline::bsp::{build, BuildOptions, CompiledMap};
 use sightline::campaign::{open, MapRef};
@@ -49,9 +49,6 @@ use sightline::materials::Materials;
 use sightline::play::input::wander;
 use sightline::play::world::Thinker;
 use sightline::play::{Game, TickInput};
-use sightline::texture::Library;
-use sightline::wad::library::WadArt;
-use sightline::wad::Wad;
 
 /// Ticks timed per round on a Freedoom map: 3 s of play, while what was
 /// set off still runs (a door is done about 214 ticks after it opens).
@@ -67,19 +64,14 @@ const IDLE_ROUNDS: usize = 10;
 const HEALTH: i32 = 1_000_000;
 
 fn main() {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    // Criterion's filter is its first positional argument; the custom loops
-    // honour it too (a substring of "idle" or "freedoom").
-    let filter = args.iter().find(|a| !a.starts_with('-')).cloned();
-    let quick = args.iter().any(|a| a == "--test");
-    let wanted = |name: &str| filter.as_deref().is_none_or(|f| name.contains(f) || f.contains(name));
+    let wanted = Wanted::from_args();
     let mut c = Criterion::default().configure_from_args();
-    if wanted("idle-tags") {
-        idle(&mut c, quick);
+    if wanted.wants("idle-tags") {
+        idle(&mut c, wanted.quick);
     }
     c.final_summary();
-    if wanted("freedoom") {
-        freedoom(quick);
+    if wanted.wants("freedoom") {
+        freedoom(wanted.quick);
     }
 }
 
@@ -89,25 +81,9 @@ fn walking(seed: u64, ticks: usize) -> Vec<TickInput> {
     wander(seed, ticks, false)
 }
 
-fn median(times: &mut [Duration]) -> f64 {
-    times.sort_unstable();
-    let n = times.len();
-    let us = |d: Duration| d.as_secs_f64() * 1e6;
-    if n.is_multiple_of(2) {
-        (us(times[n / 2 - 1]) + us(times[n / 2])) / 2.0
-    } else {
-        us(times[n / 2])
-    }
-}
-
-fn median_f64(values: &mut [f64]) -> f64 {
-    values.sort_by(f64::total_cmp);
-    let n = values.len();
-    if n.is_multiple_of(2) {
-        (values[n / 2 - 1] + values[n / 2]) / 2.0
-    } else {
-        values[n / 2]
-    }
+/// The median of `times`, in µs.
+fn median_us(times: &[Duration]) -> f64 {
+    median(&mut times.iter().map(|d| d.as_secs_f64() * 1e6).collect::<Vec<_>>())
 }
 
 /// Ticks `game` through `inputs`, timing each tick on its own.
@@ -161,14 +137,14 @@ fn idle(c: &mut Criterion, quick: bool) {
             let mut game = Game::new(pillar_level(levels[which])).unwrap_or_else(|e| panic!("{e}"));
             let mut times = Vec::with_capacity(ticks);
             time_ticks(&mut game, &inputs[..ticks], &mut times);
-            medians[which].push(median(&mut times));
+            medians[which].push(median_us(&times));
             assert_eq!(game.world().thinkers.len(), 0, "an idle map has no thinker running");
             ends[which] = Some(game.player().pos);
         }
     }
     assert_eq!(ends[0], ends[1], "the same inputs walk the same way through the same geometry");
-    let none = median_f64(&mut medians[0]);
-    let tagged = median_f64(&mut medians[1]);
+    let none = median(&mut medians[0]);
+    let tagged = median(&mut medians[1]);
     println!("\n## Idle specials: {rounds} interleaved rounds of {ticks} ticks, median of the per-round medians\n");
     println!("| map | µs per tick | ticks per second |");
     println!("|---|---:|---:|");
@@ -176,15 +152,10 @@ fn idle(c: &mut Criterion, quick: bool) {
     println!("| 1,000 pillars, tagged, sector and line specials | {tagged:.3} | {:.0} |", 1e6 / tagged);
     println!("\ntagged / none = {:.3}", tagged / none);
     let spread = |m: &[f64]| {
-        let (lo, hi) = m.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), &x| (lo.min(x), hi.max(x)));
+        let (lo, hi) = extent(m);
         format!("{lo:.3}..{hi:.3}")
     };
     println!("per-round medians: none {}, tagged {}\n", spread(&medians[0]), spread(&medians[1]));
-}
-
-/// Where Freedoom's WADs are (as tests/freedoom.rs and the compile bench look).
-fn doom_dir() -> PathBuf {
-    std::env::var_os("SIGHTLINE_DOOM_DIR").map_or_else(|| PathBuf::from("/usr/share/games/doom"), PathBuf::from)
 }
 
 /// The thinkers running, by kind: doors, plats (lifts), floors, ceilings
@@ -245,12 +216,9 @@ fn freedoom(quick: bool) {
     let mut rows = Vec::new();
     let started = Instant::now();
     for file in ["freedoom1.wad", "freedoom2.wad"] {
-        let path = doom_dir().join(file);
-        let wad = Wad::open(&path).unwrap_or_else(|e| {
-            panic!("{e}\nthe world bench needs Freedoom (apt-get install freedoom) or SIGHTLINE_DOOM_DIR=dir")
-        });
+        let (path, wad) = open_wad(file);
         let mut names = wad.map_names();
-        let library = Library { dirs: Vec::new(), wad: Some(Arc::new(WadArt::new(Wad::stack(vec![wad])).unwrap())) };
+        let library = wad_library(wad);
         if let Ok(only) = std::env::var("SIGHTLINE_WORLD_MAPS") {
             names.retain(|n| only.split(',').any(|o| o.eq_ignore_ascii_case(n)));
         }
@@ -334,8 +302,8 @@ fn time_map(
             }
         }
     }
-    for (us, t) in row.us.iter_mut().zip(&mut times) {
-        *us = median(t);
+    for (us, t) in row.us.iter_mut().zip(&times) {
+        *us = median_us(t);
     }
     row
 }
@@ -343,8 +311,8 @@ fn time_map(
 /// The cost of timing an empty interval (`Instant::now` and `elapsed`),
 /// included in every per-tick figure: the median of 100,000.
 fn timer_overhead() -> f64 {
-    let mut times: Vec<Duration> = (0..100_000).map(|_| Instant::now().elapsed()).collect();
-    median(&mut times)
+    let times: Vec<Duration> = (0..100_000).map(|_| Instant::now().elapsed()).collect();
+    median_us(&times)
 }
 
 fn print_freedoom(rows: &[Row], window: usize, rounds: usize) {
@@ -388,19 +356,18 @@ fn print_freedoom(rows: &[Row], window: usize, rounds: usize) {
         );
     }
     let column = |f: &dyn Fn(&Row) -> f64| -> Vec<f64> { rows.iter().map(f).collect() };
-    let range = |v: &[f64]| v.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), &x| (lo.min(x), hi.max(x)));
     let mut walk = column(&|r| r.us[0]);
-    let (lo, hi) = range(&walk);
-    let walk_median = median_f64(&mut walk);
+    let (lo, hi) = extent(&walk);
+    let walk_median = median(&mut walk);
     let mut idle = column(&|r| r.us[1]);
     let mut ratio = column(&|r| r.us[1] / r.us[2]);
-    let (rlo, rhi) = range(&ratio);
+    let (rlo, rhi) = extent(&ratio);
     println!(
         "\n{} maps. Walking with everything set off: median over maps {walk_median:.2} µs per tick ({:.0} ticks per second), range {lo:.2}..{hi:.2}. Idle: median {:.2} µs; idle / nothing set off: median {:.2}, range {rlo:.2}..{rhi:.2}.",
         rows.len(),
         1e6 / walk_median,
-        median_f64(&mut idle),
-        median_f64(&mut ratio),
+        median(&mut idle),
+        median(&mut ratio),
     );
     println!("Timing an empty interval costs {:.3} µs (median), included in every figure above.", timer_overhead());
     let failed: usize = rows.iter().map(|r| r.set.failed.len()).sum();

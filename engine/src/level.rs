@@ -45,8 +45,9 @@ pub struct Level {
     /// Per sector, the lines with it on either side, in line order (Doom's
     /// `sector->lines`): the neighbour searches of the world's movers walk them.
     pub sector_lines: Vec<Vec<u32>>,
-    /// Per sector, the middle of its bounding box (where its sounds come from).
-    pub sector_centres: Vec<glam::DVec2>,
+    /// Per sector, the bounding box of its lines (where its sounds come
+    /// from: the middle; which actors a moving floor may carry).
+    pub sector_boxes: Vec<crate::geom::Aabb>,
     /// What the ray-caster needs of a grid map.
     pub grid: Option<GridLevel>,
 }
@@ -155,7 +156,6 @@ impl Level {
                 boxes[s].include(b);
             }
         }
-        let sector_centres = boxes.iter().map(|b| (b.min + b.max) / 2.0).collect();
         let grid = compiled.grid.as_ref().map(GridLevel::new);
         let mut level = Level {
             compiled,
@@ -165,7 +165,7 @@ impl Level {
             things: Vec::new(),
             time: 0,
             sector_lines,
-            sector_centres,
+            sector_boxes: boxes,
             grid,
         };
         level.draw_map_things();

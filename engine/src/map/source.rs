@@ -277,6 +277,25 @@ fn is_zero_i64(x: &i64) -> bool {
 }
 
 impl MapSource {
+    /// Adds a closed ring of plain lines through `corners`, each with the
+    /// sector `front` on its right and `back` (if any) on its left: a room
+    /// (clockwise), a solid pillar in it (anticlockwise, no back), or the
+    /// edge of a sector inside another.
+    pub fn add_ring(&mut self, corners: &[(f64, f64)], front: usize, back: Option<usize>) {
+        let first = self.vertices.len();
+        self.vertices.extend_from_slice(corners);
+        let side = |s: usize| SideSource { sector: s as i64, ..SideSource::default() };
+        for k in 0..corners.len() {
+            self.lines.push(LineSource {
+                from: (first + k) as i64,
+                to: (first + (k + 1) % corners.len()) as i64,
+                front: side(front),
+                back: back.map(side),
+                ..LineSource::default()
+            });
+        }
+    }
+
     /// Pretty RON text that [`crate::map::parse_map`] reads back.
     pub fn to_ron(&self) -> String {
         let config = ron::ser::PrettyConfig::new().struct_names(true).depth_limit(3);

@@ -333,14 +333,24 @@ impl Game {
 
     /// The lines with walk specials the body's centre crossed.
     fn walk_triggers(&mut self, from: DVec2, to: DVec2) {
-        if self.player.dead() {
-            return;
+        if !self.player.dead() {
+            self.cross_lines(from, to, Activator::Player);
         }
+    }
+
+    /// Sets off, for `who`, the walk specials of the lines a step from
+    /// `from` to `to` crossed, in order, until one takes an actor out of
+    /// play.
+    fn cross_lines(&mut self, from: DVec2, to: DVec2, who: Activator) {
         let lines = Lines { map: &self.level.compiled.map, walls: &self.blockmap, triggers: &self.triggers };
-        let crossed = lines.crossed(&mut self.scratch, from, to);
-        for c in crossed {
+        for c in lines.crossed(&mut self.scratch, from, to) {
+            if let Activator::Monster(n) = who {
+                if self.actors.list[n as usize].removed {
+                    break;
+                }
+            }
             let (world, mut ctx) = self.ctx();
-            activate(world, &mut ctx, c.line, Activation::Walk, Activator::Player, c.from_front);
+            activate(world, &mut ctx, c.line, Activation::Walk, who, c.from_front);
         }
     }
 
@@ -397,17 +407,7 @@ impl Game {
                     world::specials::perform_tagged(world, &mut ctx, action, tag);
                 }
                 Request::Exit => self.exit = Some(Exit::Normal),
-                Request::Cross { actor, from, to } => {
-                    let lines =
-                        Lines { map: &self.level.compiled.map, walls: &self.blockmap, triggers: &self.triggers };
-                    for c in lines.crossed(&mut self.scratch, from, to) {
-                        if self.actors.list[actor as usize].removed {
-                            break;
-                        }
-                        let (world, mut ctx) = self.ctx();
-                        activate(world, &mut ctx, c.line, Activation::Walk, Activator::Monster(actor), c.from_front);
-                    }
-                }
+                Request::Cross { actor, from, to } => self.cross_lines(from, to, Activator::Monster(actor)),
                 Request::Use { actor, line } => {
                     let (world, mut ctx) = self.ctx();
                     activate(

@@ -849,30 +849,13 @@ mod tests {
     use super::*;
     use crate::bsp::{build, BuildOptions};
     use crate::geom::{segment_contact, Contact};
-    use crate::map::source::{LineSource, MapSource, SectorSource, SideSource, ThingSource};
+    use crate::map::source::{MapSource, SectorSource, ThingSource};
     use crate::map::validate::validate;
     use crate::map::PLAYER_START;
     use proptest::prelude::*;
 
     fn v(x: f64, y: f64) -> DVec2 {
         DVec2::new(x, y)
-    }
-
-    /// Adds a closed ring of lines through `corners`, each with `front` on
-    /// its right and `back` (if any) on its left.
-    fn ring(source: &mut MapSource, corners: &[(f64, f64)], front: usize, back: Option<usize>) {
-        let first = source.vertices.len();
-        source.vertices.extend_from_slice(corners);
-        let side = |s: usize| SideSource { sector: s as i64, ..SideSource::default() };
-        for k in 0..corners.len() {
-            source.lines.push(LineSource {
-                from: (first + k) as i64,
-                to: (first + (k + 1) % corners.len()) as i64,
-                front: side(front),
-                back: back.map(side),
-                ..LineSource::default()
-            });
-        }
     }
 
     /// Counter-clockwise: a hole with the room on its right.
@@ -900,10 +883,10 @@ mod tests {
             things: vec![ThingSource::new(PLAYER_START, 64.0, 64.0, 0.0)],
             ..MapSource::default()
         };
-        ring(&mut source, &[(0.0, 0.0), (0.0, 512.0), (1024.0, 512.0), (1024.0, 0.0)], 0, None);
-        ring(&mut source, &square(256.0, 192.0, 320.0, 256.0), 0, None);
-        ring(&mut source, &square(640.0, 192.0, 704.0, 256.0), 0, Some(1));
-        ring(&mut source, &square(832.0, 320.0, 896.0, 384.0), 0, Some(2));
+        source.add_ring(&[(0.0, 0.0), (0.0, 512.0), (1024.0, 512.0), (1024.0, 0.0)], 0, None);
+        source.add_ring(&square(256.0, 192.0, 320.0, 256.0), 0, None);
+        source.add_ring(&square(640.0, 192.0, 704.0, 256.0), 0, Some(1));
+        source.add_ring(&square(832.0, 320.0, 896.0, 384.0), 0, Some(2));
         let map = validate(&source).unwrap_or_else(|p| panic!("{p:?}"));
         build(&map, &BuildOptions::default()).unwrap_or_else(|e| panic!("{e}"))
     }

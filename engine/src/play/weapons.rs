@@ -356,20 +356,26 @@ fn shot(actors: &mut Actors, angle: f64, range: f64, slope: f64, damage: i32, ct
     actors.line_attack(Target::Player, &ray, slope, damage, ctx)
 }
 
-fn fire_pistol(actors: &mut Actors, _: usize, _: &[Arg], ctx: &mut ActorCtx) {
-    sound(ctx, "pistol");
+/// How far a gun's bullets look for something to aim at (Doom's 16 * 64).
+const BULLET_AIM: f64 = 16.0 * 64.0;
+
+/// What every gun does as it fires: its sound, one round used, its flash,
+/// and the slope its bullets take (auto-aimed).
+fn open_fire(actors: &mut Actors, noise: &'static str, ctx: &mut ActorCtx) -> f64 {
+    sound(ctx, noise);
     use_ammo(actors, ctx);
     gun_flash(actors, FLASH_LAYER, &[], ctx);
-    let (slope, _) = bullet_slope(actors, 16.0 * 64.0, ctx);
+    bullet_slope(actors, BULLET_AIM, ctx).0
+}
+
+fn fire_pistol(actors: &mut Actors, _: usize, _: &[Arg], ctx: &mut ActorCtx) {
+    let slope = open_fire(actors, "pistol", ctx);
     let accurate = ctx.player.refire == 0;
     gun_shot(actors, slope, accurate, ctx);
 }
 
 fn fire_shotgun(actors: &mut Actors, _: usize, _: &[Arg], ctx: &mut ActorCtx) {
-    sound(ctx, "shotgn");
-    use_ammo(actors, ctx);
-    gun_flash(actors, FLASH_LAYER, &[], ctx);
-    let (slope, _) = bullet_slope(actors, 16.0 * 64.0, ctx);
+    let slope = open_fire(actors, "shotgn", ctx);
     for _ in 0..7 {
         gun_shot(actors, slope, false, ctx);
     }
@@ -377,10 +383,7 @@ fn fire_shotgun(actors: &mut Actors, _: usize, _: &[Arg], ctx: &mut ActorCtx) {
 
 /// The super shotgun: twenty pellets spread in both directions.
 fn fire_shotgun2(actors: &mut Actors, _: usize, _: &[Arg], ctx: &mut ActorCtx) {
-    sound(ctx, "dshtgn");
-    use_ammo(actors, ctx);
-    gun_flash(actors, FLASH_LAYER, &[], ctx);
-    let (slope, _) = bullet_slope(actors, 16.0 * 64.0, ctx);
+    let slope = open_fire(actors, "dshtgn", ctx);
     for _ in 0..20 {
         let damage = 5 * (i32::from(ctx.rng.byte()) % 3 + 1);
         let angle = ctx.player.angle + spread(ctx, 19);
@@ -404,7 +407,7 @@ fn fire_cgun(actors: &mut Actors, _: usize, _: &[Arg], ctx: &mut ActorCtx) {
         _ => 0,
     };
     set_layer(actors, FLASH_LAYER, flash.map(|f| StateId(f.0 + offset)), ctx);
-    let (slope, _) = bullet_slope(actors, 16.0 * 64.0, ctx);
+    let (slope, _) = bullet_slope(actors, BULLET_AIM, ctx);
     let accurate = ctx.player.refire == 0;
     gun_shot(actors, slope, accurate, ctx);
 }

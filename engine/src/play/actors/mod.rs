@@ -409,6 +409,29 @@ impl Actors {
         self.near = scratch;
     }
 
+    /// The actors (but `except`) with `flag` whose box overlaps a box of
+    /// `radius` at `at` (Doom's P_TeleportMove and P_CheckPosition at a
+    /// spot: who stands there).
+    pub fn overlapping(&mut self, at: DVec2, radius: f64, flag: ActorFlag, except: Option<u32>) -> Vec<u32> {
+        let r = DVec2::splat(radius);
+        let near = self.near(at - r, at + r);
+        let found = near
+            .iter()
+            .copied()
+            .filter(|&k| {
+                let b = &self.list[k as usize];
+                let br = self.table.actors[b.kind].radius;
+                Some(k) != except
+                    && !b.removed
+                    && b.flags.has(flag)
+                    && (b.pos.x - at.x).abs() < br + radius
+                    && (b.pos.y - at.y).abs() < br + radius
+            })
+            .collect();
+        self.give_back(near);
+        found
+    }
+
     /// Takes actor `n` out of play (its state sequence ended, or it was
     /// picked up).
     pub fn remove(&mut self, n: usize) {

@@ -590,17 +590,7 @@ impl Actors {
         if o.ceiling - o.floor < height {
             return false;
         }
-        let r = DVec2::splat(radius);
-        let near = self.near(spot - r, spot + r);
-        let taken = near.iter().any(|&k| {
-            let b = &self.list[k as usize];
-            let br = self.table.actors[b.kind].radius;
-            !b.removed
-                && b.flags.has(ActorFlag::Solid)
-                && (b.pos.x - spot.x).abs() < br + radius
-                && (b.pos.y - spot.y).abs() < br + radius
-        });
-        self.give_back(near);
+        let taken = !self.overlapping(spot, radius, ActorFlag::Solid, None).is_empty();
         let p = &ctx.player;
         let on_player =
             (p.pos.x - spot.x).abs() < PLAYER_RADIUS + radius && (p.pos.y - spot.y).abs() < PLAYER_RADIUS + radius;

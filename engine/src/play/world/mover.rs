@@ -5,8 +5,6 @@
 //! lowering ceiling is pushed down, and a body that no longer fits either
 //! stops the plane or, when the plane crushes, is hurt while it keeps going.
 
-use glam::DVec2;
-
 use super::Ctx;
 use crate::play::actors::movement::Ground;
 use crate::play::player::{HEIGHT, RADIUS};
@@ -125,17 +123,12 @@ fn settle_player(ctx: &mut Ctx, crush: bool) -> bool {
 /// re-clipped to the opening under it (an actor whose box does not reach
 /// the sector finds its opening unchanged).
 fn settle_actors(ctx: &mut Ctx, sector: usize, crush: bool) -> bool {
-    let map = &ctx.level.compiled.map;
-    let (mut min, mut max) = (DVec2::INFINITY, DVec2::NEG_INFINITY);
-    for &i in &ctx.level.sector_lines[sector] {
-        let (a, b) = map.line_points(&map.lines[i as usize]);
-        (min, max) = (min.min(a.min(b)), max.max(a.max(b)));
-    }
-    if min.x > max.x {
+    let bounds = ctx.level.sector_boxes[sector];
+    if bounds.min.x > bounds.max.x {
         return true;
     }
     let ground = Ground { compiled: &ctx.level.compiled, blockmap: ctx.bodies.blockmap };
-    let near = ctx.bodies.actors.near(min, max);
+    let near = ctx.bodies.actors.near(bounds.min, bounds.max);
     let mut fits = true;
     for &n in &near {
         if !ctx.bodies.actors.settle(n as usize, &ground, ctx.bodies.query) {

@@ -37,7 +37,7 @@ pub fn teleport(ctx: &mut Ctx, tag: u16, who: Activator) -> bool {
             let near = world.lines_near(ctx.bodies.query, to, RADIUS + 1.0);
             let area = world.area(near, to);
             ctx.bodies.player.teleport_to(to, angle, area, TELEPORT_FREEZE);
-            for n in bodies_at(ctx, to, RADIUS, None) {
+            for n in ctx.bodies.actors.overlapping(to, RADIUS, ActorFlag::Shootable, None) {
                 ctx.bodies.harmed.push((n, TELEFRAG));
             }
             from
@@ -50,7 +50,7 @@ pub fn teleport(ctx: &mut Ctx, tag: u16, who: Activator) -> bool {
             let on_player = !player.dead()
                 && (player.pos.x - to.x).abs() < RADIUS + radius
                 && (player.pos.y - to.y).abs() < RADIUS + radius;
-            if on_player || !bodies_at(ctx, to, radius, Some(n)).is_empty() {
+            if on_player || !ctx.bodies.actors.overlapping(to, radius, ActorFlag::Shootable, Some(n)).is_empty() {
                 return false;
             }
             let ground = Ground { compiled: &ctx.level.compiled, blockmap: ctx.bodies.blockmap };
@@ -69,29 +69,6 @@ pub fn teleport(ctx: &mut Ctx, tag: u16, who: Activator) -> bool {
 
 /// Damage that kills whatever it meets (Doom's telefrag: 10000).
 pub const TELEFRAG: i32 = 10_000;
-
-/// The shootable actors (but `except`) whose box overlaps a box of
-/// `radius` at `at`.
-fn bodies_at(ctx: &mut Ctx, at: DVec2, radius: f64, except: Option<u32>) -> Vec<u32> {
-    let actors = &mut *ctx.bodies.actors;
-    let r = DVec2::splat(radius);
-    let near = actors.near(at - r, at + r);
-    let hit = near
-        .iter()
-        .copied()
-        .filter(|&k| {
-            let b = &actors.list[k as usize];
-            let br = actors.table.actors[b.kind].radius;
-            Some(k) != except
-                && !b.removed
-                && b.flags.has(ActorFlag::Shootable)
-                && (b.pos.x - at.x).abs() < br + radius
-                && (b.pos.y - at.y).abs() < br + radius
-        })
-        .collect();
-    actors.give_back(near);
-    hit
-}
 
 /// Boom's silent line teleport (244): the body goes to the same place along
 /// line `to` (measured from its far end, so a line facing the other way
