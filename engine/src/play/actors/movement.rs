@@ -7,6 +7,8 @@
 //!   than a 24-unit step above the feet;
 //! - the box would hang over a drop of more than 24 units (unless the actor
 //!   may drop off or floats);
+//! - the centre's way there crosses a one-sided line (beyond Doom, which
+//!   checks only where a step ends);
 //! - a solid actor's box overlaps it, or the player's (`physics.rs`
 //!   asks the grid of actors).
 //!
@@ -63,6 +65,8 @@ pub struct Opening {
 /// A body asking to move.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Mover {
+    /// Where its centre stands now.
+    pub pos: DVec2,
     pub radius: f64,
     pub height: f64,
     pub z: f64,
@@ -148,7 +152,7 @@ impl Ground<'_> {
     /// counts). Doom checks only where a move ends, so a fast missile can
     /// pass a wall's corner between two pieces of its move and fly out of
     /// the map; here the path between is checked too.
-    pub fn wall_across(&self, query: &mut LineQuery, from: DVec2, to: DVec2) -> Option<usize> {
+    fn wall_across(&self, query: &mut LineQuery, from: DVec2, to: DVec2) -> Option<usize> {
         let map = &self.compiled.map;
         let lines = query.run(self.blockmap, map.lines.len(), from.min(to), from.max(to));
         lines.iter().map(|&i| i as usize).find(|&i| {
@@ -159,7 +163,8 @@ impl Ground<'_> {
     }
 
     /// Where `mover` would stand at `to`, if the lines let it (Doom's
-    /// P_TryMove without the things: the caller checks those).
+    /// P_TryMove without the things: the caller checks those), and its
+    /// centre's way there crosses no one-sided line ([`Ground::wall_across`]).
     pub fn try_move(&self, query: &mut LineQuery, mover: &Mover, to: DVec2) -> Result<Opening, Refusal> {
         if mover.no_clip {
             return self.opening(query, to, 0.0, true).map_err(Refusal::Line);
@@ -169,10 +174,12 @@ impl Ground<'_> {
             && o.ceiling - mover.z >= mover.height
             && o.floor - mover.z <= MAX_STEP
             && (mover.missile || mover.may_drop || o.floor - o.dropoff <= MAX_STEP);
-        if fits {
-            Ok(o)
-        } else {
-            Err(Refusal::Fit(o))
+        if !fits {
+            return Err(Refusal::Fit(o));
+        }
+        match self.wall_across(query, mover.pos, to) {
+            Some(line) => Err(Refusal::Line(line)),
+            None => Ok(o),
         }
     }
 }

@@ -59,6 +59,7 @@ impl Actors {
     fn mover(&self, n: usize) -> Mover {
         let (a, def) = (&self.list[n], &self.table.actors[self.list[n].kind]);
         Mover {
+            pos: a.pos,
             radius: def.radius,
             height: def.height,
             z: a.z,
@@ -122,11 +123,7 @@ impl Actors {
     pub fn try_move(&mut self, n: usize, to: DVec2, ctx: &mut ActorCtx) -> Result<(), Blocked> {
         let mover = self.mover(n);
         let ground = Ground { compiled: &ctx.level.compiled, blockmap: ctx.blockmap };
-        let from = self.list[n].pos;
         let o = match ground.try_move(ctx.query, &mover, to) {
-            Ok(_) if !mover.no_clip && ground.wall_across(ctx.query, from, to).is_some() => {
-                return Err(Blocked::Line { sky: false });
-            }
             Ok(o) => o,
             Err(Refusal::Line(_)) => return Err(Blocked::Line { sky: false }),
             Err(Refusal::Fit(o)) => {
