@@ -40,6 +40,12 @@ use crate::map::special::KeyColour;
 const DOOM_TABLE: &str = include_str!("../../data/actors.ron");
 /// The shipped table's name in errors.
 pub const DOOM_TABLE_PATH: &str = "engine/data/actors.ron";
+/// Sightline's own roster (the default level's monsters), layered on
+/// Doom's: new actors only, drawn by our own code.
+const ROSTER: &str = include_str!("../../data/roster.ron");
+pub const ROSTER_PATH: &str = "engine/data/roster.ron";
+/// The shipped table's files, in layering order.
+const SHIPPED: [(&str, &str); 2] = [(DOOM_TABLE, DOOM_TABLE_PATH), (ROSTER, ROSTER_PATH)];
 
 /// What a thing is, in broad strokes (Doom's categories). It decides what a
 /// map thing of this kind means before any state runs: a player start is a
@@ -424,13 +430,13 @@ pub struct ActorTable {
 static ACTIVE: OnceLock<Arc<ActorTable>> = OnceLock::new();
 
 impl ActorTable {
-    /// Doom's and Doom II's actors, as shipped (checked by the tests, so
-    /// this cannot fail in a release).
+    /// The shipped table: Doom's and Doom II's actors, and Sightline's own
+    /// roster on top (checked by the tests, so this cannot fail in a release).
     pub fn doom() -> &'static Arc<ActorTable> {
         static TABLE: OnceLock<Arc<ActorTable>> = OnceLock::new();
         TABLE.get_or_init(|| {
-            let table = ActorTable::parse(&[(DOOM_TABLE, DOOM_TABLE_PATH)])
-                .unwrap_or_else(|e| panic!("the shipped actor table is broken: {e}"));
+            let table =
+                ActorTable::parse(&SHIPPED).unwrap_or_else(|e| panic!("the shipped actor table is broken: {e}"));
             Arc::new(table)
         })
     }
@@ -455,7 +461,7 @@ impl ActorTable {
         let label = path.display().to_string();
         let text = std::fs::read_to_string(path)
             .map_err(|e| ActorTableError::Io { path: label.clone(), message: e.to_string() })?;
-        ActorTable::parse(&[(DOOM_TABLE, DOOM_TABLE_PATH), (&text, &label)])
+        ActorTable::parse(&[SHIPPED[0], SHIPPED[1], (&text, &label)])
     }
 
     /// Parses, layers (later files add or replace actors) and checks tables.

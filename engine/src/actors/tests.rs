@@ -16,8 +16,24 @@ fn one(actor: &str) -> String {
 }
 
 #[test]
+fn the_shipped_table_adds_sightline_s_own_roster() {
+    let (t, doom) = (ActorTable::doom(), ActorTable::parse(&[(DOOM_TABLE, DOOM_TABLE_PATH)]).unwrap());
+    let own = ["sentry", "stalker", "spitter", "spitter_bolt"];
+    assert_eq!(t.actors.len(), doom.actors.len() + own.len());
+    for name in own {
+        let a = t.get(name).unwrap_or_else(|| panic!("{name}"));
+        // RON maps name them; no WAD number can collide with them.
+        assert_eq!(a.doomednum, None, "{name}");
+    }
+    // Doom's actors are untouched by the roster.
+    assert_eq!(t.get("imp").unwrap().health, doom.get("imp").unwrap().health);
+    let spitter = t.get("spitter").unwrap();
+    assert!(spitter.has(ActorFlag::CountKill));
+}
+
+#[test]
 fn the_shipped_table_loads_with_doom_s_roster() {
-    let t = ActorTable::doom();
+    let t = &ActorTable::parse(&[(DOOM_TABLE, DOOM_TABLE_PATH)]).unwrap();
     // Every thing of Doom and Doom II, the player, missiles and effects, the
     // nine weapons.
     assert_eq!(t.actors.len(), 146);

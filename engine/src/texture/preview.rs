@@ -139,3 +139,52 @@ fn contact_sheet() {
     }
     sheet.write(&out.join("sheet.png"));
 }
+
+/// The modelled figures' frames, for a person to look at: set
+/// `SIGHTLINE_TEXTURE_PREVIEW=1` to get `/tmp/textures_preview/figures.png`
+/// (a row per frame, its eight views across, at 3x on grey) and
+/// `screens.png` (the weapons on the screen).
+#[test]
+fn figures_sheet() {
+    if std::env::var_os("SIGHTLINE_TEXTURE_PREVIEW").is_none() {
+        return; // a preview for people, not a check
+    }
+    let dir = Path::new("/tmp/textures_preview");
+    std::fs::create_dir_all(dir).unwrap();
+    let zoom = 3;
+    let mut rows: Vec<Vec<Texture>> = Vec::new();
+    let mut stem = String::new();
+    for &name in super::procedural::figure_names() {
+        let t = generate(name, TextureKind::Sprite).unwrap();
+        // A row per frame seen from eight sides; frames seen alike from
+        // every side share rows.
+        if name[..4] != stem || name.ends_with('1') || rows.last().is_some_and(|r| r.len() == 10) {
+            rows.push(Vec::new());
+            stem = name[..4].to_string();
+        }
+        rows.last_mut().unwrap().push(t);
+    }
+    let row_w = |r: &[Texture]| r.iter().map(|t| t.width * zoom + MARGIN).sum::<usize>();
+    let row_h = |r: &[Texture]| r.iter().map(|t| t.height * zoom + MARGIN).max().unwrap_or(0);
+    let w = rows.iter().map(|r| row_w(r)).max().unwrap() + MARGIN;
+    let h = rows.iter().map(|r| row_h(r)).sum::<usize>() + MARGIN;
+    let mut sheet = Sheet { w, h, rgb: vec![[96, 100, 104]; w * h] };
+    let mut y = MARGIN;
+    for r in &rows {
+        let mut x = MARGIN;
+        for t in r {
+            sheet.draw(t, x, y, zoom, 1, 0);
+            x += t.width * zoom + MARGIN;
+        }
+        y += row_h(r);
+    }
+    sheet.write(&dir.join("figures.png"));
+    let screens: Vec<Texture> =
+        names(TextureKind::Screen).iter().map(|n| generate(n, TextureKind::Screen).unwrap()).collect();
+    let (w, h) = (4 * (320 + MARGIN) + MARGIN, screens.len().div_ceil(4) * (200 + MARGIN) + MARGIN);
+    let mut sheet = Sheet { w, h, rgb: vec![[60, 64, 70]; w * h] };
+    for (k, t) in screens.iter().enumerate() {
+        sheet.draw(t, MARGIN + (k % 4) * (320 + MARGIN), MARGIN + (k / 4) * (200 + MARGIN), 1, 1, 0);
+    }
+    sheet.write(&dir.join("screens.png"));
+}

@@ -7,8 +7,10 @@
 //! ODD 37x23), so the renderer's wrapping is exercised by the shipped maps and
 //! not only by tests.
 
+mod figures;
 mod flats;
 mod machinery;
+mod models;
 mod paint;
 mod sky;
 mod special;
@@ -41,8 +43,9 @@ const SPRITES: &[&str] = &[
     "RSKUA0", "BAR1A0", "COLUA0",
 ];
 
-/// The built-in weapon: the pistol's frames and flash (`sprites::pistol`).
-const SCREENS: &[&str] = &["PISGA0", "PISGB0", "PISGC0", "PISFA0"];
+/// The built-in weapons on the screen: the fist's, pistol's and shotgun's
+/// frames and flashes (`figures::screen`).
+const SCREENS: &[&str] = figures::SCREENS;
 
 /// The trooper's frames (`sprites::trooper`): the zombieman's sprite
 /// names, A-G from eight directions and H-U from all sides alike.
@@ -56,6 +59,13 @@ fn trooper_names() -> &'static [&'static str] {
     })
 }
 
+/// The roster's, the items' and the effects' frames, modelled in 3D
+/// (`figures`).
+pub(super) fn figure_names() -> &'static [&'static str] {
+    static NAMES: std::sync::OnceLock<Vec<&'static str>> = std::sync::OnceLock::new();
+    NAMES.get_or_init(|| figures::sprite_names().into_iter().map(|n| &*Box::leak(n.into_boxed_str())).collect())
+}
+
 /// Names of the built-in textures of each kind, upper case.
 pub fn names(kind: TextureKind) -> &'static [&'static str] {
     match kind {
@@ -67,10 +77,11 @@ pub fn names(kind: TextureKind) -> &'static [&'static str] {
 }
 
 /// Every built-in name of `kind`: the listed ones, and for sprites the
-/// trooper's frames.
+/// trooper's frames and the modelled figures'.
 fn all_names(kind: TextureKind) -> impl Iterator<Item = &'static str> {
-    let figures = if kind == TextureKind::Sprite { trooper_names() } else { &[] };
-    names(kind).iter().chain(figures).copied()
+    let (trooper, figures) =
+        if kind == TextureKind::Sprite { (trooper_names(), figure_names()) } else { (&[][..], &[][..]) };
+    names(kind).iter().chain(trooper).chain(figures).copied()
 }
 
 /// The listed spelling of built-in `name` (any case) of `kind`, if there is one.
@@ -82,6 +93,13 @@ pub fn canonical(name: &str, kind: TextureKind) -> Option<&'static str> {
 /// none of that kind: a flat name does not resolve as a wall, as in Doom.
 pub fn generate(name: &str, kind: TextureKind) -> Option<Texture> {
     let name = canonical(name, kind)?;
+    match kind {
+        TextureKind::Screen => return figures::screen(name),
+        TextureKind::Sprite if !names(kind).contains(&name) => {
+            return figures::sprite(name).or_else(|| sprites::trooper(name))
+        }
+        _ => {}
+    }
     let seed = paint::seed_of(name);
     Some(match name {
         "BRICK" => walls::brick(seed),
@@ -120,8 +138,7 @@ pub fn generate(name: &str, kind: TextureKind) -> Option<Texture> {
         "BSKUA0" | "YSKUA0" | "RSKUA0" => machinery::skull(name),
         "BAR1A0" => sprites::barrel(paint::seed_of("BARREL")),
         "COLUA0" => sprites::lamp(paint::seed_of("LAMP")),
-        "PISGA0" | "PISGB0" | "PISGC0" | "PISFA0" => sprites::pistol(name)?,
-        other => sprites::trooper(other).unwrap_or_else(|| unreachable!("{other} is listed but has no painter")),
+        other => unreachable!("{other} is listed but has no painter"),
     })
 }
 
