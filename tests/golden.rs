@@ -102,3 +102,57 @@ fn play_frames_with_the_status_bar_and_a_weapon_match_golden_images() {
         assert_eq!(diff.pixels, 0, "{}: frame changed (got {})", file.display(), out.display());
     }
 }
+
+/// The default level's main views as a person sees them, with the status
+/// bar and the weapon in hand: the start (the window onto the courtyard,
+/// the pistol), the courtyard from its door (the slime pool, the lift, the
+/// sky; the shotgun), the hall from its door (the dais, the flickering
+/// light, monsters) and the exit yard (the scrolling chevrons, the exit
+/// building). Compared as the frames above; looked at when blessed.
+#[test]
+fn the_default_level_s_main_views_match_golden_images() {
+    use sightline::play::{Game, TickInput};
+    use sightline::screen::{draw, Hud};
+    let bless = std::env::var_os("SIGHTLINE_BLESS").is_some();
+    let level = load(&root().join("maps/outpost.ron"));
+    let mut g = Game::new(level).unwrap();
+    let table = g.actors().table.clone();
+    let shotgun = table.index("shotgun").unwrap();
+    let dir = root().join("tests/images");
+    let views = [
+        ("start", None),
+        ("courtyard", Some((416.0, 440.0, 70.0))),
+        ("hall", Some((352.0, 1060.0, 80.0))),
+        ("exit-yard", Some((1216.0, 1080.0, 80.0))),
+    ];
+    for (k, (name, pose)) in views.into_iter().enumerate() {
+        if let Some((x, y, angle)) = pose {
+            g.teleport(glam::DVec2::new(x, y), angle).unwrap();
+        }
+        if k == 1 {
+            g.player_mut().weapons.push(shotgun);
+            g.player_mut().ammo[1] = 8;
+            g.tick(&TickInput { weapon: 3, ..TickInput::default() });
+        }
+        g.player_mut().health = 100;
+        for _ in 0..40 {
+            g.tick(&TickInput::default());
+            g.player_mut().health = 100;
+        }
+        let mut frame = render(g.level(), &g.view(1.0), SIZE, Renderer::Bsp, Shade::Textured);
+        draw(&mut frame, g.level(), g.player(), Hud::StatusBar);
+        let file = dir.join(format!("outpost-play-{k}-{name}.png"));
+        if bless {
+            std::fs::write(&file, frame.to_png()).unwrap();
+            continue;
+        }
+        let golden = Framebuffer::read_png(&file)
+            .unwrap_or_else(|e| panic!("missing golden image ({e}); create it with SIGHTLINE_BLESS=1 and look at it"));
+        let diff = difference(&frame, &golden);
+        let out = std::env::temp_dir().join(format!("golden-outpost-{name}.png"));
+        if diff.pixels != 0 {
+            std::fs::write(&out, frame.to_png()).unwrap();
+        }
+        assert_eq!(diff.pixels, 0, "{}: frame changed (got {})", file.display(), out.display());
+    }
+}

@@ -27,6 +27,7 @@ fn each_shipped_map_plans_exactly_what_it_uses() {
         ("hall", &["sprites", "masked", "diminishing light"]),
         ("doors", &["sprites", "diminishing light"]),
         ("machinery", &["sprites", "diminishing light"]),
+        ("outpost", &["sky", "sprites", "diminishing light"]),
         // Grid maps are evenly lit unless they say otherwise.
         ("bunker", &["sprites"]),
         ("gridmaze", &["sprites", "diminishing light"]),

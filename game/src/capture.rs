@@ -12,7 +12,7 @@ use sightline::Framebuffer;
 use crate::cli::CaptureArgs;
 
 /// The map a new user sees first.
-pub const DEFAULT_MAP: &str = "maps/pillars.ron";
+pub const DEFAULT_MAP: &str = "maps/outpost.ron";
 
 pub fn run(args: &CaptureArgs) -> Result<()> {
     let map = MapRef::parse(&args.map, args.iwad.as_deref());
@@ -40,7 +40,7 @@ pub fn run(args: &CaptureArgs) -> Result<()> {
     Ok(())
 }
 
-/// `maps/pillars.ron` under the current directory, else in the source tree.
+/// The default level, `maps/outpost.ron`, under the current directory, else in the source tree.
 pub fn default_map_path() -> PathBuf {
     let here = PathBuf::from(DEFAULT_MAP);
     if here.exists() {

@@ -168,7 +168,7 @@ pub struct CaptureArgs {
 #[derive(Args)]
 pub struct PlayArgs {
     /// A RON map, a compiled map, a campaign file, a WAD (its first map,
-    /// then its episode) or `WAD:MAP`. Default: maps/pillars.ron.
+    /// then its episode) or `WAD:MAP`. Default: maps/outpost.ron.
     pub map: Option<String>,
     /// The IWAD under a PWAD (`--iwad freedoom2.wad mymap.wad:MAP01`).
     #[arg(long)]

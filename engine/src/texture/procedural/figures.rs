@@ -520,8 +520,8 @@ fn fist_frame(k: f32) -> Vec<Part> {
 
 /// The screen picture `name`, if this module paints it.
 pub fn screen(name: &str) -> Option<Texture> {
-    const PISTOL: (f32, (f32, f32)) = (9.0, (165.0, 184.0));
-    const SHOTGUN: (f32, (f32, f32)) = (7.5, (166.0, 194.0));
+    const PISTOL: (f32, (f32, f32)) = (6.0, (166.0, 192.0));
+    const SHOTGUN: (f32, (f32, f32)) = (5.8, (166.0, 200.0));
     let gun = |parts: Vec<Part>, (zoom, at): (f32, (f32, f32))| on_screen(&parts, zoom, at);
     Some(match name {
         "PUNGA0" => on_screen(&fist_frame(0.0), 8.0, (220.0, 200.0)),
