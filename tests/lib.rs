@@ -254,3 +254,68 @@ pub fn assert_agree_on_two_sided_lines(
 pub fn random_inputs(seed: u64, ticks: usize) -> Vec<TickInput> {
     wander(seed, ticks, true)
 }
+
+/// What [`saves_continue_exactly`] saw at its save points.
+#[derive(Debug, Default)]
+pub struct SaveCheck {
+    /// Saves made, loaded and followed.
+    pub saves: usize,
+    /// The largest save, in bytes.
+    pub largest: usize,
+    /// Save points at which some monster was after the player or another monster.
+    pub fighting: usize,
+    /// Save points at which some sector was moving or a light changing.
+    pub machinery: usize,
+}
+
+/// Plays `inputs` on `play`; at each tick in `save_at` (while a level is
+/// being played) saves the playthrough, loads the save into a new
+/// playthrough and plays the next `ahead` inputs on both, side by side:
+/// the loaded game must equal the original in its whole state after every
+/// tick, and in its frames (the BSP renderer, at the tick and between ticks)
+/// at the end. Panics (fails the test) at the first difference.
+pub fn saves_continue_exactly(
+    play: &mut sightline::play::playthrough::Playthrough,
+    inputs: &[TickInput],
+    save_at: &[usize],
+    ahead: usize,
+) -> SaveCheck {
+    use sightline::play::actors::Target;
+    use sightline::play::playthrough::{Phase, Playthrough};
+    let mut check = SaveCheck::default();
+    let mut followers: Vec<(usize, Playthrough, usize)> = Vec::new();
+    for (i, input) in inputs.iter().enumerate() {
+        if save_at.contains(&i) && play.phase == Phase::Playing {
+            let bytes = play.save_bytes().unwrap_or_else(|e| panic!("tick {i}: {e}"));
+            let loaded = Playthrough::from_save_bytes(&bytes, &format!("the save at tick {i}"))
+                .unwrap_or_else(|e| panic!("{e}"));
+            assert!(loaded.game.state_bytes() == play.game.state_bytes(), "tick {i}: the loaded game differs at once");
+            check.saves += 1;
+            check.largest = check.largest.max(bytes.len());
+            let actors = &play.game.actors().list;
+            let chasing = |a: &&sightline::play::actors::Actor| !a.removed && a.health > 0 && a.target != Target::None;
+            check.fighting += usize::from(actors.iter().filter(chasing).count() > 0);
+            check.machinery += usize::from(!play.game.world().thinkers.is_empty());
+            followers.push((i, loaded, ahead));
+        }
+        play.tick(input).unwrap_or_else(|e| panic!("tick {i}: {e}"));
+        for (from, loaded, left) in &mut followers {
+            loaded.tick(input).unwrap_or_else(|e| panic!("tick {i}: {e}"));
+            let what = format!("the game saved at tick {from} and loaded, {} ticks on", i + 1 - *from);
+            assert!(loaded.game.state_bytes() == play.game.state_bytes(), "{what}: its state differs");
+            assert_eq!(loaded.phase, play.phase, "{what}");
+            *left -= 1;
+            if *left == 0 {
+                for alpha in [1.0, 0.5] {
+                    let (a, b) = (play.game.view(alpha), loaded.game.view(alpha));
+                    let size = (160, 100);
+                    let fa = render(play.game.level(), &a, size, Renderer::Bsp, Shade::Textured);
+                    let fb = render(loaded.game.level(), &b, size, Renderer::Bsp, Shade::Textured);
+                    assert!(fa.pixels == fb.pixels, "{what}: its frame differs (alpha {alpha})");
+                }
+            }
+        }
+        followers.retain(|(_, _, left)| *left > 0);
+    }
+    check
+}

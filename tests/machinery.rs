@@ -4,8 +4,8 @@
 //! rides, the switch flips and opens the remote door, the blue door refuses
 //! and then opens, the key is picked up, the teleporter teleports, the
 //! secret counts, the exit ends the level). The inputs it fed are a demo:
-//! played again they end the same way, and `maps/machinery.sldemo`... is
-//! what the window test plays.
+//! played again they end the same way (saved and loaded on the way, the
+//! same game), and it is what the window test plays.
 
 use glam::DVec2;
 use sightline::campaign::MapRef;
@@ -201,9 +201,11 @@ fn machinery_is_played_through_from_start_to_exit() {
     let bytes = demo.to_bytes();
     let demo = Demo::from_bytes(&bytes, "machinery.sldemo").unwrap();
     let mut again = Playthrough::of(&map, GameOptions { skill: demo.skill, seed: demo.seed }).unwrap();
-    for input in &demo.inputs {
-        again.tick(input).unwrap();
-    }
+    // Saved every 97 ticks on the way (doors, the lift and the switch in
+    // motion at some), each save loaded and followed 60 ticks: the same game.
+    let save_at: Vec<usize> = (50..demo.inputs.len()).step_by(97).collect();
+    let saves = sightline_tests::saves_continue_exactly(&mut again, &demo.inputs, &save_at, 60);
+    assert!(saves.saves >= 10 && saves.machinery >= 3, "{saves:?}");
     assert_eq!(again.phase, d.play.phase);
     assert_eq!(again.game.player().pos, d.play.game.player().pos);
     // For the window test (.ci/window-test plays it into a window), when asked.

@@ -4,7 +4,8 @@
 //! small driver walks a route of waypoints, presses use where the level
 //! asks, and whenever a monster is in sight stops, turns to it and fires
 //! (the shotgun once it has one). Reaching the intermission alive is the
-//! level's balance check; the inputs replayed as a demo end the same way.
+//! level's balance check; the inputs replayed as a demo end the same way,
+//! saved and loaded every few seconds on the way.
 
 use glam::DVec2;
 use sightline::actors::ActorFlag;
@@ -263,9 +264,12 @@ fn the_outpost_is_fought_through_to_its_exit_on_the_middle_skill() {
     let demo = Demo { inputs: d.inputs.clone(), ..Demo::new(map.label()) };
     let demo = Demo::from_bytes(&demo.to_bytes(), "outpost.sldemo").unwrap();
     let mut again = Playthrough::of(&map, GameOptions { skill: demo.skill, seed: demo.seed }).unwrap();
-    for input in &demo.inputs {
-        again.tick(input).unwrap();
-    }
+    // Saved every 151 ticks on the way (mid-fight, doors and the lift
+    // moving), each save loaded and followed 70 ticks: the same game.
+    let save_at: Vec<usize> = (40..demo.inputs.len()).step_by(151).collect();
+    let saves = sightline_tests::saves_continue_exactly(&mut again, &demo.inputs, &save_at, 70);
+    println!("saved and loaded on the way: {saves:?}");
+    assert!(saves.saves >= 10 && saves.fighting >= 3, "{saves:?}");
     assert_eq!(again.phase, d.play.phase);
     if let Some(path) = std::env::var_os("SIGHTLINE_WRITE_OUTPOST_DEMO") {
         Demo { inputs: d.inputs.clone(), ..Demo::new("maps/outpost.ron") }.save(path.as_ref()).unwrap();

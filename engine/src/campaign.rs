@@ -23,7 +23,7 @@ use crate::wad::library::WadArt;
 use crate::wad::{Wad, WadError};
 
 /// One map to open.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum MapRef {
     /// A RON map (sector or grid) or a compiled map file.
     File(PathBuf),
@@ -199,7 +199,7 @@ pub struct CampaignMap {
 }
 
 /// What follows what.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub enum Campaign {
     /// One map on its own: nothing follows it.
     Single(MapRef),

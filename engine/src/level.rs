@@ -53,7 +53,7 @@ pub struct Level {
 }
 
 /// A thing as the renderers draw it.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct DrawnThing {
     /// Orders things at equal depth and names the thing in `ids` shading:
     /// the map thing's index, or an index past the map's things for what

@@ -12,7 +12,7 @@ use crate::texture::animdefs::AnimDefs;
 use crate::texture::{Library, TextureError, TextureId, TextureKind, TextureSet};
 
 /// The textures of one side of a line.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct SideTextures {
     pub upper: Option<TextureId>,
     pub middle: Option<TextureId>,
@@ -20,7 +20,7 @@ pub struct SideTextures {
 }
 
 /// A sector's plane textures; `None` for untextured or sky.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct SectorTextures {
     pub floor: Option<TextureId>,
     pub ceiling: Option<TextureId>,

@@ -11,7 +11,7 @@
 //! so that a mod can fire something else without new code.
 
 /// An index into [`REGISTRY`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 pub struct ActionId(pub u16);
 
 /// What an argument must be.

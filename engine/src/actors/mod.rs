@@ -99,7 +99,7 @@ impl Category {
     }
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, serde::Serialize, Deserialize)]
 pub enum KeyForm {
     Card,
     Skull,
@@ -187,7 +187,7 @@ pub enum ActorFlag {
 }
 
 /// A set of [`ActorFlag`]s, one bit each.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 pub struct ActorFlags(u64);
 
 impl ActorFlags {
@@ -304,7 +304,7 @@ pub struct Sounds {
 }
 
 /// An index into [`ActorTable::states`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize, serde::Deserialize)]
 pub struct StateId(pub u32);
 
 /// An action's argument, checked against the action's signature.

@@ -24,7 +24,7 @@
 //! body's circle against lines), [`trace`] (what a move, a use or a shot
 //! crosses), [`world`] (the level's machinery: specials and thinkers),
 //! [`pickups`] (what walking over an item gives), [`events`] (sounds and messages out), [`random`],
-//! [`demo`] (recorded inputs, saved and loaded).
+//! [`demo`] (recorded inputs, saved and loaded), [`save`] (saved games).
 
 pub mod actors;
 pub mod blockmap;
@@ -36,6 +36,7 @@ pub mod pickups;
 pub mod player;
 pub mod playthrough;
 pub mod random;
+pub mod save;
 pub mod sight;
 pub mod trace;
 pub mod weapons;
@@ -84,7 +85,7 @@ pub enum PlayError {
 }
 
 /// How a game is set up.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct GameOptions {
     /// 1 to 5, as Doom's: things appear by their skill flags.
     pub skill: u8,
@@ -109,7 +110,7 @@ pub struct Stats {
 }
 
 /// What the view interpolates between ticks.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 struct Pose {
     pos: DVec2,
     eye: f64,
@@ -150,6 +151,8 @@ pub struct Game {
     /// The pose at the start of the last tick.
     previous: Pose,
     ticks: u64,
+    /// The map's fingerprint as opened, before play (a save names the map by it).
+    fingerprint: u32,
 }
 
 impl Game {
@@ -174,6 +177,7 @@ impl Game {
         if level.compiled.locate(start.pos).is_none() {
             return Err(PlayError::Outside { map: map.name.clone(), x: start.pos.x, y: start.pos.y });
         }
+        let fingerprint = save::map_fingerprint(&level);
         let types = &table;
         let mut totals = (0, 0);
         for t in map.things.iter().filter(|t| t.in_single_player(options.skill) && map.version >= 2) {
@@ -227,6 +231,7 @@ impl Game {
             totals,
             previous,
             ticks: 0,
+            fingerprint,
         })
     }
 

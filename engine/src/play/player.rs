@@ -57,7 +57,7 @@ pub const START_HEALTH: i32 = 100;
 pub const DEAD_EYE: f64 = 6.0;
 
 /// A key the player holds.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, serde::Serialize, serde::Deserialize)]
 pub struct Key {
     pub colour: KeyColour,
     pub form: KeyForm,
@@ -69,7 +69,7 @@ pub const START_BULLETS: i32 = 50;
 pub const MAX_AMMO: [i32; 4] = [200, 50, 50, 300];
 
 /// The player: where the body is and how it moves.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Player {
     /// Centre of the body's circle.
     pub pos: DVec2,
@@ -142,7 +142,7 @@ pub const FLASH_LAYER: usize = 1;
 /// A sprite drawn on the screen rather than in the world: the weapon or
 /// its flash (Doom's `pspdef_t`). `sx`, `sy` place its origin on Doom's
 /// 320x200 screen.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct PSprite {
     /// `None`: not shown.
     pub state: Option<crate::actors::StateId>,

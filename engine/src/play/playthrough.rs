@@ -83,6 +83,19 @@ impl Playthrough {
         self.options
     }
 
+    /// The last tick held use or fire (a save keeps it: the next press is
+    /// told from a held key the same way after loading).
+    pub(super) fn held(&self) -> bool {
+        self.held
+    }
+
+    /// A playthrough of `campaign` resumed on `map` with `game` (a loaded save).
+    pub(super) fn resume(campaign: Campaign, map: MapRef, game: Game, ticks: u64, held: bool) -> Playthrough {
+        let options = game.options;
+        let build = BuildOptions::default();
+        Playthrough { campaign, map, game, phase: Phase::Playing, ticks, options, build, held }
+    }
+
     /// One tick: the game's, or the intermission's. Loading the next map can
     /// fail (a file changed or vanished); the error says which, and the
     /// playthrough stays in its intermission.
@@ -108,7 +121,7 @@ impl Playthrough {
                 *ticks += 1;
                 if pressed && *ticks >= INTERMISSION_MIN {
                     match next.clone() {
-                        Some(next) => self.load(next)?,
+                        Some(next) => self.enter(next)?,
                         None => self.phase = Phase::Finished { stats: *stats },
                     }
                 }
@@ -120,7 +133,7 @@ impl Playthrough {
 
     /// Loads `map` and plays it; the player keeps its health (not its keys,
     /// as in Doom).
-    fn load(&mut self, map: MapRef) -> Result<(), PlaythroughError> {
+    fn enter(&mut self, map: MapRef) -> Result<(), PlaythroughError> {
         let health = self.game.player().health;
         let opened = open(&map, &self.build)?;
         let mut game = start(opened.level, &opened.map, self.options)?;

@@ -116,7 +116,7 @@ impl Texture {
 }
 
 /// An index into a [`TextureSet`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 pub struct TextureId(pub u32);
 
 /// What a name is looked up as: wall textures live in `<map dir>/textures/`,
@@ -124,7 +124,7 @@ pub struct TextureId(pub u32);
 /// walls in two namespaces, so an imported WAD may use one name for both),
 /// sprites in `<map dir>/sprites/`; the procedural textures are separate per
 /// kind.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum TextureKind {
     Wall,
     Flat,

@@ -12,7 +12,7 @@ pub const CELL: f64 = 128.0;
 /// No cell: the actor is not listed.
 pub const UNLISTED: u32 = u32::MAX;
 
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug, Default, serde::Serialize, serde::Deserialize)]
 pub struct ThingGrid {
     origin: DVec2,
     cols: usize,
@@ -41,6 +41,19 @@ impl ThingGrid {
     pub fn cell(&self, p: DVec2) -> u32 {
         let (c, r) = self.col_row(p);
         (r * self.cols + c) as u32
+    }
+
+    /// How many cells it has.
+    pub fn cells(&self) -> usize {
+        self.cells.len()
+    }
+
+    /// Is a loaded grid laid out as `fresh` (the same map's) and does it
+    /// list only actors below `actors`?
+    pub fn fits(&self, fresh: &ThingGrid, actors: usize) -> bool {
+        (self.origin, self.cols, self.rows) == (fresh.origin, fresh.cols, fresh.rows)
+            && self.cells.len() == fresh.cells.len()
+            && self.cells.iter().flatten().all(|&n| (n as usize) < actors)
     }
 
     /// Lists actor `n` (of `radius`) in `cell`.

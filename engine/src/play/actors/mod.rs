@@ -39,7 +39,7 @@ use grid::{ThingGrid, UNLISTED};
 use movement::NO_DIR;
 
 /// Whom an actor is after (or, for a missile, who fired it).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum Target {
     #[default]
     None,
@@ -49,7 +49,7 @@ pub enum Target {
 }
 
 /// One thing in play.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Actor {
     /// Its actor, by index into the table.
     pub kind: usize,
@@ -142,8 +142,11 @@ pub struct ActorCtx<'a> {
     pub monster_walks: bool,
 }
 
-/// Every actor of a game.
+/// Every actor of a game. Saved whole (`play::save`) but for the table and
+/// the action functions, which the loading game supplies, and scratch.
+#[derive(Clone, serde::Serialize, serde::Deserialize)]
 pub struct Actors {
+    #[serde(skip, default = "no_table")]
     pub table: Arc<ActorTable>,
     pub list: Vec<Actor>,
     /// The actors whose state timer runs, in the order they began to run
@@ -155,12 +158,14 @@ pub struct Actors {
     /// map names sprites, not actors).
     still: Vec<usize>,
     /// Per action of the registry, its function (`None`: not implemented).
+    #[serde(skip)]
     run: Vec<Option<ActionFn>>,
     /// The actors that block, can be shot, picked up or raised, by cell.
     pub grid: ThingGrid,
     /// The actors with momentum or off the ground (`physics.rs` moves only these).
     movers: Vec<u32>,
     /// Scratch for grid queries.
+    #[serde(skip)]
     near: Vec<u32>,
     /// Per sector: the player was heard there (Doom's `soundtarget`).
     heard: Vec<bool>,
@@ -217,6 +222,11 @@ fn parts(map: &crate::map::Map) -> Vec<u32> {
         }
     }
     (0..part.len() as u32).map(|s| root(&mut part, s)).collect()
+}
+
+/// What a deserialized [`Actors`] holds until the loading game gives it its own.
+fn no_table() -> Arc<ActorTable> {
+    ActorTable::active().clone()
 }
 
 /// No place in `Level::things`, or no actor in a place.
@@ -288,6 +298,54 @@ impl Actors {
             }
         }
         actors
+    }
+
+    /// Gives loaded actors what a save leaves out: the table and the
+    /// action functions, from `fresh` (the actors of the game being loaded into).
+    pub(crate) fn take_tools(&mut self, fresh: &mut Actors) {
+        self.table = fresh.table.clone();
+        self.run = std::mem::take(&mut fresh.run);
+    }
+
+    /// Do loaded actors fit `level` and `table` (as `fresh`, the actors a
+    /// game just started there has, lays them out), with `things` drawn
+    /// things? Every index an actor or a list holds must be in range. See `play::save`.
+    pub(crate) fn check(&self, fresh: &Actors, level: &Level, things: usize) -> Result<(), String> {
+        let map = &level.compiled.map;
+        let table = &fresh.table;
+        let (n, sectors, textures) = (self.list.len(), map.sectors.len(), level.materials.textures.len());
+        let target = |t: &Target| !matches!(t, Target::Actor(i) if *i as usize >= n);
+        let actor_fits = |a: &Actor| {
+            a.kind < table.actors.len()
+                && (a.state.0 as usize) < table.states.len()
+                && a.sector < sectors
+                && a.thing.is_none_or(|t| t < map.things.len())
+                && [a.target, a.source, a.tracer].iter().all(target)
+                && a.views.is_none_or(|v| v.iter().all(|id| (id.0 as usize) < textures))
+                && (a.cell == UNLISTED || (a.cell as usize) < self.grid.cells())
+                && a.movedir <= NO_DIR
+        };
+        if let Some(i) = self.list.iter().position(|a| !actor_fits(a)) {
+            return Err(format!("actor {i} names a kind, state, sector, texture or actor that is not there"));
+        }
+        let listed = |v: &[u32]| v.iter().all(|&i| (i as usize) < n);
+        let drawn = |v: &[u32], len: usize| v.iter().all(|&i| i == NOT_DRAWN || (i as usize) < len);
+        let lists_fit = [&self.awake, &self.movers, &self.parked, &self.corpses, &self.dirty].iter().all(|v| listed(v))
+            && self.still.iter().all(|&t| t < map.things.len())
+            && self.heard.len() == sectors
+            && self.parts.len() == sectors
+            && self.parts.iter().all(|&p| (p as usize) < sectors)
+            && self.slots.len() == n
+            && drawn(&self.slots, things)
+            && self.owners.len() == things
+            && drawn(&self.owners, n)
+            && self.look == fresh.look
+            && self.grid.fits(&fresh.grid, n);
+        if lists_fit {
+            Ok(())
+        } else {
+            Err("the actors' lists, grid or per-sector marks do not fit the map".into())
+        }
     }
 
     /// A new actor of `kind` standing at `pos`, `z` in `area` (its sector,

@@ -18,7 +18,7 @@ const CRUSHING_SLOWDOWN: f64 = 1.0 / 8.0;
 /// Crushers at least this fast never slow down (Doom's fast crushers move at 2).
 const FAST: f64 = 2.0;
 
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub enum CeilingKind {
     /// Moves once to `dest`.
     Once { dest: f64 },
@@ -26,7 +26,7 @@ pub enum CeilingKind {
     Crusher { top: f64, bottom: f64, silent: bool },
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct CeilingMove {
     pub sector: usize,
     pub kind: CeilingKind,

@@ -32,7 +32,7 @@ const BLAZING: f64 = 8.0;
 pub const SLIDE_SPEED: f64 = 1.0 / 32.0;
 
 /// What a door moves.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub enum Motion {
     /// A sector map's door: the sector's ceiling, up to `top`.
     Ceiling { top: f64 },
@@ -50,7 +50,7 @@ pub enum Motion {
 /// with the slide was rejected: collision would let the body through once the
 /// gap gave 56 units of headroom, which on a grid with a high ceiling is while
 /// most of the panel is still in the way.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Slide {
     /// The door's place in [`crate::grid::FaceLines::doors`] and [`GridLevel::open`].
     pub index: usize,
@@ -69,7 +69,7 @@ impl Slide {
     }
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum DoorState {
     Opening,
     /// At the top; starts closing when `wait` runs out.
@@ -85,7 +85,7 @@ pub enum DoorState {
 }
 
 /// A door at work.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Door {
     pub sector: usize,
     pub kind: DoorKind,

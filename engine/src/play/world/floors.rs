@@ -12,7 +12,7 @@ use crate::map::SectorSpecial;
 use crate::play::events::{sound, Origin};
 
 /// A floor special's parameters (from [`crate::map::Action::Floor`]).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Floor {
     pub to: FloorTarget,
     pub offset: f64,
@@ -22,7 +22,7 @@ pub struct Floor {
 }
 
 /// A new floor texture (and maybe special) taken from another sector.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Retexture {
     /// The sector whose floor texture is copied.
     pub from: usize,
@@ -31,7 +31,7 @@ pub struct Retexture {
 }
 
 /// A floor at work.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct FloorMove {
     pub sector: usize,
     pub dest: f64,

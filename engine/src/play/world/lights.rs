@@ -15,7 +15,7 @@ pub const SLOW_DARK: u32 = 35;
 /// Light levels a glow moves per tick (Doom's GLOWSPEED).
 pub const GLOW_SPEED: i32 = 8;
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum Effect {
     /// Doom's LIGHTFLASH: dark for 1 to 8 ticks, bright for 1 or 65.
     Blink,
@@ -28,7 +28,7 @@ pub enum Effect {
     Flicker,
 }
 
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct Light {
     pub sector: usize,
     pub effect: Effect,

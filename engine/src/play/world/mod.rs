@@ -43,7 +43,7 @@ use crate::map::special::KeyColour;
 use crate::map::LineSpecial;
 
 /// How the level ended.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum Exit {
     Normal,
     Secret,
@@ -75,7 +75,7 @@ pub struct Ctx<'a> {
 }
 
 /// One running piece of the world.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub enum Thinker {
     Door(doors::Door),
     Plat(plats::Plat),
@@ -119,7 +119,7 @@ pub enum SpecialLine {
 }
 
 /// The level's machinery in motion.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, serde::Serialize, serde::Deserialize)]
 pub struct World {
     pub thinkers: Vec<Thinker>,
     /// Per sector: a floor or ceiling mover is at work (Doom's `specialdata`).
@@ -201,6 +201,37 @@ impl World {
             SpecialLine::Trigger(i) => level.compiled.map.lines.len() + i,
         };
         self.spent[slot] = true;
+    }
+
+    /// Does a loaded world fit `level` (every sector, line and texture its
+    /// thinkers name is the level's)? See `play::save`.
+    pub(crate) fn check(&self, level: &Level) -> Result<(), String> {
+        let map = &level.compiled.map;
+        let (sectors, lines) = (map.sectors.len(), map.lines.len());
+        let doors = level.grid.as_ref().map_or(0, |g| g.open.len());
+        if self.busy.len() != sectors
+            || self.lit.len() != sectors
+            || self.spent.len() != lines + map.trigger_lines.len()
+        {
+            return Err("the world's per-sector and per-line marks do not fit the map".into());
+        }
+        let fits = |t: &Thinker| match t {
+            Thinker::Door(d) => match d.motion {
+                doors::Motion::Slide { slide, .. } => d.sector < sectors && slide.index < doors,
+                doors::Motion::Ceiling { .. } => d.sector < sectors,
+            },
+            Thinker::Plat(p) => p.sector < sectors,
+            Thinker::Floor(f) => f.sector < sectors && f.arrival.is_none_or(|r| r.from < sectors),
+            Thinker::Ceiling(c) => c.sector < sectors,
+            Thinker::Light(l) => l.sector < sectors,
+            Thinker::Button(b) => {
+                b.line < lines && (b.original.0 as usize) < level.materials.textures.len() && b.count > 0
+            }
+        };
+        match self.thinkers.iter().position(|t| !fits(t)) {
+            Some(i) => Err(format!("the world's thinker {i} names a sector, line or texture the map does not have")),
+            None => Ok(()),
+        }
     }
 
     /// The door thinker on `sector`, if one is at work there.

@@ -10,7 +10,7 @@ use crate::play::actors::movement::Ground;
 use crate::play::player::{HEIGHT, RADIUS};
 
 /// Which plane of a sector moves.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum Plane {
     Floor,
     Ceiling,

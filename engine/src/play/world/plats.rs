@@ -8,7 +8,7 @@ use super::mover::{move_plane, Moved, Plane};
 use super::{specials, Ctx, Thinker, World};
 use crate::play::events::{sound, Origin};
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum PlatState {
     Up,
     Down,
@@ -22,14 +22,14 @@ pub enum PlatState {
 }
 
 /// The moving states a stopped lift returns to.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum PlatStep {
     Up,
     Down,
     Waiting { count: u32 },
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Plat {
     pub sector: usize,
     pub low: f64,

@@ -11,7 +11,7 @@ use crate::texture::TextureId;
 pub const BUTTON_TIME: u32 = 35;
 
 /// Which texture of a side.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum Part {
     Upper,
     Middle,
@@ -19,7 +19,7 @@ pub enum Part {
 }
 
 /// A pressed button waiting to flip back.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct Button {
     pub line: usize,
     pub part: Part,

@@ -17,6 +17,8 @@ mod special;
 mod sprites;
 mod walls;
 
+use std::collections::BTreeMap;
+
 use super::{Texture, TextureKind};
 
 /// Wall textures. DEBUG1 (1x1), THIN (1x64) and ODD (37x23) exist for the
@@ -93,6 +95,23 @@ pub fn canonical(name: &str, kind: TextureKind) -> Option<&'static str> {
 /// none of that kind: a flat name does not resolve as a wall, as in Doom.
 pub fn generate(name: &str, kind: TextureKind) -> Option<Texture> {
     let name = canonical(name, kind)?;
+    // Made once per process: the figures take a while to draw, and a level
+    // opened again (a saved game loaded, a map restarted) asks for the same.
+    static MADE: std::sync::Mutex<BTreeMap<(&'static str, TextureKind), Texture>> =
+        std::sync::Mutex::new(BTreeMap::new());
+    let key = (name, kind);
+    if let Some(made) = MADE.lock().ok().and_then(|m| m.get(&key).cloned()) {
+        return Some(made);
+    }
+    let made = draw(name, kind)?;
+    if let Ok(mut m) = MADE.lock() {
+        m.insert(key, made.clone());
+    }
+    Some(made)
+}
+
+/// Draws the texture `name` (canonical) of `kind`.
+fn draw(name: &'static str, kind: TextureKind) -> Option<Texture> {
     match kind {
         TextureKind::Screen => return figures::screen(name),
         TextureKind::Sprite if !names(kind).contains(&name) => {
