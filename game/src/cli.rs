@@ -216,6 +216,14 @@ pub struct PlayArgs {
     /// Degrees turned per mouse count while the cursor is grabbed.
     #[arg(long, default_value_t = 0.15)]
     pub mouse_sensitivity: f32,
+    /// Continue the game saved in this file (F6 or F2 in the window save
+    /// one) instead of starting a map.
+    #[arg(long, conflicts_with_all = ["map", "demo", "record", "iwad"])]
+    pub load: Option<PathBuf>,
+    /// Where F6 and F2 save games and F9 and F3 load them. Default:
+    /// $XDG_DATA_HOME/sightline/saves (~/.local/share/sightline/saves).
+    #[arg(long)]
+    pub save_dir: Option<PathBuf>,
 }
 
 #[derive(Args)]

@@ -167,3 +167,41 @@ fn a_user_actor_file_is_used_by_commands_that_play() {
     let broken = dir.path().join("broken.ron");
     assert_refused(&replay(&["--actors", broken.to_str().unwrap()]), &["broken.ron", "impp"]);
 }
+
+#[test]
+fn play_load_continues_a_saved_game_or_names_the_bad_save() {
+    use sightline::campaign::MapRef;
+    use sightline::play::playthrough::Playthrough;
+    use sightline::play::GameOptions;
+
+    let dir = tempfile::tempdir().unwrap();
+    let mut play = Playthrough::of(&MapRef::File(shipped_map("room.ron")), GameOptions::default()).unwrap();
+    for input in scripted_walk() {
+        play.tick(&input).unwrap();
+    }
+    let save = dir.path().join("room.slsave");
+    play.save(&save).unwrap();
+    // A good save loads, and only then is the window tried (there is no display here).
+    let out = sightline(dir.path(), &["play", "--load", "room.slsave"]);
+    assert_refused(&out, &["no display"]);
+    // A bad or missing save is refused before any window, naming the file.
+    std::fs::write(dir.path().join("junk.slsave"), b"not a save").unwrap();
+    assert_refused(
+        &sightline(dir.path(), &["play", "--load", "junk.slsave"]),
+        &["junk.slsave", "not a Sightline saved game"],
+    );
+    let mut cut = std::fs::read(&save).unwrap();
+    cut.truncate(cut.len() / 2);
+    std::fs::write(dir.path().join("cut.slsave"), cut).unwrap();
+    assert_refused(&sightline(dir.path(), &["play", "--load", "cut.slsave"]), &["cut.slsave", "truncated"]);
+    assert_refused(&sightline(dir.path(), &["play", "--load", "gone.slsave"]), &["gone.slsave"]);
+    // A save continues a game: it does not go with a map, a demo or a recording.
+    let room = shipped_map("room.ron");
+    for other in [vec![room.to_str().unwrap()], vec!["--demo", "a.sldemo"], vec!["--record", "b.sldemo"]] {
+        let mut args = vec!["play", "--load", "room.slsave"];
+        args.extend(other);
+        let out = sightline(dir.path(), &args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {}", text(&out.stderr));
+        assert!(text(&out.stderr).contains("cannot be used with"), "{}", text(&out.stderr));
+    }
+}

@@ -23,7 +23,8 @@ use winit::window::WindowId;
 use super::automap::Automap;
 use super::clock::TickClock;
 use super::hud::Hud;
-use super::input::{window_action, Action};
+use super::input::{digit, window_action, Action};
+use super::saves::{self, Slot};
 use super::screen::{Screen, ScreenOptions};
 use super::screenshot;
 use super::session::Session;
@@ -49,8 +50,18 @@ pub struct App {
     title: String,
     last_frame: Option<Instant>,
     frames: u64,
+    /// Where saved games go, and a slot asked for (F2 or F3, waiting for a digit).
+    save_dir: std::path::PathBuf,
+    prompt: Option<Prompt>,
     /// What stopped the loop, if something went wrong.
     pub error: Option<anyhow::Error>,
+}
+
+/// F2 or F3 was pressed: the next digit names the slot.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Prompt {
+    Save,
+    Load,
 }
 
 pub struct AppOptions {
@@ -60,6 +71,7 @@ pub struct AppOptions {
     pub threads: usize,
     pub frame_limit: Option<u64>,
     pub hud: bool,
+    pub save_dir: std::path::PathBuf,
 }
 
 impl App {
@@ -86,6 +98,8 @@ impl App {
             title: options.screen.title.clone(),
             last_frame: None,
             frames: 0,
+            save_dir: options.save_dir,
+            prompt: None,
             error: None,
         }
     }
@@ -161,6 +175,10 @@ impl App {
                 Ok(path) => println!("screenshot: {}", path.display()),
                 Err(e) => eprintln!("sightline: screenshot not saved: {e:#}"),
             },
+            Action::QuickSave => self.save(Slot::Quick),
+            Action::QuickLoad => self.load(Slot::Quick),
+            Action::SaveSlot => self.ask(Prompt::Save),
+            Action::LoadSlot => self.ask(Prompt::Load),
             Action::CycleRenderer => {
                 let at = self.renderers.iter().position(|&r| r == self.options.renderer);
                 let next = at.map_or(0, |i| (i + 1) % self.renderers.len());
@@ -170,6 +188,59 @@ impl App {
             }
         }
         Ok(())
+    }
+
+    /// A message on the HUD and on the terminal.
+    fn say(&mut self, text: String) {
+        println!("{text}");
+        self.hud.message(text);
+    }
+
+    fn ask(&mut self, prompt: Prompt) {
+        self.prompt = Some(prompt);
+        let verb = if prompt == Prompt::Save { "Save to" } else { "Load from" };
+        self.say(format!("{verb} which slot? Press 1 to 9 (any other key: cancel)"));
+    }
+
+    /// The key pressed after F2 or F3: a digit from 1 to 9 saves or loads
+    /// that slot; anything else cancels.
+    fn answer(&mut self, prompt: Prompt, key: winit::keyboard::KeyCode) {
+        match digit(key).filter(|&d| d >= 1) {
+            Some(d) if prompt == Prompt::Save => self.save(Slot::Numbered(d)),
+            Some(d) => self.load(Slot::Numbered(d)),
+            None => self.say("Cancelled".into()),
+        }
+    }
+
+    /// Saves the game to `slot`; a save that fails is reported, not fatal.
+    fn save(&mut self, slot: Slot) {
+        let path = saves::path(&self.save_dir, slot);
+        match self.session.save(&path) {
+            Ok(()) => self.say(format!("Game saved to {} ({})", slot.describe(), path.display())),
+            Err(e) => self.say(format!("Not saved: {e:#}")),
+        }
+    }
+
+    /// Loads the game in `slot`; a load that fails is reported and the game goes on.
+    fn load(&mut self, slot: Slot) {
+        let path = saves::path(&self.save_dir, slot);
+        match self.session.load(&path) {
+            Ok(()) => {
+                // The map may be another: the title, automap and renderers follow it.
+                self.title.clear();
+                self.follow_map();
+                let play = &self.session.play;
+                let at = play.game.ticks() / u64::from(sightline::play::TICRATE);
+                self.say(format!(
+                    "Loaded {} ({}, {}:{:02} in)",
+                    slot.describe(),
+                    play.map.short_name(),
+                    at / 60,
+                    at % 60
+                ));
+            }
+            Err(e) => self.say(format!("Not loaded: {e:#}")),
+        }
     }
 
     /// A new map (the next level, or a restart): the title names it, the
@@ -266,6 +337,12 @@ impl ApplicationHandler for App {
             WindowEvent::KeyboardInput { event, .. } => {
                 let PhysicalKey::Code(code) = event.physical_key else { return };
                 let down = event.state == ElementState::Pressed;
+                if down && !event.repeat {
+                    if let Some(prompt) = self.prompt.take() {
+                        self.answer(prompt, code);
+                        return;
+                    }
+                }
                 let action = match self.session.controls() {
                     Some(controls) => controls.key(code, down, event.repeat),
                     // A demo drives the player; the window keys still work.

@@ -24,6 +24,12 @@ pub enum Action {
     CycleRenderer,
     /// The status bar, or the minimal full-screen HUD (Doom's `-` and `=`).
     ToggleStatusBar,
+    /// Doom's keys: F6 saves to the quick slot, F9 loads it; F2 and F3 ask
+    /// for a slot (a digit) to save to or load from.
+    QuickSave,
+    QuickLoad,
+    SaveSlot,
+    LoadSlot,
 }
 
 /// Movement keys, as bits of `Controls::held` and `Controls::pressed`.
@@ -56,6 +62,24 @@ fn binding(key: KeyCode) -> Option<Move> {
 }
 
 /// The weapon number a key asks for (the number keys 1 to 7).
+/// The digit of a number key, 0 to 9 (the top row and the keypad).
+pub fn digit(key: KeyCode) -> Option<u8> {
+    use KeyCode::*;
+    let keys = [
+        [Digit0, Numpad0],
+        [Digit1, Numpad1],
+        [Digit2, Numpad2],
+        [Digit3, Numpad3],
+        [Digit4, Numpad4],
+        [Digit5, Numpad5],
+        [Digit6, Numpad6],
+        [Digit7, Numpad7],
+        [Digit8, Numpad8],
+        [Digit9, Numpad9],
+    ];
+    keys.iter().position(|k| k.contains(&key)).map(|d| d as u8)
+}
+
 fn weapon_key(key: KeyCode) -> Option<u8> {
     Some(match key {
         KeyCode::Digit1 => 1,
@@ -84,6 +108,10 @@ pub fn window_action(key: KeyCode, down: bool, repeat: bool) -> Option<Action> {
         KeyCode::F12 => Action::Screenshot,
         KeyCode::KeyR => Action::CycleRenderer,
         KeyCode::Minus | KeyCode::Equal => Action::ToggleStatusBar,
+        KeyCode::F6 => Action::QuickSave,
+        KeyCode::F9 => Action::QuickLoad,
+        KeyCode::F2 => Action::SaveSlot,
+        KeyCode::F3 => Action::LoadSlot,
         _ => return None,
     })
 }

@@ -17,6 +17,7 @@ mod automap;
 mod clock;
 pub(crate) mod hud;
 mod input;
+mod saves;
 mod screen;
 mod screenshot;
 mod session;
@@ -54,9 +55,13 @@ pub fn run(args: &PlayArgs) -> Result<()> {
         Some(demo) => GameOptions { skill: demo.skill, seed: demo.seed },
         None => GameOptions { skill: args.skill, seed: args.seed },
     };
-    let play =
-        Playthrough::of(&map, game_options).with_context(|| format!("{}: cannot start the game", map.label()))?;
-    let renderer = crate::replay::choose_renderer(args.renderer, play.game.level(), &map.label())?;
+    let play = match &args.load {
+        Some(save) => Playthrough::load(save)?,
+        None => {
+            Playthrough::of(&map, game_options).with_context(|| format!("{}: cannot start the game", map.label()))?
+        }
+    };
+    let renderer = crate::replay::choose_renderer(args.renderer, play.game.level(), &play.map.label())?;
     let session = match demo {
         Some(demo) => Session::demo(play, demo.inputs),
         None => Session::live(play, Controls::new(args.mouse_sensitivity), args.record.is_some()),
@@ -78,6 +83,7 @@ pub fn run(args: &PlayArgs) -> Result<()> {
         threads: args.threads,
         frame_limit: args.frames,
         hud: !args.no_hud,
+        save_dir: args.save_dir.clone().unwrap_or_else(saves::default_dir),
     };
     let mut app = App::new(session, options);
     let ran = event_loop.run_app(&mut app);

@@ -4,6 +4,9 @@
 //! frame loop asks it to run whole ticks and for the view between the last
 //! two; messages the game sends are kept for the HUD.
 
+use std::path::Path;
+
+use anyhow::{bail, Context, Result};
 use sightline::play::events::Event;
 use sightline::play::playthrough::{Phase, Playthrough};
 use sightline::play::TickInput;
@@ -102,6 +105,32 @@ impl Session {
     /// The messages since the last call.
     pub fn take_messages(&mut self) -> Vec<String> {
         std::mem::take(&mut self.messages)
+    }
+
+    /// Saves the game to `path`, making its directory if need be.
+    pub fn save(&self, path: &Path) -> Result<()> {
+        if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+            std::fs::create_dir_all(dir).with_context(|| format!("{}: cannot make the directory", dir.display()))?;
+        }
+        Ok(self.play.save(path)?)
+    }
+
+    /// Replaces the game with the one saved in `path`. On any error the
+    /// game goes on as it was. Refused while a demo plays or is recorded
+    /// (its inputs would no longer be the game's).
+    pub fn load(&mut self, path: &Path) -> Result<()> {
+        if matches!(self.source, Source::Demo { .. }) {
+            bail!("a demo is playing: a loaded game would leave it");
+        }
+        if self.recording.is_some() {
+            bail!("a demo is being recorded, and would not replay a loaded game (saving still works)");
+        }
+        self.play = Playthrough::load(path)?;
+        self.finished = false;
+        if let Some(controls) = self.controls() {
+            controls.release_all();
+        }
+        Ok(())
     }
 
     pub fn take_recording(&mut self) -> Option<Vec<TickInput>> {
