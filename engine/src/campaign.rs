@@ -147,7 +147,7 @@ pub fn open(map: &MapRef, options: &BuildOptions) -> Result<Opened, CampaignErro
 }
 
 /// The WADs as one, later over earlier.
-fn stack(paths: &[PathBuf]) -> Result<Wad, WadError> {
+pub(crate) fn stack(paths: &[PathBuf]) -> Result<Wad, WadError> {
     let dirs = wad_dirs();
     let wads = paths.iter().map(|p| Wad::open(&find_wad(p, &dirs))).collect::<Result<Vec<_>, _>>()?;
     Ok(Wad::stack(wads))

@@ -27,6 +27,7 @@ pub mod materials;
 pub mod play;
 pub mod render;
 pub mod screen;
+pub mod sound;
 pub mod study;
 pub mod texture;
 pub mod tour;

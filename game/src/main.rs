@@ -2,6 +2,7 @@
 //! default map in a window; subcommands compile maps, capture frames headless,
 //! replay demos and time the renderer.
 
+mod audio;
 mod bench;
 mod capture;
 mod cli;

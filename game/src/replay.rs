@@ -37,8 +37,22 @@ pub fn run(args: &ReplayArgs) -> Result<()> {
     if let Some(c) = &mut capture {
         c.frame(&play, 0)?;
     }
+    let mut sound = args
+        .audio
+        .as_ref()
+        .map(|_| (sightline::sound::Sounds::new(), crate::audio::audio(&args.sound), Vec::<f32>::new()));
     for (i, input) in demo.inputs.iter().enumerate() {
         play.tick(input)?;
+        if let Some((sounds, audio, samples)) = &mut sound {
+            let cues = sounds.cues(&play);
+            crate::audio::warn(sounds);
+            if let Err(e) = audio.apply(&cues) {
+                eprintln!("sightline: warning: music: {e}");
+            }
+            let at = samples.len();
+            samples.resize(at + 2 * sightline::sound::FRAMES_PER_TICK, 0.0);
+            audio.render(&mut samples[at..]);
+        }
         let tick = i as u64 + 1;
         if let Some(c) = &mut capture {
             if tick.is_multiple_of(c.every) || tick == last {
@@ -48,6 +62,15 @@ pub fn run(args: &ReplayArgs) -> Result<()> {
     }
     if let Some(c) = &capture {
         println!("wrote {} frames to {}", c.written, c.dir.display());
+    }
+    if let (Some(path), Some((_, _, samples))) = (&args.audio, &sound) {
+        sightline::sound::wav::write(path, samples, sightline::sound::OUTPUT_RATE)
+            .map_err(|e| anyhow::anyhow!("{}: cannot write the audio: {e}", path.display()))?;
+        println!(
+            "wrote {:.1} s of audio to {}",
+            samples.len() as f64 / 2.0 / f64::from(sightline::sound::OUTPUT_RATE),
+            path.display()
+        );
     }
     println!("{}", position_line(&play));
     Ok(())

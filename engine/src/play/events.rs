@@ -13,7 +13,10 @@ pub enum Origin {
     Player,
     /// A sector's middle (doors, lifts, floors: Doom's `soundorg`).
     Sector(usize),
-    /// A point in the map.
+    /// An actor, where it stood when the sound began (a new sound from the
+    /// same actor cuts off its last; the sound follows the actor).
+    Actor { index: u32, pos: DVec2 },
+    /// A point in the map with no one behind it (a teleport's flash).
     At(DVec2),
 }
 

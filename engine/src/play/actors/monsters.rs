@@ -59,7 +59,11 @@ impl Actors {
         let name = crate::actors::sounds::doom()[s].name.as_str();
         let def = &self.table.actors[self.list[n].kind];
         // Bosses are heard everywhere at full volume.
-        let origin = if def.has(ActorFlag::FullVolumeSounds) { Origin::Player } else { Origin::At(self.list[n].pos) };
+        let origin = if def.has(ActorFlag::FullVolumeSounds) {
+            Origin::Player
+        } else {
+            Origin::Actor { index: n as u32, pos: self.list[n].pos }
+        };
         ctx.events.push(Event::Sound { sound: name, origin });
     }
 

@@ -1,0 +1,245 @@
+//! Sound: what the game is heard as. The simulation only emits events
+//! (`play::events`: a sound's name and where it comes from); this module
+//! turns them into stereo samples, and never touches a device:
+//!
+//! ```text
+//! Playthrough ──Sounds::cues (each tick: the events' voices and positions,
+//!    │           the listener, the origins still sounding, music changes)──▶ Cues
+//!    │                                                                     │
+//!    │                              Audio::apply (start, follow, stop) ◀───┘
+//!    ▼                              Audio::render ──▶ stereo f32 at 44,100 Hz
+//! bank (the map's voices: a WAD's DMX lumps, WAVs beside a RON map, our own)
+//! ```
+//!
+//! [`Sounds`] lives with the game (it reads the playthrough and owns the
+//! map's [`bank::SoundBank`]); [`Audio`] owns the [`mix::Mixer`] and the
+//! [`music::Music`] and can live on another thread (the window's audio
+//! thread) or run in step with the ticks (`sightline replay --audio`, which
+//! renders exactly [`FRAMES_PER_TICK`] frames a tick, so the same demo gives
+//! the same bytes). Modules: [`dmx`] and [`mus`] (Doom's lump formats),
+//! [`procedural`] (our own voices), [`bank`], [`mix`] (Doom's positional
+//! rules and channels), [`music`] (SoundFont synthesis), [`wav`] (offline
+//! output).
+
+pub mod bank;
+pub mod dmx;
+pub mod mix;
+pub mod mus;
+pub mod music;
+pub mod procedural;
+pub mod wav;
+
+use std::sync::Arc;
+
+use glam::DVec2;
+
+use crate::campaign::MapRef;
+use crate::play::events::{Event, Origin};
+use crate::play::playthrough::{Phase, Playthrough};
+use bank::SoundBank;
+use mix::{Key, Listener, Mixer};
+use music::Music;
+
+/// The output rate: 44,100 Hz is exactly 1,260 frames a tick.
+pub const OUTPUT_RATE: u32 = 44_100;
+pub const FRAMES_PER_TICK: usize = (OUTPUT_RATE / crate::play::TICRATE) as usize;
+/// How long an actor's sound is followed after it starts (the longest of
+/// Doom's sounds is under 3 s).
+const FOLLOW_TICKS: u64 = 4 * crate::play::TICRATE as u64;
+
+/// A mono sound: samples in -1..1 at `rate` Hz.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sample {
+    pub rate: u32,
+    pub data: Vec<f32>,
+}
+
+/// A sound to start.
+#[derive(Clone, Debug)]
+pub struct Start {
+    pub voice: bank::Voice,
+    pub key: Key,
+    /// Where it comes from; `None` for the listener's own.
+    pub pos: Option<DVec2>,
+}
+
+/// What the audio side needs of one tick.
+#[derive(Clone, Debug, Default)]
+pub struct Cues {
+    pub listener: Listener,
+    pub starts: Vec<Start>,
+    /// Where the origins of sounds still playing are now.
+    pub moved: Vec<(Key, DVec2)>,
+    /// A new map began: stop every sound.
+    pub stop_all: bool,
+    /// The music changed: play this MIDI file (`Some(None)`: silence).
+    pub music: Option<Option<Arc<Vec<u8>>>>,
+}
+
+/// The game's side: the map's voices, which origins are sounding, which
+/// music plays.
+pub struct Sounds {
+    bank: SoundBank,
+    map: Option<MapRef>,
+    /// Actors whose sounds may still be playing, and when they started one.
+    sounding: Vec<(u32, u64)>,
+    /// The music chosen last (its lump or file name).
+    song: Option<String>,
+    /// Points get keys of their own.
+    points: u64,
+    /// Warnings not yet shown (missing or bad sounds and music), one line each.
+    pub warnings: Vec<String>,
+}
+
+impl Default for Sounds {
+    fn default() -> Sounds {
+        Sounds::new()
+    }
+}
+
+impl Sounds {
+    pub fn new() -> Sounds {
+        Sounds {
+            bank: SoundBank::procedural(),
+            map: None,
+            sounding: Vec::new(),
+            song: None,
+            points: 0,
+            warnings: Vec::new(),
+        }
+    }
+
+    /// The cues of the tick `play` just ran.
+    pub fn cues(&mut self, play: &Playthrough) -> Cues {
+        let mut cues = Cues::default();
+        if self.map.as_ref() != Some(&play.map) {
+            // Another WAD or map: its own voices (warned about once).
+            let same_source = match (&self.map, &play.map) {
+                (Some(MapRef::Wad { wads: a, .. }), MapRef::Wad { wads: b, .. }) => a == b,
+                _ => false,
+            };
+            if !same_source {
+                self.bank = SoundBank::for_map(&play.map);
+                self.warnings.append(&mut self.bank.warnings);
+            }
+            self.map = Some(play.map.clone());
+            self.sounding.clear();
+            cues.stop_all = true;
+        }
+        let song = song_for(&play.map, &play.phase);
+        if song != self.song {
+            cues.music = Some(song.as_ref().and_then(|name| match self.bank.wad_music(name) {
+                Ok(midi) => Some(Arc::new(midi)),
+                Err(e) => {
+                    self.warnings.push(format!("music {name}: {e}"));
+                    None
+                }
+            }));
+            self.song = song;
+        }
+        let game = &play.game;
+        let player = game.player();
+        cues.listener = Listener { pos: player.pos, angle: player.angle };
+        let level = game.level();
+        let tick = game.ticks();
+        for event in game.events() {
+            let Event::Sound { sound, origin } = event else { continue };
+            let Some(voice) = self.bank.get(sound).cloned() else {
+                self.warnings.append(&mut self.bank.warnings);
+                continue;
+            };
+            let (key, pos) = match *origin {
+                Origin::Player => (Key::Listener, None),
+                Origin::Sector(s) => (Key::Sector(s), level.sector_boxes.get(s).map(|b| (b.min + b.max) / 2.0)),
+                Origin::Actor { index, pos } => {
+                    self.sounding.retain(|&(a, _)| a != index);
+                    self.sounding.push((index, tick));
+                    (Key::Actor(index), Some(pos))
+                }
+                Origin::At(pos) => {
+                    self.points += 1;
+                    (Key::Point(self.points), Some(pos))
+                }
+            };
+            cues.starts.push(Start { voice, key, pos });
+        }
+        self.sounding.retain(|&(_, since)| tick.saturating_sub(since) <= FOLLOW_TICKS && since <= tick);
+        let actors = &game.actors().list;
+        for &(a, _) in &self.sounding {
+            if let Some(actor) = actors.get(a as usize).filter(|actor| !actor.removed) {
+                cues.moved.push((Key::Actor(a), actor.pos));
+            }
+        }
+        cues
+    }
+}
+
+/// The music lump of a WAD map, or of its intermission: Doom's `D_E1M1`
+/// for episode maps, Doom II's table for `MAPxx`, `D_INTER` and `D_DM2INT`
+/// between levels. Nothing for a RON map.
+pub fn song_for(map: &MapRef, phase: &Phase) -> Option<String> {
+    const DOOM2: [&str; 32] = [
+        "RUNNIN", "STALKS", "COUNTD", "BETWEE", "DOOM", "THE_DA", "SHAWN", "DDTBLU", "IN_CIT", "DEAD", "STLKS2",
+        "THEDA2", "DOOM2", "DDTBL2", "RUNNI2", "DEAD2", "STLKS3", "ROMERO", "SHAWN2", "MESSAG", "COUNT2", "DDTBL3",
+        "AMPIE", "THEDA3", "ADRIAN", "MESSG2", "ROMER2", "TENSE", "SHAWN3", "OPENIN", "EVIL", "ULTIMA",
+    ];
+    let MapRef::Wad { map: Some(name), .. } = map else { return None };
+    let name = name.to_ascii_uppercase();
+    let doom2 = name.starts_with("MAP");
+    if *phase != Phase::Playing {
+        return Some(if doom2 { "D_DM2INT" } else { "D_INTER" }.into());
+    }
+    if doom2 {
+        let n: usize = name[3..].parse().ok()?;
+        return DOOM2.get(n.checked_sub(1)?).map(|s| format!("D_{s}"));
+    }
+    Some(format!("D_{name}"))
+}
+
+/// The audio side: the mixer and the music.
+pub struct Audio {
+    pub mixer: Mixer,
+    pub music: Option<Music>,
+    listener: Listener,
+}
+
+impl Audio {
+    /// Effects on `channels` channels, and music when `music` is given.
+    pub fn new(channels: usize, music: Option<Music>) -> Audio {
+        Audio { mixer: Mixer::new(OUTPUT_RATE, channels), music, listener: Listener::default() }
+    }
+
+    /// Acts on a tick's cues: music changes, stops, the sounds' new
+    /// positions, the new sounds. A song that does not parse is `Err` (and
+    /// silence); everything else applies regardless.
+    pub fn apply(&mut self, cues: &Cues) -> Result<(), String> {
+        let mut result = Ok(());
+        if cues.stop_all {
+            self.mixer.stop_all();
+        }
+        if let (Some(change), Some(music)) = (&cues.music, &mut self.music) {
+            match change {
+                Some(midi) => result = music.play(midi),
+                None => music.stop(),
+            }
+        }
+        self.listener = cues.listener;
+        self.mixer.update(&self.listener, &cues.moved);
+        for s in &cues.starts {
+            self.mixer.start(s.voice.sample.clone(), s.key, s.pos, s.voice.priority, &self.listener);
+        }
+        result
+    }
+
+    /// The next `out.len() / 2` frames (interleaved stereo), clipped to -1..1.
+    pub fn render(&mut self, out: &mut [f32]) {
+        out.fill(0.0);
+        if let Some(music) = &mut self.music {
+            music.mix(out);
+        }
+        self.mixer.mix(out);
+        for v in out {
+            *v = v.clamp(-1.0, 1.0);
+        }
+    }
+}
