@@ -224,6 +224,11 @@ pub struct PlayArgs {
     /// $XDG_DATA_HOME/sightline/saves (~/.local/share/sightline/saves).
     #[arg(long)]
     pub save_dir: Option<PathBuf>,
+    /// No sound at all (effects or music).
+    #[arg(long)]
+    pub no_sound: bool,
+    #[command(flatten)]
+    pub sound: SoundArgs,
 }
 
 /// Sound options shared by `play` and `replay --audio`.

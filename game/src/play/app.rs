@@ -175,6 +175,17 @@ impl App {
                 Ok(path) => println!("screenshot: {}", path.display()),
                 Err(e) => eprintln!("sightline: screenshot not saved: {e:#}"),
             },
+            Action::EffectsVolume(step) | Action::MusicVolume(step) => {
+                let (which, what) =
+                    if matches!(action, Action::EffectsVolume(_)) { (0, "Effects") } else { (1, "Music") };
+                match &mut self.session.sound {
+                    Some(sound) => {
+                        let level = sound.nudge(which, f32::from(step) / 10.0);
+                        self.say(format!("{what} volume {}%", (level * 100.0).round()));
+                    }
+                    None => self.say("No sound (started with --no-sound, or no sound server)".into()),
+                }
+            }
             Action::QuickSave => self.save(Slot::Quick),
             Action::QuickLoad => self.load(Slot::Quick),
             Action::SaveSlot => self.ask(Prompt::Save),

@@ -30,6 +30,9 @@ pub enum Action {
     QuickLoad,
     SaveSlot,
     LoadSlot,
+    /// Effects' and music's volume down and up, a tenth at a time.
+    EffectsVolume(i8),
+    MusicVolume(i8),
 }
 
 /// Movement keys, as bits of `Controls::held` and `Controls::pressed`.
@@ -108,6 +111,10 @@ pub fn window_action(key: KeyCode, down: bool, repeat: bool) -> Option<Action> {
         KeyCode::F12 => Action::Screenshot,
         KeyCode::KeyR => Action::CycleRenderer,
         KeyCode::Minus | KeyCode::Equal => Action::ToggleStatusBar,
+        KeyCode::BracketLeft => Action::EffectsVolume(-1),
+        KeyCode::BracketRight => Action::EffectsVolume(1),
+        KeyCode::PageDown => Action::MusicVolume(-1),
+        KeyCode::PageUp => Action::MusicVolume(1),
         KeyCode::F6 => Action::QuickSave,
         KeyCode::F9 => Action::QuickLoad,
         KeyCode::F2 => Action::SaveSlot,

@@ -21,6 +21,7 @@ mod saves;
 mod screen;
 mod screenshot;
 mod session;
+mod sound;
 mod timings;
 
 use std::path::Path;
@@ -62,12 +63,21 @@ pub fn run(args: &PlayArgs) -> Result<()> {
         }
     };
     let renderer = crate::replay::choose_renderer(args.renderer, play.game.level(), &play.map.label())?;
-    let session = match demo {
+    let mut session = match demo {
         Some(demo) => Session::demo(play, demo.inputs),
         None => Session::live(play, Controls::new(args.mouse_sensitivity), args.record.is_some()),
     };
 
     check_display()?;
+    if !args.no_sound {
+        match sound::SoundOut::open(&args.sound) {
+            Ok(out) => {
+                println!("sound: playing to the system's audio");
+                session.sound = Some(out);
+            }
+            Err(e) => println!("sound: off: {e}; the game runs silent"),
+        }
+    }
     let event_loop = EventLoop::new()
         .map_err(|e| anyhow!("cannot open a window: no display could be reached ({e}).\n{NO_DISPLAY_HINT}"))?;
     event_loop.set_control_flow(ControlFlow::Poll);

@@ -35,6 +35,8 @@ pub struct Session {
     messages: Vec<String>,
     /// What went wrong loading the next map, once.
     pub error: Option<anyhow::Error>,
+    /// Sound to the system's audio, when there is any.
+    pub sound: Option<super::sound::SoundOut>,
 }
 
 impl Session {
@@ -47,7 +49,15 @@ impl Session {
     }
 
     fn with(play: Playthrough, source: Source, record: bool) -> Session {
-        Session { play, source, recording: record.then(Vec::new), finished: false, messages: Vec::new(), error: None }
+        Session {
+            play,
+            source,
+            recording: record.then(Vec::new),
+            finished: false,
+            messages: Vec::new(),
+            error: None,
+            sound: None,
+        }
     }
 
     /// The keyboard and mouse state, when they drive the game.
@@ -83,6 +93,9 @@ impl Session {
             if let Err(e) = self.play.tick(&input) {
                 self.error.get_or_insert(e.into());
                 return;
+            }
+            if let Some(sound) = &mut self.sound {
+                sound.tick(&self.play);
             }
             for event in self.play.game.events() {
                 if let Event::Message(text) = event {

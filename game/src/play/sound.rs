@@ -1,0 +1,124 @@
+//! The window's sound: the game's cues each tick, sent to an audio thread
+//! that mixes them (`sightline::sound::Audio`) into a PulseAudio playback
+//! stream. The stream pulls samples as the server plays them, on the
+//! client's own thread, so a frame never waits for audio. PulseAudio (or
+//! PipeWire's PulseAudio server, on most desktops) is reached through a
+//! pure-Rust client, so building needs no system audio headers. With no
+//! server the game runs silent and says so once.
+
+use std::sync::mpsc::{channel, Receiver, Sender};
+
+use pulseaudio::{protocol, AsPlaybackSource, Client, PlaybackStream};
+use sightline::play::playthrough::Playthrough;
+use sightline::sound::{Audio, Cues, Sounds, OUTPUT_RATE};
+
+use crate::cli::SoundArgs;
+
+/// Bytes buffered in the server: 1/16 s of 16-bit stereo.
+const TARGET_BYTES: u32 = OUTPUT_RATE / 16 * 4;
+
+/// What the game sends the audio thread.
+enum Message {
+    Cues(Box<Cues>),
+    /// Effects' and music's loudness, 0 to 1.
+    Volumes(f32, f32),
+}
+
+/// Sound playing from the game to the system's audio.
+pub struct SoundOut {
+    sounds: Sounds,
+    to_audio: Sender<Message>,
+    volumes: (f32, f32),
+    // Kept alive while the game runs: dropping them ends the stream.
+    _stream: PlaybackStream,
+    _client: Client,
+}
+
+impl SoundOut {
+    /// Connects to the sound server and starts the stream; `Err` says why
+    /// there is no sound (the game then runs silent).
+    pub fn open(args: &SoundArgs) -> Result<SoundOut, String> {
+        let client = Client::from_env(c"sightline").map_err(|e| format!("no PulseAudio server to play to ({e})"))?;
+        let audio = crate::audio::audio(args);
+        let volumes = (audio.mixer.volume, audio.music.as_ref().map_or(0.0, |m| m.volume));
+        let (to_audio, from_game) = channel();
+        let mut feed = Feed { audio, from_game, scratch: Vec::new() };
+        let source = move |bytes: &mut [u8]| feed.fill(bytes);
+        let params = protocol::PlaybackStreamParams {
+            sample_spec: protocol::SampleSpec {
+                format: protocol::SampleFormat::S16Le,
+                channels: 2,
+                sample_rate: OUTPUT_RATE,
+            },
+            channel_map: protocol::ChannelMap::stereo(),
+            cvolume: Some(protocol::ChannelVolume::norm(2)),
+            sink_name: Some(protocol::DEFAULT_SINK.to_owned()),
+            // About 60 ms buffered (a sound starts that long after its
+            // tick), asked for a quarter at a time; playing starts at once
+            // (the server's default, waiting for a full buffer, can stall a
+            // stream that is fed exactly what it asks).
+            buffer_attr: protocol::stream::BufferAttr {
+                max_length: u32::MAX,
+                target_length: TARGET_BYTES,
+                pre_buffering: 0,
+                minimum_request_length: TARGET_BYTES / 4,
+                fragment_size: u32::MAX,
+            },
+            ..Default::default()
+        };
+        let stream = futures::executor::block_on(client.create_playback_stream(params, source.as_playback_source()))
+            .map_err(|e| format!("the sound server refused a playback stream ({e})"))?;
+        Ok(SoundOut { sounds: Sounds::new(), to_audio, volumes, _stream: stream, _client: client })
+    }
+
+    /// The tick `play` just ran, to the audio thread; the warnings printed once.
+    pub fn tick(&mut self, play: &Playthrough) {
+        let cues = self.sounds.cues(play);
+        crate::audio::warn(&mut self.sounds);
+        let _ = self.to_audio.send(Message::Cues(Box::new(cues)));
+    }
+
+    /// Changes the effects' (`which` 0) or music's (1) volume by `step`;
+    /// returns the new level, 0 to 1.
+    pub fn nudge(&mut self, which: usize, step: f32) -> f32 {
+        let v = if which == 0 { &mut self.volumes.0 } else { &mut self.volumes.1 };
+        *v = ((*v + step) * 10.0).round().clamp(0.0, 10.0) / 10.0;
+        let level = *v;
+        let _ = self.to_audio.send(Message::Volumes(self.volumes.0, self.volumes.1));
+        level
+    }
+}
+
+/// The audio thread's side: the game's messages in, samples out.
+struct Feed {
+    audio: Audio,
+    from_game: Receiver<Message>,
+    scratch: Vec<f32>,
+}
+
+impl Feed {
+    /// Fills `bytes` with 16-bit stereo samples; returns how many it wrote (all).
+    fn fill(&mut self, bytes: &mut [u8]) -> usize {
+        while let Ok(m) = self.from_game.try_recv() {
+            match m {
+                Message::Cues(cues) => {
+                    // A song that will not play is silence; the game said so when it chose it.
+                    let _ = self.audio.apply(&cues);
+                }
+                Message::Volumes(effects, music) => {
+                    self.audio.mixer.volume = effects;
+                    if let Some(m) = &mut self.audio.music {
+                        m.volume = music;
+                    }
+                }
+            }
+        }
+        let frames = bytes.len() / 4;
+        self.scratch.resize(frames * 2, 0.0);
+        self.audio.render(&mut self.scratch);
+        for (out, v) in bytes.chunks_exact_mut(2).zip(&self.scratch) {
+            out.copy_from_slice(&((v * 32767.0).round() as i16).to_le_bytes());
+        }
+        frames * 4
+    }
+}
