@@ -319,3 +319,29 @@ pub fn saves_continue_exactly(
     }
     check
 }
+
+/// A run's sound rendered offline as `sightline replay --audio` renders it
+/// (no music): interleaved stereo at [`sightline::sound::OUTPUT_RATE`], and
+/// every sound event with its tick (counted from 1).
+pub fn render_audio(
+    play: &mut sightline::play::playthrough::Playthrough,
+    inputs: &[TickInput],
+) -> (Vec<f32>, Vec<(usize, &'static str, sightline::play::events::Origin)>) {
+    use sightline::play::events::Event;
+    use sightline::sound::{Audio, Sounds, FRAMES_PER_TICK};
+    let (mut sounds, mut audio) = (Sounds::new(), Audio::new(8, None));
+    let (mut samples, mut events) = (Vec::new(), Vec::new());
+    for (i, input) in inputs.iter().enumerate() {
+        play.tick(input).unwrap_or_else(|e| panic!("tick {i}: {e}"));
+        for e in play.game.events() {
+            if let Event::Sound { sound, origin } = e {
+                events.push((i + 1, *sound, *origin));
+            }
+        }
+        audio.apply(&sounds.cues(play)).unwrap_or_else(|e| panic!("tick {i}: {e}"));
+        let at = samples.len();
+        samples.resize(at + 2 * FRAMES_PER_TICK, 0.0);
+        audio.render(&mut samples[at..]);
+    }
+    (samples, events)
+}

@@ -13,6 +13,7 @@ use sightline::campaign::MapRef;
 use sightline::materials::Materials;
 use sightline::play::playthrough::{Phase, Playthrough};
 use sightline::play::sight::{sight, Body, Scratch};
+use sightline::play::events::Origin;
 use sightline::play::{Demo, Exit, GameOptions, TickInput};
 use sightline_tests::map_path;
 
@@ -271,6 +272,41 @@ fn the_outpost_is_fought_through_to_its_exit_on_the_middle_skill() {
     println!("saved and loaded on the way: {saves:?}");
     assert!(saves.saves >= 10 && saves.fighting >= 3, "{saves:?}");
     assert_eq!(again.phase, d.play.phase);
+    // Heard: the run's sound rendered offline has sound where the game made
+    // sounds (shots, doors and lifts, monsters) and silence where none
+    // could still be playing; and the same bytes twice.
+    let play = || Playthrough::of(&map, GameOptions::default()).unwrap();
+    let (samples, events) = sightline_tests::render_audio(&mut play(), &d.inputs);
+    assert_eq!(samples.len(), d.inputs.len() * 2 * sightline::sound::FRAMES_PER_TICK);
+    let kinds = |f: &dyn Fn(&Origin) -> bool| events.iter().filter(|(_, _, o)| f(o)).count();
+    let (mine, machines, monsters) = (
+        kinds(&|o| *o == Origin::Player),
+        kinds(&|o| matches!(o, Origin::Sector(_))),
+        kinds(&|o| matches!(o, Origin::Actor { .. })),
+    );
+    assert!(mine > 20 && machines >= 4 && monsters > 10, "{mine} of mine, {machines} of machines, {monsters} of monsters");
+    let frames = sightline::sound::FRAMES_PER_TICK;
+    let rms = |ticks: std::ops::Range<usize>| {
+        let part = &samples[2 * frames * ticks.start..2 * frames * ticks.end.min(d.inputs.len())];
+        (part.iter().map(|v| v * v).sum::<f32>() / part.len().max(1) as f32).sqrt()
+    };
+    for &(tick, sound, origin) in &events {
+        // The four ticks after it starts (sounds from afar are quieter, but heard).
+        if origin == Origin::Player || matches!(origin, Origin::Sector(_)) {
+            assert!(rms(tick - 1..tick + 3) > 0.01, "{sound} at tick {tick} from {origin:?} is not heard");
+        }
+    }
+    let (mut quiet, mut checked) = (0, 0);
+    for tick in 0..d.inputs.len() {
+        // Our voices last under 1.2 s: 42 ticks after the last start, silence.
+        if !events.iter().any(|&(t, _, _)| t <= tick + 1 && tick + 1 < t + 42) {
+            checked += 1;
+            quiet += usize::from(rms(tick..tick + 1) == 0.0);
+        }
+    }
+    assert!(checked > 100 && quiet == checked, "{quiet} of {checked} ticks with no sound playing are silent");
+    assert!(sightline_tests::render_audio(&mut play(), &d.inputs).0 == samples, "the same run sounds different");
+    println!("heard: {mine} of mine, {machines} of machines, {monsters} of monsters; {checked} ticks silent");
     if let Some(path) = std::env::var_os("SIGHTLINE_WRITE_OUTPOST_DEMO") {
         Demo { inputs: d.inputs.clone(), ..Demo::new("maps/outpost.ron") }.save(path.as_ref()).unwrap();
     }
