@@ -11,9 +11,9 @@ use glam::DVec2;
 use sightline::actors::ActorFlag;
 use sightline::campaign::MapRef;
 use sightline::materials::Materials;
+use sightline::play::events::Origin;
 use sightline::play::playthrough::{Phase, Playthrough};
 use sightline::play::sight::{sight, Body, Scratch};
-use sightline::play::events::Origin;
 use sightline::play::{Demo, Exit, GameOptions, TickInput};
 use sightline_tests::map_path;
 
@@ -284,7 +284,10 @@ fn the_outpost_is_fought_through_to_its_exit_on_the_middle_skill() {
         kinds(&|o| matches!(o, Origin::Sector(_))),
         kinds(&|o| matches!(o, Origin::Actor { .. })),
     );
-    assert!(mine > 20 && machines >= 4 && monsters > 10, "{mine} of mine, {machines} of machines, {monsters} of monsters");
+    assert!(
+        mine > 20 && machines >= 4 && monsters > 10,
+        "{mine} of mine, {machines} of machines, {monsters} of monsters"
+    );
     let frames = sightline::sound::FRAMES_PER_TICK;
     let rms = |ticks: std::ops::Range<usize>| {
         let part = &samples[2 * frames * ticks.start..2 * frames * ticks.end.min(d.inputs.len())];

@@ -24,7 +24,11 @@ fn every_sound_lump_of_both_iwads_decodes_or_has_no_samples() {
                 Ok(s) => {
                     decoded += 1;
                     rates.insert(s.rate);
-                    assert!(!s.data.is_empty() && s.data.iter().all(|v| (-1.0..1.0).contains(v)), "{name}: {}", lump.name);
+                    assert!(
+                        !s.data.is_empty() && s.data.iter().all(|v| (-1.0..1.0).contains(v)),
+                        "{name}: {}",
+                        lump.name
+                    );
                 }
                 // Freedoom leaves a few sounds without samples (0 or 4 bytes).
                 Err(e @ (DmxError::Empty | DmxError::TooShort(_) | DmxError::NoSamples)) => {
