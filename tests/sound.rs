@@ -97,3 +97,33 @@ fn corrupt_music_is_an_error_not_a_panic() {
     assert!(load_soundfont(&junk).is_err());
     let _ = std::fs::remove_file(junk);
 }
+
+#[test]
+fn a_ron_map_s_music_is_the_midi_file_it_names_and_a_missing_one_is_a_warning() {
+    use sightline::campaign::MapRef;
+    use sightline::play::playthrough::Playthrough;
+    use sightline::play::GameOptions;
+    use sightline::sound::Sounds;
+
+    let map = MapRef::File(sightline_tests::map_path("outpost.ron"));
+    let play = Playthrough::of(&map, GameOptions::default()).unwrap();
+    let mut sounds = Sounds::new();
+    let cues = sounds.cues(&play);
+    let midi = cues.music.clone().flatten().expect("the outpost names its music");
+    assert!(midi.starts_with(b"MThd"), "{:?}", &midi[..8]);
+    assert!(sounds.warnings.is_empty(), "{:?}", sounds.warnings);
+    // The next tick: no change.
+    assert!(sounds.cues(&play).music.is_none());
+
+    // A map naming music that is not there: one warning, and silence.
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(sightline_tests::map_path("room.ron")).unwrap();
+    let path = dir.path().join("room.ron");
+    std::fs::write(&path, text.replacen("Map(", "Map(music: \"gone.mid\", ", 1)).unwrap();
+    let play = Playthrough::of(&MapRef::File(path), GameOptions::default()).unwrap();
+    let mut sounds = Sounds::new();
+    let cues = sounds.cues(&play);
+    assert!(matches!(cues.music, Some(None)));
+    assert_eq!(sounds.warnings.len(), 1, "{:?}", sounds.warnings);
+    assert!(sounds.warnings[0].contains("gone.mid"), "{:?}", sounds.warnings);
+}

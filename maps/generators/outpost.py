@@ -58,7 +58,8 @@ def door_faces(m, a, b, c, d, sides, special, upper="DOOR"):
 
 
 def build():
-    m = SectorMap("The Outpost", version=2, header_comment=__doc__.split("\nLayout")[0])
+    m = SectorMap("The Outpost", version=2, header_comment=__doc__.split("\nLayout")[0],
+                  music="music/outpost.mid")
     # S: the guardroom.
     s = m.sector(0, 160, 176, "FLOOR", "CEIL", wall="STONE", label="S guardroom")
     m.region(s, rect(0, 0, 512, 384))

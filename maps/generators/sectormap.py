@@ -73,8 +73,9 @@ def counter_clockwise(pts):
 
 
 class SectorMap:
-    def __init__(self, name, header_comment="", diminishing_light=None, fog=None, version=None):
+    def __init__(self, name, header_comment="", diminishing_light=None, fog=None, version=None, music=None):
         self.name = name
+        self.music = music  # None: no music field
         self.version = version  # None: leave the field out (version 1)
         self.header = header_comment
         self.diminishing_light = diminishing_light  # None: leave the field out
@@ -249,6 +250,8 @@ class SectorMap:
         if self.version is not None:
             out.append(f"    version: {self.version},")
         out.append(f"    name: \"{self.name}\",")
+        if self.music is not None:
+            out.append(f"    music: \"{self.music}\",")
         if self.diminishing_light is not None:
             out.append(f"    diminishing_light: {'true' if self.diminishing_light else 'false'},")
         if self.fog is not None:

@@ -36,6 +36,8 @@ pub struct Map {
     pub sky: Option<String>,
     /// The map's own animations file, if it names one (see [`source::MapSource::animations`]).
     pub animations: Option<String>,
+    /// The MIDI file the map's music is, if it names one (a path beside the map).
+    pub music: Option<String>,
     /// Lines that only set off specials (no sides, not in the BSP).
     pub trigger_lines: Vec<TriggerLine>,
 }
@@ -370,6 +372,7 @@ impl Map {
             fog: self.fog.map(|f| FogSource { colour: (f.colour[0], f.colour[1], f.colour[2]), distance: f.distance }),
             sky: self.sky.clone(),
             animations: self.animations.clone(),
+            music: self.music.clone(),
             trigger_lines: self
                 .trigger_lines
                 .iter()

@@ -38,6 +38,9 @@ pub struct MapSource {
     /// instead of the shipped list (`engine/data/animations.ron`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub animations: Option<String>,
+    /// A MIDI file (beside the map) played while the map is played, looping.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub music: Option<String>,
     /// Lines that only set off specials: they draw nothing, block nothing,
     /// have no sides, and may cross anything (Doom's invisible walk-over
     /// lines).
@@ -215,6 +218,7 @@ impl Default for MapSource {
             fog: None,
             sky: None,
             animations: None,
+            music: None,
             trigger_lines: Vec::new(),
         }
     }

@@ -204,6 +204,7 @@ fn check_elements(src: &MapSource) -> Result<Map, Vec<Problem>> {
         fog,
         sky: src.sky.clone(),
         animations: src.animations.clone(),
+        music: src.music.clone(),
         trigger_lines,
     })
 }

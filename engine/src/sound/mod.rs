@@ -126,14 +126,26 @@ impl Sounds {
             self.sounding.clear();
             cues.stop_all = true;
         }
-        let song = song_for(&play.map, &play.phase);
+        let song = match &play.map {
+            // A RON map's own music (kept through its intermission).
+            MapRef::File(path) => play
+                .game
+                .level()
+                .map
+                .music
+                .as_ref()
+                .map(|m| path.parent().unwrap_or(std::path::Path::new(".")).join(m).display().to_string()),
+            MapRef::Wad { .. } => song_for(&play.map, &play.phase),
+        };
         if song != self.song {
-            cues.music = Some(song.as_ref().and_then(|name| match self.bank.wad_music(name) {
-                Ok(midi) => Some(Arc::new(midi)),
-                Err(e) => {
-                    self.warnings.push(format!("music {name}: {e}"));
-                    None
-                }
+            let file = matches!(play.map, MapRef::File(_));
+            cues.music = Some(song.as_ref().and_then(|name| {
+                let midi = if file {
+                    std::fs::read(name).map_err(|e| e.to_string()).and_then(|bytes| bank::midi_of(&bytes))
+                } else {
+                    self.bank.wad_music(name)
+                };
+                midi.map(Arc::new).map_err(|e| self.warnings.push(format!("music {name}: {e}; no music"))).ok()
             }));
             self.song = song;
         }

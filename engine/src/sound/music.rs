@@ -38,6 +38,12 @@ pub fn load_soundfont(path: &Path) -> Result<Arc<SoundFont>, String> {
     SoundFont::new(&mut file).map(Arc::new).map_err(|e| format!("{}: not a SoundFont: {e}", path.display()))
 }
 
+/// The synthesizer's output is quiet beside the effects (a General MIDI
+/// song's mix leaves headroom for many voices): at full volume it is raised
+/// this much, which puts a song at about a third of the effects' loudness
+/// at the default volumes, as in Doom.
+const GAIN: f32 = 3.0;
+
 /// A song playing, or silence.
 pub struct Music {
     sequencer: MidiFileSequencer,
@@ -93,9 +99,10 @@ impl Music {
         self.left.resize(frames, 0.0);
         self.right.resize(frames, 0.0);
         self.sequencer.render(&mut self.left, &mut self.right);
+        let gain = self.volume * GAIN;
         for (i, frame) in out.chunks_exact_mut(2).enumerate() {
-            frame[0] += self.left[i] * self.volume;
-            frame[1] += self.right[i] * self.volume;
+            frame[0] += self.left[i] * gain;
+            frame[1] += self.right[i] * gain;
         }
     }
 }
