@@ -205,3 +205,35 @@ fn play_load_continues_a_saved_game_or_names_the_bad_save() {
         assert!(text(&out.stderr).contains("cannot be used with"), "{}", text(&out.stderr));
     }
 }
+
+#[test]
+fn replay_audio_writes_the_same_wav_every_time_with_sound_where_the_game_made_it() {
+    let dir = tempfile::tempdir().unwrap();
+    // Fire the pistol now and then while walking about the default level.
+    let mut inputs = scripted_walk();
+    for (i, input) in inputs.iter_mut().enumerate() {
+        input.fire = i % 40 < 3;
+    }
+    let demo = write_demo(dir.path(), &shipped_map("outpost.ron"), inputs);
+    let demo = demo.to_str().unwrap();
+    let wav = |name: &str| {
+        let out = sightline(dir.path(), &["replay", demo, "--audio", name, "--no-music"]);
+        assert!(out.status.success(), "stderr: {}", text(&out.stderr));
+        assert!(text(&out.stdout).contains(&format!("of audio to {name}")), "{}", text(&out.stdout));
+        std::fs::read(dir.path().join(name)).unwrap()
+    };
+    let (a, b) = (wav("a.wav"), wav("b.wav"));
+    assert!(a == b, "two renders of one demo differ");
+    // 16-bit stereo at 44,100 Hz, 1,260 frames a tick: 140 ticks.
+    assert_eq!(&a[..4], b"RIFF");
+    assert_eq!(&a[8..16], b"WAVEfmt ");
+    assert_eq!(u32::from_le_bytes(a[24..28].try_into().unwrap()), 44_100);
+    assert_eq!(a.len(), 44 + 140 * 1260 * 4);
+    let samples: Vec<i16> = a[44..].chunks_exact(2).map(|b| i16::from_le_bytes([b[0], b[1]])).collect();
+    let loud = |tick: usize| samples[tick * 2520..(tick + 1) * 2520].iter().any(|&v| v.unsigned_abs() > 1000);
+    // The first shot (pressed on tick 1; the pistol fires a few ticks into its attack) is heard.
+    assert!((1..12).any(loud), "the first shot is not heard");
+    // A file that cannot be written is an error naming it.
+    let out = sightline(dir.path(), &["replay", demo, "--audio", "no/such/dir/x.wav", "--no-music"]);
+    assert_refused(&out, &["x.wav"]);
+}
