@@ -62,7 +62,8 @@ pub fn adjust(listener: &Listener, at: Option<DVec2>) -> Option<(f64, f64)> {
     let Some(at) = at else { return Some((1.0, 128.0)) };
     let d = at - listener.pos;
     let dist = approx_distance(d);
-    if !(dist <= CLIPPING_DIST) {
+    // Written so that a NaN distance (a broken position) is out of hearing too.
+    if dist.is_nan() || dist > CLIPPING_DIST {
         return None;
     }
     let volume = if dist < CLOSE_DIST { 1.0 } else { (CLIPPING_DIST - dist) / (CLIPPING_DIST - CLOSE_DIST) };

@@ -265,7 +265,7 @@ mod tests {
     fn bad_lumps_are_errors_never_panics() {
         assert_eq!(to_midi(b"MThd...."), Err(MusError::Magic));
         assert_eq!(to_midi(b"MU"), Err(MusError::TooShort(2)));
-        assert_eq!(to_midi(&MAGIC[..]), Err(MusError::TooShort(4)));
+        assert_eq!(to_midi(MAGIC), Err(MusError::TooShort(4)));
         let mut long = lump(&[0x60], &[]);
         long[4] = 200;
         assert!(matches!(to_midi(&long), Err(MusError::Score { .. })));
