@@ -36,6 +36,7 @@ pub mod pickups;
 pub mod player;
 pub mod playthrough;
 pub mod random;
+pub mod reload;
 pub mod save;
 pub mod sight;
 pub mod trace;
@@ -522,6 +523,27 @@ impl Game {
     /// The player, to change by hand (tests, tools). The next tick works
     /// from whatever it finds: speed is clamped to [`player::MAX_SPEED`],
     /// and a body left overlapping a wall can move out of it but not further in.
+    /// Puts the player at `pos` facing `angle`, standing on the floor there,
+    /// still (a map reloaded under a map maker keeps their pose). Returns
+    /// `false`, and leaves the player as it was, when `pos` is outside every
+    /// sector or the body does not fit there.
+    pub fn place_player(&mut self, pos: DVec2, angle: f64) -> bool {
+        if !pos.is_finite() || self.level.compiled.locate(pos).is_none() {
+            return false;
+        }
+        let collision = Collision { compiled: &self.level.compiled, blockmap: &self.blockmap };
+        let near = collision.lines_near(&mut self.query, pos, RADIUS + 1.0);
+        let area = collision.area(near, pos);
+        if area.ceiling - area.floor < HEIGHT {
+            return false;
+        }
+        let p = &mut self.player;
+        (p.pos, p.angle, p.velocity, p.vz) = (pos, angle.rem_euclid(360.0), DVec2::ZERO, 0.0);
+        (p.sector, p.floor, p.ceiling, p.z) = (area.sector, area.floor, area.ceiling, area.floor);
+        self.previous = pose(&self.player);
+        true
+    }
+
     pub fn player_mut(&mut self) -> &mut Player {
         &mut self.player
     }

@@ -144,6 +144,20 @@ impl Playthrough {
         Ok(())
     }
 
+    /// The current map read again from its file (a map maker saved it): a
+    /// new game on it, the player kept where it stood if that is still
+    /// inside the map (`Ok(true)`), else at the start (`Ok(false)`). On an
+    /// error the playthrough is untouched.
+    pub fn reload(&mut self) -> Result<bool, PlaythroughError> {
+        let opened = open(&self.map, &self.build)?;
+        let mut game = start(opened.level, &opened.map, self.options)?;
+        let p = self.game.player();
+        let kept = game.place_player(p.pos, p.angle);
+        self.game = game;
+        self.phase = Phase::Playing;
+        Ok(kept)
+    }
+
     /// The current map from its start, with a fresh player (Doom's reborn).
     fn restart(&mut self) -> Result<(), PlaythroughError> {
         let map = self.map.clone();

@@ -53,6 +53,9 @@ pub struct App {
     /// Where saved games go, and a slot asked for (F2 or F3, waiting for a digit).
     save_dir: std::path::PathBuf,
     prompt: Option<Prompt>,
+    /// The map file, watched for edits (live reload), and when it was last looked at.
+    watch: Option<sightline::play::reload::Watch>,
+    watched: Instant,
     /// What stopped the loop, if something went wrong.
     pub error: Option<anyhow::Error>,
 }
@@ -80,6 +83,7 @@ impl App {
         let level = session.play.game.level();
         let renderers = renderers_for(level);
         let automap = Automap::new(&level.map);
+        let watch = if session.reloadable() { sightline::play::reload::Watch::new(&session.play.map) } else { None };
         App {
             screen_options: options.screen.clone(),
             screen: None,
@@ -98,6 +102,8 @@ impl App {
             title: options.screen.title.clone(),
             last_frame: None,
             frames: 0,
+            watch,
+            watched: Instant::now(),
             save_dir: options.save_dir,
             prompt: None,
             error: None,
@@ -118,6 +124,7 @@ impl App {
         let interval = self.last_frame.map_or(Duration::ZERO, |t| now - t);
         self.last_frame = Some(now);
         let (ticks, alpha) = self.clock.advance(interval);
+        self.reload_if_edited(now);
         self.session.run(ticks);
         if let Some(e) = self.session.error.take() {
             return Err(e);
@@ -199,6 +206,32 @@ impl App {
             }
         }
         Ok(())
+    }
+
+    /// Four times a second, looks at the map file; an edit is played at
+    /// once (the player kept where it stands), a broken one shown until fixed.
+    fn reload_if_edited(&mut self, now: Instant) {
+        use sightline::play::reload::Reload;
+        if now - self.watched < Duration::from_millis(250) {
+            return;
+        }
+        self.watched = now;
+        let Some(watch) = &mut self.watch else { return };
+        match watch.poll(&mut self.session.play) {
+            Reload::Unchanged => {}
+            Reload::Reloaded { kept_pose } => {
+                self.hud.map_error = None;
+                let name = watch.path().display().to_string();
+                self.title.clear();
+                self.follow_map();
+                let at = if kept_pose { "where you stood" } else { "at its start (where you stood is outside it now)" };
+                self.say(format!("Reloaded {name}: you are {at}"));
+            }
+            Reload::Broken(error) => {
+                eprintln!("sightline: {error}");
+                self.hud.map_error = Some(error);
+            }
+        }
     }
 
     /// A message on the HUD and on the terminal.

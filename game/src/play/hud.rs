@@ -29,6 +29,8 @@ pub struct Hud {
     shown: Option<(f64, f64, f64)>,
     /// Messages and how long each has shown.
     messages: Vec<(String, Duration)>,
+    /// What is wrong with the map file being watched, shown until it is fixed.
+    pub map_error: Option<String>,
 }
 
 impl Hud {
@@ -40,6 +42,7 @@ impl Hud {
             window_render: Duration::ZERO,
             shown: None,
             messages: Vec::new(),
+            map_error: None,
         }
     }
 
@@ -75,7 +78,7 @@ impl Hud {
     /// The game's messages under the figures, and how to restart when dead
     /// (health, armour, ammunition and keys are on the status bar).
     pub fn draw_status(&self, fb: &mut Framebuffer, player: &Player) {
-        if !self.visible {
+        if !self.visible && self.map_error.is_none() {
             return;
         }
         let scale = text_scale(fb);
@@ -87,6 +90,16 @@ impl Hud {
         }
         if player.dead() {
             draw_text(fb, scale * 4, fb.height / 3, scale, "You are dead: press use to restart");
+        }
+        if let Some(error) = &self.map_error {
+            // Wrapped to the frame's width, under a heading; shown even with the HUD off.
+            let columns = (fb.width / (GLYPH * scale)).saturating_sub(8).max(16);
+            let mut y = fb.height / 2;
+            let heading = "The map file has errors; the last good level goes on:";
+            for text in std::iter::once(heading.to_string()).chain(wrap(error, columns)).take(8) {
+                draw_text(fb, scale * 4, y, scale, &text);
+                y += line;
+            }
         }
     }
 
@@ -181,4 +194,28 @@ mod tests {
         assert!((ms - 20.0).abs() < 1e-9 && (fps - 50.0).abs() < 1e-9 && (render - 2.0).abs() < 1e-9);
         hud.draw(&mut Framebuffer::new(3, 3), "map", "bsp");
     }
+}
+
+/// `text` in lines of at most `columns` characters, broken at spaces where it can be.
+fn wrap(text: &str, columns: usize) -> Vec<String> {
+    let mut lines = Vec::new();
+    for paragraph in text.lines() {
+        let mut line = String::new();
+        for word in paragraph.split(' ') {
+            if !line.is_empty() && line.chars().count() + 1 + word.chars().count() > columns {
+                lines.push(std::mem::take(&mut line));
+            }
+            if !line.is_empty() {
+                line.push(' ');
+            }
+            line.push_str(word);
+            while line.chars().count() > columns {
+                let rest: String = line.chars().skip(columns).collect();
+                line = line.chars().take(columns).collect();
+                lines.push(std::mem::replace(&mut line, rest));
+            }
+        }
+        lines.push(line);
+    }
+    lines
 }

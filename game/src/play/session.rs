@@ -60,6 +60,12 @@ impl Session {
         }
     }
 
+    /// Keys drive the game and nothing is being recorded: the map may be
+    /// reloaded under the player (a demo would no longer be the game).
+    pub fn reloadable(&self) -> bool {
+        matches!(self.source, Source::Live(_)) && self.recording.is_none()
+    }
+
     /// The keyboard and mouse state, when they drive the game.
     pub fn controls(&mut self) -> Option<&mut Controls> {
         match &mut self.source {
