@@ -198,6 +198,10 @@ fn a_save_for_a_map_that_has_changed_is_refused() {
     std::fs::remove_file(&map).unwrap();
     let e = Playthrough::load(&path).err().expect("loaded a save for a missing map");
     assert!(matches!(e, SaveError::Open { .. }) && e.to_string().contains("room.ron"), "{e}");
+    // A directory (or a device) where the map was: refused before reading it.
+    std::fs::create_dir(&map).unwrap();
+    let e = Playthrough::load(&path).err().expect("loaded a save naming a directory");
+    assert!(matches!(e, SaveError::Corrupt { .. }) && e.to_string().contains("not a file"), "{e}");
 }
 
 #[test]

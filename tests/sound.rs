@@ -85,7 +85,10 @@ fn corrupt_music_is_an_error_not_a_panic() {
     };
     let font = load_soundfont(&path).unwrap();
     let mut music = Music::new(&font, 44_100).unwrap();
-    for bad in [&b"MThd"[..], b"MThd\0\0\0\x06\0\0\0\x01\0", b"MThd\0\0\0\x06\0\0\0\x01\0\x46MTrk\xff\xff\xff\xff"] {
+    let no_tracks = b"MThd\0\0\0\x06\0\0\0\0\0\x46";
+    for bad in
+        [&b"MThd"[..], b"MThd\0\0\0\x06\0\0\0\x01\0", b"MThd\0\0\0\x06\0\0\0\x01\0\x46MTrk\xff\xff\xff\xff", no_tracks]
+    {
         assert!(music.play(bad).is_err(), "{bad:?}");
         let mut out = vec![0.0; 64];
         music.mix(&mut out);

@@ -339,6 +339,18 @@ impl Playthrough {
     pub fn from_save_bytes(bytes: &[u8], label: &str) -> Result<Playthrough, SaveError> {
         let (info, state) = read(bytes, label)?;
         let path = || label.to_string();
+        // What the save names is read only if it is a plain file (a forged
+        // save naming a device must not read for ever).
+        let named = match &info.map {
+            MapRef::File(p) => vec![p.clone()],
+            MapRef::Wad { wads, .. } => wads.clone(),
+        };
+        if let Some(odd) = named.iter().find(|p| p.exists() && !p.is_file()) {
+            return Err(SaveError::Corrupt {
+                path: path(),
+                what: format!("it names {}, which is not a file", odd.display()),
+            });
+        }
         let opened = open(&info.map, &BuildOptions::default())
             .map_err(|e| SaveError::Open { path: path(), error: Box::new(e.into()) })?;
         if map_fingerprint(&opened.level) != info.map_fingerprint {

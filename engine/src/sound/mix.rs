@@ -63,7 +63,8 @@ pub fn adjust(listener: &Listener, at: Option<DVec2>) -> Option<(f64, f64)> {
     let d = at - listener.pos;
     let dist = approx_distance(d);
     // Written so that a NaN distance (a broken position) is out of hearing too.
-    if dist.is_nan() || dist > CLIPPING_DIST {
+    // At the clipping distance the volume is 0, and Doom does not start it.
+    if dist.is_nan() || dist >= CLIPPING_DIST {
         return None;
     }
     let volume = if dist < CLOSE_DIST { 1.0 } else { (CLIPPING_DIST - dist) / (CLIPPING_DIST - CLOSE_DIST) };
@@ -133,11 +134,20 @@ impl Mixer {
     ) -> bool {
         let pos = if key == Key::Listener { None } else { pos };
         let Some((volume, separation)) = adjust(listener, pos) else { return false };
+        // The origin's old sound stops (Doom's S_StopSound(origin)), then
+        // the first free channel, else the first with a priority number at
+        // least the new one's.
+        if !matches!(key, Key::Point(_)) {
+            for c in &mut self.channels {
+                if c.as_ref().is_some_and(|p| p.key == key) {
+                    *c = None;
+                }
+            }
+        }
         let slot = self
             .channels
             .iter()
-            .position(|c| c.as_ref().is_some_and(|p| p.key == key && !matches!(key, Key::Point(_))))
-            .or_else(|| self.channels.iter().position(Option::is_none))
+            .position(Option::is_none)
             .or_else(|| self.channels.iter().position(|c| c.as_ref().is_some_and(|p| p.priority >= priority)));
         let Some(slot) = slot else { return false };
         let step = f64::from(sample.rate) / f64::from(self.rate);
@@ -237,7 +247,8 @@ mod tests {
         assert!((mid.0 / ol - 0.5).abs() < 0.01, "{} of {ol}", mid.0);
         assert_eq!(heard(Some(DVec2::new(0.0, 1300.0)), Key::Actor(1)), (0.0, 0.0));
         assert_eq!(adjust(&Listener::default(), Some(DVec2::new(900.0, 900.0))), None);
-        assert!(adjust(&Listener::default(), Some(DVec2::new(1200.0, 0.0))).is_some());
+        assert!(adjust(&Listener::default(), Some(DVec2::new(1199.0, 0.0))).is_some());
+        assert_eq!(adjust(&Listener::default(), Some(DVec2::new(1200.0, 0.0))), None);
     }
 
     #[test]

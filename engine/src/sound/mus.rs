@@ -51,6 +51,9 @@ const CONTROLLERS: [u8; 10] = [0, 0, 1, 7, 10, 11, 91, 93, 64, 67];
 /// off, all notes off, mono, poly, reset all controllers.
 const SYSTEM: [u8; 5] = [120, 123, 126, 127, 121];
 
+/// The longest MIDI delta time (a four-byte variable-length number).
+const MAX_DELTA: u32 = 0x0fff_ffff;
+
 fn midi_channel(mus: u8) -> u8 {
     match mus {
         15 => 9,
@@ -140,7 +143,8 @@ pub fn to_midi(lump: &[u8]) -> Result<Vec<u8>, MusError> {
             }
             4 => {
                 let d = data(2)?;
-                let value = d[1] & 0x7f;
+                // Values over 127 are clamped, as Chocolate Doom does.
+                let value = d[1].min(127);
                 message = match d[0] {
                     0 => Some([0xc0 | ch, value, 0]),
                     c @ 1..=9 => Some([0xb0 | ch, CONTROLLERS[usize::from(c)], value]),
@@ -153,7 +157,9 @@ pub fn to_midi(lump: &[u8]) -> Result<Vec<u8>, MusError> {
             _ => return Err(MusError::Kind { event, at }),
         }
         if let Some(m) = message {
-            push_vlq(&mut track, delay);
+            // A MIDI delta time has at most 28 bits; a longer silence (only
+            // a broken lump has one) is cut to that.
+            push_vlq(&mut track, delay.min(MAX_DELTA));
             delay = 0;
             let len = if m[0] & 0xf0 == 0xc0 { 2 } else { 3 };
             track.extend(&m[..len]);
@@ -176,7 +182,7 @@ pub fn to_midi(lump: &[u8]) -> Result<Vec<u8>, MusError> {
         }
         event += 1;
     }
-    push_vlq(&mut track, delay);
+    push_vlq(&mut track, delay.min(MAX_DELTA));
     track.extend([0xff, 0x2f, 0x00]);
     let mut midi = b"MThd".to_vec();
     midi.extend(6u32.to_be_bytes());
@@ -281,5 +287,16 @@ mod tests {
         }
         // A score with no end event ends where its bytes do.
         assert!(to_midi(&lump(&[0x10, 60], &[])).is_ok());
+    }
+
+    #[test]
+    fn overlong_silences_are_cut_and_controller_values_clamped() {
+        // Two of the longest delays, then a note: one delta of the most MIDI allows.
+        let score = [0xd0, 0xff, 0xff, 0xff, 0x7f, 0xd0, 0xff, 0xff, 0xff, 0x7f, 0x10, 60, 0x40, 3, 0x80, 0x60];
+        let midi = to_midi(&lump(&score, &[])).unwrap();
+        let t = track(&midi);
+        assert_eq!(&t[..7], [0xff, 0xff, 0xff, 0x7f, 0x90, 60, 127]);
+        // Volume 0x80 is 127, not 0.
+        assert_eq!(&t[7..11], [0, 0xb0, 7, 127]);
     }
 }

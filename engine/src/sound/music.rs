@@ -76,6 +76,12 @@ impl Music {
         let parsed = std::panic::catch_unwind(|| MidiFile::new(&mut std::io::Cursor::new(midi)))
             .map_err(|_| "the MIDI parser failed on it".to_string())?;
         let file = Arc::new(parsed.map_err(|e| format!("not a MIDI file: {e}"))?);
+        // The sequencer cannot play a file with no tracks (it would panic on
+        // its first render).
+        let tracks = midi.get(10..12).map_or(0, |b| u16::from_be_bytes([b[0], b[1]]));
+        if tracks == 0 {
+            return Err("a MIDI file with no tracks".into());
+        }
         self.sequencer.play(&file, true);
         self.playing = true;
         Ok(())
@@ -92,13 +98,20 @@ impl Music {
 
     /// Adds the next `out.len() / 2` frames of music into `out` (interleaved stereo).
     pub fn mix(&mut self, out: &mut [f32]) {
-        if !self.playing || self.volume <= 0.0 {
+        if !self.playing {
             return;
         }
         let frames = out.len() / 2;
         self.left.resize(frames, 0.0);
         self.right.resize(frames, 0.0);
-        self.sequencer.render(&mut self.left, &mut self.right);
+        // Rendered even when muted, so that the song goes on meanwhile. A
+        // file the synthesizer chokes on stops the music, not the game.
+        let (sequencer, left, right) = (&mut self.sequencer, &mut self.left, &mut self.right);
+        let rendered = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| sequencer.render(left, right)));
+        if rendered.is_err() {
+            self.stop();
+            return;
+        }
         let gain = self.volume * GAIN;
         for (i, frame) in out.chunks_exact_mut(2).enumerate() {
             frame[0] += self.left[i] * gain;

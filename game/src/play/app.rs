@@ -297,6 +297,13 @@ impl App {
         let level = self.session.play.game.level();
         self.automap = Automap::new(&level.map);
         self.renderers = renderers_for(level);
+        // Watch the file of the map now played (another after a load or the next level).
+        let watching = self.watch.as_ref().map(|w| w.path().to_path_buf());
+        if self.session.reloadable()
+            && !matches!((&watching, &self.session.play.map), (Some(w), sightline::campaign::MapRef::File(p)) if w == p)
+        {
+            self.watch = sightline::play::reload::Watch::new(&self.session.play.map);
+        }
         if !self.options.renderer.supports(level) {
             self.options.renderer = Renderer::default_for(level);
         }

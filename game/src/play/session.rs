@@ -146,6 +146,9 @@ impl Session {
         }
         self.play = Playthrough::load(path)?;
         self.finished = false;
+        if let Some(sound) = &mut self.sound {
+            sound.restart();
+        }
         if let Some(controls) = self.controls() {
             controls.release_all();
         }

@@ -42,7 +42,7 @@ impl SoundOut {
         let audio = crate::audio::audio(args);
         let volumes = (audio.mixer.volume, audio.music.as_ref().map_or(0.0, |m| m.volume));
         let (to_audio, from_game) = channel();
-        let mut feed = Feed { audio, from_game, scratch: Vec::new() };
+        let mut feed = Feed { audio, from_game, scratch: Vec::new(), pending: Vec::new() };
         let source = move |bytes: &mut [u8]| feed.fill(bytes);
         let params = protocol::PlaybackStreamParams {
             sample_spec: protocol::SampleSpec {
@@ -78,6 +78,12 @@ impl SoundOut {
         let _ = self.to_audio.send(Message::Cues(Box::new(cues)));
     }
 
+    /// A game loaded in place of this one: every sound stops and the music
+    /// starts again with the next tick, as on a new map.
+    pub fn restart(&mut self) {
+        self.sounds = Sounds::new();
+    }
+
     /// Changes the effects' (`which` 0) or music's (1) volume by `step`;
     /// returns the new level, 0 to 1.
     pub fn nudge(&mut self, which: usize, step: f32) -> f32 {
@@ -94,16 +100,22 @@ struct Feed {
     audio: Audio,
     from_game: Receiver<Message>,
     scratch: Vec<f32>,
+    /// Bytes of the last frame rendered that the server has not asked for yet.
+    pending: Vec<u8>,
 }
 
 impl Feed {
-    /// Fills `bytes` with 16-bit stereo samples; returns how many it wrote (all).
+    /// Fills `bytes` with 16-bit stereo samples, every byte asked for: a
+    /// request that ends inside a frame gets the frame's first bytes and the
+    /// rest start the next (returning less, 0 above all, would end the stream).
     fn fill(&mut self, bytes: &mut [u8]) -> usize {
         while let Ok(m) = self.from_game.try_recv() {
             match m {
                 Message::Cues(cues) => {
-                    // A song that will not play is silence; the game said so when it chose it.
-                    let _ = self.audio.apply(&cues);
+                    // A song the synthesizer will not play is silence, said once.
+                    if let Err(e) = self.audio.apply(&cues) {
+                        eprintln!("sightline: warning: music: {e}; no music");
+                    }
                 }
                 Message::Volumes(effects, music) => {
                     self.audio.mixer.volume = effects;
@@ -113,12 +125,15 @@ impl Feed {
                 }
             }
         }
-        let frames = bytes.len() / 4;
+        let wanted = bytes.len().saturating_sub(self.pending.len());
+        let frames = wanted.div_ceil(4);
         self.scratch.resize(frames * 2, 0.0);
         self.audio.render(&mut self.scratch);
-        for (out, v) in bytes.chunks_exact_mut(2).zip(&self.scratch) {
-            out.copy_from_slice(&((v * 32767.0).round() as i16).to_le_bytes());
+        for v in &self.scratch {
+            self.pending.extend(((v * 32767.0).round() as i16).to_le_bytes());
         }
-        frames * 4
+        bytes.copy_from_slice(&self.pending[..bytes.len()]);
+        self.pending.drain(..bytes.len());
+        bytes.len()
     }
 }
