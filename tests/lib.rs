@@ -328,7 +328,7 @@ pub fn render_audio(
     inputs: &[TickInput],
 ) -> (Vec<f32>, Vec<(usize, &'static str, sightline::play::events::Origin)>) {
     use sightline::play::events::Event;
-    use sightline::sound::{Audio, Sounds, FRAMES_PER_TICK};
+    use sightline::sound::{Audio, Sounds};
     let (mut sounds, mut audio) = (Sounds::new(), Audio::new(8, None));
     let (mut samples, mut events) = (Vec::new(), Vec::new());
     for (i, input) in inputs.iter().enumerate() {
@@ -338,10 +338,7 @@ pub fn render_audio(
                 events.push((i + 1, *sound, *origin));
             }
         }
-        audio.apply(&sounds.cues(play)).unwrap_or_else(|e| panic!("tick {i}: {e}"));
-        let at = samples.len();
-        samples.resize(at + 2 * FRAMES_PER_TICK, 0.0);
-        audio.render(&mut samples[at..]);
+        audio.render_tick(&sounds.cues(play), &mut samples).unwrap_or_else(|e| panic!("tick {i}: {e}"));
     }
     (samples, events)
 }

@@ -242,10 +242,15 @@ pub fn level_from_bytes(bytes: &[u8], label: &str, options: &BuildOptions) -> Re
 /// Writes `bytes` to `path` atomically: a temporary file beside it, then a
 /// rename. A failure leaves any existing file at `path` untouched.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), LevelError> {
+    write_file_atomic(path, bytes).map_err(|error| LevelError::Write { path: path.display().to_string(), error })
+}
+
+/// [`write_atomic`] with the I/O error as it is, for writers with errors of
+/// their own (demos, saves, audio).
+pub fn write_file_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     use std::io::Write;
-    let err = |error| LevelError::Write { path: path.display().to_string(), error };
     let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    let name = path.file_name().ok_or_else(|| err(std::io::Error::other("not a file name")))?;
+    let name = path.file_name().ok_or_else(|| std::io::Error::other("not a file name"))?;
     let tmp = dir.join(format!(".{}.tmp{}", name.to_string_lossy(), std::process::id()));
     let result = (|| {
         let mut f = std::fs::File::create(&tmp)?;
@@ -256,7 +261,7 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), LevelError> {
     if result.is_err() {
         let _ = std::fs::remove_file(&tmp);
     }
-    result.map_err(err)
+    result
 }
 
 /// Refuses an output path that names the same file as the input.

@@ -46,12 +46,9 @@ pub fn run(args: &ReplayArgs) -> Result<()> {
         if let Some((sounds, audio, samples)) = &mut sound {
             let cues = sounds.cues(&play);
             crate::audio::warn(sounds);
-            if let Err(e) = audio.apply(&cues) {
+            if let Err(e) = audio.render_tick(&cues, samples) {
                 eprintln!("sightline: warning: music: {e}");
             }
-            let at = samples.len();
-            samples.resize(at + 2 * sightline::sound::FRAMES_PER_TICK, 0.0);
-            audio.render(&mut samples[at..]);
         }
         let tick = i as u64 + 1;
         if let Some(c) = &mut capture {

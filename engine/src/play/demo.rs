@@ -108,13 +108,8 @@ impl Demo {
         if u32::try_from(self.inputs.len()).is_err() {
             return Err(DemoError::TooLong { path: path.display().to_string(), ticks: self.inputs.len() });
         }
-        crate::level::write_atomic(path, &self.to_bytes()).map_err(|e| DemoError::Write {
-            path: path.display().to_string(),
-            error: match e {
-                crate::level::LevelError::Write { error, .. } => error,
-                other => std::io::Error::other(other.to_string()),
-            },
-        })
+        crate::level::write_file_atomic(path, &self.to_bytes())
+            .map_err(|error| DemoError::Write { path: path.display().to_string(), error })
     }
 
     pub fn load(path: &Path) -> Result<Demo, DemoError> {

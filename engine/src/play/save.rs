@@ -319,13 +319,7 @@ impl Playthrough {
     pub fn save(&self, path: &Path) -> Result<(), SaveError> {
         let label = path.display().to_string();
         let bytes = self.save_bytes().map_err(|why| SaveError::NotPlaying { path: label.clone(), why })?;
-        crate::level::write_atomic(path, &bytes).map_err(|e| SaveError::Write {
-            path: label,
-            error: match e {
-                crate::level::LevelError::Write { error, .. } => error,
-                other => std::io::Error::other(other.to_string()),
-            },
-        })
+        crate::level::write_file_atomic(path, &bytes).map_err(|error| SaveError::Write { path: label, error })
     }
 
     /// Loads the playthrough saved in `path`.

@@ -243,6 +243,17 @@ impl Audio {
         result
     }
 
+    /// One tick offline, in step with the game: `cues` applied, then exactly
+    /// [`FRAMES_PER_TICK`] frames appended to `out` (what makes the same
+    /// demo sound the same). `Err` as [`Audio::apply`]'s.
+    pub fn render_tick(&mut self, cues: &Cues, out: &mut Vec<f32>) -> Result<(), String> {
+        let result = self.apply(cues);
+        let at = out.len();
+        out.resize(at + 2 * FRAMES_PER_TICK, 0.0);
+        self.render(&mut out[at..]);
+        result
+    }
+
     /// The next `out.len() / 2` frames (interleaved stereo), clipped to -1..1.
     pub fn render(&mut self, out: &mut [f32]) {
         out.fill(0.0);

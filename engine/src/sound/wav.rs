@@ -15,5 +15,5 @@ pub fn write(path: &Path, samples: &[f32], rate: u32) -> Result<(), String> {
         }
         writer.finalize().map_err(|e| e.to_string())?;
     }
-    crate::level::write_atomic(path, bytes.get_ref()).map_err(|e| e.to_string())
+    crate::level::write_file_atomic(path, bytes.get_ref()).map_err(|e| e.to_string())
 }
