@@ -200,7 +200,7 @@ fn machinery_is_played_through_from_start_to_exit() {
     let demo = Demo { inputs: d.inputs.clone(), ..Demo::new(map.label()) };
     let bytes = demo.to_bytes();
     let demo = Demo::from_bytes(&bytes, "machinery.sldemo").unwrap();
-    let mut again = Playthrough::of(&map, GameOptions { skill: demo.skill, seed: demo.seed }).unwrap();
+    let mut again = Playthrough::of(&map, demo.options()).unwrap();
     // Saved every 97 ticks on the way (doors, the lift and the switch in
     // motion at some), each save loaded and followed 60 ticks: the same game.
     let save_at: Vec<usize> = (50..demo.inputs.len()).step_by(97).collect();

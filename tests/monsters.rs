@@ -364,7 +364,7 @@ fn a_monster_out_of_the_player_s_reach_costs_nothing_until_the_player_comes() {
 #[test]
 fn on_skill_5_a_dead_monster_comes_back_at_its_spot() {
     let p = root().join("tests").join("maps").join("monsters.ron");
-    let options = sightline::play::GameOptions { skill: 5, seed: 3 };
+    let options = sightline::play::GameOptions { skill: 5, seed: 3, ..Default::default() };
     let mut g = Game::with_options(load(&p), options).unwrap();
     g.player_mut().health = 1_000_000;
     let spot = actor(&g, "zombieman").pos;

@@ -264,7 +264,7 @@ fn the_outpost_is_fought_through_to_its_exit_on_the_middle_skill() {
     // The inputs are the game: played again, the same end.
     let demo = Demo { inputs: d.inputs.clone(), ..Demo::new(map.label()) };
     let demo = Demo::from_bytes(&demo.to_bytes(), "outpost.sldemo").unwrap();
-    let mut again = Playthrough::of(&map, GameOptions { skill: demo.skill, seed: demo.seed }).unwrap();
+    let mut again = Playthrough::of(&map, demo.options()).unwrap();
     // Saved every 151 ticks on the way (mid-fight, doors and the lift
     // moving), each save loaded and followed 70 ticks: the same game.
     let save_at: Vec<usize> = (40..demo.inputs.len()).step_by(151).collect();

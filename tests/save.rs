@@ -29,7 +29,7 @@ fn fighting(seed: u64, ticks: usize) -> Vec<TickInput> {
 /// Plays `map` with an unkillable player firing as it wanders, saving every
 /// `every` ticks and following each save for `ahead` ticks.
 fn check_map(map: &MapRef, ticks: usize, every: usize, ahead: usize) -> sightline_tests::SaveCheck {
-    let options = GameOptions { skill: 4, seed: 7 };
+    let options = GameOptions { skill: 4, seed: 7, ..Default::default() };
     let mut play = Playthrough::of(map, options).unwrap_or_else(|e| panic!("{e}"));
     play.game.player_mut().health = 1_000_000;
     let inputs = fighting(11, ticks);

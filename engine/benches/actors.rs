@@ -103,7 +103,8 @@ fn game(mut level: Level, setup: Setup) -> Game {
             }
         }
     }
-    let mut game = Game::with_options(level, GameOptions { skill: 4, seed: 1 }).unwrap_or_else(|e| panic!("{e}"));
+    let mut game = Game::with_options(level, GameOptions { skill: 4, seed: 1, ..Default::default() })
+        .unwrap_or_else(|e| panic!("{e}"));
     game.player_mut().health = 1_000_000;
     if setup == Setup::Awake {
         game.wake_monsters();

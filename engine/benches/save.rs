@@ -46,7 +46,7 @@ fn main() {
     println!("|---|---|---|---|---|---|---|");
     for map in maps {
         let map = MapRef::parse(&map, None);
-        let options = GameOptions { skill: 3, seed: 1 };
+        let options = GameOptions { skill: 3, seed: 1, ..Default::default() };
         let mut play = Playthrough::of(&map, options).unwrap_or_else(|e| panic!("{e}"));
         play.game.player_mut().health = 1_000_000;
         for (i, mut input) in wander(5, PLAYED, true).into_iter().enumerate() {

@@ -16,6 +16,7 @@
 //! collision, doors) from per-tick inputs, which demos record and replay.
 
 pub mod actors;
+pub mod autopilot;
 pub mod bsp;
 pub mod campaign;
 pub mod framebuffer;

@@ -39,6 +39,12 @@ pub enum Command {
     Replay(ReplayArgs),
     /// Import maps from a Doom WAD as RON maps, with their art as PNGs.
     Import(ImportArgs),
+    /// Let the autopilot play a map headless until the exit or a limit, and
+    /// report how it went.
+    Autoplay(AutoplayArgs),
+    /// Check a map for a map maker: validation, then what the player can
+    /// and cannot reach (the exit, keys, secrets, items) and soft locks.
+    Check(CheckArgs),
     /// Measure what accuracy costs: the study suite, written as a report with
     /// tables and plots; or `bench tour MAP` to time the renderer headless.
     Bench(BenchArgs),
@@ -287,6 +293,70 @@ pub struct ReplayArgs {
     pub audio: Option<PathBuf>,
     #[command(flatten)]
     pub sound: SoundArgs,
+}
+
+#[derive(Args)]
+pub struct AutoplayArgs {
+    /// A RON map, a compiled map or `WAD:MAP`.
+    pub map: String,
+    /// The IWAD under a PWAD map.
+    #[arg(long)]
+    pub iwad: Option<PathBuf>,
+    /// Skill level 1 to 5.
+    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(1..=5))]
+    pub skill: u8,
+    /// The game's random seed.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Play without monsters (Doom's -nomonsters).
+    #[arg(long)]
+    pub no_monsters: bool,
+    /// Give up after this many ticks (35 a second; default 20 minutes).
+    #[arg(long, default_value_t = 42_000)]
+    pub max_ticks: u64,
+    /// Record the run as a demo (`sightline replay` plays it back).
+    #[arg(long)]
+    pub record: Option<PathBuf>,
+    /// Write a PNG of every Nth tick into the directory given with -o.
+    #[arg(long, requires = "output", value_parser = clap::value_parser!(u64).range(1..))]
+    pub capture_every: Option<u64>,
+    /// Directory for the captured frames (created if missing).
+    #[arg(short, long, requires = "capture_every")]
+    pub output: Option<PathBuf>,
+    /// Size of the captured frames, WxH.
+    #[arg(long, default_value = "640x400", value_parser = parse_size)]
+    pub size: (usize, usize),
+    /// Threads drawing each captured frame.
+    #[arg(long, default_value_t = available_threads(), value_parser = parse_threads)]
+    pub threads: usize,
+    /// Print the outcome as one JSON object.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Args)]
+pub struct CheckArgs {
+    /// A RON map, a compiled map or `WAD:MAP`.
+    pub map: String,
+    /// The IWAD under a PWAD map.
+    #[arg(long)]
+    pub iwad: Option<PathBuf>,
+    /// Skill level 1 to 5 (which things are in the map).
+    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(1..=5))]
+    pub skill: u8,
+    /// Print the report as one JSON object.
+    #[arg(long)]
+    pub json: bool,
+    /// Draw the map from above into this PNG: what cannot be reached, where
+    /// the player can get stuck, and the route to the exit.
+    #[arg(short, long)]
+    pub output: Option<PathBuf>,
+    /// Also draw the BSP's partition lines on the plan.
+    #[arg(long, requires = "output")]
+    pub partitions: bool,
+    /// The plan's longer side, pixels.
+    #[arg(long, default_value_t = 1400, value_parser = clap::value_parser!(u32).range(64..=16_384))]
+    pub plan_size: u32,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -3,8 +3,10 @@
 //! replay demos and time the renderer.
 
 mod audio;
+mod autoplay;
 mod bench;
 mod capture;
+mod check;
 mod cli;
 mod compile;
 mod import;
@@ -33,6 +35,8 @@ fn main() -> ExitCode {
         Some(cli::Command::Replay(args)) => replay::run(&args),
         Some(cli::Command::Import(args)) => import::run(&args),
         Some(cli::Command::Bench(args)) => bench::run(&args),
+        Some(cli::Command::Autoplay(args)) => autoplay::run(&args),
+        Some(cli::Command::Check(args)) => check::run(&args),
         None => play::run(&cli.play),
     };
     match result {

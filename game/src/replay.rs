@@ -12,7 +12,6 @@ use sightline::campaign::MapRef;
 use sightline::level::{write_atomic, Level};
 use sightline::play::demo::Demo;
 use sightline::play::playthrough::Playthrough;
-use sightline::play::GameOptions;
 use sightline::render::{render_frame, Frame, RenderOptions, Renderer};
 use sightline::Framebuffer;
 
@@ -25,7 +24,7 @@ pub fn run(args: &ReplayArgs) -> Result<()> {
         Some(map) => MapRef::parse(map, args.iwad.as_deref()),
         None => demo_map(&demo.map, &args.demo),
     };
-    let options = GameOptions { skill: demo.skill, seed: demo.seed };
+    let options = demo.options();
     let mut play = Playthrough::of(&map, options).with_context(|| format!("{}: cannot start the game", map.label()))?;
     let renderer = choose_renderer(args.renderer, play.game.level(), &map.label())?;
     let options = RenderOptions { renderer, threads: args.threads, ..Default::default() };
@@ -111,17 +110,17 @@ fn beside(given: PathBuf, demo: &Path) -> PathBuf {
     }
 }
 
-struct Capture {
-    every: u64,
-    dir: PathBuf,
+pub struct Capture {
+    pub written: usize,
+    pub every: u64,
+    pub dir: PathBuf,
     options: RenderOptions,
     frame: Frame,
     fb: Framebuffer,
-    written: usize,
 }
 
 impl Capture {
-    fn new(every: u64, dir: &Path, (w, h): (usize, usize), options: RenderOptions) -> Result<Capture> {
+    pub fn new(every: u64, dir: &Path, (w, h): (usize, usize), options: RenderOptions) -> Result<Capture> {
         std::fs::create_dir_all(dir).with_context(|| format!("{}: cannot create the directory", dir.display()))?;
         Ok(Capture {
             every,
@@ -135,7 +134,7 @@ impl Capture {
 
     /// Renders the state after `tick` ticks to `tick-NNNNNN.png` (with the
     /// intermission over it, between levels).
-    fn frame(&mut self, play: &Playthrough, tick: u64) -> Result<()> {
+    pub fn frame(&mut self, play: &Playthrough, tick: u64) -> Result<()> {
         let game = &play.game;
         render_frame(game.level(), &game.view(1.0), &self.options, &mut self.frame, &mut self.fb);
         sightline::screen::draw(&mut self.fb, game.level(), game.player(), sightline::screen::Hud::StatusBar);

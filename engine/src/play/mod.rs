@@ -92,11 +92,15 @@ pub struct GameOptions {
     pub skill: u8,
     /// The seed of the game's random generator.
     pub seed: u64,
+    /// Monsters are not spawned (Doom's `-nomonsters`: nothing that counts
+    /// as a kill, nor lost souls).
+    #[serde(default)]
+    pub no_monsters: bool,
 }
 
 impl Default for GameOptions {
     fn default() -> GameOptions {
-        GameOptions { skill: DEFAULT_SKILL, seed: 0 }
+        GameOptions { skill: DEFAULT_SKILL, seed: 0, no_monsters: false }
     }
 }
 
@@ -180,14 +184,26 @@ impl Game {
         }
         let fingerprint = save::map_fingerprint(&level);
         let types = &table;
+        let monster =
+            |kind: &str| types.get(kind).is_some_and(|ty| ty.has(ActorFlag::CountKill) || ty.name == "lost_soul");
         let mut totals = (0, 0);
         for t in map.things.iter().filter(|t| t.in_single_player(options.skill) && map.version >= 2) {
+            if options.no_monsters && monster(&t.kind) {
+                continue;
+            }
             if let Some(ty) = types.get(&t.kind) {
                 totals.0 += u32::from(ty.has(ActorFlag::CountKill));
                 totals.1 += u32::from(ty.has(ActorFlag::CountItem));
             }
         }
         level.show_skill(options.skill);
+        if options.no_monsters {
+            let things = &level.compiled.map.things;
+            for (shown, t) in level.thing_shown.iter_mut().zip(things) {
+                *shown &= !monster(&t.kind);
+            }
+            level.draw_map_things();
+        }
         level.time = 0;
         let blockmap = Blockmap::new(&level.compiled.map);
         let triggers = Blockmap::of_trigger_lines(&level.compiled.map);

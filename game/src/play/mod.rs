@@ -53,8 +53,8 @@ pub fn run(args: &PlayArgs) -> Result<()> {
         _ => MapRef::File(crate::capture::default_map_path()),
     };
     let game_options = match &demo {
-        Some(demo) => GameOptions { skill: demo.skill, seed: demo.seed },
-        None => GameOptions { skill: args.skill, seed: args.seed },
+        Some(demo) => demo.options(),
+        None => GameOptions { skill: args.skill, seed: args.seed, no_monsters: false },
     };
     let play = match &args.load {
         Some(save) => Playthrough::load(save)?,
@@ -137,7 +137,13 @@ fn save_recording(
 ) -> Result<()> {
     let ticks = inputs.len();
     // The map as given, so a demo recorded in the repository replays there.
-    let demo = Demo { inputs, skill: options.skill, seed: options.seed, ..Demo::new(map.label()) };
+    let demo = Demo {
+        inputs,
+        skill: options.skill,
+        seed: options.seed,
+        no_monsters: options.no_monsters,
+        ..Demo::new(map.label())
+    };
     demo.save(path)?;
     println!("recorded {ticks} ticks to {}", path.display());
     Ok(())

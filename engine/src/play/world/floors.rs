@@ -80,7 +80,7 @@ fn new_special(level: &Level, model: usize, change: SpecialChange) -> Option<Sec
 }
 
 /// Where `floor` takes `sector`'s floor.
-fn destination(level: &Level, sector: usize, floor: &Floor) -> f64 {
+pub fn destination(level: &Level, sector: usize, floor: &Floor) -> f64 {
     let s = &level.compiled.map.sectors[sector];
     let target = match floor.to {
         FloorTarget::LowestNeighbourFloor => specials::lowest_floor_around(level, sector),

@@ -130,7 +130,7 @@ fn perform(
 
 /// The sectors a special acts on: those with its tag, or with none, the
 /// sector behind its line.
-fn target_sectors(level: &Level, line: SpecialLine, special: &LineSpecial) -> Vec<usize> {
+pub fn target_sectors(level: &Level, line: SpecialLine, special: &LineSpecial) -> Vec<usize> {
     let map = &level.compiled.map;
     if special.tag != 0 {
         return map.sectors_tagged(special.tag).collect();

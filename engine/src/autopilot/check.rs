@@ -1,0 +1,582 @@
+//! `sightline check`: what a map maker asks of a map before anyone plays it.
+//!
+//! Starting from the player start with no keys, the reachable part of the
+//! map is grown to a fixed point: keys that can be reached are taken, and
+//! switches and walk lines that can be reached are assumed set off, their
+//! sectors free to be where they were or where the special takes them
+//! (optimistic: any order that helps). Then:
+//!
+//! - the exit, each key, each secret sector and each item is reachable or not;
+//! - a key that cannot be reached, but could if its colour's doors opened
+//!   freely, is behind its own door;
+//! - a *soft lock* is a place the player can reach but cannot get from to an
+//!   exit: the report names the one-way drops (or teleports) into such places.
+//!
+//! The route drawn and listed is the autopilot's own plan, run offline.
+
+use std::collections::BTreeSet;
+
+use glam::DVec2;
+
+use super::nav::{Cell, Heights, LineId, NavGrid, CELL, NONE};
+use super::plan::{self, line_of, Mechanisms, Search, Targets};
+use crate::actors::{ActorFlag, ActorTable};
+use crate::framebuffer::{rgb, Framebuffer};
+use crate::level::Level;
+use crate::map::special::{Activation, KeyColour};
+
+/// What `check` found.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct Report {
+    pub map: String,
+    /// Some exit can be reached (with every key and switch that can be).
+    pub exit_reachable: bool,
+    pub exits: Vec<Place>,
+    pub keys: Vec<KeyReport>,
+    pub secrets: Vec<Place>,
+    /// Items (pickups) that can and cannot be reached.
+    pub items: Vec<Place>,
+    pub soft_locks: Vec<SoftLock>,
+    /// The switches and walk lines the closure had to set off.
+    pub triggers_used: usize,
+    /// Reachable and standable cells.
+    pub reachable_cells: usize,
+    pub standable_cells: usize,
+}
+
+/// A place in the map and whether the player can get to it.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct Place {
+    pub what: String,
+    pub x: f64,
+    pub y: f64,
+    pub reachable: bool,
+}
+
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct KeyReport {
+    pub colour: String,
+    pub x: f64,
+    pub y: f64,
+    pub reachable: bool,
+    /// Unreachable, but reachable if doors of its own colour opened without it.
+    pub behind_own_door: bool,
+}
+
+/// A one-way move (a drop, a teleport) from where the exit can be reached
+/// to where it cannot.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct SoftLock {
+    pub from_sector: usize,
+    pub to_sector: usize,
+    pub x: f64,
+    pub y: f64,
+    pub how: String,
+}
+
+/// The fixed point: the heights assumed, keys held, and cells reached.
+struct Closure {
+    heights: Heights,
+    keys: Vec<KeyColour>,
+    reached: Vec<bool>,
+    applied: BTreeSet<LineId>,
+}
+
+/// The map's things that matter: keys and pickups.
+struct Things {
+    keys: Vec<(KeyColour, DVec2)>,
+    items: Vec<(String, DVec2)>,
+    solid: BTreeSet<Cell>,
+}
+
+fn things(level: &Level, nav: &NavGrid, skill: u8) -> Things {
+    let map = &level.compiled.map;
+    let table = ActorTable::active();
+    let mut t = Things { keys: Vec::new(), items: Vec::new(), solid: BTreeSet::new() };
+    for thing in map.things.iter().filter(|t| t.in_single_player(skill)) {
+        let Some(def) = table.get(&thing.kind) else { continue };
+        if let Some(colour) = def.key() {
+            t.keys.push((colour, thing.pos));
+        } else if def.has(ActorFlag::Special) {
+            t.items.push((def.name.clone(), thing.pos));
+        } else if def.has(ActorFlag::Solid) && !def.has(ActorFlag::CountKill) {
+            let reach = def.radius + super::nav::CLEAR;
+            for c in plan::cells_near(nav, thing.pos, reach * 1.42).cells() {
+                let d = (nav.centre_of(c) - thing.pos).abs();
+                if d.x < reach && d.y < reach {
+                    t.solid.insert(c);
+                }
+            }
+        }
+    }
+    t
+}
+
+fn flood(
+    search: &mut Search,
+    nav: &NavGrid,
+    level: &Level,
+    mech: &Mechanisms,
+    heights: &Heights,
+    solid: &BTreeSet<Cell>,
+    hurts: &[bool],
+    start: Cell,
+) -> Vec<bool> {
+    let none = BTreeSet::new();
+    let spent = BTreeSet::new();
+    let w =
+        plan::World { nav, map: &level.compiled.map, mech, heights, blocked: solid, bad: &none, spent: &spent, hurts };
+    search.run(&w, start, None);
+    let mut reached = vec![false; nav.cells()];
+    for &c in &search.reached {
+        reached[c as usize] = true;
+    }
+    reached
+}
+
+/// Can a goal's targets be met from the reached cells?
+fn met(nav: &NavGrid, reached: &[bool], targets: &Targets, line: Option<LineId>) -> bool {
+    if targets.cells().any(|c| reached[c as usize]) {
+        return true;
+    }
+    let Some(line) = line else { return false };
+    (0..nav.cells() as Cell)
+        .any(|c| reached[c as usize] && (0..4).any(|d| nav.crossings_of(c, d).any(|(l, _)| l == line)))
+}
+
+fn goal_targets(nav: &NavGrid, level: &Level, line: LineId) -> (Targets, Option<LineId>) {
+    let map = &level.compiled.map;
+    match line_of(map, line).3.map(|s| s.on) {
+        Some(Activation::Use) => (plan::use_cells(nav, map, line), None),
+        Some(Activation::Walk) => (Targets::default(), Some(line)),
+        _ => (Targets::default(), None),
+    }
+}
+
+fn closure(
+    nav: &NavGrid,
+    level: &Level,
+    mech: &Mechanisms,
+    t: &Things,
+    start: Cell,
+    keys: Vec<KeyColour>,
+    hurts: &[bool],
+    search: &mut Search,
+) -> Closure {
+    let none = BTreeSet::new();
+    let mut c = Closure {
+        heights: plan::plan_heights(level, mech, &keys, &none),
+        keys,
+        reached: Vec::new(),
+        applied: BTreeSet::new(),
+    };
+    loop {
+        c.reached = flood(search, nav, level, mech, &c.heights, &t.solid, hurts, start);
+        let mut changed = false;
+        for &(colour, pos) in &t.keys {
+            if !c.keys.contains(&colour) && plan::cells_near(nav, pos, 20.0).cells().any(|x| c.reached[x as usize]) {
+                c.keys.push(colour);
+                changed = true;
+            }
+        }
+        if changed {
+            // Doors of the new colours open.
+            let opened = plan::plan_heights(level, mech, &c.keys, &none);
+            for s in 0..c.heights.ceiling.len() {
+                c.heights.ceiling[s] = c.heights.ceiling[s].max(opened.ceiling[s]);
+            }
+        }
+        for &line in &mech.triggers {
+            if c.applied.contains(&line) {
+                continue;
+            }
+            let (sl, _, _, special) = line_of(&level.compiled.map, line);
+            let Some(special) = special else { continue };
+            if let crate::map::special::Action::Door { key: Some(k), .. } = special.action {
+                if !c.keys.contains(&k) {
+                    continue;
+                }
+            }
+            let (targets, walk) = goal_targets(nav, level, line);
+            if !met(nav, &c.reached, &targets, walk) {
+                continue;
+            }
+            c.applied.insert(line);
+            changed = true;
+            let Some(after) = plan::predict(level, &c.heights, sl, special) else { continue };
+            for s in 0..after.floor.len() {
+                c.heights.low[s] = c.heights.low[s].min(after.floor[s]).min(after.low[s]);
+                c.heights.floor[s] = c.heights.floor[s].max(after.floor[s]);
+                c.heights.ceiling[s] = c.heights.ceiling[s].max(after.ceiling[s]);
+            }
+        }
+        if !changed {
+            return c;
+        }
+    }
+}
+
+/// Checks `level` as played at `skill`.
+pub fn check(level: Level, skill: u8) -> (Report, Drawing) {
+    let (report, mut drawing) = analyse(&level, skill);
+    drawing.route = offline_route(level, skill);
+    (report, drawing)
+}
+
+fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
+    let map = &level.compiled.map;
+    let nav = NavGrid::new(&level.compiled);
+    let mech = Mechanisms::of(level);
+    let t = things(level, &nav, skill);
+    let hurts: Vec<bool> = map.sectors.iter().map(|s| s.special.damage.is_some()).collect();
+    let mut search = Search::default();
+    let start_pos = map.player_start().pos;
+    let standable_cells = (0..nav.cells() as Cell).filter(|&c| nav.standable(c)).count();
+    let Some(start) = nav.standable_near(start_pos, 3) else {
+        let report = Report {
+            map: map.name.clone(),
+            exit_reachable: false,
+            exits: Vec::new(),
+            keys: Vec::new(),
+            secrets: Vec::new(),
+            items: Vec::new(),
+            soft_locks: Vec::new(),
+            triggers_used: 0,
+            reachable_cells: 0,
+            standable_cells,
+        };
+        return (report, Drawing::new(level, nav, Vec::new(), Vec::new()));
+    };
+    let c = closure(&nav, level, &mech, &t, start, Vec::new(), &hurts, &mut search);
+    let place = |what: String, p: DVec2, reachable: bool| Place { what, x: p.x, y: p.y, reachable };
+    let near_reached =
+        |reached: &[bool], p: DVec2| plan::cells_near(&nav, p, 20.0).cells().any(|x| reached[x as usize]);
+
+    let mut exits = Vec::new();
+    let mut exit_targets: Vec<(Targets, Option<LineId>)> = Vec::new();
+    for &(line, secret) in &mech.exits {
+        let (targets, walk) = goal_targets(&nav, level, line);
+        let (_, a, b, _) = line_of(map, line);
+        let ok = met(&nav, &c.reached, &targets, walk);
+        exits.push(place(if secret { "secret exit".into() } else { "exit".into() }, (a + b) / 2.0, ok));
+        exit_targets.push((targets, walk));
+    }
+    let exit_reachable = exits.iter().any(|e| e.reachable);
+    let mut keys = Vec::new();
+    for &(colour, pos) in &t.keys {
+        let reachable = near_reached(&c.reached, pos);
+        let behind_own_door = !reachable && {
+            let with = closure(&nav, level, &mech, &t, start, vec![colour], &hurts, &mut search);
+            near_reached(&with.reached, pos)
+        };
+        keys.push(KeyReport { colour: colour.name().to_string(), x: pos.x, y: pos.y, reachable, behind_own_door });
+    }
+    let mut secrets = Vec::new();
+    for (s, sector) in map.sectors.iter().enumerate() {
+        if !sector.special.secret {
+            continue;
+        }
+        let cells: Vec<Cell> = (0..nav.cells() as Cell).filter(|&x| nav.centre[x as usize] == s as u32).collect();
+        let reachable = cells.iter().any(|&x| c.reached[x as usize])
+            || (0..nav.cells() as Cell).any(|x| c.reached[x as usize] && nav.touched(x).contains(&(s as u32)));
+        let centre = (level.sector_boxes[s].min + level.sector_boxes[s].max) / 2.0;
+        secrets.push(place(format!("secret sector {s}"), centre, reachable));
+    }
+    let items = t.items.iter().map(|(name, pos)| place(name.clone(), *pos, near_reached(&c.reached, *pos))).collect();
+
+    // Where the exit can be reached from: a backward flood over the moves
+    // the forward one found.
+    let mut finish = vec![false; nav.cells()];
+    let mut soft_locks = Vec::new();
+    if exit_reachable {
+        let edges = forward_edges(&nav, level, &mech, &c.heights, &t.solid, &c.reached);
+        let mut into: Vec<Vec<Cell>> = vec![Vec::new(); 0];
+        into.resize(nav.cells(), Vec::new());
+        for &(a, b, _) in &edges {
+            into[b as usize].push(a);
+        }
+        let mut stack: Vec<Cell> = Vec::new();
+        for (targets, walk) in &exit_targets {
+            for x in targets.cells() {
+                if c.reached[x as usize] && !finish[x as usize] {
+                    finish[x as usize] = true;
+                    stack.push(x);
+                }
+            }
+            if let Some(line) = walk {
+                for (a, _, crossed) in &edges {
+                    let a = *a;
+                    if crossed.contains(line) && !finish[a as usize] {
+                        finish[a as usize] = true;
+                        stack.push(a);
+                    }
+                }
+            }
+        }
+        while let Some(b) = stack.pop() {
+            for &a in &into[b as usize] {
+                if !finish[a as usize] {
+                    finish[a as usize] = true;
+                    stack.push(a);
+                }
+            }
+        }
+        let mut seen = BTreeSet::new();
+        for &(a, b, _) in &edges {
+            if finish[a as usize] && !finish[b as usize] {
+                let (sa, sb) = (nav.centre[a as usize] as usize, nav.centre[b as usize] as usize);
+                if seen.insert((sa, sb)) {
+                    let adjacent = (0..8).any(|d| nav.neighbour(a, d) == Some(b));
+                    let p = nav.centre_of(b);
+                    let how = if adjacent { "a one-way drop" } else { "a teleport" };
+                    soft_locks.push(SoftLock { from_sector: sa, to_sector: sb, x: p.x, y: p.y, how: how.into() });
+                }
+            }
+        }
+    }
+    let reachable_cells = c.reached.iter().filter(|&&r| r).count();
+    let report = Report {
+        map: map.name.clone(),
+        exit_reachable,
+        exits,
+        keys,
+        secrets,
+        items,
+        soft_locks,
+        triggers_used: c.applied.len(),
+        reachable_cells,
+        standable_cells,
+    };
+    (report, Drawing::new(level, nav, c.reached, finish))
+}
+
+/// Every move of the forward search from the reached cells: from, to, and
+/// the walk lines it crosses.
+fn forward_edges(
+    nav: &NavGrid,
+    level: &Level,
+    mech: &Mechanisms,
+    heights: &Heights,
+    solid: &BTreeSet<Cell>,
+    reached: &[bool],
+) -> Vec<(Cell, Cell, Vec<LineId>)> {
+    let map = &level.compiled.map;
+    let mut edges = Vec::new();
+    for a in 0..nav.cells() as Cell {
+        if !reached[a as usize] {
+            continue;
+        }
+        let from = nav.span(a, heights);
+        for d in 0..8 {
+            if !nav.open(a, d) {
+                continue;
+            }
+            let Some(b) = nav.neighbour(a, d) else { continue };
+            if solid.contains(&b) || !NavGrid::passable(from, nav.span(b, heights)) {
+                continue;
+            }
+            let mut to = b;
+            let mut crossed = Vec::new();
+            for (line, front) in nav.crossings_of(a, d) {
+                crossed.push(line);
+                let walk = line_of(map, line).3.is_some_and(|s| s.on == Activation::Walk);
+                if let (true, true, Some(&dest)) = (walk, front, mech.teleports.get(&line)) {
+                    if let Some(t) = nav.standable_near(dest, 2) {
+                        to = t;
+                    }
+                }
+            }
+            edges.push((a, to, crossed));
+        }
+    }
+    edges
+}
+
+/// The autopilot's route through the level, planned offline: a game with
+/// no monsters, played until the exit or 20 minutes, its path kept.
+fn offline_route(level: Level, skill: u8) -> Vec<DVec2> {
+    let options = crate::play::GameOptions { skill, seed: 0, no_monsters: true };
+    let Ok(mut game) = crate::play::Game::with_options(level, options) else { return Vec::new() };
+    let mut bot = super::Autopilot::new(&game);
+    let mut path = vec![game.player().pos];
+    for _ in 0..42_000 {
+        let input = bot.tick(&game);
+        game.tick(&input);
+        let p = game.player().pos;
+        if path.last().is_none_or(|q| q.distance(p) >= 8.0) {
+            path.push(p);
+        }
+        if game.exit().is_some() || matches!(bot.status(), super::Status::Stuck { .. }) {
+            break;
+        }
+    }
+    path
+}
+
+/// What the plan picture shows.
+pub struct Drawing {
+    nav: NavGrid,
+    reached: Vec<bool>,
+    finish: Vec<bool>,
+    /// The autopilot's path.
+    pub route: Vec<DVec2>,
+    /// The map's lines with their colours, and the BSP's partitions (each
+    /// clipped to its node's box).
+    lines: Vec<(DVec2, DVec2, u32)>,
+    partitions: Vec<(DVec2, DVec2)>,
+}
+
+impl Drawing {
+    fn new(level: &Level, nav: NavGrid, reached: Vec<bool>, finish: Vec<bool>) -> Drawing {
+        let map = &level.compiled.map;
+        let mut lines = Vec::new();
+        for l in &map.lines {
+            let (a, b) = map.line_points(l);
+            let colour = if l.special.is_some() {
+                rgb(90, 140, 255)
+            } else if l.back.is_none() || l.flags.impassable {
+                rgb(235, 235, 235)
+            } else {
+                rgb(120, 120, 120)
+            };
+            lines.push((a, b, colour));
+        }
+        for t in &map.trigger_lines {
+            lines.push((map.vertices[t.from], map.vertices[t.to], rgb(90, 140, 255)));
+        }
+        let partitions = level
+            .compiled
+            .bsp
+            .nodes
+            .iter()
+            .filter_map(|node| {
+                let bbox = node.bbox[0].union(node.bbox[1]);
+                clip_line(node.a, node.b, bbox.min, bbox.max)
+            })
+            .collect();
+        Drawing { nav, reached, finish, route: Vec::new(), lines, partitions }
+    }
+
+    /// The map from above, `size` pixels on its longer side: reachable
+    /// floor dark green, unreachable floor dark red, soft-lock floor orange,
+    /// walls white, two-sided lines grey, special lines blue, the route
+    /// yellow, and with `partitions` the BSP's partition lines cyan.
+    pub fn draw(&self, size: usize, partitions: bool) -> Framebuffer {
+        let nav = &self.nav;
+        let extent = DVec2::new(nav.width as f64, nav.height as f64) * CELL;
+        let scale = size as f64 / extent.x.max(extent.y);
+        let (w, h) = (((extent.x * scale) as usize).max(1) + 8, ((extent.y * scale) as usize).max(1) + 8);
+        let mut fb = Framebuffer::new(w, h);
+        let to_px = |p: DVec2| {
+            let q = (p - nav.origin) * scale;
+            DVec2::new(q.x + 4.0, h as f64 - 4.0 - q.y)
+        };
+        let any_finish = self.finish.iter().any(|&f| f);
+        for c in 0..nav.cells() as Cell {
+            if nav.centre[c as usize] == NONE || !nav.standable(c) {
+                continue;
+            }
+            let reached = self.reached.get(c as usize).copied().unwrap_or(false);
+            let finish = self.finish.get(c as usize).copied().unwrap_or(false);
+            let colour = match (reached, finish) {
+                (true, false) if any_finish => rgb(170, 90, 0),
+                (true, _) => rgb(20, 70, 30),
+                (false, _) => rgb(110, 20, 20),
+            };
+            let p = to_px(nav.centre_of(c) - DVec2::splat(CELL / 2.0));
+            let q = to_px(nav.centre_of(c) + DVec2::splat(CELL / 2.0));
+            fill(&mut fb, p, q, colour);
+        }
+        if partitions {
+            for &(a, b) in &self.partitions {
+                line(&mut fb, to_px(a), to_px(b), rgb(0, 150, 170));
+            }
+        }
+        for &(a, b, colour) in &self.lines {
+            line(&mut fb, to_px(a), to_px(b), colour);
+        }
+        for pair in self.route.windows(2) {
+            if pair[0].distance(pair[1]) < 64.0 {
+                line(&mut fb, to_px(pair[0]), to_px(pair[1]), rgb(255, 220, 0));
+            }
+        }
+        fb
+    }
+}
+
+fn fill(fb: &mut Framebuffer, p: DVec2, q: DVec2, colour: u32) {
+    let (x0, x1) = (p.x.min(q.x).floor().max(0.0) as usize, p.x.max(q.x).ceil().max(0.0) as usize);
+    let (y0, y1) = (p.y.min(q.y).floor().max(0.0) as usize, p.y.max(q.y).ceil().max(0.0) as usize);
+    for y in y0..y1.min(fb.height) {
+        for x in x0..x1.min(fb.width) {
+            fb.pixels[y * fb.width + x] = colour;
+        }
+    }
+}
+
+fn line(fb: &mut Framebuffer, a: DVec2, b: DVec2, colour: u32) {
+    let n = (b - a).abs().max_element().ceil().max(1.0) as usize;
+    for i in 0..=n {
+        let p = a + (b - a) * (i as f64 / n as f64);
+        if p.x >= 0.0 && p.y >= 0.0 && (p.x as usize) < fb.width && (p.y as usize) < fb.height {
+            fb.pixels[p.y as usize * fb.width + p.x as usize] = colour;
+        }
+    }
+}
+
+/// The part of the infinite line through `a` and `b` inside the box.
+fn clip_line(a: DVec2, b: DVec2, min: DVec2, max: DVec2) -> Option<(DVec2, DVec2)> {
+    let d = b - a;
+    let (mut t0, mut t1) = (f64::MIN, f64::MAX);
+    for axis in 0..2 {
+        let (o, v, lo, hi) = if axis == 0 { (a.x, d.x, min.x, max.x) } else { (a.y, d.y, min.y, max.y) };
+        if v.abs() < 1e-12 {
+            if o < lo || o > hi {
+                return None;
+            }
+            continue;
+        }
+        let (u0, u1) = ((lo - o) / v, (hi - o) / v);
+        t0 = t0.max(u0.min(u1));
+        t1 = t1.min(u0.max(u1));
+    }
+    (t0 <= t1).then(|| (a + d * t0, a + d * t1))
+}
+
+impl Report {
+    /// The report as text, one finding per line.
+    pub fn text(&self) -> String {
+        let mut out = String::new();
+        let yes = |b: bool| if b { "reachable" } else { "NOT reachable" };
+        out += &format!("{}: the exit is {}\n", self.map, yes(self.exit_reachable));
+        for e in &self.exits {
+            out += &format!("  {} at ({:.0}, {:.0}): {}\n", e.what, e.x, e.y, yes(e.reachable));
+        }
+        for k in &self.keys {
+            let own = if k.behind_own_door { " (it is behind a door of its own colour)" } else { "" };
+            out += &format!("  {} key at ({:.0}, {:.0}): {}{own}\n", k.colour, k.x, k.y, yes(k.reachable));
+        }
+        for s in &self.secrets {
+            out += &format!("  {} at ({:.0}, {:.0}): {}\n", s.what, s.x, s.y, yes(s.reachable));
+        }
+        let reached = self.items.iter().filter(|i| i.reachable).count();
+        out += &format!("  items: {reached} of {} reachable\n", self.items.len());
+        for i in self.items.iter().filter(|i| !i.reachable) {
+            out += &format!("    {} at ({:.0}, {:.0}): NOT reachable\n", i.what, i.x, i.y);
+        }
+        if self.soft_locks.is_empty() {
+            out += "  no soft locks\n";
+        }
+        for s in &self.soft_locks {
+            out += &format!(
+                "  soft lock: {} from sector {} into sector {} at ({:.0}, {:.0}) leaves the exit unreachable\n",
+                s.how, s.from_sector, s.to_sector, s.x, s.y
+            );
+        }
+        out += &format!(
+            "  {} of {} standable cells ({}x{} units) reachable, {} switches and walk lines used\n",
+            self.reachable_cells, self.standable_cells, CELL, CELL, self.triggers_used
+        );
+        out
+    }
+}

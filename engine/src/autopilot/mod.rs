@@ -1,0 +1,930 @@
+//! The autopilot: a bot that plays a level through the player's own inputs.
+//!
+//! Each tick it looks at what a player can know (the map's geometry and
+//! specials as they stand now, the things in view, its own health, ammo and
+//! keys) and answers one [`TickInput`], which the caller hands to
+//! [`Game::tick`] like a keyboard's. It never changes the game.
+//!
+//! - [`nav`]: the navigation grid (16-unit cells, walls, heights).
+//! - [`plan`]: the level's mechanisms, the heights a plan assumes, the
+//!   search, and which goal to go for.
+//! - this module: following a route (steering, doors, lifts, teleports,
+//!   getting unstuck), fighting, and the report.
+//! - [`check`]: what a map maker asks of a map: can the exit, each key,
+//!   secret and item be reached, and where can the player get stuck.
+
+pub mod check;
+pub mod nav;
+pub mod plan;
+
+use std::collections::{BTreeMap, BTreeSet};
+
+use glam::DVec2;
+
+/// A point on the map (glam's, re-exported for the command line).
+pub type Point = DVec2;
+
+use crate::actors::{ActorFlag, Category};
+use crate::map::special::{Activation, KeyColour};
+use crate::play::sight::{self, Body};
+use crate::play::{Game, TickInput};
+use nav::{Cell, Heights, LineId, NavGrid, CELL, DIRS};
+use plan::{line_of, Goal, Mechanisms, Purpose, Route, Search, Targets};
+
+/// Ticks between full replans while a route is followed.
+const REPLAN_EVERY: u64 = 350;
+/// Ticks without progress along a route before the move is given up.
+const STUCK_TICKS: u32 = 70;
+/// A monster further than this is not fought.
+const FIGHT_RANGE: f64 = 1400.0;
+
+/// How a run is going, for the report.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Status {
+    Playing,
+    /// Nothing left to try: no exit, key or untried switch within reach.
+    Stuck {
+        at: DVec2,
+        why: String,
+    },
+}
+
+/// Figures of the planning, for the benchmark and the report.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Figures {
+    /// Time building the navigation grid, seconds.
+    pub grid_seconds: f64,
+    /// Goal choices made, and their total and worst time, seconds.
+    pub plans: u32,
+    pub plan_seconds: f64,
+    pub worst_plan_seconds: f64,
+}
+
+/// The route being followed.
+struct Active {
+    goal: Goal,
+    purpose: Purpose,
+    route: Route,
+    /// Index in the route of the cell the body is at (or last was).
+    at: usize,
+    /// Ticks since `at` last moved forward.
+    idle: u32,
+    /// Ticks spent waiting for a door or lift.
+    waited: u32,
+    /// Uses pressed at the goal.
+    presses: u32,
+    /// Ticks spent at the goal.
+    arrived: u32,
+}
+
+/// The bot. Make one per game with [`Autopilot::new`], then call
+/// [`Autopilot::tick`] before every [`Game::tick`].
+pub struct Autopilot {
+    nav: NavGrid,
+    mech: Mechanisms,
+    search: Search,
+    active: Option<Active>,
+    /// Lines it has set off (walked over, used), and when.
+    tried: BTreeMap<LineId, u64>,
+    /// Moves that did not work, until a tick.
+    bad: BTreeMap<u32, u64>,
+    /// Things it could not pick up.
+    unreachable: BTreeSet<u32>,
+    /// Floor and ceiling heights last tick (to see what moves).
+    last: Heights,
+    last_pos: DVec2,
+    used_last: bool,
+    /// No full replan before this tick (after setting something off, the
+    /// world is given time to move).
+    settle_until: u64,
+    next_replan: u64,
+    status: Status,
+    keys: usize,
+    figures: Figures,
+    sight: sight::Scratch,
+    /// Goals reached, for the report.
+    pub log: Vec<String>,
+    /// Hurting sectors, by index.
+    hurts: Vec<bool>,
+}
+
+impl Autopilot {
+    pub fn new(game: &Game) -> Autopilot {
+        let level = game.level();
+        let started = std::time::Instant::now();
+        let nav = NavGrid::new(&level.compiled);
+        let figures = Figures { grid_seconds: started.elapsed().as_secs_f64(), ..Default::default() };
+        let mech = Mechanisms::of(level);
+        let map = &level.compiled.map;
+        let hurts = map.sectors.iter().map(|s| s.special.damage.is_some()).collect();
+        Autopilot {
+            nav,
+            mech,
+            search: Search::default(),
+            active: None,
+            tried: BTreeMap::new(),
+            bad: BTreeMap::new(),
+            unreachable: BTreeSet::new(),
+            last: Heights::of(map),
+            last_pos: game.player().pos,
+            used_last: false,
+            settle_until: 0,
+            next_replan: 0,
+            status: Status::Playing,
+            keys: 0,
+            figures,
+            sight: sight::Scratch::default(),
+            log: Vec::new(),
+            hurts,
+        }
+    }
+
+    pub fn status(&self) -> &Status {
+        &self.status
+    }
+
+    pub fn figures(&self) -> Figures {
+        self.figures
+    }
+
+    pub fn nav(&self) -> &NavGrid {
+        &self.nav
+    }
+
+    /// The cells of the route being followed, from where the body is.
+    pub fn route(&self) -> Vec<DVec2> {
+        self.active
+            .as_ref()
+            .map_or(Vec::new(), |a| a.route.cells[a.at..].iter().map(|&c| self.nav.centre_of(c)).collect())
+    }
+
+    /// This tick's input.
+    pub fn tick(&mut self, game: &Game) -> TickInput {
+        let now = game.ticks();
+        let player = game.player();
+        if player.dead() || game.exit().is_some() {
+            return TickInput::default();
+        }
+        self.note_crossings(game);
+        self.bad.retain(|_, until| *until > now);
+        if player.keys.len() != self.keys {
+            self.keys = player.keys.len();
+            self.next_replan = now;
+        }
+        let fight = self.fight(game);
+        let mut input = if matches!(self.status, Status::Stuck { .. }) && now < self.next_replan {
+            TickInput::default()
+        } else {
+            self.follow(game)
+        };
+        if let Some((angle, weapon)) = fight {
+            // Face the enemy and fire, moving the way the route wanted.
+            let wanted = player.angle + f64::from(input.turn);
+            let move_dir = if input.forward != 0 || input.strafe != 0 {
+                Some(wanted - 90.0 * f64::from(input.strafe) + if input.forward < 0 { 180.0 } else { 0.0 })
+            } else {
+                None
+            };
+            let turn = turn_to(player.angle, angle);
+            input.turn = turn as f32;
+            input.fire = true;
+            // Ask for the weapon only when another is in hand: asking again
+            // would step to the next weapon in the slot.
+            let table = &game.actors().table;
+            let in_hand = player
+                .pending_weapon
+                .or(player.ready_weapon)
+                .and_then(|w| table.actors[w].weapon.as_ref())
+                .map(|w| w.slot);
+            input.weapon = if in_hand == Some(weapon) { 0 } else { weapon };
+            input.use_line = false;
+            if let Some(dir) = move_dir {
+                let rel = (dir - angle).to_radians();
+                let (s, c) = rel.sin_cos();
+                input.forward = if c > 0.38 {
+                    1
+                } else if c < -0.38 {
+                    -1
+                } else {
+                    0
+                };
+                input.strafe = if s > 0.38 {
+                    -1
+                } else if s < -0.38 {
+                    1
+                } else {
+                    0
+                };
+            }
+        }
+        self.used_last = input.use_line;
+        self.last = Heights::of(&game.level().compiled.map);
+        self.last_pos = player.pos;
+        input
+    }
+
+    /// Marks the walk lines the body crossed since last tick as tried.
+    fn note_crossings(&mut self, game: &Game) {
+        let map = &game.level().compiled.map;
+        let (p, q) = (self.last_pos, game.player().pos);
+        if p == q {
+            return;
+        }
+        let mut crossed = Vec::new();
+        let walk =
+            self.mech.triggers.iter().chain(self.mech.exits.iter().map(|e| &e.0)).chain(self.mech.teleports.keys());
+        let lifts = self.mech.lifts.iter().flatten();
+        for &id in walk.chain(lifts) {
+            let (_, a, b, special) = line_of(map, id);
+            if special.is_some_and(|s| s.on == Activation::Walk) && crate::play::trace::crossing(p, q, a, b).is_some() {
+                crossed.push(id);
+            }
+        }
+        for id in crossed {
+            self.tried.insert(id, game.ticks());
+        }
+    }
+
+    /// Lines that are used up: set off once and not repeatable.
+    fn spent(&self, game: &Game) -> BTreeSet<LineId> {
+        let map = &game.level().compiled.map;
+        self.tried.keys().copied().filter(|&id| line_of(map, id).3.is_none_or(|s| !s.repeat)).collect()
+    }
+
+    /// Cells solid things stand on (not monsters: they move).
+    fn blocked(&self, game: &Game) -> BTreeSet<Cell> {
+        let actors = game.actors();
+        let mut cells = BTreeSet::new();
+        for a in &actors.list {
+            let def = &actors.table.actors[a.kind];
+            if a.removed || !a.flags.has(ActorFlag::Solid) || def.has(ActorFlag::CountKill) {
+                continue;
+            }
+            let reach = def.radius + nav::CLEAR;
+            let r = (reach / CELL).ceil() as i32;
+            let Some(c) = self.nav.cell_at(a.pos) else { continue };
+            let (cx, cy) = ((c as usize % self.nav.width) as i32, (c as usize / self.nav.width) as i32);
+            for dy in -r..=r {
+                for dx in -r..=r {
+                    let (x, y) = (cx + dx, cy + dy);
+                    if x < 0 || y < 0 || x as usize >= self.nav.width || y as usize >= self.nav.height {
+                        continue;
+                    }
+                    let n = (y as usize * self.nav.width + x as usize) as Cell;
+                    let d = (self.nav.centre_of(n) - a.pos).abs();
+                    if d.x < reach && d.y < reach {
+                        cells.insert(n);
+                    }
+                }
+            }
+        }
+        cells
+    }
+
+    fn keys_held(game: &Game) -> Vec<KeyColour> {
+        game.player().keys.iter().map(|k| k.colour).collect()
+    }
+
+    /// Chooses the next goal and the route to it.
+    fn choose(&mut self, game: &Game) -> Option<Active> {
+        let started = std::time::Instant::now();
+        let chosen = self.choose_inner(game);
+        let t = started.elapsed().as_secs_f64();
+        self.figures.plans += 1;
+        self.figures.plan_seconds += t;
+        self.figures.worst_plan_seconds = self.figures.worst_plan_seconds.max(t);
+        chosen
+    }
+
+    fn choose_inner(&mut self, game: &Game) -> Option<Active> {
+        let level = game.level();
+        let map = &level.compiled.map;
+        let keys = Self::keys_held(game);
+        let spent = self.spent(game);
+        let heights = plan::plan_heights(level, &self.mech, &keys, &spent);
+        let blocked = self.blocked(game);
+        let bad: BTreeSet<u32> = self.bad.keys().copied().collect();
+        let start = self.nav.start_cell(game.player().pos, game.player().z, &heights)?;
+        let world = plan::World {
+            nav: &self.nav,
+            map,
+            mech: &self.mech,
+            heights: &heights,
+            blocked: &blocked,
+            bad: &bad,
+            spent: &spent,
+            hurts: &self.hurts,
+        };
+        let nav = &self.nav;
+        let active = |goal: Goal, purpose: Purpose, route: Route| Active {
+            goal,
+            purpose,
+            route,
+            at: 0,
+            idle: 0,
+            waited: 0,
+            presses: 0,
+            arrived: 0,
+        };
+
+        // Supplies first when they are short and monsters are about.
+        if let Some((goal, targets)) = self.supplies(game) {
+            if let Some(route) = self.search.run(&world, start, Some(&targets)) {
+                if route.cost < 1200 {
+                    return Some(active(goal, Purpose::Supplies, route));
+                }
+            }
+        }
+        // The exit: the normal one if it can be reached, else the secret one.
+        for secret in [false, true] {
+            let mut best: Option<(Route, Goal)> = None;
+            for &(line, is_secret) in &self.mech.exits {
+                if is_secret != secret {
+                    continue;
+                }
+                let (_, _, _, special) = line_of(map, line);
+                let goal = match special.map(|s| s.on) {
+                    Some(Activation::Use) => Goal::Use(line),
+                    Some(Activation::Walk) => Goal::Cross(line),
+                    _ => continue,
+                };
+                let targets = plan::targets_of(nav, map, &goal);
+                if let Some(route) = self.search.run(&world, start, Some(&targets)) {
+                    if best.as_ref().is_none_or(|b| route.cost < b.0.cost) {
+                        best = Some((route, goal));
+                    }
+                }
+            }
+            if let Some((route, goal)) = best {
+                return Some(active(goal, Purpose::Exit, route));
+            }
+        }
+        // Keys not yet held.
+        let mut targets = Targets::default();
+        let mut wanted = Vec::new();
+        for (i, a) in game.actors().list.iter().enumerate() {
+            let def = &game.actors().table.actors[a.kind];
+            let Some(colour) = def.key() else { continue };
+            if a.removed || keys.contains(&colour) || self.unreachable.contains(&(i as u32)) {
+                continue;
+            }
+            targets.add(plan::cells_near(nav, a.pos, 20.0));
+            wanted.push((i as u32, a.pos));
+        }
+        if !targets.is_empty() {
+            if let Some(route) = self.search.run(&world, start, Some(&targets)) {
+                let end = nav.centre_of(*route.cells.last().unwrap());
+                let (i, pos) = *wanted.iter().min_by(|a, b| a.1.distance(end).total_cmp(&b.1.distance(end))).unwrap();
+                return Some(active(Goal::Touch(pos, i), Purpose::Key, route));
+            }
+        }
+        // Switches and walk lines: what could each open?
+        self.search.run(&world, start, None);
+        let base = self.search.reached.len();
+        let mut candidates: Vec<(u32, LineId, Goal)> = Vec::new();
+        for &line in &self.mech.triggers {
+            if spent.contains(&line) || self.tried.contains_key(&line) {
+                continue;
+            }
+            let (_, _, _, special) = line_of(map, line);
+            let Some(special) = special else { continue };
+            if let crate::map::special::Action::Door { key: Some(k), .. } = special.action {
+                if !keys.contains(&k) {
+                    continue;
+                }
+            }
+            let goal = match special.on {
+                Activation::Use => Goal::Use(line),
+                Activation::Walk => Goal::Cross(line),
+                Activation::Shoot => continue,
+            };
+            let cost = match &goal {
+                Goal::Use(_) => plan::use_cells(nav, map, line).cells().filter_map(|c| self.search.cost_to(c)).min(),
+                _ => self.crossing_cost(line),
+            };
+            if let Some(cost) = cost {
+                candidates.push((cost, line, goal));
+            }
+        }
+        candidates.sort_by_key(|c| (c.0, c.1));
+        let mut unknown: Option<(u32, LineId, Goal)> = None;
+        let mut best: Option<(usize, u32, LineId, Goal)> = None;
+        for (cost, line, goal) in candidates.iter().take(16).cloned() {
+            let (sl, _, _, special) = line_of(map, line);
+            let Some(special) = special else { continue };
+            let Some(after) = plan::predict(level, &heights, sl, special) else {
+                if unknown.is_none() {
+                    unknown = Some((cost, line, goal));
+                }
+                continue;
+            };
+            let world = plan::World { heights: &after, ..world };
+            let exit_opens = self.mech.exits.iter().any(|&(l, _)| {
+                let g = match line_of(map, l).3.map(|s| s.on) {
+                    Some(Activation::Use) => Goal::Use(l),
+                    _ => Goal::Cross(l),
+                };
+                let t = plan::targets_of(nav, map, &g);
+                self.search.run(&world, start, Some(&t)).is_some()
+            });
+            if exit_opens {
+                best = Some((usize::MAX, cost, line, goal));
+                break;
+            }
+            self.search.run(&world, start, None);
+            let gain = self.search.reached.len().saturating_sub(base);
+            if gain > 8 && best.as_ref().is_none_or(|b| gain > b.0 * 2 || (gain * 2 > b.0 && cost < b.1)) {
+                best = Some((gain, cost, line, goal));
+            } else if unknown.is_none() {
+                unknown = Some((cost, line, goal));
+            }
+        }
+        let pick = best.map(|b| (b.2, b.3)).or(unknown.map(|u| (u.1, u.2)));
+        if let Some((_, goal)) = pick {
+            let targets = plan::targets_of(nav, map, &goal);
+            let world = plan::World { heights: &heights, ..world };
+            if let Some(route) = self.search.run(&world, start, Some(&targets)) {
+                return Some(active(goal, Purpose::Trigger, route));
+            }
+        }
+        None
+    }
+
+    /// The cheapest reached cell from which a move crosses `line` (after a
+    /// flood).
+    fn crossing_cost(&self, line: LineId) -> Option<u32> {
+        // Walk lines are few; scan their neighbourhood.
+        let map_cells = self.nav.cells() as u32;
+        let _ = map_cells;
+        None.or_else(|| {
+            let mut best = None;
+            for &c in &self.search.reached {
+                for d in 0..4 {
+                    if self.nav.crossings_of(c, d).any(|(l, _)| l == line) {
+                        let cost = self.search.cost_to(c).unwrap_or(u32::MAX);
+                        best = Some(best.map_or(cost, |b: u32| b.min(cost)));
+                    }
+                }
+            }
+            best
+        })
+    }
+
+    /// Health or ammunition to fetch, when monsters are about and it is short.
+    fn supplies(&self, game: &Game) -> Option<(Goal, Targets)> {
+        let player = game.player();
+        let actors = game.actors();
+        if game.stats().kills.1 == 0 {
+            return None;
+        }
+        let low_health = player.health < 50;
+        let low_ammo = player.ammo[0] < 20 && player.ammo[1] < 4;
+        if !low_health && !low_ammo {
+            return None;
+        }
+        let mut best: Option<(f64, u32, DVec2)> = None;
+        for (i, a) in actors.list.iter().enumerate() {
+            let def = &actors.table.actors[a.kind];
+            if a.removed || !def.has(ActorFlag::Special) || self.unreachable.contains(&(i as u32)) {
+                continue;
+            }
+            let Some(pickup) = &def.pickup else { continue };
+            let useful = pickup.give.iter().any(|g| match g {
+                crate::actors::Give::Health { .. } => low_health && player.health < 100,
+                crate::actors::Give::Ammo { .. } => low_ammo,
+                _ => false,
+            });
+            let d = a.pos.distance(player.pos);
+            if useful && d < 1500.0 && best.is_none_or(|b| d < b.0) {
+                best = Some((d, i as u32, a.pos));
+            }
+        }
+        let (_, i, pos) = best?;
+        Some((Goal::Touch(pos, i), plan::cells_near(&self.nav, pos, 20.0)))
+    }
+
+    /// Follows the route: the input that moves along it, opens what is in
+    /// the way and does what the goal asks at its end.
+    fn follow(&mut self, game: &Game) -> TickInput {
+        let now = game.ticks();
+        let pos = game.player().pos;
+        if self.active.is_none() || now >= self.next_replan {
+            if now < self.settle_until && self.active.is_none() {
+                return TickInput::default();
+            }
+            self.next_replan = now + REPLAN_EVERY;
+            match self.choose(game) {
+                Some(a) => {
+                    let what = match &a.goal {
+                        Goal::Use(l) | Goal::Cross(l) => describe(&game.level().compiled.map, *l),
+                        Goal::Touch(p, _) => format!("({:.0}, {:.0})", p.x, p.y),
+                    };
+                    self.log.push(format!(
+                        "tick {now}: at ({:.0}, {:.0}) {:?} {what}, {} cells",
+                        pos.x,
+                        pos.y,
+                        a.purpose,
+                        a.route.cells.len()
+                    ));
+                    self.active = Some(a);
+                    self.status = Status::Playing;
+                }
+                None => {
+                    self.active = None;
+                    self.status = Status::Stuck {
+                        at: pos,
+                        why: "no exit, key or untried switch or walk line within reach".into(),
+                    };
+                    // Forget the moves given up on, and look again soon.
+                    self.bad.clear();
+                    self.next_replan = now + 35;
+                    return TickInput::default();
+                }
+            }
+        }
+        let mut active = self.active.take().unwrap();
+        let input = self.step(game, &mut active);
+        if let Some(input) = input {
+            self.active = Some(active);
+            input
+        } else {
+            TickInput::default()
+        }
+    }
+
+    /// One tick along `active`; `None` when it is finished or abandoned
+    /// (then a new goal is chosen next tick).
+    fn step(&mut self, game: &Game, a: &mut Active) -> Option<TickInput> {
+        let now = game.ticks();
+        let player = game.player();
+        let pos = player.pos;
+        let map = &game.level().compiled.map;
+        let cells = a.route.cells.clone();
+        // Where along the route the body is.
+        let mut best = (f64::MAX, a.at);
+        for k in a.at..(a.at + 10).min(cells.len()) {
+            let d = self.nav.centre_of(cells[k]).distance(pos);
+            if d < best.0 && (d < 24.0 || k == a.at) {
+                best = (d, k);
+            }
+        }
+        if best.1 > a.at {
+            a.at = best.1;
+            a.idle = 0;
+            a.waited = 0;
+        } else {
+            a.idle += 1;
+        }
+        if best.0 > 96.0 {
+            // Pushed or fell off the route.
+            self.next_replan = now;
+            return None;
+        }
+        let last = cells.len() - 1;
+        if a.at >= last || (a.at + 1 == last && self.nav.centre_of(cells[last]).distance(pos) < 20.0) {
+            return self.arrive(game, a);
+        }
+        // The next move: can it be made now, as the level stands?
+        let (c, n) = (cells[a.at], cells[a.at + 1]);
+        let live = live_heights(map);
+        if !a.route.teleport[a.at + 1] {
+            let from = self.nav.span(c, &live);
+            let to = self.nav.span(n, &live);
+            if std::env::var_os("SIGHTLINE_AUTOPILOT_TRACE").is_some() {
+                eprintln!(
+                    "tick {now} pos {pos:?} at {} c {:?} n {:?} from {from:?} to {to:?} touched {:?} idle {}",
+                    a.at,
+                    self.nav.centre_of(c),
+                    self.nav.centre_of(n),
+                    self.nav.touched(n),
+                    a.idle
+                );
+            }
+            if !NavGrid::passable(from, to) {
+                if let Some(input) = self.unblock(game, a, n, &live) {
+                    return Some(input);
+                }
+            }
+        }
+        if a.idle > STUCK_TICKS {
+            // Give the move up for a while and plan around it.
+            if let Some(d) = (0..8).find(|&d| self.nav.neighbour(c, d) == Some(n)) {
+                self.bad.insert(c * 8 + d as u32, now + 35 * 30);
+            }
+            self.next_replan = now;
+            if a.idle > STUCK_TICKS + 1 {
+                return None;
+            }
+            // A door in front, maybe: press use once.
+            return Some(TickInput { use_line: !self.used_last, ..Default::default() });
+        }
+        // Steer for a point a little way along the route, not past a
+        // teleport; when progress stalls, for the very next cell, slowly.
+        let on_ledge = cells[a.at..(a.at + 4).min(cells.len())].iter().any(|&x| self.nav.span(x, &live).ledge());
+        let ahead = if a.idle > STUCK_TICKS / 2 || on_ledge { 1 } else { 3 };
+        let mut k = a.at + 1;
+        while k < last && k < a.at + ahead && !a.route.teleport[k + 1] {
+            k += 1;
+        }
+        let mut target = self.nav.centre_of(cells[k]);
+        if a.route.teleport[k] {
+            // Step over the teleport line: past the cell before it.
+            let before = cells[k - 1];
+            let via =
+                (0..4).find(|&d| self.nav.crossings_of(before, d).any(|(l, _)| self.mech.teleports.contains_key(&l)));
+            let dir = via.map_or(DVec2::ZERO, |d| DVec2::new(DIRS[d].0 as f64, DIRS[d].1 as f64));
+            target = self.nav.centre_of(before) + dir * CELL * 1.5;
+        }
+        Some(self.drive_to(game, target, k == last || ahead == 1))
+    }
+
+    /// The input that heads for `target`.
+    fn drive_to(&self, game: &Game, target: DVec2, gently: bool) -> TickInput {
+        let player = game.player();
+        let d = target - player.pos;
+        let turn = turn_to(player.angle, d.y.atan2(d.x).to_degrees());
+        let speed = player.velocity.length();
+        let slow = gently;
+        // Coast when close: friction carries the body about ten times its speed.
+        let push = !slow || speed * 6.0 < d.length();
+        TickInput { forward: i8::from(push), turn: turn as f32, run: !slow, ..Default::default() }
+    }
+
+    /// The next move is blocked as the level stands: open the door, call
+    /// the lift, or wait for what is moving.
+    fn unblock(&mut self, game: &Game, a: &mut Active, next: Cell, live: &Heights) -> Option<TickInput> {
+        let level = game.level();
+        let map = &level.compiled.map;
+        let player = game.player();
+        let keys = Self::keys_held(game);
+        a.waited += 1;
+        if a.waited > 35 * 12 {
+            a.idle = STUCK_TICKS + 1;
+            a.waited = 0;
+            return None;
+        }
+        a.idle = 0;
+        let mut around = self.nav.touched(next).to_vec();
+        around.extend_from_slice(self.nav.touched(a.route.cells[a.at]));
+        for s in around {
+            let s = s as usize;
+            let moving = live.floor[s] != self.last.floor[s] || live.ceiling[s] != self.last.ceiling[s];
+            if moving {
+                return Some(self.hold(game));
+            }
+            // A manual door that is shut: use it.
+            let shut = live.ceiling[s] - live.floor[s] < 56.0;
+            if shut {
+                for &(line, key) in &self.mech.doors[s] {
+                    if key.is_some_and(|k| !keys.contains(&k)) {
+                        continue;
+                    }
+                    if let Some(input) = self.use_line(game, line) {
+                        return Some(input);
+                    }
+                }
+            }
+            // A lift that is up: call it.
+            if !self.mech.lifts[s].is_empty() && live.floor[s] > player.z + 24.0 {
+                let spent = self.spent(game);
+                for &line in &self.mech.lifts[s] {
+                    if spent.contains(&line) {
+                        continue;
+                    }
+                    if let Some(input) = self.use_line(game, line) {
+                        return Some(input);
+                    }
+                }
+                // Not in reach: go and set it off, then come back.
+                let lines: Vec<LineId> = self.mech.lifts[s].iter().copied().filter(|l| !spent.contains(l)).collect();
+                for line in lines {
+                    let goal = match line_of(map, line).3.map(|s| s.on) {
+                        Some(Activation::Use) => Goal::Use(line),
+                        Some(Activation::Walk) => Goal::Cross(line),
+                        _ => continue,
+                    };
+                    if let Some(route) = self.route_to(game, &goal) {
+                        *a = Active {
+                            goal,
+                            purpose: Purpose::Lift,
+                            route,
+                            at: 0,
+                            idle: 0,
+                            waited: 0,
+                            presses: 0,
+                            arrived: 0,
+                        };
+                        return Some(self.hold(game));
+                    }
+                }
+            }
+        }
+        // Something else (a remote door, a floor on its way): wait a while.
+        Some(self.hold(game))
+    }
+
+    /// A route to `goal` from here, with the heights a plan assumes.
+    fn route_to(&mut self, game: &Game, goal: &Goal) -> Option<Route> {
+        let level = game.level();
+        let map = &level.compiled.map;
+        let keys = Self::keys_held(game);
+        let spent = self.spent(game);
+        let heights = plan::plan_heights(level, &self.mech, &keys, &spent);
+        let blocked = self.blocked(game);
+        let bad: BTreeSet<u32> = self.bad.keys().copied().collect();
+        let start = self.nav.start_cell(game.player().pos, game.player().z, &heights)?;
+        let world = plan::World {
+            nav: &self.nav,
+            map,
+            mech: &self.mech,
+            heights: &heights,
+            blocked: &blocked,
+            bad: &bad,
+            spent: &spent,
+            hurts: &self.hurts,
+        };
+        let targets = plan::targets_of(&self.nav, map, goal);
+        self.search.run(&world, start, Some(&targets))
+    }
+
+    /// Stand still (braking).
+    fn hold(&self, game: &Game) -> TickInput {
+        let v = game.player().velocity;
+        if v.length() > 2.0 {
+            // Thrust against the motion.
+            let angle = game.player().angle;
+            let back = (-v).y.atan2(-v.x).to_degrees();
+            let rel = (back - angle).to_radians();
+            let (s, c) = rel.sin_cos();
+            return TickInput {
+                forward: if c > 0.5 {
+                    1
+                } else if c < -0.5 {
+                    -1
+                } else {
+                    0
+                },
+                strafe: if s > 0.5 {
+                    -1
+                } else if s < -0.5 {
+                    1
+                } else {
+                    0
+                },
+                ..Default::default()
+            };
+        }
+        TickInput::default()
+    }
+
+    /// Faces `line` and presses use, if the body is in front of it and
+    /// within reach; `None` when it is not.
+    fn use_line(&self, game: &Game, line: LineId) -> Option<TickInput> {
+        let map = &game.level().compiled.map;
+        let (_, a, b, special) = line_of(map, line);
+        if special.is_none_or(|s| s.on != Activation::Use) {
+            return None;
+        }
+        let pos = game.player().pos;
+        let near = plan::nearest_on(pos, a, b);
+        if crate::geom::front_distance(a, b, pos) <= 0.0 || near.distance(pos) > crate::play::USE_RANGE - 2.0 {
+            return None;
+        }
+        // Aim a little inside the line's ends.
+        let inset = plan::nearest_on(pos, a + (b - a) * 0.1, b - (b - a) * 0.1);
+        let d = inset - pos;
+        let turn = turn_to(game.player().angle, d.y.atan2(d.x).to_degrees());
+        Some(TickInput { turn: turn as f32, use_line: !self.used_last, ..self.hold(game) })
+    }
+
+    /// At the route's end: do what the goal asks.
+    fn arrive(&mut self, game: &Game, a: &mut Active) -> Option<TickInput> {
+        let now = game.ticks();
+        a.arrived += 1;
+        match a.goal.clone() {
+            Goal::Use(line) => {
+                if let Some(input) = self.use_line(game, line) {
+                    if input.use_line {
+                        a.presses += 1;
+                    }
+                    if a.presses >= 2 || a.arrived > 70 {
+                        self.tried.insert(line, now);
+                        self.settle_until = now + 35;
+                        self.next_replan = now + 35;
+                        return None;
+                    }
+                    return Some(input);
+                }
+                // Not quite in reach: edge towards the line.
+                let (_, p, q, _) = line_of(&game.level().compiled.map, line);
+                let target = plan::nearest_on(game.player().pos, p, q);
+                if a.arrived > 70 {
+                    self.tried.insert(line, now);
+                    self.next_replan = now;
+                    return None;
+                }
+                Some(self.drive_to(game, target, true))
+            }
+            Goal::Cross(line) => {
+                // The route ends past the line; the crossing is noted.
+                self.tried.insert(line, now);
+                self.settle_until = now + 35;
+                self.next_replan = now + 35;
+                None
+            }
+            Goal::Touch(pos, actor) => {
+                let gone = game.actors().list.get(actor as usize).is_none_or(|x| x.removed);
+                if gone || a.arrived > 70 {
+                    if !gone {
+                        self.unreachable.insert(actor);
+                    }
+                    self.next_replan = now;
+                    return None;
+                }
+                Some(self.drive_to(game, pos, false))
+            }
+        }
+    }
+
+    /// The enemy to shoot, if one is in sight: the angle to it and the
+    /// weapon number to hold.
+    fn fight(&mut self, game: &Game) -> Option<(f64, u8)> {
+        let player = game.player();
+        let actors = game.actors();
+        let table = &actors.table;
+        let compiled = &game.level().compiled;
+        let looker = Body { pos: player.pos, z: player.z, height: 56.0, radius: 16.0, index: usize::MAX };
+        let mut best: Option<(f64, usize)> = None;
+        for (i, a) in actors.list.iter().enumerate() {
+            let def = &table.actors[a.kind];
+            if a.removed
+                || a.health <= 0
+                || !(def.has(ActorFlag::CountKill) || def.name == "lost_soul")
+                || def.category != Category::Monster && !def.has(ActorFlag::CountKill)
+            {
+                continue;
+            }
+            let d = a.pos.distance(player.pos);
+            if d > FIGHT_RANGE || best.is_some_and(|(bd, _)| bd <= d) {
+                continue;
+            }
+            let target = Body { pos: a.pos, z: a.z, height: def.height, radius: def.radius, index: i };
+            if sight::sight(compiled, &mut self.sight, &looker, &target) {
+                best = Some((d, i));
+            }
+        }
+        let (d, i) = best?;
+        let to = actors.list[i].pos - player.pos;
+        Some((to.y.atan2(to.x).to_degrees(), weapon_for(game, d)))
+    }
+}
+
+/// A line for the log: where it is and what it does.
+pub fn describe(map: &crate::map::Map, line: LineId) -> String {
+    let (_, a, b, special) = line_of(map, line);
+    let what = special.map_or("no special".to_string(), |s| format!("{:?} {:?} tag {}", s.on, s.action, s.tag));
+    format!("line {line} ({:.0}, {:.0})-({:.0}, {:.0}) {what}", a.x, a.y, b.x, b.y)
+}
+
+/// The live heights, lifts at the height they are.
+fn live_heights(map: &crate::map::Map) -> Heights {
+    Heights::of(map)
+}
+
+/// The turn from `from` to face `to`, degrees in (-180, 180].
+fn turn_to(from: f64, to: f64) -> f64 {
+    let t = (to - from).rem_euclid(360.0);
+    if t > 180.0 {
+        t - 360.0
+    } else {
+        t
+    }
+}
+
+/// The weapon slot to fight with at distance `d`: the best owned with ammo.
+fn weapon_for(game: &Game, d: f64) -> u8 {
+    let player = game.player();
+    let table = &game.actors().table;
+    let mut best = (0, 1u8);
+    for &w in &player.weapons {
+        let Some(def) = table.actors[w].weapon.as_ref() else { continue };
+        let has_ammo = def.ammo.is_none_or(|k| player.ammo[k.index()] >= def.ammo_use.max(1));
+        if !has_ammo {
+            continue;
+        }
+        let score = match def.slot {
+            1 => 1,
+            2 => 3,
+            3 => 6,
+            4 => 5,
+            5 if d > 300.0 => 7,
+            6 => 8,
+            7 if d > 300.0 => 4,
+            _ => 0,
+        };
+        if score > best.0 {
+            best = (score, def.slot);
+        }
+    }
+    best.1
+}

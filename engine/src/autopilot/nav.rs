@@ -1,0 +1,365 @@
+//! The navigation grid: the map cut into [`CELL`]-unit squares, each
+//! knowing the sector under its centre and every sector the player's circle
+//! would overlap there, and which of its eight neighbours a wall cuts off.
+//!
+//! What never changes (walls, which sectors a cell touches, which special
+//! lines a move between two cells crosses) is computed once per map; what
+//! does (floor and ceiling heights) is read from a [`Heights`] at search
+//! time, so the same grid answers "can I go there now?" and "could I, once
+//! that door is open and that lift is down?".
+
+use glam::DVec2;
+
+use crate::bsp::CompiledMap;
+use crate::map::Map;
+use crate::play::blockmap::{Blockmap, LineQuery};
+use crate::play::collision::distance_to_segment;
+use crate::play::player::{HEIGHT, MAX_STEP, RADIUS};
+use crate::play::trace::crossing;
+
+/// Side of a cell, map units.
+pub const CELL: f64 = 16.0;
+/// A cell's centre must be this far from every solid wall to be stood on.
+/// Less than the body's radius on purpose: a 32-unit corridor has no cell
+/// centre on its middle line, and the body slides along walls anyway.
+pub const CLEAR: f64 = 7.5;
+/// Walls nearer than this make a cell cost more to pass.
+const ROOMY: f64 = 32.0;
+/// A cell index.
+pub type Cell = u32;
+/// No sector (outside the map).
+pub const NONE: u32 = u32::MAX;
+
+/// The eight neighbours: east, north, west, south, then the diagonals.
+pub const DIRS: [(i32, i32); 8] = [(1, 0), (0, 1), (-1, 0), (0, -1), (1, 1), (-1, 1), (-1, -1), (1, -1)];
+/// The two straight moves a diagonal needs open (no corner cutting).
+const SIDES: [(usize, usize); 4] = [(0, 1), (2, 1), (2, 3), (0, 3)];
+
+/// A line with a special: a wall (its index) or a trigger line
+/// (`lines.len()` plus its index), as one number.
+pub type LineId = u32;
+
+/// Sector heights as a search sees them. A sector with a `range` can be at
+/// any floor height in it (a lift the bot can ride).
+#[derive(Clone, Debug)]
+pub struct Heights {
+    pub floor: Vec<f64>,
+    pub ceiling: Vec<f64>,
+    /// Per sector: the lowest floor it can be lowered to, if it is a lift.
+    pub low: Vec<f64>,
+}
+
+impl Heights {
+    /// The map's heights now, as the player sees them.
+    pub fn of(map: &Map) -> Heights {
+        let floor: Vec<f64> = map.sectors.iter().map(|s| s.floor).collect();
+        Heights { low: floor.clone(), floor, ceiling: map.sectors.iter().map(|s| s.ceiling).collect() }
+    }
+}
+
+/// The floor (lowest and highest it can be) and ceiling under a cell.
+#[derive(Clone, Copy, Debug)]
+pub struct Span {
+    pub low: f64,
+    pub high: f64,
+    pub ceiling: f64,
+    /// The lowest floor under the circle: a body there is on a ledge when
+    /// this is more than a step below `high`.
+    pub bottom: f64,
+}
+
+impl Span {
+    /// Part of the circle hangs over a drop: a body a little off the
+    /// cell's centre falls.
+    pub fn ledge(&self) -> bool {
+        self.bottom < self.high - MAX_STEP
+    }
+}
+
+pub struct NavGrid {
+    pub origin: DVec2,
+    pub width: usize,
+    pub height: usize,
+    /// Per cell: the sector under the centre, or [`NONE`].
+    pub centre: Vec<u32>,
+    /// Per cell: `touch[touch_start[c]..touch_start[c + 1]]` are the sectors
+    /// the body's circle overlaps with its centre there.
+    touch_start: Vec<u32>,
+    touch: Vec<u32>,
+    /// Per cell: bit `d` set when the move to neighbour `d` is cut by a solid
+    /// wall (or the neighbour cannot be stood on).
+    walls: Vec<u8>,
+    /// Per cell: extra cost of passing through it, for being close to a
+    /// wall (routes keep to the middle of corridors where they can).
+    pub narrow: Vec<u8>,
+    /// Special lines a move crosses: `(cell * 8 + dir, line, from_front)`,
+    /// sorted.
+    crossings: Vec<(u32, LineId, bool)>,
+}
+
+impl NavGrid {
+    /// The grid of `compiled`, with the walk and trigger lines a move crosses.
+    pub fn new(compiled: &CompiledMap) -> NavGrid {
+        let map = &compiled.map;
+        let (mut min, mut max) = (DVec2::splat(f64::MAX), DVec2::splat(f64::MIN));
+        for v in &map.vertices {
+            min = min.min(*v);
+            max = max.max(*v);
+        }
+        let origin = (min / CELL).floor() * CELL;
+        let width = (((max.x - origin.x) / CELL).ceil() as usize).max(1);
+        let height = (((max.y - origin.y) / CELL).ceil() as usize).max(1);
+        let cells = width * height;
+        let blockmap = Blockmap::new(map);
+        let mut query = LineQuery::default();
+        let mut centre = vec![NONE; cells];
+        let mut touch_start = Vec::with_capacity(cells + 1);
+        let mut touch = Vec::new();
+        let mut clear = vec![false; cells];
+        let mut narrow = vec![0u8; cells];
+        let mut found = Vec::new();
+        for c in 0..cells {
+            touch_start.push(touch.len() as u32);
+            let p = origin + DVec2::new((c % width) as f64 + 0.5, (c / width) as f64 + 0.5) * CELL;
+            let Some(sector) = compiled.locate(p) else { continue };
+            centre[c] = sector as u32;
+            let r = DVec2::splat(ROOMY);
+            let near = query.run(&blockmap, map.lines.len(), p - r, p + r);
+            found.clear();
+            found.push(sector as u32);
+            let mut ok = true;
+            let mut room = ROOMY;
+            for &i in near {
+                let line = &map.lines[i as usize];
+                let (a, b) = map.line_points(line);
+                let d = distance_to_segment(p, a, b);
+                if line.back.is_none() || line.flags.impassable {
+                    ok &= d >= CLEAR;
+                    room = room.min(d);
+                }
+                if d >= RADIUS {
+                    continue;
+                }
+                found.extend(std::iter::once(&line.front).chain(&line.back).map(|s| s.sector as u32));
+            }
+            found.sort_unstable();
+            found.dedup();
+            touch.extend_from_slice(&found);
+            clear[c] = ok;
+            narrow[c] = if room < RADIUS {
+                12
+            } else if room < RADIUS + 8.0 {
+                4
+            } else if room < ROOMY {
+                1
+            } else {
+                0
+            };
+        }
+        touch_start.push(touch.len() as u32);
+        let mut grid = NavGrid {
+            origin,
+            width,
+            height,
+            centre,
+            touch_start,
+            touch,
+            walls: vec![0xff; cells],
+            narrow,
+            crossings: Vec::new(),
+        };
+        let triggers = Blockmap::of_trigger_lines(map);
+        let walls_count = map.lines.len() as u32;
+        for c in 0..cells {
+            if !clear[c] {
+                continue;
+            }
+            // Diagonals start shut; the next pass opens those that are clear.
+            let mut bits = 0xf0u8;
+            let p = grid.centre_of(c as Cell);
+            for (d, _) in DIRS.iter().enumerate().take(4) {
+                let Some(n) = grid.neighbour(c as Cell, d) else {
+                    bits |= 1 << d;
+                    continue;
+                };
+                let q = grid.centre_of(n);
+                if !clear[n as usize] {
+                    bits |= 1 << d;
+                    continue;
+                }
+                let (lo, hi) = (p.min(q) - DVec2::ONE, p.max(q) + DVec2::ONE);
+                for &i in query.run(&blockmap, map.lines.len(), lo, hi) {
+                    let line = &map.lines[i as usize];
+                    let (a, b) = map.line_points(line);
+                    let Some(_) = crossing(p, q, a, b) else { continue };
+                    if line.back.is_none() || line.flags.impassable {
+                        bits |= 1 << d;
+                    } else if line.special.is_some() {
+                        let front = crate::geom::front_distance(a, b, p) > 0.0;
+                        grid.crossings.push((c as u32 * 8 + d as u32, i, front));
+                    }
+                }
+                for &i in query.run(&triggers, map.trigger_lines.len(), lo, hi) {
+                    let t = &map.trigger_lines[i as usize];
+                    let (a, b) = (map.vertices[t.from], map.vertices[t.to]);
+                    if crossing(p, q, a, b).is_some() {
+                        let front = crate::geom::front_distance(a, b, p) > 0.0;
+                        grid.crossings.push((c as u32 * 8 + d as u32, walls_count + i, front));
+                    }
+                }
+            }
+            grid.walls[c] = bits;
+        }
+        // Diagonals: both straight moves around the corner must be open, and
+        // the diagonal itself must not cross a wall or a special line (the
+        // straight moves carry those).
+        for c in 0..cells {
+            if !clear[c] {
+                continue;
+            }
+            for k in 0..4 {
+                let d = 4 + k;
+                let (s1, s2) = SIDES[k];
+                let open = grid.walls[c] & (1 << s1) == 0 && grid.walls[c] & (1 << s2) == 0;
+                let Some(n) = grid.neighbour(c as Cell, d) else { continue };
+                let via1 = grid.neighbour(c as Cell, s1).unwrap();
+                let via2 = grid.neighbour(c as Cell, s2).unwrap();
+                let crossed = grid.crossings_of(c as Cell, s1).next().is_some()
+                    || grid.crossings_of(c as Cell, s2).next().is_some()
+                    || grid.crossings_of(via1, s2).next().is_some()
+                    || grid.crossings_of(via2, s1).next().is_some();
+                let far = grid.walls[via1 as usize] & (1 << s2) == 0 && grid.walls[via2 as usize] & (1 << s1) == 0;
+                if open && far && !crossed && clear[n as usize] {
+                    grid.walls[c] &= !(1 << d);
+                }
+            }
+            if grid.walls[c] & 0x0f == 0x0f {
+                grid.walls[c] = 0xff;
+            }
+        }
+        grid.crossings.sort_unstable();
+        grid
+    }
+
+    pub fn cells(&self) -> usize {
+        self.width * self.height
+    }
+
+    pub fn centre_of(&self, c: Cell) -> DVec2 {
+        let c = c as usize;
+        self.origin + DVec2::new((c % self.width) as f64 + 0.5, (c / self.width) as f64 + 0.5) * CELL
+    }
+
+    /// The cell `p` is in, if it is on the grid.
+    pub fn cell_at(&self, p: DVec2) -> Option<Cell> {
+        let q = (p - self.origin) / CELL;
+        if !(q.x >= 0.0 && q.y >= 0.0) {
+            return None;
+        }
+        let (x, y) = (q.x as usize, q.y as usize);
+        (x < self.width && y < self.height).then(|| (y * self.width + x) as Cell)
+    }
+
+    /// The cell nearest `p` that can be stood on, within `reach` cells.
+    pub fn standable_near(&self, p: DVec2, reach: i32) -> Option<Cell> {
+        let q = ((p - self.origin) / CELL).floor();
+        let mut best: Option<(f64, Cell)> = None;
+        for dy in -reach..=reach {
+            for dx in -reach..=reach {
+                let (x, y) = (q.x as i64 + dx as i64, q.y as i64 + dy as i64);
+                if x < 0 || y < 0 || x >= self.width as i64 || y >= self.height as i64 {
+                    continue;
+                }
+                let c = (y as usize * self.width + x as usize) as Cell;
+                if !self.standable(c) {
+                    continue;
+                }
+                let d = self.centre_of(c).distance_squared(p);
+                if best.is_none_or(|(b, _)| d < b) {
+                    best = Some((d, c));
+                }
+            }
+        }
+        best.map(|b| b.1)
+    }
+
+    /// The cell a body at `pos` with its feet at `z` is best taken to be
+    /// in: the nearest standable one whose floor is within a step of the
+    /// feet (a body pressed against a ledge is not on top of it).
+    pub fn start_cell(&self, pos: DVec2, z: f64, heights: &Heights) -> Option<Cell> {
+        let q = ((pos - self.origin) / CELL).floor();
+        let mut best: Option<(f64, Cell)> = None;
+        for dy in -3i64..=3 {
+            for dx in -3i64..=3 {
+                let (x, y) = (q.x as i64 + dx, q.y as i64 + dy);
+                if x < 0 || y < 0 || x >= self.width as i64 || y >= self.height as i64 {
+                    continue;
+                }
+                let c = (y as usize * self.width + x as usize) as Cell;
+                if !self.standable(c) {
+                    continue;
+                }
+                let span = self.span(c, heights);
+                let off = if z + MAX_STEP < span.low || z > span.high + MAX_STEP { 1e6 } else { 0.0 };
+                let d = self.centre_of(c).distance_squared(pos) + off;
+                if best.is_none_or(|(b, _)| d < b) {
+                    best = Some((d, c));
+                }
+            }
+        }
+        best.map(|b| b.1)
+    }
+
+    /// Can a body stand with its centre in `c` (in the map, clear of walls)?
+    pub fn standable(&self, c: Cell) -> bool {
+        self.walls[c as usize] != 0xff
+    }
+
+    pub fn neighbour(&self, c: Cell, d: usize) -> Option<Cell> {
+        let (x, y) = ((c as usize % self.width) as i32, (c as usize / self.width) as i32);
+        let (nx, ny) = (x + DIRS[d].0, y + DIRS[d].1);
+        (nx >= 0 && ny >= 0 && (nx as usize) < self.width && (ny as usize) < self.height)
+            .then(|| (ny as usize * self.width + nx as usize) as Cell)
+    }
+
+    /// Is the move from `c` to its neighbour `d` free of solid walls?
+    pub fn open(&self, c: Cell, d: usize) -> bool {
+        self.walls[c as usize] & (1 << d) == 0
+    }
+
+    pub fn touched(&self, c: Cell) -> &[u32] {
+        let c = c as usize;
+        &self.touch[self.touch_start[c] as usize..self.touch_start[c + 1] as usize]
+    }
+
+    /// The special lines the move from `c` to neighbour `d` crosses, and
+    /// whether it starts on each one's front.
+    pub fn crossings_of(&self, c: Cell, d: usize) -> impl Iterator<Item = (LineId, bool)> + '_ {
+        let key = c * 8 + d as u32;
+        let start = self.crossings.partition_point(|x| x.0 < key);
+        self.crossings[start..].iter().take_while(move |x| x.0 == key).map(|x| (x.1, x.2))
+    }
+
+    /// The floor and ceiling under `c` with `heights`.
+    pub fn span(&self, c: Cell, heights: &Heights) -> Span {
+        let mut span = Span { low: f64::MIN, high: f64::MIN, ceiling: f64::MAX, bottom: f64::MAX };
+        for &s in self.touched(c) {
+            let s = s as usize;
+            span.bottom = span.bottom.min(heights.floor[s]);
+            span.low = span.low.max(heights.low[s]);
+            span.high = span.high.max(heights.floor[s]);
+            span.ceiling = span.ceiling.min(heights.ceiling[s]);
+        }
+        span
+    }
+
+    /// Can the body go from a cell under `from` to one under `to`: a step of
+    /// at most 24 (riding what can be ridden), any drop, and room for its
+    /// height?
+    pub fn passable(from: Span, to: Span) -> bool {
+        // Feet as low as they can be on `from` while still stepping up to
+        // `to` at its lowest.
+        let feet = from.low.max(to.low - MAX_STEP);
+        feet <= from.high && to.ceiling - to.low.max(feet) >= HEIGHT
+    }
+}

@@ -1,0 +1,489 @@
+//! Planning: what the level's special lines can do for the player (the
+//! [`Mechanisms`]), the heights a search assumes ([`Plan::heights`]: manual
+//! doors open, lifts lowerable), shortest routes over the navigation grid
+//! ([`Search`]), and which goal to go for next ([`Plan::choose`]): the exit
+//! if it can be reached, else a key, else the switch or walk line whose
+//! predicted effect opens the most of the level.
+
+use std::cmp::Reverse;
+use std::collections::{BTreeMap, BTreeSet, BinaryHeap};
+
+use glam::DVec2;
+
+use super::nav::{Cell, Heights, LineId, NavGrid, CELL, NONE};
+use crate::level::Level;
+use crate::map::special::{Action, Activation, CeilingTarget, DoorKind, KeyColour, LineSpecial};
+use crate::map::Map;
+use crate::play::collision::distance_to_segment;
+use crate::play::world::specials::{self, target_sectors};
+use crate::play::world::{floors, SpecialLine};
+use crate::play::USE_RANGE;
+
+/// Extra cost of standing in a cell whose floor hurts.
+const HURT_COST: u32 = 160;
+/// Extra cost of a cell on the edge of a drop (a body a little off its
+/// centre falls).
+const LEDGE_COST: u32 = 25;
+/// Cost of a straight and a diagonal move.
+const STRAIGHT: u32 = 10;
+const DIAGONAL: u32 = 14;
+/// A use spot: the cell's centre is at most this far from the line.
+const USE_REACH: f64 = USE_RANGE - 20.0;
+
+/// A line with a special, from its [`LineId`].
+pub fn line_of(map: &Map, id: LineId) -> (SpecialLine, DVec2, DVec2, Option<&LineSpecial>) {
+    let walls = map.lines.len() as u32;
+    if id < walls {
+        let line = &map.lines[id as usize];
+        let (a, b) = map.line_points(line);
+        (SpecialLine::Wall(id as usize), a, b, line.special.as_ref())
+    } else {
+        let t = &map.trigger_lines[(id - walls) as usize];
+        (SpecialLine::Trigger((id - walls) as usize), map.vertices[t.from], map.vertices[t.to], Some(&t.special))
+    }
+}
+
+/// What the level's special lines offer the player, found once per map.
+#[derive(Clone, Debug, Default)]
+pub struct Mechanisms {
+    /// Per sector: the walls that open it as a manual door (used from their
+    /// front, the door behind), with the key each needs.
+    pub doors: Vec<Vec<(LineId, Option<KeyColour>)>>,
+    /// Per sector: the lines that lower it as a lift.
+    pub lifts: Vec<Vec<LineId>>,
+    /// Exit lines, and whether each is the secret exit.
+    pub exits: Vec<(LineId, bool)>,
+    /// Teleport lines (walked over from the front), with where they lead.
+    pub teleports: BTreeMap<LineId, DVec2>,
+    /// Lines that move tagged sectors once set off: switches, walk lines and
+    /// shot lines, the candidates for opening the level further.
+    pub triggers: Vec<LineId>,
+}
+
+impl Mechanisms {
+    pub fn of(level: &Level) -> Mechanisms {
+        let map = &level.compiled.map;
+        let sectors = map.sectors.len();
+        let mut m =
+            Mechanisms { doors: vec![Vec::new(); sectors], lifts: vec![Vec::new(); sectors], ..Default::default() };
+        let ids = 0..(map.lines.len() + map.trigger_lines.len()) as u32;
+        for id in ids {
+            let (line, _, _, special) = line_of(map, id);
+            let Some(special) = special else { continue };
+            if !special.by.players() {
+                continue;
+            }
+            let targets = target_sectors(level, line, special);
+            match &special.action {
+                Action::Door { kind: DoorKind::Raise | DoorKind::Open, key, .. }
+                    if special.tag == 0 && special.on == Activation::Use =>
+                {
+                    for &s in &targets {
+                        m.doors[s].push((id, *key));
+                    }
+                }
+                Action::Lift { .. } | Action::PerpetualLift { .. } => {
+                    for &s in &targets {
+                        m.lifts[s].push(id);
+                    }
+                }
+                Action::Exit => m.exits.push((id, false)),
+                Action::SecretExit => m.exits.push((id, true)),
+                Action::Teleport if special.on == Activation::Walk => {
+                    let sector_of = |i: usize| level.compiled.locate(map.things[i].pos);
+                    if let Some(t) = crate::map::semantics::teleport_destination(map, special.tag, sector_of) {
+                        m.teleports.insert(id, map.things[t].pos);
+                    }
+                }
+                Action::Door { .. }
+                | Action::Floor { .. }
+                | Action::Ceiling { .. }
+                | Action::Stairs { .. }
+                | Action::Donut { .. }
+                    if !targets.is_empty() && special.on != Activation::Shoot =>
+                {
+                    m.triggers.push(id)
+                }
+                _ => {}
+            }
+        }
+        m
+    }
+}
+
+/// Where a route ends and what is done there.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Goal {
+    /// Use this line (a switch, an exit switch, a lift's button).
+    Use(LineId),
+    /// Walk over this line.
+    Cross(LineId),
+    /// Walk onto this spot (an item, a key).
+    Touch(DVec2, u32),
+}
+
+/// Why a goal was chosen, for the report.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Purpose {
+    Exit,
+    Key,
+    Trigger,
+    Supplies,
+    Lift,
+}
+
+/// What the search needs of a goal: cells where it is met, and lines whose
+/// crossing meets it.
+#[derive(Default)]
+pub struct Targets {
+    cells: BTreeSet<Cell>,
+    lines: BTreeSet<LineId>,
+}
+
+/// One route: cells from the start to a goal, and which moves are teleports.
+#[derive(Clone, Debug, Default)]
+pub struct Route {
+    pub cells: Vec<Cell>,
+    /// `teleport[i]`: the move into `cells[i]` was a teleport.
+    pub teleport: Vec<bool>,
+    pub cost: u32,
+}
+
+/// Search buffers, kept between searches.
+#[derive(Default)]
+pub struct Search {
+    cost: Vec<u32>,
+    prev: Vec<u32>,
+    tele: Vec<bool>,
+    seen: Vec<u32>,
+    stamp: u32,
+    heap: BinaryHeap<Reverse<(u32, Cell)>>,
+    /// Cells reached by the last search, in order of cost.
+    pub reached: Vec<Cell>,
+}
+
+/// Everything a search reads.
+pub struct World<'a> {
+    pub nav: &'a NavGrid,
+    pub map: &'a Map,
+    pub mech: &'a Mechanisms,
+    pub heights: &'a Heights,
+    /// Cells a solid thing stands on.
+    pub blocked: &'a BTreeSet<Cell>,
+    /// Moves found not to work (cell * 8 + dir).
+    pub bad: &'a BTreeSet<u32>,
+    /// Teleport and walk lines that are spent (used once, not repeatable).
+    pub spent: &'a BTreeSet<LineId>,
+    /// Damaging sectors.
+    pub hurts: &'a [bool],
+}
+
+impl Search {
+    /// Cheapest route from `start` to any of `targets` (or, with none, a
+    /// flood of everything reachable: see [`Search::reached`]). Returns the
+    /// route to the first target met.
+    pub fn run(&mut self, w: &World, start: Cell, targets: Option<&Targets>) -> Option<Route> {
+        let cells = w.nav.cells();
+        if self.cost.len() != cells {
+            self.cost = vec![0; cells];
+            self.prev = vec![NONE; cells];
+            self.tele = vec![false; cells];
+            self.seen = vec![0; cells];
+            self.stamp = 0;
+        }
+        self.stamp = self.stamp.wrapping_add(1);
+        if self.stamp == 0 {
+            self.seen.fill(0);
+            self.stamp = 1;
+        }
+        self.heap.clear();
+        self.reached.clear();
+        let stamp = self.stamp;
+        self.seen[start as usize] = stamp;
+        self.cost[start as usize] = 0;
+        self.prev[start as usize] = NONE;
+        self.tele[start as usize] = false;
+        self.heap.push(Reverse((0, start)));
+        while let Some(Reverse((cost, c))) = self.heap.pop() {
+            if cost > self.cost[c as usize] {
+                continue;
+            }
+            self.reached.push(c);
+            if let Some(t) = targets {
+                if t.cells.contains(&c) {
+                    return Some(self.route(c));
+                }
+            }
+            let from = w.nav.span(c, w.heights);
+            for d in 0..8 {
+                if !w.nav.open(c, d) || w.bad.contains(&(c * 8 + d as u32)) {
+                    continue;
+                }
+                let Some(n) = w.nav.neighbour(c, d) else { continue };
+                if w.blocked.contains(&n) {
+                    continue;
+                }
+                let to = w.nav.span(n, w.heights);
+                if !NavGrid::passable(from, to) {
+                    continue;
+                }
+                let mut next = n;
+                let mut teleported = false;
+                let mut met = false;
+                for (line, front) in w.nav.crossings_of(c, d) {
+                    if targets.is_some_and(|t| t.lines.contains(&line)) {
+                        met = true;
+                    }
+                    let (_, _, _, special) = line_of(w.map, line);
+                    let Some(special) = special else { continue };
+                    if special.on != Activation::Walk || w.spent.contains(&line) || !special.by.players() {
+                        continue;
+                    }
+                    if let (Some(&dest), true) = (w.mech.teleports.get(&line), front) {
+                        if let Some(t) = w.nav.standable_near(dest, 2) {
+                            next = t;
+                            teleported = true;
+                        }
+                    }
+                }
+                let centre = w.nav.centre[next as usize];
+                let mut step = if d < 4 { STRAIGHT } else { DIAGONAL } + u32::from(w.nav.narrow[next as usize]);
+                if to.ledge() {
+                    step += LEDGE_COST;
+                }
+                if centre != NONE && w.hurts[centre as usize] {
+                    step += HURT_COST;
+                }
+                let total = cost + step;
+                let n = next as usize;
+                if self.seen[n] != stamp || total < self.cost[n] {
+                    self.seen[n] = stamp;
+                    self.cost[n] = total;
+                    self.prev[n] = c;
+                    self.tele[n] = teleported;
+                    if met {
+                        return Some(self.route(next));
+                    }
+                    self.heap.push(Reverse((total, next)));
+                }
+            }
+        }
+        None
+    }
+
+    fn route(&self, end: Cell) -> Route {
+        let mut cells = vec![end];
+        let mut teleport = vec![self.tele[end as usize]];
+        let mut c = end;
+        while self.prev[c as usize] != NONE {
+            c = self.prev[c as usize];
+            cells.push(c);
+            teleport.push(self.tele[c as usize]);
+        }
+        cells.reverse();
+        teleport.reverse();
+        // `tele[c]` marks the move into c; after reversing, entry i says
+        // whether cells[i] was reached by a teleport.
+        Route { cells, teleport, cost: self.cost[end as usize] }
+    }
+
+    /// Was `c` reached by the last search?
+    pub fn was_reached(&self, c: Cell) -> bool {
+        self.seen[c as usize] == self.stamp
+    }
+
+    /// The cost of reaching `c` in the last search.
+    pub fn cost_to(&self, c: Cell) -> Option<u32> {
+        self.was_reached(c).then(|| self.cost[c as usize])
+    }
+}
+
+/// The cells from which `line` can be used: on its front, the centre within
+/// use range, nothing solid between.
+pub fn use_cells(nav: &NavGrid, map: &Map, line: LineId) -> Targets {
+    let (_, a, b, _) = line_of(map, line);
+    let mut t = Targets::default();
+    let lo = a.min(b) - DVec2::splat(USE_REACH);
+    let hi = a.max(b) + DVec2::splat(USE_REACH);
+    let (Some(c0), Some(c1)) = (
+        nav.cell_at(lo.max(nav.origin)),
+        nav.cell_at(hi.min(nav.origin + DVec2::new(nav.width as f64, nav.height as f64) * CELL - 1.0)),
+    ) else {
+        return t;
+    };
+    let (x0, y0) = (c0 as usize % nav.width, c0 as usize / nav.width);
+    let (x1, y1) = (c1 as usize % nav.width, c1 as usize / nav.width);
+    for y in y0..=y1 {
+        for x in x0..=x1 {
+            let c = (y * nav.width + x) as Cell;
+            if !nav.standable(c) {
+                continue;
+            }
+            let p = nav.centre_of(c);
+            if crate::geom::front_distance(a, b, p) <= 0.0 || distance_to_segment(p, a, b) > USE_REACH {
+                continue;
+            }
+            if !clear_between(map, p, nearest_on(p, a, b), line) {
+                continue;
+            }
+            t.cells.insert(c);
+        }
+    }
+    t
+}
+
+/// Cells within `reach` of `p`.
+pub fn cells_near(nav: &NavGrid, p: DVec2, reach: f64) -> Targets {
+    let mut t = Targets::default();
+    let r = (reach / CELL).ceil() as i32 + 1;
+    let Some(centre) = nav.cell_at(p) else { return t };
+    let (cx, cy) = ((centre as usize % nav.width) as i32, (centre as usize / nav.width) as i32);
+    for dy in -r..=r {
+        for dx in -r..=r {
+            let (x, y) = (cx + dx, cy + dy);
+            if x < 0 || y < 0 || x as usize >= nav.width || y as usize >= nav.height {
+                continue;
+            }
+            let c = (y as usize * nav.width + x as usize) as Cell;
+            if nav.standable(c) && nav.centre_of(c).distance(p) <= reach {
+                t.cells.insert(c);
+            }
+        }
+    }
+    t
+}
+
+/// Targets met by crossing `line`.
+pub fn crossing_of(line: LineId) -> Targets {
+    Targets { cells: BTreeSet::new(), lines: [line].into() }
+}
+
+impl Targets {
+    pub fn is_empty(&self) -> bool {
+        self.cells.is_empty() && self.lines.is_empty()
+    }
+
+    pub fn add(&mut self, other: Targets) {
+        self.cells.extend(other.cells);
+        self.lines.extend(other.lines);
+    }
+
+    pub fn contains_cell(&self, c: Cell) -> bool {
+        self.cells.contains(&c)
+    }
+
+    pub fn cells(&self) -> impl Iterator<Item = Cell> + '_ {
+        self.cells.iter().copied()
+    }
+}
+
+/// The targets of a goal.
+pub fn targets_of(nav: &NavGrid, map: &Map, goal: &Goal) -> Targets {
+    match goal {
+        Goal::Use(line) => use_cells(nav, map, *line),
+        Goal::Cross(line) => crossing_of(*line),
+        Goal::Touch(p, _) => cells_near(nav, *p, 20.0),
+    }
+}
+
+/// The point of segment `a-b` nearest `p`.
+pub fn nearest_on(p: DVec2, a: DVec2, b: DVec2) -> DVec2 {
+    let d = b - a;
+    let t = ((p - a).dot(d) / d.length_squared()).clamp(0.0, 1.0);
+    a + d * t
+}
+
+/// Does the segment `p-q` cross no solid wall other than `line` itself (a
+/// use line's own wall)?
+pub fn clear_between(map: &Map, p: DVec2, q: DVec2, line: LineId) -> bool {
+    // Stop a hair short of the line itself.
+    let q = p + (q - p) * 0.98;
+    map.lines.iter().enumerate().all(|(i, l)| {
+        if i as u32 == line || (l.back.is_some() && !l.flags.impassable) {
+            return true;
+        }
+        let (a, b) = map.line_points(l);
+        crate::play::trace::crossing(p, q, a, b).is_none()
+    })
+}
+
+/// The heights a plan assumes: the level now, with every manual door the
+/// player can open open, and every lift it can call able to come down.
+pub fn plan_heights(level: &Level, mech: &Mechanisms, keys: &[KeyColour], spent: &BTreeSet<LineId>) -> Heights {
+    let map = &level.compiled.map;
+    let mut h = Heights::of(map);
+    for (s, doors) in mech.doors.iter().enumerate() {
+        if doors.iter().any(|(_, key)| key.is_none_or(|k| keys.contains(&k))) {
+            if let Some(top) = specials::lowest_ceiling_around(level, s) {
+                h.ceiling[s] = h.ceiling[s].max(top - 4.0);
+            }
+        }
+    }
+    for (s, lifts) in mech.lifts.iter().enumerate() {
+        if lifts.iter().any(|l| !spent.contains(l)) {
+            h.low[s] = h.low[s].min(specials::lowest_floor_around(level, s));
+            h.floor[s] =
+                h.floor[s].max(specials::highest_floor_around(level, s).unwrap_or(h.floor[s]).min(h.ceiling[s] - 56.0));
+        }
+    }
+    h
+}
+
+/// The heights after `special` (set off by `line`) has done its work, as
+/// far as they can be foretold; `None` when its effect cannot be (stairs
+/// past the first step, donuts) or it changes nothing.
+pub fn predict(level: &Level, heights: &Heights, line: SpecialLine, special: &LineSpecial) -> Option<Heights> {
+    let mut h = heights.clone();
+    let mut changed = false;
+    let map = &level.compiled.map;
+    for s in target_sectors(level, line, special) {
+        let sector = &map.sectors[s];
+        match &special.action {
+            Action::Door { kind: DoorKind::Open | DoorKind::Raise, .. } => {
+                if let Some(top) = specials::lowest_ceiling_around(level, s) {
+                    if top - 4.0 > h.ceiling[s] {
+                        h.ceiling[s] = top - 4.0;
+                        changed = true;
+                    }
+                }
+            }
+            Action::Door { kind: DoorKind::Close, .. } => {
+                if h.ceiling[s] > h.floor[s] {
+                    h.ceiling[s] = h.floor[s];
+                    changed = true;
+                }
+            }
+            Action::Floor { to, offset, speed, crush, change } => {
+                let f = floors::Floor { to: *to, offset: *offset, speed: *speed, crush: *crush, change: *change };
+                let dest = floors::destination(level, s, &f);
+                if dest != sector.floor {
+                    h.floor[s] = dest;
+                    h.low[s] = h.low[s].min(dest);
+                    changed = true;
+                }
+            }
+            Action::Ceiling { to, offset, .. } => {
+                let target = match to {
+                    CeilingTarget::Floor => sector.floor,
+                    CeilingTarget::HighestNeighbourCeiling => {
+                        specials::highest_ceiling_around(level, s).unwrap_or(sector.ceiling)
+                    }
+                    CeilingTarget::LowestNeighbourCeiling => {
+                        specials::lowest_ceiling_around(level, s).unwrap_or(sector.ceiling)
+                    }
+                    CeilingTarget::Current => sector.ceiling,
+                } + offset;
+                if target != h.ceiling[s] {
+                    h.ceiling[s] = target;
+                    changed = true;
+                }
+            }
+            Action::Stairs { step, .. } => {
+                h.floor[s] += step;
+                changed = true;
+            }
+            _ => return None,
+        }
+    }
+    changed.then_some(h)
+}

@@ -1,0 +1,172 @@
+//! `sightline autoplay`: the autopilot plays a map headless, through the
+//! same inputs a keyboard gives, until the exit or a tick limit, and says
+//! how it went (text, or one JSON object). `--record` keeps the inputs as a
+//! demo that `sightline replay` plays back to the same end.
+
+use anyhow::{Context, Result};
+use serde_json::json;
+use sightline::autopilot::{Autopilot, Status};
+use sightline::campaign::MapRef;
+use sightline::play::demo::Demo;
+use sightline::play::playthrough::{Phase, Playthrough};
+use sightline::play::{Exit, GameOptions, TickInput, TICRATE};
+use sightline::render::{RenderOptions, Renderer};
+
+use crate::cli::AutoplayArgs;
+use crate::replay::Capture;
+
+/// A run stuck this long (nothing left to try) is over.
+const GIVE_UP_STUCK: u64 = 35 * 60;
+
+/// How a run ended.
+pub struct Outcome {
+    pub exit: Option<Exit>,
+    pub died: bool,
+    pub stuck: Option<(sightline::autopilot::Point, String)>,
+    pub inputs: Vec<TickInput>,
+}
+
+/// Plays `play` with the autopilot until it exits, dies, gives up or runs
+/// `max_ticks`; `each` sees the playthrough after every tick.
+pub fn run_bot(
+    play: &mut Playthrough,
+    max_ticks: u64,
+    mut each: impl FnMut(&Playthrough, u64) -> Result<()>,
+) -> Result<(Outcome, Autopilot)> {
+    let mut bot = Autopilot::new(&play.game);
+    let mut inputs = Vec::new();
+    let mut stuck_since: Option<u64> = None;
+    let mut outcome = Outcome { exit: None, died: false, stuck: None, inputs: Vec::new() };
+    for tick in 1..=max_ticks {
+        let input = bot.tick(&play.game);
+        play.tick(&input)?;
+        inputs.push(input);
+        each(play, tick)?;
+        if let Phase::Intermission { exit, .. } = play.phase {
+            outcome.exit = Some(exit);
+            break;
+        }
+        if play.game.player().dead() {
+            outcome.died = true;
+            break;
+        }
+        match bot.status() {
+            Status::Stuck { at, why } => {
+                let since = *stuck_since.get_or_insert(tick);
+                if tick - since > GIVE_UP_STUCK {
+                    outcome.stuck = Some((*at, why.clone()));
+                    break;
+                }
+            }
+            Status::Playing => stuck_since = None,
+        }
+    }
+    outcome.inputs = inputs;
+    Ok((outcome, bot))
+}
+
+pub fn run(args: &AutoplayArgs) -> Result<()> {
+    let map = MapRef::parse(&args.map, args.iwad.as_deref());
+    let options = GameOptions { skill: args.skill, seed: args.seed, no_monsters: args.no_monsters };
+    let mut play = Playthrough::of(&map, options).with_context(|| format!("{}: cannot start the game", map.label()))?;
+    let mut capture = match (args.capture_every, &args.output) {
+        (Some(every), Some(dir)) => {
+            let renderer = Renderer::default_for(play.game.level());
+            let render = RenderOptions { renderer, threads: args.threads, ..Default::default() };
+            let mut c = Capture::new(every, dir, args.size, render)?;
+            c.frame(&play, 0)?;
+            Some(c)
+        }
+        _ => None,
+    };
+    let started = std::time::Instant::now();
+    let (outcome, bot) = run_bot(&mut play, args.max_ticks, |play, tick| match &mut capture {
+        Some(c) if tick.is_multiple_of(c.every) => c.frame(play, tick),
+        _ => Ok(()),
+    })?;
+    let seconds = started.elapsed().as_secs_f64();
+    if std::env::var_os("SIGHTLINE_AUTOPILOT_LOG").is_some() {
+        for line in &bot.log {
+            eprintln!("{line}");
+        }
+    }
+    let ticks = outcome.inputs.len() as u64;
+    if let Some(c) = &mut capture {
+        if !ticks.is_multiple_of(c.every) {
+            c.frame(&play, ticks)?;
+        }
+    }
+    if let Some(path) = &args.record {
+        let demo = Demo { inputs: outcome.inputs.clone(), ..Demo::new(map.label()) };
+        let demo = Demo { skill: options.skill, seed: options.seed, no_monsters: options.no_monsters, ..demo };
+        demo.save(path)?;
+    }
+    let stats = match &play.phase {
+        Phase::Intermission { stats, .. } | Phase::Finished { stats } => *stats,
+        Phase::Playing => play.game.stats(),
+    };
+    let player = play.game.player();
+    let figures = bot.figures();
+    let reason = match (&outcome.exit, outcome.died, &outcome.stuck) {
+        (Some(_), _, _) => None,
+        (None, true, _) => Some("died".to_string()),
+        (None, false, Some((_, why))) => Some(format!("stuck: {why}")),
+        (None, false, None) => Some(format!("out of time after {} ticks", args.max_ticks)),
+    };
+    if args.json {
+        let pair = |p: (u32, u32)| json!({ "found": p.0, "total": p.1 });
+        let value = json!({
+            "map": map.label(),
+            "skill": args.skill,
+            "monsters": !args.no_monsters,
+            "exited": outcome.exit.is_some(),
+            "exit": outcome.exit.map(|e| if e == Exit::Secret { "secret" } else { "normal" }),
+            "ticks": ticks,
+            "game_seconds": ticks as f64 / f64::from(TICRATE),
+            "kills": pair(stats.kills),
+            "items": pair(stats.items),
+            "secrets": pair(stats.secrets),
+            "health": player.health,
+            "why_not": reason,
+            "position": [player.pos.x, player.pos.y],
+            "planning": {
+                "grid_ms": figures.grid_seconds * 1e3,
+                "plans": figures.plans,
+                "plan_ms_total": figures.plan_seconds * 1e3,
+                "plan_ms_worst": figures.worst_plan_seconds * 1e3,
+            },
+            "wall_seconds": seconds,
+        });
+        println!("{value}");
+    } else {
+        let (k, i, s) = (stats.kills, stats.items, stats.secrets);
+        match outcome.exit {
+            Some(e) => println!(
+                "{}: exited ({}) after {ticks} ticks ({:.0} s of game time)",
+                map.label(),
+                if e == Exit::Secret { "secret exit" } else { "normal exit" },
+                ticks as f64 / f64::from(TICRATE)
+            ),
+            None => println!(
+                "{}: did not exit: {} (at {:.0}, {:.0})",
+                map.label(),
+                reason.unwrap_or_default(),
+                player.pos.x,
+                player.pos.y
+            ),
+        }
+        println!("kills {}/{}, items {}/{}, secrets {}/{}, health {}", k.0, k.1, i.0, i.1, s.0, s.1, player.health);
+        println!(
+            "planning: grid {:.0} ms, {} plans, {:.0} ms in all, worst {:.0} ms; {:.1} s of wall time",
+            figures.grid_seconds * 1e3,
+            figures.plans,
+            figures.plan_seconds * 1e3,
+            figures.worst_plan_seconds * 1e3,
+            seconds
+        );
+        if let Some(c) = &capture {
+            println!("wrote {} frames to {}", c.written, c.dir.display());
+        }
+    }
+    Ok(())
+}

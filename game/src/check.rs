@@ -1,0 +1,35 @@
+//! `sightline check`: a map maker's question, "can this level be
+//! finished?". The map is opened as play opens it (so every validation
+//! error is reported first, with its file and element), then
+//! [`sightline::autopilot::check`] says what the player can and cannot
+//! reach, as text or JSON, and `-o` draws it from above.
+
+use anyhow::{Context, Result};
+use sightline::bsp::BuildOptions;
+use sightline::campaign::{open, MapRef};
+use sightline::level::{check_not_input, write_atomic};
+
+use crate::cli::CheckArgs;
+
+pub fn run(args: &CheckArgs) -> Result<()> {
+    let map = MapRef::parse(&args.map, args.iwad.as_deref());
+    if let (MapRef::File(path), Some(out)) = (&map, &args.output) {
+        check_not_input(path, out)?;
+    }
+    let level = open(&map, &BuildOptions::default()).with_context(|| format!("{}: does not load", map.label()))?.level;
+    let (mut report, drawing) = sightline::autopilot::check::check(level, args.skill);
+    report.map = map.label();
+    if args.json {
+        println!("{}", serde_json::to_string(&report)?);
+    } else {
+        print!("{}", report.text());
+    }
+    if let Some(out) = &args.output {
+        let fb = drawing.draw(args.plan_size as usize, args.partitions);
+        write_atomic(out, &fb.to_png())?;
+        if !args.json {
+            println!("wrote the plan to {}", out.display());
+        }
+    }
+    Ok(())
+}
