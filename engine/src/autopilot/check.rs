@@ -124,8 +124,18 @@ fn flood(
 ) -> Vec<bool> {
     let none = BTreeSet::new();
     let spent = BTreeSet::new();
-    let w =
-        plan::World { nav, map: &level.compiled.map, mech, heights, blocked: solid, bad: &none, spent: &spent, hurts };
+    let shut = mech.shut_doors(&level.compiled.map);
+    let w = plan::World {
+        nav,
+        map: &level.compiled.map,
+        mech,
+        heights,
+        blocked: solid,
+        bad: &none,
+        spent: &spent,
+        hurts,
+        shut: &shut,
+    };
     search.run(&w, start, None);
     let mut reached = vec![false; nav.cells()];
     for &c in &search.reached {
@@ -174,7 +184,9 @@ fn closure(
         c.reached = flood(search, nav, level, mech, &c.heights, &t.solid, hurts, start);
         let mut changed = false;
         for &(colour, pos) in &t.keys {
-            if !c.keys.contains(&colour) && plan::cells_near(nav, pos, 20.0).cells().any(|x| c.reached[x as usize]) {
+            if !c.keys.contains(&colour)
+                && plan::cells_near(nav, pos, plan::TOUCH_REACH).cells().any(|x| c.reached[x as usize])
+            {
                 c.keys.push(colour);
                 changed = true;
             }
@@ -226,7 +238,8 @@ pub fn check(level: Level, skill: u8) -> (Report, Drawing) {
 fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
     let map = &level.compiled.map;
     let nav = NavGrid::new(&level.compiled);
-    let mech = Mechanisms::of(level);
+    let mut mech = Mechanisms::of(level);
+    mech.locate_doors(&nav, map);
     let t = things(level, &nav, skill);
     let hurts: Vec<bool> = map.sectors.iter().map(|s| s.special.damage.is_some()).collect();
     let mut search = Search::default();
@@ -250,7 +263,7 @@ fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
     let c = closure(&nav, level, &mech, &t, start, Vec::new(), &hurts, &mut search);
     let place = |what: String, p: DVec2, reachable: bool| Place { what, x: p.x, y: p.y, reachable };
     let near_reached =
-        |reached: &[bool], p: DVec2| plan::cells_near(&nav, p, 20.0).cells().any(|x| reached[x as usize]);
+        |reached: &[bool], p: DVec2| plan::cells_near(&nav, p, plan::TOUCH_REACH).cells().any(|x| reached[x as usize]);
 
     let mut exits = Vec::new();
     let mut exit_targets: Vec<(Targets, Option<LineId>)> = Vec::new();

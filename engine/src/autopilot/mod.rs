@@ -35,6 +35,11 @@ use plan::{line_of, Goal, Mechanisms, Purpose, Route, Search, Targets};
 const REPLAN_EVERY: u64 = 350;
 /// Ticks without progress along a route before the move is given up.
 const STUCK_TICKS: u32 = 70;
+/// A goal abandoned this often is not chosen again.
+const MAX_FAILURES: u32 = 3;
+/// Ticks to wait at a blocked move when nothing there moves and nothing can
+/// be done about it.
+const STILL_TICKS: u32 = 70;
 /// A monster further than this is not fought.
 const FIGHT_RANGE: f64 = 1400.0;
 
@@ -71,6 +76,8 @@ struct Active {
     idle: u32,
     /// Ticks spent waiting for a door or lift.
     waited: u32,
+    /// Ticks spent at a blocked move where nothing moves.
+    still: u32,
     /// Uses pressed at the goal.
     presses: u32,
     /// Ticks spent at the goal.
@@ -90,6 +97,9 @@ pub struct Autopilot {
     bad: BTreeMap<u32, u64>,
     /// Things it could not pick up.
     unreachable: BTreeSet<u32>,
+    /// Goals given up on, and how often: after [`MAX_FAILURES`] they are
+    /// not chosen again.
+    failures: BTreeMap<(u8, u32), u32>,
     /// Floor and ceiling heights last tick (to see what moves).
     last: Heights,
     last_pos: DVec2,
@@ -114,8 +124,9 @@ impl Autopilot {
         let started = std::time::Instant::now();
         let nav = NavGrid::new(&level.compiled);
         let figures = Figures { grid_seconds: started.elapsed().as_secs_f64(), ..Default::default() };
-        let mech = Mechanisms::of(level);
         let map = &level.compiled.map;
+        let mut mech = Mechanisms::of(level);
+        mech.locate_doors(&nav, map);
         let hurts = map.sectors.iter().map(|s| s.special.damage.is_some()).collect();
         Autopilot {
             nav,
@@ -125,6 +136,7 @@ impl Autopilot {
             tried: BTreeMap::new(),
             bad: BTreeMap::new(),
             unreachable: BTreeSet::new(),
+            failures: BTreeMap::new(),
             last: Heights::of(map),
             last_pos: game.player().pos,
             used_last: false,
@@ -281,6 +293,16 @@ impl Autopilot {
         cells
     }
 
+    /// Has `goal` been given up on too often?
+    fn failed(&self, goal: &Goal) -> bool {
+        self.failures.get(&goal.key()).is_some_and(|&n| n >= MAX_FAILURES)
+    }
+
+    /// Notes that the route to `goal` was given up.
+    fn give_up(&mut self, goal: &Goal) {
+        *self.failures.entry(goal.key()).or_insert(0) += 1;
+    }
+
     fn keys_held(game: &Game) -> Vec<KeyColour> {
         game.player().keys.iter().map(|k| k.colour).collect()
     }
@@ -304,6 +326,7 @@ impl Autopilot {
         let heights = plan::plan_heights(level, &self.mech, &keys, &spent);
         let blocked = self.blocked(game);
         let bad: BTreeSet<u32> = self.bad.keys().copied().collect();
+        let shut = self.mech.shut_doors(map);
         let start = self.nav.start_cell(game.player().pos, game.player().z, &heights)?;
         let world = plan::World {
             nav: &self.nav,
@@ -314,6 +337,7 @@ impl Autopilot {
             bad: &bad,
             spent: &spent,
             hurts: &self.hurts,
+            shut: &shut,
         };
         let nav = &self.nav;
         let active = |goal: Goal, purpose: Purpose, route: Route| Active {
@@ -323,6 +347,7 @@ impl Autopilot {
             at: 0,
             idle: 0,
             waited: 0,
+            still: 0,
             presses: 0,
             arrived: 0,
         };
@@ -348,6 +373,9 @@ impl Autopilot {
                     Some(Activation::Walk) => Goal::Cross(line),
                     _ => continue,
                 };
+                if self.failed(&goal) {
+                    continue;
+                }
                 let targets = plan::targets_of(nav, map, &goal);
                 if let Some(route) = self.search.run(&world, start, Some(&targets)) {
                     if best.as_ref().is_none_or(|b| route.cost < b.0.cost) {
@@ -365,10 +393,14 @@ impl Autopilot {
         for (i, a) in game.actors().list.iter().enumerate() {
             let def = &game.actors().table.actors[a.kind];
             let Some(colour) = def.key() else { continue };
-            if a.removed || keys.contains(&colour) || self.unreachable.contains(&(i as u32)) {
+            if a.removed
+                || keys.contains(&colour)
+                || self.unreachable.contains(&(i as u32))
+                || self.failed(&Goal::Touch(a.pos, i as u32))
+            {
                 continue;
             }
-            targets.add(plan::cells_near(nav, a.pos, 20.0));
+            targets.add(plan::cells_near(nav, a.pos, plan::TOUCH_REACH));
             wanted.push((i as u32, a.pos));
         }
         if !targets.is_empty() {
@@ -398,6 +430,9 @@ impl Autopilot {
                 Activation::Walk => Goal::Cross(line),
                 Activation::Shoot => continue,
             };
+            if self.failed(&goal) {
+                continue;
+            }
             let cost = match &goal {
                 Goal::Use(_) => plan::use_cells(nav, map, line).cells().filter_map(|c| self.search.cost_to(c)).min(),
                 _ => self.crossing_cost(line),
@@ -500,7 +535,7 @@ impl Autopilot {
             }
         }
         let (_, i, pos) = best?;
-        Some((Goal::Touch(pos, i), plan::cells_near(&self.nav, pos, 20.0)))
+        Some((Goal::Touch(pos, i), plan::cells_near(&self.nav, pos, plan::TOUCH_REACH)))
     }
 
     /// Follows the route: the input that moves along it, opens what is in
@@ -508,7 +543,8 @@ impl Autopilot {
     fn follow(&mut self, game: &Game) -> TickInput {
         let now = game.ticks();
         let pos = game.player().pos;
-        if self.active.is_none() || now >= self.next_replan {
+        let waiting = self.active.as_ref().is_some_and(|a| a.waited > 0);
+        if self.active.is_none() || (now >= self.next_replan && !waiting) {
             if now < self.settle_until && self.active.is_none() {
                 return TickInput::default();
             }
@@ -612,6 +648,7 @@ impl Autopilot {
                 self.bad.insert(c * 8 + d as u32, now + 35 * 30);
             }
             self.next_replan = now;
+            self.give_up(&a.goal);
             if a.idle > STUCK_TICKS + 1 {
                 return None;
             }
@@ -658,9 +695,10 @@ impl Autopilot {
         let player = game.player();
         let keys = Self::keys_held(game);
         a.waited += 1;
-        if a.waited > 35 * 12 {
+        if a.waited > 35 * 12 || a.still > STILL_TICKS {
             a.idle = STUCK_TICKS + 1;
             a.waited = 0;
+            a.still = 0;
             return None;
         }
         a.idle = 0;
@@ -711,6 +749,7 @@ impl Autopilot {
                             at: 0,
                             idle: 0,
                             waited: 0,
+                            still: 0,
                             presses: 0,
                             arrived: 0,
                         };
@@ -720,6 +759,7 @@ impl Autopilot {
             }
         }
         // Something else (a remote door, a floor on its way): wait a while.
+        a.still += 1;
         Some(self.hold(game))
     }
 
@@ -732,6 +772,7 @@ impl Autopilot {
         let heights = plan::plan_heights(level, &self.mech, &keys, &spent);
         let blocked = self.blocked(game);
         let bad: BTreeSet<u32> = self.bad.keys().copied().collect();
+        let shut = self.mech.shut_doors(map);
         let start = self.nav.start_cell(game.player().pos, game.player().z, &heights)?;
         let world = plan::World {
             nav: &self.nav,
@@ -742,6 +783,7 @@ impl Autopilot {
             bad: &bad,
             spent: &spent,
             hurts: &self.hurts,
+            shut: &shut,
         };
         let targets = plan::targets_of(&self.nav, map, goal);
         self.search.run(&world, start, Some(&targets))

@@ -134,8 +134,11 @@ impl NavGrid {
                 let (a, b) = map.line_points(line);
                 let d = distance_to_segment(p, a, b);
                 if line.back.is_none() || line.flags.impassable {
+                    // A solid line keeps the body off it: what is behind
+                    // it is never under the body.
                     ok &= d >= CLEAR;
                     room = room.min(d);
+                    continue;
                 }
                 if d >= RADIUS {
                     continue;

@@ -27,6 +27,9 @@ const LEDGE_COST: u32 = 25;
 /// Cost of a straight and a diagonal move.
 const STRAIGHT: u32 = 10;
 const DIAGONAL: u32 = 14;
+/// An item is picked up from a cell whose centre is this close: the
+/// body's box touches the item's (16 + 20 in Doom) even across a railing.
+pub const TOUCH_REACH: f64 = 30.0;
 /// A use spot: the cell's centre is at most this far from the line.
 const USE_REACH: f64 = USE_RANGE - 20.0;
 
@@ -49,6 +52,9 @@ pub struct Mechanisms {
     /// Per sector: the walls that open it as a manual door (used from their
     /// front, the door behind), with the key each needs.
     pub doors: Vec<Vec<(LineId, Option<KeyColour>)>>,
+    /// Per sector: the cells from which one of its manual door lines can
+    /// be used (sorted; see [`Mechanisms::locate_doors`]).
+    pub door_use: Vec<Vec<Cell>>,
     /// Per sector: the lines that lower it as a lift.
     pub lifts: Vec<Vec<LineId>>,
     /// Exit lines, and whether each is the secret exit.
@@ -64,8 +70,12 @@ impl Mechanisms {
     pub fn of(level: &Level) -> Mechanisms {
         let map = &level.compiled.map;
         let sectors = map.sectors.len();
-        let mut m =
-            Mechanisms { doors: vec![Vec::new(); sectors], lifts: vec![Vec::new(); sectors], ..Default::default() };
+        let mut m = Mechanisms {
+            doors: vec![Vec::new(); sectors],
+            door_use: vec![Vec::new(); sectors],
+            lifts: vec![Vec::new(); sectors],
+            ..Default::default()
+        };
         let ids = 0..(map.lines.len() + map.trigger_lines.len()) as u32;
         for id in ids {
             let (line, _, _, special) = line_of(map, id);
@@ -111,6 +121,29 @@ impl Mechanisms {
     }
 }
 
+impl Mechanisms {
+    /// Finds the cells each manual door can be opened from (a door opens
+    /// only from the front of one of its lines).
+    pub fn locate_doors(&mut self, nav: &NavGrid, map: &Map) {
+        for s in 0..self.doors.len() {
+            let mut cells = BTreeSet::new();
+            for &(line, _) in &self.doors[s] {
+                cells.extend(use_cells(nav, map, line).cells);
+            }
+            self.door_use[s] = cells.into_iter().collect();
+        }
+    }
+
+    /// Sectors that are manual doors shut in `map` as it stands.
+    pub fn shut_doors(&self, map: &Map) -> Vec<bool> {
+        (0..self.doors.len())
+            .map(|s| {
+                !self.doors[s].is_empty() && map.sectors[s].ceiling - map.sectors[s].floor < crate::play::player::HEIGHT
+            })
+            .collect()
+    }
+}
+
 /// Where a route ends and what is done there.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Goal {
@@ -120,6 +153,17 @@ pub enum Goal {
     Cross(LineId),
     /// Walk onto this spot (an item, a key).
     Touch(DVec2, u32),
+}
+
+impl Goal {
+    /// A key to remember the goal by.
+    pub fn key(&self) -> (u8, u32) {
+        match self {
+            Goal::Use(line) => (0, *line),
+            Goal::Cross(line) => (1, *line),
+            Goal::Touch(_, thing) => (2, *thing),
+        }
+    }
 }
 
 /// Why a goal was chosen, for the report.
@@ -176,6 +220,9 @@ pub struct World<'a> {
     pub spent: &'a BTreeSet<LineId>,
     /// Damaging sectors.
     pub hurts: &'a [bool],
+    /// Manual doors shut now (the heights assume them open): they can be
+    /// entered only from a cell they can be opened from.
+    pub shut: &'a [bool],
 }
 
 impl Search {
@@ -225,6 +272,13 @@ impl Search {
                 }
                 let to = w.nav.span(n, w.heights);
                 if !NavGrid::passable(from, to) {
+                    continue;
+                }
+                let here = w.nav.touched(c);
+                let door_shut = w.nav.touched(n).iter().any(|&s| {
+                    w.shut[s as usize] && !here.contains(&s) && w.mech.door_use[s as usize].binary_search(&c).is_err()
+                });
+                if door_shut {
                     continue;
                 }
                 let mut next = n;
@@ -382,7 +436,7 @@ pub fn targets_of(nav: &NavGrid, map: &Map, goal: &Goal) -> Targets {
     match goal {
         Goal::Use(line) => use_cells(nav, map, *line),
         Goal::Cross(line) => crossing_of(*line),
-        Goal::Touch(p, _) => cells_near(nav, *p, 20.0),
+        Goal::Touch(p, _) => cells_near(nav, *p, TOUCH_REACH),
     }
 }
 
