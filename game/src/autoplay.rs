@@ -5,65 +5,15 @@
 
 use anyhow::{Context, Result};
 use serde_json::json;
-use sightline::autopilot::{Autopilot, Status};
+use sightline::autopilot;
 use sightline::campaign::MapRef;
 use sightline::play::demo::Demo;
 use sightline::play::playthrough::{Phase, Playthrough};
-use sightline::play::{Exit, GameOptions, TickInput, TICRATE};
+use sightline::play::{Exit, GameOptions, TICRATE};
 use sightline::render::{RenderOptions, Renderer};
 
 use crate::cli::AutoplayArgs;
 use crate::replay::Capture;
-
-/// A run stuck this long (nothing left to try) is over.
-const GIVE_UP_STUCK: u64 = 35 * 60;
-
-/// How a run ended.
-pub struct Outcome {
-    pub exit: Option<Exit>,
-    pub died: bool,
-    pub stuck: Option<(sightline::autopilot::Point, String)>,
-    pub inputs: Vec<TickInput>,
-}
-
-/// Plays `play` with the autopilot until it exits, dies, gives up or runs
-/// `max_ticks`; `each` sees the playthrough after every tick.
-pub fn run_bot(
-    play: &mut Playthrough,
-    max_ticks: u64,
-    mut each: impl FnMut(&Playthrough, u64) -> Result<()>,
-) -> Result<(Outcome, Autopilot)> {
-    let mut bot = Autopilot::new(&play.game);
-    let mut inputs = Vec::new();
-    let mut stuck_since: Option<u64> = None;
-    let mut outcome = Outcome { exit: None, died: false, stuck: None, inputs: Vec::new() };
-    for tick in 1..=max_ticks {
-        let input = bot.tick(&play.game);
-        play.tick(&input)?;
-        inputs.push(input);
-        each(play, tick)?;
-        if let Phase::Intermission { exit, .. } = play.phase {
-            outcome.exit = Some(exit);
-            break;
-        }
-        if play.game.player().dead() {
-            outcome.died = true;
-            break;
-        }
-        match bot.status() {
-            Status::Stuck { at, why } => {
-                let since = *stuck_since.get_or_insert(tick);
-                if tick - since > GIVE_UP_STUCK {
-                    outcome.stuck = Some((*at, why.clone()));
-                    break;
-                }
-            }
-            Status::Playing => stuck_since = None,
-        }
-    }
-    outcome.inputs = inputs;
-    Ok((outcome, bot))
-}
 
 pub fn run(args: &AutoplayArgs) -> Result<()> {
     let map = MapRef::parse(&args.map, args.iwad.as_deref());
@@ -80,10 +30,18 @@ pub fn run(args: &AutoplayArgs) -> Result<()> {
         _ => None,
     };
     let started = std::time::Instant::now();
-    let (outcome, bot) = run_bot(&mut play, args.max_ticks, |play, tick| match &mut capture {
-        Some(c) if tick.is_multiple_of(c.every) => c.frame(play, tick),
-        _ => Ok(()),
+    let mut failed = None;
+    let (outcome, bot) = autopilot::run(&mut play, args.max_ticks, |play, tick| {
+        if let Some(c) = &mut capture {
+            if tick.is_multiple_of(c.every) && failed.is_none() {
+                failed = c.frame(play, tick).err();
+            }
+        }
+        failed.is_none()
     })?;
+    if let Some(e) = failed {
+        return Err(e);
+    }
     let seconds = started.elapsed().as_secs_f64();
     if std::env::var_os("SIGHTLINE_AUTOPILOT_LOG").is_some() {
         for line in &bot.log {

@@ -216,6 +216,13 @@ pub struct PlayArgs {
     /// stays on its last tick when it ends.
     #[arg(long)]
     pub demo: Option<PathBuf>,
+    /// Let the autopilot play (watch it find its way to the exit); it
+    /// goes on into the next map after each intermission.
+    #[arg(long, conflicts_with_all = ["demo", "load"])]
+    pub autopilot: bool,
+    /// Play without monsters (Doom's -nomonsters).
+    #[arg(long, conflicts_with_all = ["demo", "load"])]
+    pub no_monsters: bool,
     /// Start with the HUD hidden (H toggles it).
     #[arg(long)]
     pub no_hud: bool,

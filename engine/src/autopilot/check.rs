@@ -337,7 +337,15 @@ fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
         let mut seen = BTreeSet::new();
         for &(a, b, _) in &edges {
             if finish[a as usize] && !finish[b as usize] {
-                let (sa, sb) = (nav.centre[a as usize] as usize, nav.centre[b as usize] as usize);
+                // From the highest floor under the body before the move
+                // (the ledge), into the sector under it after.
+                let sa = nav
+                    .touched(a)
+                    .iter()
+                    .map(|&s| s as usize)
+                    .max_by(|&x, &y| c.heights.floor[x].total_cmp(&c.heights.floor[y]))
+                    .unwrap_or(0);
+                let sb = nav.centre[b as usize] as usize;
                 if seen.insert((sa, sb)) {
                     let adjacent = (0..8).any(|d| nav.neighbour(a, d) == Some(b));
                     let p = nav.centre_of(b);

@@ -189,6 +189,8 @@ impl Autopilot {
         } else {
             self.follow(game)
         };
+        // Using a line needs the body to face it: no fighting on that tick.
+        let fight = fight.filter(|_| !input.use_line);
         if let Some((angle, weapon)) = fight {
             // Face the enemy and fire, moving the way the route wanted.
             let wanted = player.angle + f64::from(input.turn);
@@ -209,7 +211,6 @@ impl Autopilot {
                 .and_then(|w| table.actors[w].weapon.as_ref())
                 .map(|w| w.slot);
             input.weapon = if in_hand == Some(weapon) { 0 } else { weapon };
-            input.use_line = false;
             if let Some(dir) = move_dir {
                 let rel = (dir - angle).to_radians();
                 let (s, c) = rel.sin_cos();
@@ -926,6 +927,62 @@ pub fn describe(map: &crate::map::Map, line: LineId) -> String {
     let (_, a, b, special) = line_of(map, line);
     let what = special.map_or("no special".to_string(), |s| format!("{:?} {:?} tag {}", s.on, s.action, s.tag));
     format!("line {line} ({:.0}, {:.0})-({:.0}, {:.0}) {what}", a.x, a.y, b.x, b.y)
+}
+
+/// A run stuck this long (nothing left to try) is over.
+const GIVE_UP_STUCK: u64 = 35 * 60;
+
+/// How an autopilot run ended.
+#[derive(Clone, Debug, Default)]
+pub struct Outcome {
+    /// It left the level, by this exit.
+    pub exit: Option<crate::play::Exit>,
+    pub died: bool,
+    /// Where it gave up, and why.
+    pub stuck: Option<(DVec2, String)>,
+    /// Every tick's input, from the first (a demo's).
+    pub inputs: Vec<TickInput>,
+}
+
+/// Plays `play`'s current level with a new autopilot until it exits, the
+/// player dies, the bot has been stuck a minute, `max_ticks` have run, or
+/// `each` (called after every tick with the tick number) says stop.
+pub fn run(
+    play: &mut crate::play::playthrough::Playthrough,
+    max_ticks: u64,
+    mut each: impl FnMut(&crate::play::playthrough::Playthrough, u64) -> bool,
+) -> Result<(Outcome, Autopilot), crate::play::playthrough::PlaythroughError> {
+    use crate::play::playthrough::Phase;
+    let mut bot = Autopilot::new(&play.game);
+    let mut outcome = Outcome::default();
+    let mut stuck_since: Option<u64> = None;
+    for tick in 1..=max_ticks {
+        let input = bot.tick(&play.game);
+        play.tick(&input)?;
+        outcome.inputs.push(input);
+        if !each(play, tick) {
+            break;
+        }
+        if let Phase::Intermission { exit, .. } = play.phase {
+            outcome.exit = Some(exit);
+            break;
+        }
+        if play.game.player().dead() {
+            outcome.died = true;
+            break;
+        }
+        match bot.status() {
+            Status::Stuck { at, why } => {
+                let since = *stuck_since.get_or_insert(tick);
+                if tick - since > GIVE_UP_STUCK {
+                    outcome.stuck = Some((*at, why.clone()));
+                    break;
+                }
+            }
+            Status::Playing => stuck_since = None,
+        }
+    }
+    Ok((outcome, bot))
 }
 
 /// The live heights, lifts at the height they are.

@@ -447,14 +447,21 @@ pub fn nearest_on(p: DVec2, a: DVec2, b: DVec2) -> DVec2 {
     a + d * t
 }
 
-/// Does the segment `p-q` cross no solid wall other than `line` itself (a
-/// use line's own wall)?
+/// Can a use reach from `p` to `q` on `line`: does the segment cross no
+/// wall that stops a use (one-sided, or two-sided with no opening: Doom's
+/// P_UseTraverse; an impassable flag does not stop it)?
 pub fn clear_between(map: &Map, p: DVec2, q: DVec2, line: LineId) -> bool {
     // Stop a hair short of the line itself.
     let q = p + (q - p) * 0.98;
     map.lines.iter().enumerate().all(|(i, l)| {
-        if i as u32 == line || (l.back.is_some() && !l.flags.impassable) {
+        if i as u32 == line {
             return true;
+        }
+        if let Some(back) = &l.back {
+            let (f, b) = (&map.sectors[l.front.sector], &map.sectors[back.sector]);
+            if f.ceiling.min(b.ceiling) > f.floor.max(b.floor) {
+                return true;
+            }
         }
         let (a, b) = map.line_points(l);
         crate::play::trace::crossing(p, q, a, b).is_none()

@@ -54,7 +54,7 @@ pub fn run(args: &PlayArgs) -> Result<()> {
     };
     let game_options = match &demo {
         Some(demo) => demo.options(),
-        None => GameOptions { skill: args.skill, seed: args.seed, no_monsters: false },
+        None => GameOptions { skill: args.skill, seed: args.seed, no_monsters: args.no_monsters },
     };
     let play = match &args.load {
         Some(save) => Playthrough::load(save)?,
@@ -65,6 +65,7 @@ pub fn run(args: &PlayArgs) -> Result<()> {
     let renderer = crate::replay::choose_renderer(args.renderer, play.game.level(), &play.map.label())?;
     let mut session = match demo {
         Some(demo) => Session::demo(play, demo.inputs),
+        None if args.autopilot => Session::autopilot(play, args.record.is_some()),
         None => Session::live(play, Controls::new(args.mouse_sensitivity), args.record.is_some()),
     };
 

@@ -7,6 +7,7 @@
 use std::path::Path;
 
 use anyhow::{bail, Context, Result};
+use sightline::autopilot::Autopilot;
 use sightline::play::events::Event;
 use sightline::play::playthrough::{Phase, Playthrough};
 use sightline::play::TickInput;
@@ -22,6 +23,8 @@ enum Source {
         inputs: Vec<TickInput>,
         next: usize,
     },
+    /// The autopilot, made afresh for each level (`None` between levels).
+    Autopilot(Option<Box<Autopilot>>),
 }
 
 pub struct Session {
@@ -48,6 +51,11 @@ impl Session {
         Session::with(play, Source::Demo { inputs, next: 0 }, false)
     }
 
+    /// The autopilot plays; the window only watches.
+    pub fn autopilot(play: Playthrough, record: bool) -> Session {
+        Session::with(play, Source::Autopilot(None), record)
+    }
+
     fn with(play: Playthrough, source: Source, record: bool) -> Session {
         Session {
             play,
@@ -70,7 +78,7 @@ impl Session {
     pub fn controls(&mut self) -> Option<&mut Controls> {
         match &mut self.source {
             Source::Live(controls) => Some(controls),
-            Source::Demo { .. } => None,
+            Source::Demo { .. } | Source::Autopilot(_) => None,
         }
     }
 
@@ -82,6 +90,7 @@ impl Session {
         for _ in 0..ticks {
             let input = match &mut self.source {
                 Source::Live(controls) => controls.tick_input(),
+                Source::Autopilot(bot) => autopilot_input(bot, &self.play),
                 Source::Demo { inputs, next } => match inputs.get(*next) {
                     Some(&input) => {
                         *next += 1;
@@ -146,6 +155,10 @@ impl Session {
         }
         self.play = Playthrough::load(path)?;
         self.finished = false;
+        if let Source::Autopilot(bot) = &mut self.source {
+            // A new bot for the loaded game.
+            *bot = None;
+        }
         if let Some(sound) = &mut self.sound {
             sound.restart();
         }
@@ -158,4 +171,19 @@ impl Session {
     pub fn take_recording(&mut self) -> Option<Vec<TickInput>> {
         self.recording.take()
     }
+}
+
+/// The autopilot's input: on a level, the bot's (a new bot for a new level
+/// or a restart); in an intermission or when dead, a press every other tick
+/// to go on.
+fn autopilot_input(bot: &mut Option<Box<Autopilot>>, play: &Playthrough) -> TickInput {
+    let game = &play.game;
+    if play.phase != Phase::Playing || game.player().dead() {
+        *bot = None;
+        return TickInput { use_line: play.ticks % 2 == 0, ..TickInput::default() };
+    }
+    if game.ticks() == 0 {
+        *bot = None;
+    }
+    bot.get_or_insert_with(|| Box::new(Autopilot::new(game))).tick(game)
 }

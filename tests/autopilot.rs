@@ -1,0 +1,149 @@
+//! The autopilot: on small maps that each need one mechanism (a lift, a
+//! switch and its remote door, a key and its door, a teleporter, a one-way
+//! drop) it reaches the exit through its inputs alone, and the mechanism was
+//! really used; `check` finds a map's unreachable secret and its soft lock;
+//! a recorded run replays to the same state; and Freedoom's E1M1 is finished.
+
+use glam::DVec2;
+use sightline::autopilot::{self, check};
+use sightline::campaign::MapRef;
+use sightline::level::open_level;
+use sightline::play::playthrough::Playthrough;
+use sightline::play::{Exit, GameOptions};
+use sightline_tests::{freedoom_wads, root};
+
+/// A file under the repository root.
+fn map_path(rel: &str) -> std::path::PathBuf {
+    root().join(rel)
+}
+
+fn map(name: &str) -> MapRef {
+    MapRef::File(map_path(&format!("tests/maps/autopilot_{name}.ron")))
+}
+
+/// Plays `name` without monsters until the exit (at most a minute of game
+/// time), calling `watch` after every tick; panics unless it exits.
+fn finish(name: &str, mut watch: impl FnMut(&Playthrough)) -> Playthrough {
+    let options = GameOptions { no_monsters: true, ..GameOptions::default() };
+    let mut play = Playthrough::of(&map(name), options).unwrap_or_else(|e| panic!("{e}"));
+    let (outcome, bot) = autopilot::run(&mut play, 35 * 60, |play, _| {
+        watch(play);
+        true
+    })
+    .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(outcome.exit, Some(Exit::Normal), "{name}: did not exit: {outcome:?}\n{}", bot.log.join("\n"));
+    play
+}
+
+#[test]
+fn the_autopilot_rides_a_lift_up_to_the_exit() {
+    let mut lowest = f64::MAX;
+    let mut highest_feet = f64::MIN;
+    finish("lift", |play| {
+        lowest = lowest.min(play.game.level().compiled.map.sectors[1].floor);
+        highest_feet = highest_feet.max(play.game.player().z);
+    });
+    assert_eq!(lowest, 0.0, "the lift was never called down");
+    assert_eq!(highest_feet, 128.0, "the player never rode up");
+}
+
+#[test]
+fn the_autopilot_presses_a_switch_that_opens_a_remote_door() {
+    let play = finish("remote_door", |_| {});
+    let door = &play.game.level().compiled.map.sectors[1];
+    assert!(door.ceiling - door.floor >= 56.0, "the door is shut: {door:?}");
+}
+
+#[test]
+fn the_autopilot_fetches_the_key_before_its_door() {
+    let play = finish("key_door", |_| {});
+    let keys = &play.game.player().keys;
+    assert!(keys.iter().any(|k| k.colour == sightline::map::special::KeyColour::Blue), "no blue key: {keys:?}");
+}
+
+#[test]
+fn the_autopilot_takes_a_teleporter() {
+    let mut jumped = false;
+    let mut last: Option<DVec2> = None;
+    finish("teleporter", |play| {
+        let p = play.game.player().pos;
+        jumped |= last.is_some_and(|q| q.distance(p) > 100.0);
+        last = Some(p);
+    });
+    assert!(jumped, "the player never teleported");
+}
+
+#[test]
+fn the_autopilot_jumps_down_a_one_way_drop() {
+    let mut feet = Vec::new();
+    let play = finish("drop", |play| feet.push(play.game.player().z));
+    assert_eq!(feet.first(), Some(&96.0));
+    assert_eq!(play.game.player().z, 0.0);
+}
+
+#[test]
+fn check_finds_the_unreachable_secret_and_the_soft_lock() {
+    let level = open_level(&map_path("tests/maps/autopilot_flawed.ron"), &Default::default()).unwrap();
+    let (report, drawing) = check::check(level, 3);
+    assert!(report.exit_reachable, "{}", report.text());
+    assert_eq!(report.secrets.len(), 1);
+    assert!(!report.secrets[0].reachable, "{}", report.text());
+    assert!(report.items.iter().all(|i| !i.reachable), "the medikit is on the secret platform: {}", report.text());
+    assert!(!report.soft_locks.is_empty(), "{}", report.text());
+    for s in &report.soft_locks {
+        assert_eq!((s.from_sector, s.to_sector), (0, 2), "{}", report.text());
+        assert!(s.y < 0.0, "a soft lock outside the pit: {s:?}");
+    }
+    let text = report.text();
+    assert!(text.contains("secret sector 1") && text.contains("NOT reachable") && text.contains("soft lock"), "{text}");
+    // The route drawn is the bot's own, from the start to the exit.
+    assert!(drawing.route.len() > 10, "{:?}", drawing.route);
+    let png = drawing.draw(400, true).to_png();
+    assert!(png.len() > 1000);
+}
+
+#[test]
+fn check_finds_no_flaw_in_the_mechanism_maps() {
+    for name in ["lift", "remote_door", "key_door", "teleporter", "drop"] {
+        let level = open_level(&map_path(&format!("tests/maps/autopilot_{name}.ron")), &Default::default()).unwrap();
+        let (report, _) = check::check(level, 3);
+        assert!(report.exit_reachable, "{name}: {}", report.text());
+        assert!(report.soft_locks.is_empty(), "{name}: {}", report.text());
+        assert!(report.keys.iter().all(|k| k.reachable), "{name}: {}", report.text());
+    }
+}
+
+#[test]
+fn check_says_a_key_behind_its_own_door_is() {
+    let moved = map_path("tests/maps/autopilot_key_behind_door.ron");
+    let (report, _) = check::check(open_level(&moved, &Default::default()).unwrap(), 3);
+    assert!(!report.exit_reachable, "{}", report.text());
+    assert_eq!(report.keys.len(), 1);
+    assert!(!report.keys[0].reachable && report.keys[0].behind_own_door, "{}", report.text());
+}
+
+#[test]
+fn a_recorded_autopilot_run_with_monsters_replays_to_the_same_state() {
+    let map = MapRef::File(map_path("maps/outpost.ron"));
+    let options = GameOptions { skill: 2, seed: 5, no_monsters: false };
+    let mut play = Playthrough::of(&map, options).unwrap();
+    let (outcome, _) = autopilot::run(&mut play, 35 * 40, |_, _| true).unwrap();
+    assert!(play.game.stats().kills.0 > 0 || outcome.exit.is_some(), "no fight in 40 s: {outcome:?}");
+    let mut again = Playthrough::of(&map, options).unwrap();
+    for input in &outcome.inputs {
+        again.tick(input).unwrap();
+    }
+    assert_eq!(again.ticks, play.ticks);
+    assert!(again.game.state_bytes() == play.game.state_bytes(), "the replay's state differs");
+}
+
+#[test]
+#[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
+fn the_autopilot_finishes_freedoom_e1m1_without_monsters() {
+    let wad = freedoom_wads::path("freedoom1.wad");
+    let map = MapRef::Wad { wads: vec![wad], map: Some("E1M1".into()) };
+    let options = GameOptions { no_monsters: true, ..GameOptions::default() };
+    let mut play = Playthrough::of(&map, options).unwrap();
+    let (outcome, bot) = autopilot::run(&mut play, 35 * 60 * 20, |_, _| true).unwrap();
+    assert!(outcome.exit.is_some(), "{outcome:?}\n{}", bot.log.join("\n"));
+}
