@@ -618,7 +618,7 @@ impl Autopilot {
             return None;
         }
         let last = cells.len() - 1;
-        if a.at >= last || (a.at + 1 == last && self.nav.centre_of(cells[last]).distance(pos) < 20.0) {
+        if a.arrived > 0 || a.at >= last || (a.at + 1 == last && self.nav.centre_of(cells[last]).distance(pos) < 20.0) {
             return self.arrive(game, a);
         }
         // The next move: can it be made now, as the level stands?
@@ -833,8 +833,8 @@ impl Autopilot {
         if crate::geom::front_distance(a, b, pos) <= 0.0 || near.distance(pos) > crate::play::USE_RANGE - 2.0 {
             return None;
         }
-        // Aim a little inside the line's ends.
-        let inset = plan::nearest_on(pos, a + (b - a) * 0.1, b - (b - a) * 0.1);
+        // Aim at the part of the line in front, a little inside its ends.
+        let inset = plan::nearest_on(pos, a + (b - a) * 0.2, b - (b - a) * 0.2);
         let d = inset - pos;
         let turn = turn_to(game.player().angle, d.y.atan2(d.x).to_degrees());
         Some(TickInput { turn: turn as f32, use_line: !self.used_last, ..self.hold(game) })
@@ -846,27 +846,40 @@ impl Autopilot {
         a.arrived += 1;
         match a.goal.clone() {
             Goal::Use(line) => {
-                if let Some(input) = self.use_line(game, line) {
-                    if input.use_line {
-                        a.presses += 1;
-                    }
-                    if a.presses >= 2 || a.arrived > 70 {
-                        self.tried.insert(line, now);
-                        self.settle_until = now + 35;
-                        self.next_replan = now + 35;
-                        return None;
-                    }
-                    return Some(input);
-                }
-                // Not quite in reach: edge towards the line.
+                // Stop square in front of the line's middle, face it, and
+                // press (twice, a tick apart, in case the first was early).
                 let (_, p, q, _) = line_of(&game.level().compiled.map, line);
-                let target = plan::nearest_on(game.player().pos, p, q);
-                if a.arrived > 70 {
+                let normal = {
+                    let d = (q - p).normalize_or_zero();
+                    DVec2::new(d.y, -d.x)
+                };
+                let spot = (p + q) / 2.0 + normal * 30.0;
+                let player = game.player();
+                let settled = player.velocity.length() < 1.5;
+                let close = player.pos.distance(spot) < 10.0;
+                if a.arrived > 105 {
                     self.tried.insert(line, now);
                     self.next_replan = now;
                     return None;
                 }
-                Some(self.drive_to(game, target, true))
+                if a.presses >= 2 {
+                    self.tried.insert(line, now);
+                    self.settle_until = now + 35;
+                    self.next_replan = now + 35;
+                    return None;
+                }
+                if (close && settled) || a.arrived > 60 || a.presses > 0 {
+                    if let Some(input) = self.use_line(game, line) {
+                        if input.use_line {
+                            a.presses += 1;
+                        }
+                        return Some(input);
+                    }
+                }
+                if close {
+                    return Some(self.hold(game));
+                }
+                Some(self.drive_to(game, spot, true))
             }
             Goal::Cross(line) => {
                 // The route ends past the line; the crossing is noted.
