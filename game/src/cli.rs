@@ -87,6 +87,36 @@ pub enum BenchCommand {
     /// Time render_frame over a map's things tour (the player start, then
     /// every thing's position looking eight ways).
     Tour(BenchTourArgs),
+    /// Time the autopilot: planning per map (the navigation grid and every
+    /// goal choice), and ticks per second of autoplay with rendering off
+    /// and on.
+    Autopilot(BenchAutopilotArgs),
+}
+
+#[derive(Args)]
+pub struct BenchAutopilotArgs {
+    /// Maps: RON files, compiled maps or `WAD:MAP`; `WAD:all` is every map
+    /// of the WAD.
+    #[arg(required = true)]
+    pub maps: Vec<String>,
+    /// Ticks of autoplay per map (it stops early at the exit).
+    #[arg(long, default_value_t = 3_000)]
+    pub ticks: u64,
+    /// Frame size of the rendering-on run, WxH.
+    #[arg(long, default_value = "320x200", value_parser = parse_size)]
+    pub size: (usize, usize),
+    /// Threads drawing each frame.
+    #[arg(long, default_value_t = 1, value_parser = parse_threads)]
+    pub threads: usize,
+    /// Skill level 1 to 5.
+    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(1..=5))]
+    pub skill: u8,
+    /// Play without monsters.
+    #[arg(long)]
+    pub no_monsters: bool,
+    /// Also print one JSON object per map.
+    #[arg(long)]
+    pub json: bool,
 }
 
 #[derive(Args)]

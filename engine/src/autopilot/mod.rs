@@ -35,6 +35,8 @@ use plan::{line_of, Goal, Mechanisms, Purpose, Route, Search, Targets};
 const REPLAN_EVERY: u64 = 350;
 /// Ticks without progress along a route before the move is given up.
 const STUCK_TICKS: u32 = 70;
+/// Times the bot starts over (every switch untried) when it runs out of goals.
+const MAX_ROUNDS: u32 = 2;
 /// A goal abandoned this often is not chosen again.
 const MAX_FAILURES: u32 = 3;
 /// Ticks to wait at a blocked move when nothing there moves and nothing can
@@ -116,6 +118,8 @@ pub struct Autopilot {
     pub log: Vec<String>,
     /// Hurting sectors, by index.
     hurts: Vec<bool>,
+    /// Times everything was tried again after running out of goals.
+    rounds: u32,
 }
 
 impl Autopilot {
@@ -148,6 +152,7 @@ impl Autopilot {
             sight: sight::Scratch::default(),
             log: Vec::new(),
             hurts,
+            rounds: 0,
         }
     }
 
@@ -467,8 +472,10 @@ impl Autopilot {
                 best = Some((usize::MAX, cost, line, goal));
                 break;
             }
+            // A key coming within reach is worth more than any floor space.
+            let key_opens = !targets.is_empty() && self.search.run(&world, start, Some(&targets)).is_some();
             self.search.run(&world, start, None);
-            let gain = self.search.reached.len().saturating_sub(base);
+            let gain = self.search.reached.len().saturating_sub(base) + if key_opens { 1_000_000 } else { 0 };
             if gain > 8 && best.as_ref().is_none_or(|b| gain > b.0 * 2 || (gain * 2 > b.0 && cost < b.1)) {
                 best = Some((gain, cost, line, goal));
             } else if unknown.is_none() {
@@ -565,6 +572,24 @@ impl Autopilot {
                     ));
                     self.active = Some(a);
                     self.status = Status::Playing;
+                }
+                None if self.rounds < MAX_ROUNDS => {
+                    // Nothing left to try: try everything again once more
+                    // (a switch pressed while its sector was busy did
+                    // nothing; a move given up may work now).
+                    self.rounds += 1;
+                    self.tried.retain(|&l, _| {
+                        line_of(&game.level().compiled.map, l).3.is_some_and(|s| !s.repeat && s.on == Activation::Walk)
+                    });
+                    self.failures.clear();
+                    self.unreachable.clear();
+                    self.bad.clear();
+                    self.log.push(format!(
+                        "tick {now}: at ({:.0}, {:.0}) nothing left: trying everything again",
+                        pos.x, pos.y
+                    ));
+                    self.next_replan = now + 1;
+                    return TickInput::default();
                 }
                 None => {
                     self.active = None;
@@ -742,7 +767,12 @@ impl Autopilot {
                         Some(Activation::Walk) => Goal::Cross(line),
                         _ => continue,
                     };
+                    if a.purpose == Purpose::Lift {
+                        // Already on a detour to call a lift: do not nest.
+                        break;
+                    }
                     if let Some(route) = self.route_to(game, &goal) {
+                        self.give_up(&a.goal);
                         *a = Active {
                             goal,
                             purpose: Purpose::Lift,

@@ -94,7 +94,9 @@ impl Mechanisms {
                 }
                 Action::Lift { .. } | Action::PerpetualLift { .. } => {
                     for &s in &targets {
-                        m.lifts[s].push(id);
+                        if callable_from_below(level, id, special.on, s) {
+                            m.lifts[s].push(id);
+                        }
                     }
                 }
                 Action::Exit => m.exits.push((id, false)),
@@ -119,6 +121,35 @@ impl Mechanisms {
         }
         m
     }
+}
+
+/// Can the player call lift `lift` down with `line` from below it: a
+/// switch whose front is off the lift and low enough to stand on, or a walk
+/// line with a side that low (a line only reached from the top is for
+/// coming down, which a drop does anyway)?
+fn callable_from_below(level: &Level, id: LineId, on: Activation, lift: usize) -> bool {
+    let map = &level.compiled.map;
+    let low = specials::lowest_floor_around(level, lift);
+    let (sl, a, b, _) = line_of(map, id);
+    let sides: Vec<(usize, bool)> = match sl {
+        SpecialLine::Wall(i) => {
+            let line = &map.lines[i];
+            std::iter::once((line.front.sector, true)).chain(line.back.as_ref().map(|s| (s.sector, false))).collect()
+        }
+        SpecialLine::Trigger(_) => {
+            let d = (b - a).normalize_or_zero();
+            let normal = DVec2::new(d.y, -d.x) * 8.0;
+            let mid = (a + b) / 2.0;
+            [(mid + normal, true), (mid - normal, false)]
+                .into_iter()
+                .filter_map(|(p, front)| Some((level.compiled.locate(p)?, front)))
+                .collect()
+        }
+    };
+    sides.iter().any(|&(sector, front)| {
+        let usable_side = on != Activation::Use || front;
+        usable_side && sector != lift && map.sectors[sector].floor <= low + crate::play::player::MAX_STEP
+    })
 }
 
 impl Mechanisms {

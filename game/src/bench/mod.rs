@@ -3,6 +3,7 @@
 //! [`crate::suite`]); `bench tour` times `render_frame` over a fixed tour of
 //! one map.
 
+mod autopilot;
 mod tour;
 
 use anyhow::Result;
@@ -12,6 +13,7 @@ use crate::cli::{BenchArgs, BenchCommand};
 pub fn run(args: &BenchArgs) -> Result<()> {
     match &args.command {
         Some(BenchCommand::Tour(tour)) => tour::run(tour),
+        Some(BenchCommand::Autopilot(a)) => autopilot::run(a),
         None => crate::suite::run(&args.suite),
     }
 }
