@@ -448,6 +448,14 @@ impl Autopilot {
             }
         }
         candidates.sort_by_key(|c| (c.0, c.1));
+        if std::env::var_os("SIGHTLINE_AUTOPILOT_TRACE").is_some() {
+            eprintln!(
+                "choose: start {start}, reached {base}, {} candidates, {} triggers, tried {}",
+                candidates.len(),
+                self.mech.triggers.len(),
+                self.tried.len()
+            );
+        }
         let mut unknown: Option<(u32, LineId, Goal)> = None;
         let mut best: Option<(usize, u32, LineId, Goal)> = None;
         for (cost, line, goal) in candidates.iter().take(16).cloned() {

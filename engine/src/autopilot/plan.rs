@@ -123,10 +123,10 @@ impl Mechanisms {
     }
 }
 
-/// Can the player call lift `lift` down with `line` from below it: a
-/// switch whose front is off the lift and low enough to stand on, or a walk
-/// line with a side that low (a line only reached from the top is for
-/// coming down, which a drop does anyway)?
+/// Can the player call lift `lift` down with `line`: a switch (from its
+/// front), or a walk line with a side off the lift low enough to stand on
+/// (a walk line only reached from the top is for coming down, which a drop
+/// does anyway)?
 fn callable_from_below(level: &Level, id: LineId, on: Activation, lift: usize) -> bool {
     let map = &level.compiled.map;
     let low = specials::lowest_floor_around(level, lift);
@@ -146,9 +146,10 @@ fn callable_from_below(level: &Level, id: LineId, on: Activation, lift: usize) -
                 .collect()
         }
     };
-    sides.iter().any(|&(sector, front)| {
-        let usable_side = on != Activation::Use || front;
-        usable_side && sector != lift && map.sectors[sector].floor <= low + crate::play::player::MAX_STEP
+    sides.iter().any(|&(sector, front)| match on {
+        // A switch works from its front, on the lift or off it.
+        Activation::Use => front,
+        _ => sector != lift && map.sectors[sector].floor <= low + crate::play::player::MAX_STEP,
     })
 }
 
