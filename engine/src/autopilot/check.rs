@@ -159,6 +159,7 @@ fn goal_targets(nav: &NavGrid, level: &Level, line: LineId) -> (Targets, Option<
     match line_of(map, line).3.map(|s| s.on) {
         Some(Activation::Use) => (plan::use_cells(nav, map, line), None),
         Some(Activation::Walk) => (Targets::default(), Some(line)),
+        Some(Activation::Shoot) => (plan::shoot_cells(nav, map, line), None),
         _ => (Targets::default(), None),
     }
 }

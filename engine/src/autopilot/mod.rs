@@ -434,13 +434,15 @@ impl Autopilot {
             let goal = match special.on {
                 Activation::Use => Goal::Use(line),
                 Activation::Walk => Goal::Cross(line),
-                Activation::Shoot => continue,
+                Activation::Shoot => Goal::Shoot(line),
             };
             if self.failed(&goal) {
                 continue;
             }
             let cost = match &goal {
-                Goal::Use(_) => plan::use_cells(nav, map, line).cells().filter_map(|c| self.search.cost_to(c)).min(),
+                Goal::Use(_) | Goal::Shoot(_) => {
+                    plan::targets_of(nav, map, &goal).cells().filter_map(|c| self.search.cost_to(c)).min()
+                }
                 _ => self.crossing_cost(line),
             };
             if let Some(cost) = cost {
@@ -490,10 +492,11 @@ impl Autopilot {
                 unknown = Some((cost, line, goal));
             }
         }
+        // The pick first, then the rest by distance.
         let pick = best.map(|b| (b.2, b.3)).or(unknown.map(|u| (u.1, u.2)));
-        if let Some((_, goal)) = pick {
+        let world = plan::World { heights: &heights, ..world };
+        for (_, goal) in pick.into_iter().chain(candidates.into_iter().map(|c| (c.1, c.2))) {
             let targets = plan::targets_of(nav, map, &goal);
-            let world = plan::World { heights: &heights, ..world };
             if let Some(route) = self.search.run(&world, start, Some(&targets)) {
                 return Some(active(goal, Purpose::Trigger, route));
             }
@@ -511,7 +514,8 @@ impl Autopilot {
             let mut best = None;
             for &c in &self.search.reached {
                 for d in 0..4 {
-                    if self.nav.crossings_of(c, d).any(|(l, _)| l == line) {
+                    let across = self.nav.neighbour(c, d).is_some_and(|n| self.search.was_reached(n));
+                    if across && self.nav.crossings_of(c, d).any(|(l, _)| l == line) {
                         let cost = self.search.cost_to(c).unwrap_or(u32::MAX);
                         best = Some(best.map_or(cost, |b: u32| b.min(cost)));
                     }
@@ -568,7 +572,7 @@ impl Autopilot {
             match self.choose(game) {
                 Some(a) => {
                     let what = match &a.goal {
-                        Goal::Use(l) | Goal::Cross(l) => describe(&game.level().compiled.map, *l),
+                        Goal::Use(l) | Goal::Cross(l) | Goal::Shoot(l) => describe(&game.level().compiled.map, *l),
                         Goal::Touch(p, _) => format!("({:.0}, {:.0})", p.x, p.y),
                     };
                     self.log.push(format!(
@@ -918,6 +922,33 @@ impl Autopilot {
                     return Some(self.hold(game));
                 }
                 Some(self.drive_to(game, spot, true))
+            }
+            Goal::Shoot(line) => {
+                // Stop, face the line's middle and fire a few shots.
+                let (_, p, q, _) = line_of(&game.level().compiled.map, line);
+                let d = (p + q) / 2.0 - game.player().pos;
+                let turn = turn_to(game.player().angle, d.y.atan2(d.x).to_degrees());
+                if a.arrived > 70 {
+                    self.tried.insert(line, now);
+                    self.settle_until = now + 35;
+                    self.next_replan = now + 35;
+                    return None;
+                }
+                let still = game.player().velocity.length() < 1.0;
+                let weapon = weapon_for(game, d.length());
+                let table = &game.actors().table;
+                let player = game.player();
+                let in_hand = player
+                    .pending_weapon
+                    .or(player.ready_weapon)
+                    .and_then(|w| table.actors[w].weapon.as_ref())
+                    .map(|w| w.slot);
+                Some(TickInput {
+                    turn: turn as f32,
+                    fire: still && a.arrived % 8 < 4,
+                    weapon: if in_hand == Some(weapon) { 0 } else { weapon },
+                    ..self.hold(game)
+                })
             }
             Goal::Cross(line) => {
                 // The route ends past the line; the crossing is noted.

@@ -112,7 +112,7 @@ impl Mechanisms {
                 | Action::Ceiling { .. }
                 | Action::Stairs { .. }
                 | Action::Donut { .. }
-                    if !targets.is_empty() && special.on != Activation::Shoot =>
+                    if !targets.is_empty() =>
                 {
                     m.triggers.push(id)
                 }
@@ -183,6 +183,8 @@ pub enum Goal {
     Use(LineId),
     /// Walk over this line.
     Cross(LineId),
+    /// Shoot this line (Doom's G lines).
+    Shoot(LineId),
     /// Walk onto this spot (an item, a key).
     Touch(DVec2, u32),
 }
@@ -194,6 +196,7 @@ impl Goal {
             Goal::Use(line) => (0, *line),
             Goal::Cross(line) => (1, *line),
             Goal::Touch(_, thing) => (2, *thing),
+            Goal::Shoot(line) => (3, *line),
         }
     }
 }
@@ -469,7 +472,26 @@ pub fn targets_of(nav: &NavGrid, map: &Map, goal: &Goal) -> Targets {
         Goal::Use(line) => use_cells(nav, map, *line),
         Goal::Cross(line) => crossing_of(*line),
         Goal::Touch(p, _) => cells_near(nav, *p, TOUCH_REACH),
+        Goal::Shoot(line) => shoot_cells(nav, map, *line),
     }
+}
+
+/// A shot line is shot from a cell this close to its middle.
+const SHOOT_REACH: f64 = 384.0;
+
+/// The cells from which a shot at the middle of `line` reaches it (nothing
+/// that stops a use stops it first: a one-sided wall or a closed opening).
+pub fn shoot_cells(nav: &NavGrid, map: &Map, line: LineId) -> Targets {
+    let (_, a, b, _) = line_of(map, line);
+    let mid = (a + b) / 2.0;
+    let mut t = Targets::default();
+    for c in cells_near(nav, mid, SHOOT_REACH).cells() {
+        let p = nav.centre_of(c);
+        if p.distance(mid) > 48.0 && clear_between(map, p, mid, line) {
+            t.cells.insert(c);
+        }
+    }
+    t
 }
 
 /// The point of segment `a-b` nearest `p`.
