@@ -147,3 +147,53 @@ fn the_autopilot_finishes_freedoom_e1m1_without_monsters() {
     let (outcome, bot) = autopilot::run(&mut play, 35 * 60 * 20, |_, _| true).unwrap();
     assert!(outcome.exit.is_some(), "{outcome:?}\n{}", bot.log.join("\n"));
 }
+
+/// Every map of a Freedoom IWAD autoplayed without monsters on skill 3, two
+/// at a time: the maps that exit within 20 minutes of game time, and a
+/// table of how each went (printed; `--nocapture` shows it).
+const FREEDOOM1_FLOOR: usize = 14;
+const FREEDOOM2_FLOOR: usize = 13;
+
+fn autoplay_wad(wad: &str) -> Vec<(String, bool, String)> {
+    let path = freedoom_wads::path(wad);
+    let names = sightline::wad::Wad::open(&path).unwrap().map_names();
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let results = std::sync::Mutex::new(Vec::new());
+    let workers = std::thread::available_parallelism().map_or(2, |n| n.get()).min(4);
+    std::thread::scope(|s| {
+        for _ in 0..workers {
+            s.spawn(|| loop {
+                let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                let Some(name) = names.get(i) else { break };
+                let map = MapRef::Wad { wads: vec![path.clone()], map: Some(name.clone()) };
+                let options = GameOptions { no_monsters: true, ..GameOptions::default() };
+                let mut play = Playthrough::of(&map, options).unwrap_or_else(|e| panic!("{name}: {e}"));
+                let (outcome, _) = autopilot::run(&mut play, 35 * 60 * 20, |_, _| true).unwrap();
+                let how = match (&outcome.exit, outcome.died, &outcome.stuck) {
+                    (Some(e), _, _) => format!("{e:?} exit after {} s", outcome.inputs.len() / 35),
+                    (None, true, _) => "died".to_string(),
+                    (None, false, Some((at, why))) => format!("stuck at ({:.0}, {:.0}): {why}", at.x, at.y),
+                    (None, false, None) => "out of time".to_string(),
+                };
+                results.lock().unwrap().push((name.clone(), outcome.exit.is_some(), how));
+            });
+        }
+    });
+    let mut results = results.into_inner().unwrap();
+    results.sort();
+    for (name, _, how) in &results {
+        eprintln!("{wad} {name}: {how}");
+    }
+    results
+}
+
+#[test]
+#[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
+fn the_autopilot_finishes_most_of_freedoom_without_monsters() {
+    for (wad, floor) in [("freedoom1.wad", FREEDOOM1_FLOOR), ("freedoom2.wad", FREEDOOM2_FLOOR)] {
+        let results = autoplay_wad(wad);
+        let exited = results.iter().filter(|r| r.1).count();
+        eprintln!("{wad}: {exited} of {} maps exited", results.len());
+        assert!(exited >= floor, "{wad}: only {exited} of {} maps exited (at least {floor} did before)", results.len());
+    }
+}

@@ -26,6 +26,7 @@ pub type Point = DVec2;
 
 use crate::actors::{ActorFlag, Category};
 use crate::map::special::{Activation, KeyColour};
+use crate::play::events::Event;
 use crate::play::sight::{self, Body};
 use crate::play::{Game, TickInput};
 use nav::{Cell, Heights, LineId, NavGrid, CELL, DIRS};
@@ -302,6 +303,12 @@ impl Autopilot {
     /// Has `goal` been given up on too often?
     fn failed(&self, goal: &Goal) -> bool {
         self.failures.get(&goal.key()).is_some_and(|&n| n >= MAX_FAILURES)
+    }
+
+    /// Has `goal` been given up on before (twice: a switch that still does
+    /// nothing is taken as used)?
+    fn failed_once(&self, goal: &Goal) -> bool {
+        self.failures.get(&goal.key()).is_some_and(|&n| n >= 2)
     }
 
     /// Notes that the route to `goal` was given up.
@@ -733,7 +740,10 @@ impl Autopilot {
         let player = game.player();
         let keys = Self::keys_held(game);
         a.waited += 1;
-        if a.waited > 35 * 12 || a.still > STILL_TICKS {
+        // Waiting on a floor that hurts is short.
+        let hurting = self.hurts.get(player.sector).copied().unwrap_or(false);
+        let patience = if hurting { 35 * 2 } else { 35 * 12 };
+        if a.waited > patience || a.still > STILL_TICKS {
             a.idle = STUCK_TICKS + 1;
             a.waited = 0;
             a.still = 0;
@@ -895,7 +905,10 @@ impl Autopilot {
                     let d = (q - p).normalize_or_zero();
                     DVec2::new(d.y, -d.x)
                 };
-                let spot = (p + q) / 2.0 + normal * 30.0;
+                // The middle first; after a press that did nothing, a quarter
+                // of the way along, then three quarters.
+                let along = [0.5, 0.25, 0.75][self.failures.get(&a.goal.key()).map_or(0, |&n| n as usize % 3)];
+                let spot = p + (q - p) * along + normal * 30.0;
                 let player = game.player();
                 let settled = player.velocity.length() < 1.5;
                 let close = player.pos.distance(spot) < 10.0;
@@ -904,10 +917,19 @@ impl Autopilot {
                     self.next_replan = now;
                     return None;
                 }
-                if a.presses >= 2 {
+                // The switch's click says the press worked.
+                let (sl, _, _, _) = line_of(&game.level().compiled.map, line);
+                let worked = game.events().iter().any(|e| matches!(e, Event::Special { line: l, .. } if *l == sl));
+                if worked || (a.presses >= 2 && self.failed_once(&a.goal)) {
                     self.tried.insert(line, now);
                     self.settle_until = now + 35;
                     self.next_replan = now + 35;
+                    return None;
+                }
+                if a.presses >= 2 {
+                    // Nothing happened: try again later from another spot.
+                    self.give_up(&a.goal);
+                    self.next_replan = now;
                     return None;
                 }
                 if (close && settled) || a.arrived > 60 || a.presses > 0 {
