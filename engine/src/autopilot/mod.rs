@@ -43,6 +43,11 @@ const MAX_FAILURES: u32 = 3;
 /// Ticks to wait at a blocked move when nothing there moves and nothing can
 /// be done about it.
 const STILL_TICKS: u32 = 70;
+/// Ticks spent standing to fight what is in sight, then ticks going on
+/// along the route while still firing (so an enemy it cannot kill does not
+/// hold it for ever).
+const STAND_TICKS: u32 = 35 * 6;
+const GO_ON_TICKS: u32 = 35 * 2;
 /// A monster further than this is not fought.
 const FIGHT_RANGE: f64 = 1400.0;
 
@@ -121,6 +126,8 @@ pub struct Autopilot {
     hurts: Vec<bool>,
     /// Times everything was tried again after running out of goals.
     rounds: u32,
+    /// Ticks into the current stand-and-fight cycle.
+    fighting: u32,
 }
 
 impl Autopilot {
@@ -154,6 +161,7 @@ impl Autopilot {
             log: Vec::new(),
             hurts,
             rounds: 0,
+            fighting: 0,
         }
     }
 
@@ -190,14 +198,21 @@ impl Autopilot {
             self.next_replan = now;
         }
         let fight = self.fight(game);
-        let mut input = if matches!(self.status, Status::Stuck { .. }) && now < self.next_replan {
+        // With a gun, stand and fight what is in sight (strafing from side
+        // to side, backing off what comes close) for a while before going
+        // on; with only a fist, go on.
+        self.fighting = if fight.is_some() { (self.fighting + 1) % (STAND_TICKS + GO_ON_TICKS) } else { 0 };
+        let stand = fight.is_some_and(|f| f.1 != 1) && self.fighting < STAND_TICKS;
+        let mut input = if stand {
+            TickInput::default()
+        } else if matches!(self.status, Status::Stuck { .. }) && now < self.next_replan {
             TickInput::default()
         } else {
             self.follow(game)
         };
         // Using a line needs the body to face it: no fighting on that tick.
         let fight = fight.filter(|_| !input.use_line);
-        if let Some((angle, weapon)) = fight {
+        if let Some((angle, weapon, _)) = fight {
             // Face the enemy and fire, moving the way the route wanted.
             let wanted = player.angle + f64::from(input.turn);
             let move_dir = if input.forward != 0 || input.strafe != 0 {
@@ -217,7 +232,11 @@ impl Autopilot {
                 .and_then(|w| table.actors[w].weapon.as_ref())
                 .map(|w| w.slot);
             input.weapon = if in_hand == Some(weapon) { 0 } else { weapon };
-            if let Some(dir) = move_dir {
+            if stand {
+                input.strafe = if (now / 24) % 2 == 0 { 1 } else { -1 };
+                input.forward = if fight.is_some_and(|f| f.2 < 192.0) { -1 } else { 0 };
+                input.run = true;
+            } else if let Some(dir) = move_dir {
                 let rel = (dir - angle).to_radians();
                 let (s, c) = rel.sin_cos();
                 input.forward = if c > 0.38 {
@@ -539,7 +558,7 @@ impl Autopilot {
         if game.stats().kills.1 == 0 {
             return None;
         }
-        let low_health = player.health < 50;
+        let low_health = player.health < 60;
         let low_ammo = player.ammo[0] < 20 && player.ammo[1] < 4;
         if !low_health && !low_ammo {
             return None;
@@ -995,7 +1014,7 @@ impl Autopilot {
 
     /// The enemy to shoot, if one is in sight: the angle to it and the
     /// weapon number to hold.
-    fn fight(&mut self, game: &Game) -> Option<(f64, u8)> {
+    fn fight(&mut self, game: &Game) -> Option<(f64, u8, f64)> {
         let player = game.player();
         let actors = game.actors();
         let table = &actors.table;
@@ -1022,7 +1041,7 @@ impl Autopilot {
         }
         let (d, i) = best?;
         let to = actors.list[i].pos - player.pos;
-        Some((to.y.atan2(to.x).to_degrees(), weapon_for(game, d)))
+        Some((to.y.atan2(to.x).to_degrees(), weapon_for(game, d), d))
     }
 }
 
