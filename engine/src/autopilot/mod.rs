@@ -67,7 +67,8 @@ pub enum Status {
 pub struct Figures {
     /// Time building the navigation grid, seconds.
     pub grid_seconds: f64,
-    /// Goal choices made, and their total and worst time, seconds.
+    /// Goal choices made; the time of those and of the periodic re-routes
+    /// to the same goal, in all; and the worst single choice, seconds.
     pub plans: u32,
     pub plan_seconds: f64,
     pub worst_plan_seconds: f64,
@@ -128,6 +129,8 @@ pub struct Autopilot {
     rounds: u32,
     /// Ticks into the current stand-and-fight cycle.
     fighting: u32,
+    /// Something changed that may change the goal (a key picked up).
+    rechoose: bool,
 }
 
 impl Autopilot {
@@ -162,6 +165,7 @@ impl Autopilot {
             hurts,
             rounds: 0,
             fighting: 0,
+            rechoose: false,
         }
     }
 
@@ -195,7 +199,7 @@ impl Autopilot {
         self.bad.retain(|_, until| *until > now);
         if player.keys.len() != self.keys {
             self.keys = player.keys.len();
-            self.next_replan = now;
+            self.rechoose = true;
         }
         let fight = self.fight(game);
         // With a gun, stand and fight what is in sight (strafing from side
@@ -590,7 +594,26 @@ impl Autopilot {
         let now = game.ticks();
         let pos = game.player().pos;
         let waiting = self.active.as_ref().is_some_and(|a| a.waited > 0);
-        if self.active.is_none() || (now >= self.next_replan && !waiting) {
+        if now >= self.next_replan && !waiting && !self.rechoose {
+            // Now and then the route to the same goal is found again (the
+            // world moves, a move was given up); only a route that no
+            // longer exists sends it to choose a new goal.
+            if let Some(goal) = self.active.as_ref().map(|a| a.goal.clone()) {
+                self.next_replan = now + REPLAN_EVERY;
+                let started = std::time::Instant::now();
+                let route = self.route_to(game, &goal);
+                self.figures.plan_seconds += started.elapsed().as_secs_f64();
+                match route {
+                    Some(route) => {
+                        let a = self.active.as_mut().unwrap();
+                        (a.route, a.at, a.idle) = (route, 0, 0);
+                    }
+                    None => self.active = None,
+                }
+            }
+        }
+        if self.active.is_none() || (now >= self.next_replan && !waiting) || self.rechoose {
+            self.rechoose = false;
             if now < self.settle_until && self.active.is_none() {
                 return TickInput::default();
             }
