@@ -36,6 +36,8 @@ use plan::{line_of, Goal, Mechanisms, Purpose, Route, Search, Targets};
 const REPLAN_EVERY: u64 = 350;
 /// Ticks without progress along a route before the move is given up.
 const STUCK_TICKS: u32 = 70;
+/// Periodic re-routes to one goal before it counts as failed.
+const MAX_REROUTES: u32 = 3;
 /// Times the bot starts over (every switch untried) when it runs out of goals.
 const MAX_ROUNDS: u32 = 2;
 /// A goal abandoned this often is not chosen again.
@@ -87,6 +89,8 @@ struct Active {
     waited: u32,
     /// Ticks spent at a blocked move where nothing moves.
     still: u32,
+    /// Times the route was found again on the way.
+    reroutes: u32,
     /// Uses pressed at the goal.
     presses: u32,
     /// Ticks spent at the goal.
@@ -384,6 +388,7 @@ impl Autopilot {
             idle: 0,
             waited: 0,
             still: 0,
+            reroutes: 0,
             presses: 0,
             arrived: 0,
         };
@@ -598,6 +603,12 @@ impl Autopilot {
             // Now and then the route to the same goal is found again (the
             // world moves, a move was given up); only a route that no
             // longer exists sends it to choose a new goal.
+            if let Some(a) = self.active.as_mut().filter(|a| a.reroutes >= MAX_REROUTES) {
+                // Half a minute on one goal: count it a failure, look again.
+                let goal = a.goal.clone();
+                self.give_up(&goal);
+                self.active = None;
+            }
             if let Some(goal) = self.active.as_ref().map(|a| a.goal.clone()) {
                 self.next_replan = now + REPLAN_EVERY;
                 let started = std::time::Instant::now();
@@ -607,6 +618,7 @@ impl Autopilot {
                     Some(route) => {
                         let a = self.active.as_mut().unwrap();
                         (a.route, a.at, a.idle) = (route, 0, 0);
+                        a.reroutes += 1;
                     }
                     None => self.active = None,
                 }
@@ -845,6 +857,7 @@ impl Autopilot {
                             idle: 0,
                             waited: 0,
                             still: 0,
+                            reroutes: 0,
                             presses: 0,
                             arrived: 0,
                         };
