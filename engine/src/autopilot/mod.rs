@@ -76,6 +76,39 @@ pub struct Figures {
     pub worst_plan_seconds: f64,
 }
 
+/// What a search assumes of the level as it stands: the plan's heights,
+/// the cells solid things stand on, the moves given up, the lines used up
+/// and the doors shut now.
+struct Assumed {
+    heights: Heights,
+    blocked: BTreeSet<Cell>,
+    bad: BTreeSet<u32>,
+    spent: BTreeSet<LineId>,
+    shut: Vec<bool>,
+}
+
+impl Assumed {
+    fn world<'a>(
+        &'a self,
+        nav: &'a NavGrid,
+        mech: &'a Mechanisms,
+        hurts: &'a [bool],
+        map: &'a crate::map::Map,
+    ) -> plan::World<'a> {
+        plan::World {
+            nav,
+            map,
+            mech,
+            heights: &self.heights,
+            blocked: &self.blocked,
+            bad: &self.bad,
+            spent: &self.spent,
+            hurts,
+            shut: &self.shut,
+        }
+    }
+}
+
 /// The route being followed.
 struct Active {
     goal: Goal,
@@ -347,6 +380,19 @@ impl Autopilot {
         game.player().keys.iter().map(|k| k.colour).collect()
     }
 
+    /// What a search assumes of the level now (see [`Assumed`]).
+    fn assume(&self, game: &Game) -> Assumed {
+        let level = game.level();
+        let spent = self.spent(game);
+        Assumed {
+            heights: plan::plan_heights(level, &self.mech, &Self::keys_held(game), &spent),
+            blocked: self.blocked(game),
+            bad: self.bad.keys().copied().collect(),
+            shut: self.mech.shut_doors(&level.compiled.map),
+            spent,
+        }
+    }
+
     /// Chooses the next goal and the route to it.
     fn choose(&mut self, game: &Game) -> Option<Active> {
         let started = std::time::Instant::now();
@@ -362,23 +408,10 @@ impl Autopilot {
         let level = game.level();
         let map = &level.compiled.map;
         let keys = Self::keys_held(game);
-        let spent = self.spent(game);
-        let heights = plan::plan_heights(level, &self.mech, &keys, &spent);
-        let blocked = self.blocked(game);
-        let bad: BTreeSet<u32> = self.bad.keys().copied().collect();
-        let shut = self.mech.shut_doors(map);
-        let start = self.nav.start_cell(game.player().pos, game.player().z, &heights)?;
-        let world = plan::World {
-            nav: &self.nav,
-            map,
-            mech: &self.mech,
-            heights: &heights,
-            blocked: &blocked,
-            bad: &bad,
-            spent: &spent,
-            hurts: &self.hurts,
-            shut: &shut,
-        };
+        let assumed = self.assume(game);
+        let Assumed { heights, spent, .. } = &assumed;
+        let start = self.nav.start_cell(game.player().pos, game.player().z, heights)?;
+        let world = assumed.world(&self.nav, &self.mech, &self.hurts, map);
         let nav = &self.nav;
         let active = |goal: Goal, purpose: Purpose, route: Route| Active {
             goal,
@@ -542,22 +575,17 @@ impl Autopilot {
     /// The cheapest reached cell from which a move crosses `line` (after a
     /// flood).
     fn crossing_cost(&self, line: LineId) -> Option<u32> {
-        // Walk lines are few; scan their neighbourhood.
-        let map_cells = self.nav.cells() as u32;
-        let _ = map_cells;
-        None.or_else(|| {
-            let mut best = None;
-            for &c in &self.search.reached {
-                for d in 0..4 {
-                    let across = self.nav.neighbour(c, d).is_some_and(|n| self.search.was_reached(n));
-                    if across && self.nav.crossings_of(c, d).any(|(l, _)| l == line) {
-                        let cost = self.search.cost_to(c).unwrap_or(u32::MAX);
-                        best = Some(best.map_or(cost, |b: u32| b.min(cost)));
-                    }
+        let mut best: Option<u32> = None;
+        for &c in &self.search.reached {
+            for d in 0..4 {
+                let across = self.nav.neighbour(c, d).is_some_and(|n| self.search.was_reached(n));
+                if across && self.nav.crossings_of(c, d).any(|(l, _)| l == line) {
+                    let cost = self.search.cost_to(c).unwrap_or(u32::MAX);
+                    best = Some(best.map_or(cost, |b| b.min(cost)));
                 }
             }
-            best
-        })
+        }
+        best
     }
 
     /// Health or ammunition to fetch, when monsters are about and it is short.
@@ -875,24 +903,9 @@ impl Autopilot {
     fn route_to(&mut self, game: &Game, goal: &Goal) -> Option<Route> {
         let level = game.level();
         let map = &level.compiled.map;
-        let keys = Self::keys_held(game);
-        let spent = self.spent(game);
-        let heights = plan::plan_heights(level, &self.mech, &keys, &spent);
-        let blocked = self.blocked(game);
-        let bad: BTreeSet<u32> = self.bad.keys().copied().collect();
-        let shut = self.mech.shut_doors(map);
-        let start = self.nav.start_cell(game.player().pos, game.player().z, &heights)?;
-        let world = plan::World {
-            nav: &self.nav,
-            map,
-            mech: &self.mech,
-            heights: &heights,
-            blocked: &blocked,
-            bad: &bad,
-            spent: &spent,
-            hurts: &self.hurts,
-            shut: &shut,
-        };
+        let assumed = self.assume(game);
+        let start = self.nav.start_cell(game.player().pos, game.player().z, &assumed.heights)?;
+        let world = assumed.world(&self.nav, &self.mech, &self.hurts, map);
         let targets = plan::targets_of(&self.nav, map, goal);
         self.search.run(&world, start, Some(&targets))
     }
