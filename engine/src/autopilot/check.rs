@@ -304,8 +304,7 @@ fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
     let mut soft_locks = Vec::new();
     if exit_reachable {
         let edges = forward_edges(&nav, level, &mech, &c.heights, &t.solid, &c.reached);
-        let mut into: Vec<Vec<Cell>> = vec![Vec::new(); 0];
-        into.resize(nav.cells(), Vec::new());
+        let mut into: Vec<Vec<Cell>> = vec![Vec::new(); nav.cells()];
         for &(a, b, _) in &edges {
             into[b as usize].push(a);
         }
