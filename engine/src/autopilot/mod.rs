@@ -750,6 +750,34 @@ impl Autopilot {
         // The next move: can it be made now, as the level stands?
         let (c, n) = (cells[a.at], cells[a.at + 1]);
         let live = live_heights(map);
+        // A ceiling coming down, or a crushing floor going up: never wait
+        // under it, never step under it.
+        let crushing = |cell: Cell| {
+            self.nav.touched(cell).iter().any(|&s| {
+                let s = s as usize;
+                let room = live.ceiling[s] - live.floor[s];
+                let closing = live.ceiling[s] < self.last.ceiling[s]
+                    || (self.mech.crushers[s] && room < self.last.ceiling[s] - self.last.floor[s]);
+                closing && room < CRUSH_ROOM
+            })
+        };
+        let window = a.at.saturating_sub(8)..(a.at + 10).min(cells.len());
+        if self.nav.cell_at(pos).is_some_and(crushing) || crushing(c) {
+            // Out from under it by the nearest cell of the route that is not.
+            let out = window
+                .filter(|&k| !crushing(cells[k]) && !a.route.teleport[k])
+                .min_by(|&i, &j| {
+                    let d = |k: usize| self.nav.centre_of(cells[k]).distance(pos);
+                    d(i).total_cmp(&d(j))
+                });
+            if let Some(k) = out {
+                a.idle = 0;
+                return Some(self.drive_to(game, self.nav.centre_of(cells[k]), false));
+            }
+        } else if cells[a.at + 1..(a.at + 4).min(cells.len())].iter().any(|&x| crushing(x)) {
+            a.idle = 0;
+            return Some(self.hold(game));
+        }
         if !a.route.teleport[a.at + 1] {
             let from = self.nav.span(c, &live);
             let to = self.nav.span(n, &live);
@@ -1156,6 +1184,10 @@ pub fn run(
     }
     Ok((outcome, bot))
 }
+
+/// Below this much room a descending ceiling is one to keep out from under:
+/// the body's height and a second or two of a crusher's travel.
+const CRUSH_ROOM: f64 = 56.0 + 64.0;
 
 /// The live heights, lifts at the height they are.
 fn live_heights(map: &crate::map::Map) -> Heights {

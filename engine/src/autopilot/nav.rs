@@ -360,12 +360,19 @@ impl NavGrid {
 
     /// The floor and ceiling under `c` with `heights`.
     pub fn span(&self, c: Cell, heights: &Heights) -> Span {
+        self.span_where(c, heights, |_| None)
+    }
+
+    /// [`NavGrid::span`] with some sectors' floors held where `fixed` says
+    /// (not able to go lower).
+    pub fn span_where(&self, c: Cell, heights: &Heights, fixed: impl Fn(usize) -> Option<f64>) -> Span {
         let mut span = Span { low: f64::MIN, high: f64::MIN, ceiling: f64::MAX, bottom: f64::MAX };
         for &s in self.touched(c) {
             let s = s as usize;
-            span.bottom = span.bottom.min(heights.floor[s]);
-            span.low = span.low.max(heights.low[s]);
-            span.high = span.high.max(heights.floor[s]);
+            let (floor, low) = fixed(s).map_or((heights.floor[s], heights.low[s]), |f| (f, f));
+            span.bottom = span.bottom.min(floor);
+            span.low = span.low.max(low);
+            span.high = span.high.max(floor);
             span.ceiling = span.ceiling.min(heights.ceiling[s]);
         }
         span

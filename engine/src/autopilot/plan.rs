@@ -17,6 +17,7 @@ use crate::map::Map;
 use crate::play::collision::distance_to_segment;
 use crate::play::world::specials::{self, target_sectors};
 use crate::play::world::{floors, SpecialLine};
+use crate::play::player::MAX_STEP;
 use crate::play::USE_RANGE;
 
 /// Extra cost of standing in a cell whose floor hurts.
@@ -57,6 +58,16 @@ pub struct Mechanisms {
     pub door_use: Vec<Vec<Cell>>,
     /// Per sector: the lines that lower it as a lift.
     pub lifts: Vec<Vec<LineId>>,
+    /// Per sector: whether the lift can be called down from its top (to
+    /// ride it down); a lift that cannot is ridden up only.
+    pub lift_from_top: Vec<bool>,
+    /// Per sector: the floor a lift comes back up to (its floor when the
+    /// level starts; a perpetual lift's highest neighbouring floor).
+    pub lift_top: Vec<f64>,
+    /// Per sector: whether some special crushes in it (a crusher, a floor
+    /// or ceiling that crushes): the bot keeps out from under it as it
+    /// closes.
+    pub crushers: Vec<bool>,
     /// Exit lines, and whether each is the secret exit.
     pub exits: Vec<(LineId, bool)>,
     /// Teleport lines (walked over from the front), with where they lead.
@@ -74,16 +85,27 @@ impl Mechanisms {
             doors: vec![Vec::new(); sectors],
             door_use: vec![Vec::new(); sectors],
             lifts: vec![Vec::new(); sectors],
+            lift_top: map.sectors.iter().map(|s| s.floor).collect(),
+            crushers: vec![false; sectors],
+            lift_from_top: vec![false; sectors],
             ..Default::default()
         };
         let ids = 0..(map.lines.len() + map.trigger_lines.len()) as u32;
         for id in ids {
             let (line, _, _, special) = line_of(map, id);
             let Some(special) = special else { continue };
+            let targets = target_sectors(level, line, special);
+            if let Action::Crusher { .. }
+            | Action::Floor { crush: true, .. }
+            | Action::Ceiling { crush: true, .. } = special.action
+            {
+                for &s in &targets {
+                    m.crushers[s] = true;
+                }
+            }
             if !special.by.players() {
                 continue;
             }
-            let targets = target_sectors(level, line, special);
             match &special.action {
                 Action::Door { kind: DoorKind::Raise | DoorKind::Open, key, .. }
                     if special.tag == 0 && special.on == Activation::Use =>
@@ -94,9 +116,15 @@ impl Mechanisms {
                 }
                 Action::Lift { .. } | Action::PerpetualLift { .. } => {
                     for &s in &targets {
-                        if callable_from_below(level, id, special.on, s) {
+                        if matches!(special.action, Action::PerpetualLift { .. }) {
+                            let high = specials::highest_floor_around(level, s).unwrap_or(m.lift_top[s]);
+                            m.lift_top[s] = m.lift_top[s].max(high);
+                        }
+                        let (below, above) = lift_calls(level, id, special.on, s, m.lift_top[s]);
+                        if below {
                             m.lifts[s].push(id);
                         }
+                        m.lift_from_top[s] |= above;
                     }
                 }
                 Action::Exit => m.exits.push((id, false)),
@@ -123,11 +151,20 @@ impl Mechanisms {
     }
 }
 
-/// Can the player call lift `lift` down with `line`: a switch (from its
-/// front), or a walk line with a side off the lift low enough to stand on
-/// (a walk line only reached from the top is for coming down, which a drop
-/// does anyway)?
-fn callable_from_below(level: &Level, id: LineId, on: Activation, lift: usize) -> bool {
+/// How far from its lift a switch can be for the player to call the lift
+/// and still board it: it waits 3 seconds at the bottom, in which a
+/// running player covers some 1,700 units, less the turns of a real route.
+const LIFT_REACH: f64 = 1024.0;
+
+/// Where the player can call lift `lift` down with `line` from: from below
+/// (to ride it up) and from the top (to ride it down). A switch works from
+/// its front, within [`LIFT_REACH`] of the lift: from below when its front
+/// floor is under the lift's top but not below its lowest (a switch far
+/// below is for someone else), from the top when within a step of the top. A walk
+/// line works from below with a side off the lift low enough to stand on (a
+/// walk line only reached from the top is for coming down), and from the
+/// top with a side on the lift or level with its top.
+fn lift_calls(level: &Level, id: LineId, on: Activation, lift: usize, top: f64) -> (bool, bool) {
     let map = &level.compiled.map;
     let low = specials::lowest_floor_around(level, lift);
     let (sl, a, b, _) = line_of(map, id);
@@ -146,11 +183,31 @@ fn callable_from_below(level: &Level, id: LineId, on: Activation, lift: usize) -
                 .collect()
         }
     };
-    sides.iter().any(|&(sector, front)| match on {
-        // A switch works from its front, on the lift or off it.
-        Activation::Use => front,
-        _ => sector != lift && map.sectors[sector].floor <= low + crate::play::player::MAX_STEP,
-    })
+    // A switch across the level lowers the lift for someone else: it is
+    // back up before the player gets there.
+    let mid = (a + b) / 2.0;
+    let near = level.sector_lines[lift].iter().any(|&i| {
+        let (p, q) = map.line_points(&map.lines[i as usize]);
+        nearest_on(mid, p, q).distance(mid) <= LIFT_REACH
+    });
+    let step = MAX_STEP;
+    let floor = |sector: usize| if sector == lift { top } else { map.sectors[sector].floor };
+    let mut calls = (false, false);
+    for &(sector, front) in &sides {
+        match on {
+            Activation::Use => {
+                if front && near {
+                    calls.0 |= sector == lift || (floor(sector) >= low - step && floor(sector) < top - step);
+                    calls.1 |= (floor(sector) - top).abs() <= step;
+                }
+            }
+            _ => {
+                calls.0 |= sector != lift && floor(sector) <= low + step;
+                calls.1 |= sector == lift || floor(sector) >= top - step;
+            }
+        }
+    }
+    calls
 }
 
 impl Mechanisms {
@@ -305,11 +362,22 @@ impl Search {
                 if w.blocked.contains(&n) {
                     continue;
                 }
-                let to = w.nav.span(n, w.heights);
+                let here = w.nav.touched(c);
+                let mut to = w.nav.span(n, w.heights);
+                // A lift ridden up only: from on it or from its top, it
+                // stays up.
+                let up_only = |s: usize| {
+                    !w.mech.lifts[s].is_empty()
+                        && !w.mech.lift_from_top[s]
+                        && w.heights.low[s] < w.heights.floor[s]
+                        && (here.contains(&(s as u32)) || from.high >= w.heights.floor[s] - MAX_STEP)
+                };
+                if w.nav.touched(n).iter().any(|&s| up_only(s as usize)) {
+                    to = w.nav.span_where(n, w.heights, |s| up_only(s).then_some(w.heights.floor[s]));
+                }
                 if !NavGrid::passable(from, to) {
                     continue;
                 }
-                let here = w.nav.touched(c);
                 let door_shut = w.nav.touched(n).iter().any(|&s| {
                     w.shut[s as usize] && !here.contains(&s) && w.mech.door_use[s as usize].binary_search(&c).is_err()
                 });
@@ -537,8 +605,7 @@ pub fn plan_heights(level: &Level, mech: &Mechanisms, keys: &[KeyColour], spent:
     for (s, lifts) in mech.lifts.iter().enumerate() {
         if lifts.iter().any(|l| !spent.contains(l)) {
             h.low[s] = h.low[s].min(specials::lowest_floor_around(level, s));
-            h.floor[s] =
-                h.floor[s].max(specials::highest_floor_around(level, s).unwrap_or(h.floor[s]).min(h.ceiling[s] - 56.0));
+            h.floor[s] = h.floor[s].max(mech.lift_top[s].min(h.ceiling[s] - 56.0));
         }
     }
     h
