@@ -52,6 +52,11 @@ const STAND_TICKS: u32 = 35 * 6;
 const GO_ON_TICKS: u32 = 35 * 2;
 /// A monster further than this is not fought.
 const FIGHT_RANGE: f64 = 1400.0;
+/// Below this health a fight is fought falling back.
+const RETREAT_HEALTH: i32 = 40;
+/// The spacing of the trail's points, and how many are kept.
+const TRAIL_STEP: f64 = 32.0;
+const TRAIL_POINTS: usize = 128;
 
 /// How a run is going, for the report.
 #[derive(Clone, Debug, PartialEq)]
@@ -168,6 +173,9 @@ pub struct Autopilot {
     fighting: u32,
     /// Something changed that may change the goal (a key picked up).
     rechoose: bool,
+    /// Where the body has been, a point every [`TRAIL_STEP`] units, the
+    /// newest last: the way back out of a fight going badly.
+    trail: Vec<DVec2>,
 }
 
 impl Autopilot {
@@ -203,6 +211,7 @@ impl Autopilot {
             rounds: 0,
             fighting: 0,
             rechoose: false,
+            trail: vec![game.player().pos],
         }
     }
 
@@ -241,10 +250,15 @@ impl Autopilot {
         let fight = self.fight(game);
         // With a gun, stand and fight what is in sight (strafing from side
         // to side, backing off what comes close) for a while before going
-        // on; with only a fist, go on.
+        // on; with only a fist, go on. Hurt, fall back the way it came,
+        // still firing, to fight from behind a corner or go for health.
         self.fighting = if fight.is_some() { (self.fighting + 1) % (STAND_TICKS + GO_ON_TICKS) } else { 0 };
-        let stand = fight.is_some_and(|f| f.1 != 1) && self.fighting < STAND_TICKS;
-        let mut input = if stand {
+        let retreat = fight.is_some() && player.health < RETREAT_HEALTH;
+        let stand = !retreat && fight.is_some_and(|f| f.1 != 1) && self.fighting < STAND_TICKS;
+        let back = retreat.then(|| self.fall_back(player.pos)).flatten();
+        let mut input = if let Some(back) = back {
+            self.drive_to(game, back, false)
+        } else if stand {
             TickInput::default()
         } else if matches!(self.status, Status::Stuck { .. }) && now < self.next_replan {
             TickInput::default()
@@ -298,8 +312,27 @@ impl Autopilot {
         }
         self.used_last = input.use_line;
         self.last = Heights::of(&game.level().compiled.map);
+        if self.last_pos.distance(player.pos) > 64.0 {
+            // Teleported: the way back is not a walk.
+            self.trail.clear();
+        }
         self.last_pos = player.pos;
+        if back.is_none() && self.trail.last().is_none_or(|t| t.distance(player.pos) >= TRAIL_STEP) {
+            if self.trail.len() == TRAIL_POINTS {
+                self.trail.remove(0);
+            }
+            self.trail.push(player.pos);
+        }
         input
+    }
+
+    /// The point of the trail to fall back to from `pos`: the newest one
+    /// not already reached (those are dropped); `None` at its start.
+    fn fall_back(&mut self, pos: DVec2) -> Option<DVec2> {
+        while self.trail.len() > 1 && self.trail.last().is_some_and(|t| t.distance(pos) < TRAIL_STEP / 2.0) {
+            self.trail.pop();
+        }
+        self.trail.last().copied().filter(|t| t.distance(pos) >= TRAIL_STEP / 2.0)
     }
 
     /// Marks the walk lines the body crossed since last tick as tried.

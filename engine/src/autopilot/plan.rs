@@ -160,7 +160,8 @@ const LIFT_REACH: f64 = 1024.0;
 /// (to ride it up) and from the top (to ride it down). A switch works from
 /// its front, within [`LIFT_REACH`] of the lift: from below when its front
 /// floor is under the lift's top but not below its lowest (a switch far
-/// below is for someone else), from the top when within a step of the top. A walk
+/// below is for someone else), from the top when no more than a step under
+/// it (a switch above drops the player onto it). A walk
 /// line works from below with a side off the lift low enough to stand on (a
 /// walk line only reached from the top is for coming down), and from the
 /// top with a side on the lift or level with its top.
@@ -198,7 +199,7 @@ fn lift_calls(level: &Level, id: LineId, on: Activation, lift: usize, top: f64) 
             Activation::Use => {
                 if front && near {
                     calls.0 |= sector == lift || (floor(sector) >= low - step && floor(sector) < top - step);
-                    calls.1 |= (floor(sector) - top).abs() <= step;
+                    calls.1 |= floor(sector) >= top - step;
                 }
             }
             _ => {
@@ -364,13 +365,14 @@ impl Search {
                 }
                 let here = w.nav.touched(c);
                 let mut to = w.nav.span(n, w.heights);
-                // A lift ridden up only: from on it or from its top, it
-                // stays up.
+                // A lift ridden up only: from its top (every sector under
+                // the body the lift or level with its top) it stays up.
                 let up_only = |s: usize| {
+                    let top = w.heights.floor[s];
                     !w.mech.lifts[s].is_empty()
                         && !w.mech.lift_from_top[s]
-                        && w.heights.low[s] < w.heights.floor[s]
-                        && (here.contains(&(s as u32)) || from.high >= w.heights.floor[s] - MAX_STEP)
+                        && w.heights.low[s] < top
+                        && here.iter().all(|&t| t as usize == s || w.heights.floor[t as usize] >= top - MAX_STEP)
                 };
                 if w.nav.touched(n).iter().any(|&s| up_only(s as usize)) {
                     to = w.nav.span_where(n, w.heights, |s| up_only(s).then_some(w.heights.floor[s]));
