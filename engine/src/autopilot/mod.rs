@@ -913,10 +913,23 @@ impl Autopilot {
                     }
                 }
             }
-            // A lift that is up: call it.
-            if !self.mech.lifts[s].is_empty() && live.floor[s] > player.z + 24.0 {
+            // A lift that is up: call it, from below, or from on it when
+            // the way on is lower.
+            let below = live.floor[s] > player.z + 24.0;
+            let on = (player.z - live.floor[s]).abs() < 1.0
+                && self.nav.touched(a.route.cells[a.at]).contains(&(s as u32))
+                && !self.mech.lifts[s].is_empty();
+            let lines = if below {
+                &self.mech.lifts[s]
+            } else if on {
+                &self.mech.lift_down[s]
+            } else {
+                &Vec::new()
+            };
+            if !lines.is_empty() {
+                let lines = lines.clone();
                 let spent = self.spent(game);
-                for &line in &self.mech.lifts[s] {
+                for &line in &lines {
                     if spent.contains(&line) {
                         continue;
                     }
@@ -925,8 +938,7 @@ impl Autopilot {
                     }
                 }
                 // Not in reach: go and set it off, then come back.
-                let lines: Vec<LineId> = self.mech.lifts[s].iter().copied().filter(|l| !spent.contains(l)).collect();
-                for line in lines {
+                for line in lines.into_iter().filter(|l| !spent.contains(l)) {
                     let goal = match line_of(map, line).3.map(|s| s.on) {
                         Some(Activation::Use) => Goal::Use(line),
                         Some(Activation::Walk) => Goal::Cross(line),
@@ -1065,6 +1077,9 @@ impl Autopilot {
                     if let Some(input) = self.use_line(game, line) {
                         if input.use_line {
                             a.presses += 1;
+                            if std::env::var_os("SIGHTLINE_AUTOPILOT_TRACE").is_some() {
+                                eprintln!("press line {line} from {:?} facing {:.1}", player.pos, player.angle);
+                            }
                         }
                         return Some(input);
                     }

@@ -13,7 +13,6 @@ use glam::DVec2;
 use crate::bsp::CompiledMap;
 use crate::map::Map;
 use crate::play::blockmap::{Blockmap, LineQuery};
-use crate::play::collision::distance_to_segment;
 use crate::play::player::{HEIGHT, MAX_STEP, RADIUS};
 use crate::play::trace::crossing;
 
@@ -142,20 +141,44 @@ impl NavGrid {
             let near = query.run(&blockmap, map.lines.len(), p - r, p + r);
             found.clear();
             found.push(sector as u32);
-            let mut ok = true;
+            let solid = |line: &crate::map::Line| line.back.is_none() || line.flags.impassable;
+            // The nearest solid wall: the body is pushed off it, so whatever
+            // is across from it must leave room for the whole body.
             let mut room = ROOMY;
+            let mut wall_at = p;
+            for &i in near {
+                let line = &map.lines[i as usize];
+                if solid(line) {
+                    let (a, b) = map.line_points(line);
+                    let q = crate::autopilot::plan::nearest_on(p, a, b);
+                    if q.distance(p) < room {
+                        room = q.distance(p);
+                        wall_at = q;
+                    }
+                }
+            }
+            let mut ok = room >= CLEAR;
+            // How far across from that wall the body reaches.
+            let across = |q: DVec2| {
+                if room < RADIUS && (q - p).dot(wall_at - p) < 0.0 {
+                    2.0 * RADIUS - room
+                } else {
+                    RADIUS
+                }
+            };
             for &i in near {
                 let line = &map.lines[i as usize];
                 let (a, b) = map.line_points(line);
-                let d = distance_to_segment(p, a, b);
-                if line.back.is_none() || line.flags.impassable {
-                    // A solid line keeps the body off it: what is behind
-                    // it is never under the body.
-                    ok &= d >= CLEAR;
-                    room = room.min(d);
+                let q = crate::autopilot::plan::nearest_on(p, a, b);
+                let d = q.distance(p);
+                if solid(line) {
+                    // A solid line keeps the body off it (what is behind it
+                    // is never under the body), and two too close on either
+                    // side leave no room between.
+                    ok &= d >= CLEAR && (q == wall_at || d >= across(q) || across(q) == RADIUS);
                     continue;
                 }
-                if d >= RADIUS {
+                if d >= across(q) {
                     continue;
                 }
                 found.extend(std::iter::once(&line.front).chain(&line.back).map(|s| s.sector as u32));

@@ -58,9 +58,9 @@ pub struct Mechanisms {
     pub door_use: Vec<Vec<Cell>>,
     /// Per sector: the lines that lower it as a lift.
     pub lifts: Vec<Vec<LineId>>,
-    /// Per sector: whether the lift can be called down from its top (to
-    /// ride it down); a lift that cannot is ridden up only.
-    pub lift_from_top: Vec<bool>,
+    /// Per sector: the lines that call the lift down from its top (to ride
+    /// it down); a lift with none is ridden up only.
+    pub lift_down: Vec<Vec<LineId>>,
     /// Per sector: the floor a lift comes back up to (its floor when the
     /// level starts; a perpetual lift's highest neighbouring floor).
     pub lift_top: Vec<f64>,
@@ -87,7 +87,7 @@ impl Mechanisms {
             lifts: vec![Vec::new(); sectors],
             lift_top: map.sectors.iter().map(|s| s.floor).collect(),
             crushers: vec![false; sectors],
-            lift_from_top: vec![false; sectors],
+            lift_down: vec![Vec::new(); sectors],
             ..Default::default()
         };
         let ids = 0..(map.lines.len() + map.trigger_lines.len()) as u32;
@@ -124,7 +124,9 @@ impl Mechanisms {
                         if below {
                             m.lifts[s].push(id);
                         }
-                        m.lift_from_top[s] |= above;
+                        if above {
+                            m.lift_down[s].push(id);
+                        }
                     }
                 }
                 Action::Exit => m.exits.push((id, false)),
@@ -370,7 +372,7 @@ impl Search {
                 let up_only = |s: usize| {
                     let top = w.heights.floor[s];
                     !w.mech.lifts[s].is_empty()
-                        && !w.mech.lift_from_top[s]
+                        && w.mech.lift_down[s].is_empty()
                         && w.heights.low[s] < top
                         && here.iter().all(|&t| t as usize == s || w.heights.floor[t as usize] >= top - MAX_STEP)
                 };
@@ -482,7 +484,14 @@ pub fn use_cells(nav: &NavGrid, map: &Map, line: LineId) -> Targets {
             if crate::geom::front_distance(a, b, p) <= 0.0 || distance_to_segment(p, a, b) > USE_REACH {
                 continue;
             }
-            if !clear_between(map, p, nearest_on(p, a, b), line) {
+            // Aimed at the line's inner part (its ends are where niche
+            // walls meet it): the point across from the cell, or the middle.
+            let along = |t: f64| a + (b - a) * t;
+            let across = ((p - a).dot(b - a) / (b - a).length_squared().max(1e-9)).clamp(0.2, 0.8);
+            let reachable = [along(across), along(0.5)]
+                .into_iter()
+                .any(|q| q.distance(p) <= USE_REACH && clear_between(map, p, q, line));
+            if !reachable {
                 continue;
             }
             t.cells.insert(c);
