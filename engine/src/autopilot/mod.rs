@@ -28,6 +28,7 @@ use crate::actors::{ActorFlag, Category};
 use crate::map::special::{Activation, KeyColour};
 use crate::play::events::Event;
 use crate::play::sight::{self, Body};
+use crate::play::player::RADIUS;
 use crate::play::{Game, TickInput};
 use nav::{Cell, Heights, LineId, NavGrid, CELL, DIRS};
 use plan::{line_of, Goal, Mechanisms, Purpose, Route, Search, Targets};
@@ -845,8 +846,20 @@ impl Autopilot {
         }
         // Steer for a point a little way along the route, not past a
         // teleport; when progress stalls, for the very next cell, slowly.
-        let on_ledge = cells[a.at..(a.at + 4).min(cells.len())].iter().any(|&x| self.nav.span(x, &live).ledge());
-        let ahead = if a.idle > STUCK_TICKS / 2 || on_ledge { 1 } else { 3 };
+        let soon = &cells[a.at..(a.at + 4).min(cells.len())];
+        let on_ledge = soon.iter().any(|&x| self.nav.span(x, &live).ledge());
+        // A teleport line the route does not take, close by: go carefully
+        // (a body that drifts over it is somewhere else).
+        let teleporting = a.route.teleport[a.at..(a.at + 5).min(cells.len())].iter().any(|&t| t);
+        let near_teleport = !teleporting
+            && soon.iter().any(|&x| {
+                let p = self.nav.centre_of(x);
+                self.mech.teleports.keys().any(|&l| {
+                    let (_, a, b, _) = line_of(map, l);
+                    plan::nearest_on(p, a, b).distance(p) < RADIUS + CELL
+                })
+            });
+        let ahead = if a.idle > STUCK_TICKS / 2 || on_ledge || near_teleport { 1 } else { 3 };
         let mut k = a.at + 1;
         while k < last && k < a.at + ahead && !a.route.teleport[k + 1] {
             k += 1;
@@ -860,7 +873,7 @@ impl Autopilot {
             let dir = via.map_or(DVec2::ZERO, |d| DVec2::new(DIRS[d].0 as f64, DIRS[d].1 as f64));
             target = self.nav.centre_of(before) + dir * CELL * 1.5;
         }
-        Some(self.drive_to(game, target, k == last || ahead == 1))
+        Some(self.drive_to(game, target, k == last || ahead == 1 || near_teleport))
     }
 
     /// The input that heads for `target`.
