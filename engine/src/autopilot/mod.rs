@@ -361,7 +361,16 @@ impl Autopilot {
     /// Lines that are used up: set off once and not repeatable.
     fn spent(&self, game: &Game) -> BTreeSet<LineId> {
         let map = &game.level().compiled.map;
-        self.tried.keys().copied().filter(|&id| line_of(map, id).3.is_none_or(|s| !s.repeat)).collect()
+        let tried = self.tried.keys().copied().filter(|&id| line_of(map, id).3.is_none_or(|s| !s.repeat));
+        // A switch that has flipped for good shows it.
+        let used = self.mech.triggers.iter().chain(self.mech.lifts.iter().flatten()).copied();
+        tried.chain(used.filter(|&id| Self::used_up(game, id))).collect()
+    }
+
+    /// Has the level used `id`'s special up (a once-only line set off)?
+    fn used_up(game: &Game, id: LineId) -> bool {
+        let (line, _, _, special) = line_of(&game.level().compiled.map, id);
+        special.is_some() && game.world().special(game.level(), line).is_none()
     }
 
     /// Cells solid things stand on (not monsters: they move).
@@ -714,7 +723,9 @@ impl Autopilot {
                     // nothing; a move given up may work now).
                     self.rounds += 1;
                     self.tried.retain(|&l, _| {
-                        line_of(&game.level().compiled.map, l).3.is_some_and(|s| !s.repeat && s.on == Activation::Walk)
+                        let once = line_of(&game.level().compiled.map, l).3.is_some_and(|s| !s.repeat);
+                        once && (line_of(&game.level().compiled.map, l).3.is_some_and(|s| s.on == Activation::Walk)
+                            || Self::used_up(game, l))
                     });
                     self.failures.clear();
                     self.unreachable.clear();
@@ -1091,7 +1102,20 @@ impl Autopilot {
                         if input.use_line {
                             a.presses += 1;
                             if std::env::var_os("SIGHTLINE_AUTOPILOT_TRACE").is_some() {
-                                eprintln!("press line {line} from {:?} facing {:.1}", player.pos, player.angle);
+                                let level = game.level();
+                                let (sl, _, _, sp) = line_of(&level.compiled.map, line);
+                                let busy: Vec<(usize, bool)> = sp
+                                    .map(|sp| crate::play::world::specials::target_sectors(level, sl, sp))
+                                    .unwrap_or_default()
+                                    .into_iter()
+                                    .map(|s| (s, game.world().is_busy(s)))
+                                    .collect();
+                                eprintln!(
+                                    "press line {line} from {:?} facing {:.1}, live {}, targets busy {busy:?}",
+                                    player.pos,
+                                    player.angle,
+                                    game.world().special(level, sl).is_some()
+                                );
                             }
                         }
                         return Some(input);
