@@ -53,6 +53,8 @@ const STAND_TICKS: u32 = 35 * 6;
 const GO_ON_TICKS: u32 = 35 * 2;
 /// A monster further than this is not fought.
 const FIGHT_RANGE: f64 = 1400.0;
+/// Below this health the bot goes for health it can reach.
+const LOW_HEALTH: i32 = 60;
 /// Below this health a fight is fought falling back.
 const RETREAT_HEALTH: i32 = 40;
 /// The spacing of the trail's points, and how many are kept.
@@ -174,6 +176,8 @@ pub struct Autopilot {
     fighting: u32,
     /// Something changed that may change the goal (a key picked up).
     rechoose: bool,
+    /// Health was under [`LOW_HEALTH`] last tick.
+    low_health: bool,
     /// Where the body has been, a point every [`TRAIL_STEP`] units, the
     /// newest last: the way back out of a fight going badly.
     trail: Vec<DVec2>,
@@ -213,6 +217,7 @@ impl Autopilot {
             fighting: 0,
             rechoose: false,
             trail: vec![game.player().pos],
+            low_health: false,
         }
     }
 
@@ -248,6 +253,12 @@ impl Autopilot {
             self.keys = player.keys.len();
             self.rechoose = true;
         }
+        // Health falling under the mark: look for some before going on.
+        let low = player.health < LOW_HEALTH;
+        if low && !self.low_health && self.active.as_ref().is_none_or(|a| a.purpose != Purpose::Supplies) {
+            self.rechoose = true;
+        }
+        self.low_health = low;
         let fight = self.fight(game);
         // With a gun, stand and fight what is in sight (strafing from side
         // to side, backing off what comes close) for a while before going
@@ -635,11 +646,9 @@ impl Autopilot {
     fn supplies(&self, game: &Game) -> Option<(Goal, Targets)> {
         let player = game.player();
         let actors = game.actors();
-        if game.stats().kills.1 == 0 {
-            return None;
-        }
-        let low_health = player.health < 60;
-        let low_ammo = player.ammo[0] < 20 && player.ammo[1] < 4;
+        // Floors that hurt take health too; ammo matters only with monsters.
+        let low_health = player.health < LOW_HEALTH;
+        let low_ammo = game.stats().kills.1 > 0 && player.ammo[0] < 20 && player.ammo[1] < 4;
         if !low_health && !low_ammo {
             return None;
         }
