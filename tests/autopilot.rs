@@ -82,6 +82,19 @@ fn the_autopilot_jumps_down_a_one_way_drop() {
 }
 
 #[test]
+fn the_autopilot_passes_under_a_crusher_unhurt() {
+    let mut lowest = f64::MAX;
+    let mut least_health = i32::MAX;
+    finish("crusher", |play| {
+        let corridor = &play.game.level().compiled.map.sectors[1];
+        lowest = lowest.min(corridor.ceiling - corridor.floor);
+        least_health = least_health.min(play.game.player().health);
+    });
+    assert!(lowest < 56.0, "the crusher never came down ({lowest} of room at least)");
+    assert_eq!(least_health, 100, "the crusher caught the player");
+}
+
+#[test]
 fn check_finds_the_unreachable_secret_and_the_soft_lock() {
     let level = open_level(&map_path("tests/maps/autopilot_flawed.ron"), &Default::default()).unwrap();
     let (report, drawing) = check::check(level, 3);
@@ -104,7 +117,7 @@ fn check_finds_the_unreachable_secret_and_the_soft_lock() {
 
 #[test]
 fn check_finds_no_flaw_in_the_mechanism_maps() {
-    for name in ["lift", "remote_door", "key_door", "teleporter", "drop"] {
+    for name in ["lift", "remote_door", "key_door", "teleporter", "drop", "crusher"] {
         let level = open_level(&map_path(&format!("tests/maps/autopilot_{name}.ron")), &Default::default()).unwrap();
         let (report, _) = check::check(level, 3);
         assert!(report.exit_reachable, "{name}: {}", report.text());

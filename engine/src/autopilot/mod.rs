@@ -55,6 +55,9 @@ const GO_ON_TICKS: u32 = 35 * 2;
 const FIGHT_RANGE: f64 = 1400.0;
 /// Below this health the bot goes for health it can reach.
 const LOW_HEALTH: i32 = 60;
+/// With this many monsters in sight, a fight is fought falling back: they
+/// follow one at a time through the way it came.
+const CROWD: u32 = 3;
 /// Below this health a fight is fought falling back.
 const RETREAT_HEALTH: i32 = 40;
 /// The spacing of the trail's points, and how many are kept.
@@ -176,6 +179,8 @@ pub struct Autopilot {
     fighting: u32,
     /// Something changed that may change the goal (a key picked up).
     rechoose: bool,
+    /// Live monsters in sight last tick (counted up to [`CROWD`]).
+    in_sight: u32,
     /// Health was under [`LOW_HEALTH`] last tick.
     low_health: bool,
     /// Where the body has been, a point every [`TRAIL_STEP`] units, the
@@ -218,6 +223,7 @@ impl Autopilot {
             rechoose: false,
             trail: vec![game.player().pos],
             low_health: false,
+            in_sight: 0,
         }
     }
 
@@ -248,6 +254,7 @@ impl Autopilot {
             return TickInput::default();
         }
         self.note_crossings(game);
+        self.mech.settle_lifts(game.level(), |s| game.world().is_busy(s));
         self.bad.retain(|_, until| *until > now);
         if player.keys.len() != self.keys {
             self.keys = player.keys.len();
@@ -265,7 +272,7 @@ impl Autopilot {
         // on; with only a fist, go on. Hurt, fall back the way it came,
         // still firing, to fight from behind a corner or go for health.
         self.fighting = if fight.is_some() { (self.fighting + 1) % (STAND_TICKS + GO_ON_TICKS) } else { 0 };
-        let retreat = fight.is_some() && player.health < RETREAT_HEALTH;
+        let retreat = fight.is_some() && (player.health < RETREAT_HEALTH || self.in_sight >= CROWD);
         let stand = !retreat && fight.is_some_and(|f| f.1 != 1) && self.fighting < STAND_TICKS;
         let back = retreat.then(|| self.fall_back(player.pos)).flatten();
         let mut input = if let Some(back) = back {
@@ -450,12 +457,44 @@ impl Autopilot {
     /// Chooses the next goal and the route to it.
     fn choose(&mut self, game: &Game) -> Option<Active> {
         let started = std::time::Instant::now();
-        let chosen = self.choose_inner(game);
+        let chosen = self.choose_inner(game).or_else(|| self.off_hurting_floor(game));
         let t = started.elapsed().as_secs_f64();
         self.figures.plans += 1;
         self.figures.plan_seconds += t;
         self.figures.worst_plan_seconds = self.figures.worst_plan_seconds.max(t);
         chosen
+    }
+
+    /// With nothing to do while standing where the floor hurts: the way to
+    /// the nearest floor that does not.
+    fn off_hurting_floor(&mut self, game: &Game) -> Option<Active> {
+        let player = game.player();
+        if !self.hurts.get(player.sector).copied().unwrap_or(false) {
+            return None;
+        }
+        let assumed = self.assume(game);
+        let start = self.nav.start_cell(player.pos, player.z, &assumed.heights)?;
+        let world = assumed.world(&self.nav, &self.mech, &self.hurts, &game.level().compiled.map);
+        self.search.run(&world, start, None);
+        let safe = self.search.reached.iter().copied().find(|&c| {
+            let centre = self.nav.centre[c as usize];
+            centre != nav::NONE && !self.hurts[centre as usize] && !self.nav.span(c, &assumed.heights).ledge()
+        })?;
+        let mut targets = Targets::default();
+        targets.add(plan::cells_near(&self.nav, self.nav.centre_of(safe), 1.0));
+        let route = self.search.run(&world, start, Some(&targets))?;
+        Some(Active {
+            goal: Goal::Touch(self.nav.centre_of(safe), u32::MAX),
+            purpose: Purpose::Safety,
+            route,
+            at: 0,
+            idle: 0,
+            waited: 0,
+            still: 0,
+            reroutes: 0,
+            presses: 0,
+            arrived: 0,
+        })
     }
 
     fn choose_inner(&mut self, game: &Game) -> Option<Active> {
@@ -1192,6 +1231,7 @@ impl Autopilot {
         let compiled = &game.level().compiled;
         let looker = Body { pos: player.pos, z: player.z, height: 56.0, radius: 16.0, index: usize::MAX };
         let mut best: Option<(f64, usize)> = None;
+        self.in_sight = 0;
         for (i, a) in actors.list.iter().enumerate() {
             let def = &table.actors[a.kind];
             if a.removed
@@ -1202,12 +1242,15 @@ impl Autopilot {
                 continue;
             }
             let d = a.pos.distance(player.pos);
-            if d > FIGHT_RANGE || best.is_some_and(|(bd, _)| bd <= d) {
+            if d > FIGHT_RANGE || (best.is_some_and(|(bd, _)| bd <= d) && self.in_sight >= CROWD) {
                 continue;
             }
             let target = Body { pos: a.pos, z: a.z, height: def.height, radius: def.radius, index: i };
             if sight::sight(compiled, &mut self.sight, &looker, &target) {
-                best = Some((d, i));
+                self.in_sight += 1;
+                if best.is_none_or(|(bd, _)| d < bd) {
+                    best = Some((d, i));
+                }
             }
         }
         let (d, i) = best?;

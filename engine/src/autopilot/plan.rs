@@ -28,9 +28,11 @@ const LEDGE_COST: u32 = 25;
 /// Cost of a straight and a diagonal move.
 const STRAIGHT: u32 = 10;
 const DIAGONAL: u32 = 14;
-/// An item is picked up from a cell whose centre is this close: the
-/// body's box touches the item's (16 + 20 in Doom) even across a railing.
-pub const TOUCH_REACH: f64 = 30.0;
+/// An item is picked up from a cell whose centre is this close along each
+/// axis: the body's box touches the item's (16 + 20 in Doom, boxes, not
+/// circles) even across a railing or from under a ledge; less 2 for a body
+/// a little off its cell's centre.
+pub const TOUCH_REACH: f64 = 34.0;
 /// A use spot: the cell's centre is at most this far from the line.
 const USE_REACH: f64 = USE_RANGE - 20.0;
 
@@ -61,8 +63,13 @@ pub struct Mechanisms {
     /// Per sector: the lines that call the lift down from its top (to ride
     /// it down); a lift with none is ridden up only.
     pub lift_down: Vec<Vec<LineId>>,
-    /// Per sector: the floor a lift comes back up to (its floor when the
-    /// level starts; a perpetual lift's highest neighbouring floor).
+    /// Per sector: every line that lowers it as a lift, and how.
+    pub lift_lines: Vec<Vec<(LineId, Activation)>>,
+    /// Per sector: a perpetual lift (its top is its highest neighbour's floor).
+    pub perpetual: Vec<bool>,
+    /// Per sector: the floor a lift comes back up to (its floor at rest, at
+    /// the start and whenever it is still again; a perpetual lift's highest
+    /// neighbouring floor).
     pub lift_top: Vec<f64>,
     /// Per sector: whether some special crushes in it (a crusher, a floor
     /// or ceiling that crushes): the bot keeps out from under it as it
@@ -88,6 +95,8 @@ impl Mechanisms {
             lift_top: map.sectors.iter().map(|s| s.floor).collect(),
             crushers: vec![false; sectors],
             lift_down: vec![Vec::new(); sectors],
+            lift_lines: vec![Vec::new(); sectors],
+            perpetual: vec![false; sectors],
             ..Default::default()
         };
         let ids = 0..(map.lines.len() + map.trigger_lines.len()) as u32;
@@ -119,14 +128,9 @@ impl Mechanisms {
                         if matches!(special.action, Action::PerpetualLift { .. }) {
                             let high = specials::highest_floor_around(level, s).unwrap_or(m.lift_top[s]);
                             m.lift_top[s] = m.lift_top[s].max(high);
+                            m.perpetual[s] = true;
                         }
-                        let (below, above) = lift_calls(level, id, special.on, s, m.lift_top[s]);
-                        if below {
-                            m.lifts[s].push(id);
-                        }
-                        if above {
-                            m.lift_down[s].push(id);
-                        }
+                        m.lift_lines[s].push((id, special.on));
                     }
                 }
                 Action::Exit => m.exits.push((id, false)),
@@ -149,7 +153,43 @@ impl Mechanisms {
                 _ => {}
             }
         }
+        for s in 0..sectors {
+            m.sort_lift_lines(level, s);
+        }
         m
+    }
+
+    /// Sorts lift `s`'s lines into those that call it from below and from
+    /// the top, for its top as it is now.
+    fn sort_lift_lines(&mut self, level: &Level, s: usize) {
+        self.lifts[s].clear();
+        self.lift_down[s].clear();
+        for &(id, on) in &self.lift_lines[s] {
+            let (below, above) = lift_calls(level, id, on, s, self.lift_top[s]);
+            if below {
+                self.lifts[s].push(id);
+            }
+            if above {
+                self.lift_down[s].push(id);
+            }
+        }
+    }
+
+    /// A lift at rest is at its top: when another special has moved it
+    /// (raised the floor it returns to), its top and its lines' sorting
+    /// follow. `busy` says which sectors are moving now.
+    pub fn settle_lifts(&mut self, level: &Level, busy: impl Fn(usize) -> bool) {
+        let map = &level.compiled.map;
+        for s in 0..self.lift_lines.len() {
+            if self.lift_lines[s].is_empty() || self.perpetual[s] || busy(s) {
+                continue;
+            }
+            let floor = map.sectors[s].floor;
+            if floor != self.lift_top[s] {
+                self.lift_top[s] = floor;
+                self.sort_lift_lines(level, s);
+            }
+        }
     }
 }
 
@@ -269,6 +309,8 @@ pub enum Purpose {
     Trigger,
     Supplies,
     Lift,
+    /// Off a floor that hurts, with nothing else to do.
+    Safety,
 }
 
 /// What the search needs of a goal: cells where it is met, and lines whose
@@ -500,7 +542,8 @@ pub fn use_cells(nav: &NavGrid, map: &Map, line: LineId) -> Targets {
     t
 }
 
-/// Cells within `reach` of `p`.
+/// Cells within `reach` of `p` along each axis (a square, as Doom's
+/// touching boxes are).
 pub fn cells_near(nav: &NavGrid, p: DVec2, reach: f64) -> Targets {
     let mut t = Targets::default();
     let r = (reach / CELL).ceil() as i32 + 1;
@@ -513,7 +556,7 @@ pub fn cells_near(nav: &NavGrid, p: DVec2, reach: f64) -> Targets {
                 continue;
             }
             let c = (y as usize * nav.width + x as usize) as Cell;
-            if nav.standable(c) && nav.centre_of(c).distance(p) <= reach {
+            if nav.standable(c) && (nav.centre_of(c) - p).abs().max_element() <= reach {
                 t.cells.insert(c);
             }
         }

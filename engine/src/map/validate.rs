@@ -524,14 +524,16 @@ fn sectors_containing(map: &Map, p: DVec2) -> Vec<usize> {
     odd.iter().enumerate().filter(|(_, &o)| o).map(|(s, _)| s).collect()
 }
 
-/// Phase 3: things. The first player start is the one used.
+/// Phase 3: things. The last player start is the one used, as in Doom (each
+/// start spawns the player in turn, and the last one keeps it; MAP20 of
+/// freedoom2 has a first start on a conveyor, a "voodoo doll").
 fn find_player_start(map: &Map) -> Result<usize, Problem> {
     for (i, t) in map.things.iter().enumerate() {
         if !in_range(t.pos.x) || !in_range(t.pos.y) || !t.angle.is_finite() {
             return Err(Problem::BadThing { thing: i });
         }
     }
-    let start = map.things.iter().position(|t| t.kind == PLAYER_START).ok_or(Problem::NoPlayerStart)?;
+    let start = map.things.iter().rposition(|t| t.kind == PLAYER_START).ok_or(Problem::NoPlayerStart)?;
     let p = map.things[start].pos;
     // In the map, a point on a two-sided line included; which sector it is
     // in is for the BSP to say, once compiled (CompiledMap::locate).
