@@ -576,6 +576,17 @@ mod tests {
     }
 
     #[test]
+    fn the_last_player_start_is_the_player() {
+        let text = room_with_inner_loop("", "", "").replace(
+            r#"things: [Thing(kind: "player_start", x: 50.0, y: 50.0, angle: 0.0)]"#,
+            r#"things: [Thing(kind: "player_start", x: 50.0, y: 50.0, angle: 0.0),
+                       Thing(kind: "player_start", x: 200.0, y: 200.0, angle: 90.0)]"#,
+        );
+        let map = parse_map(&text, "t.ron").unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(map.player_start().pos, glam::DVec2::new(200.0, 200.0));
+    }
+
+    #[test]
     fn pillar_wound_either_way() {
         // Counter-clockwise (room on the right of each pillar edge): valid.
         let good = room_with_inner_loop(&loop_lines([4, 7, 6, 5], "Side(sector: 0)"), "", "");
