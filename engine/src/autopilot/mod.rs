@@ -477,8 +477,7 @@ impl Autopilot {
         let world = assumed.world(&self.nav, &self.mech, &self.hurts, &game.level().compiled.map);
         self.search.run(&world, start, None);
         let safe = self.search.reached.iter().copied().find(|&c| {
-            let centre = self.nav.centre[c as usize];
-            centre != nav::NONE && !self.hurts[centre as usize] && !self.nav.span(c, &assumed.heights).ledge()
+            self.nav.touched(c).iter().all(|&s| !self.hurts[s as usize]) && !self.nav.span(c, &assumed.heights).ledge()
         })?;
         let mut targets = Targets::default();
         targets.add(plan::cells_near(&self.nav, self.nav.centre_of(safe), 1.0));
@@ -1207,6 +1206,15 @@ impl Autopilot {
                 self.settle_until = now + 35;
                 self.next_replan = now + 35;
                 None
+            }
+            Goal::Touch(pos, _) if a.purpose == Purpose::Safety => {
+                // Off the hurting floor, or as near the safe cell as it goes.
+                let player = game.player();
+                if !self.hurts.get(player.sector).copied().unwrap_or(false) || a.arrived > 70 {
+                    self.next_replan = now;
+                    return None;
+                }
+                Some(self.drive_to(game, pos, true))
             }
             Goal::Touch(pos, actor) => {
                 let gone = game.actors().list.get(actor as usize).is_none_or(|x| x.removed);
