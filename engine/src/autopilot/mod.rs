@@ -55,6 +55,9 @@ const GO_ON_TICKS: u32 = 35 * 2;
 const FIGHT_RANGE: f64 = 1400.0;
 /// Below this health the bot goes for health it can reach.
 const LOW_HEALTH: i32 = 60;
+/// A barrel nearer than this on the line of fire stops the bot firing (a
+/// barrel's blast reaches 128 units).
+const BARREL_CLEARANCE: f64 = 192.0;
 /// With this many monsters in sight, a fight is fought falling back: they
 /// follow one at a time through the way it came.
 const CROWD: u32 = 3;
@@ -1263,6 +1266,21 @@ impl Autopilot {
         }
         let (d, i) = best?;
         let to = actors.list[i].pos - player.pos;
+        // A barrel close by on the line of fire: its blast would hurt the
+        // bot more than the shot hurts the enemy. Hold fire.
+        let barrel_in_the_way = actors.list.iter().any(|b| {
+            let p = b.pos - player.pos;
+            !b.removed
+                && b.health > 0
+                && table.actors[b.kind].name == "barrel"
+                && p.length() < BARREL_CLEARANCE
+                && p.length() < d
+                && p.dot(to) > 0.0
+                && plan::nearest_on(b.pos, player.pos, actors.list[i].pos).distance(b.pos) < 32.0
+        });
+        if barrel_in_the_way {
+            return None;
+        }
         Some((to.y.atan2(to.x).to_degrees(), weapon_for(game, d), d))
     }
 }
