@@ -276,7 +276,9 @@ impl Autopilot {
         // still firing, to fight from behind a corner or go for health.
         self.fighting = if fight.is_some() { (self.fighting + 1) % (STAND_TICKS + GO_ON_TICKS) } else { 0 };
         let retreat = fight.is_some() && (player.health < RETREAT_HEALTH || self.in_sight >= CROWD);
-        let stand = !retreat && fight.is_some_and(|f| f.1 != 1) && self.fighting < STAND_TICKS;
+        // Never stand on a floor that hurts.
+        let hurting = self.hurts.get(player.sector).copied().unwrap_or(false);
+        let stand = !retreat && !hurting && fight.is_some_and(|f| f.1 != 1) && self.fighting < STAND_TICKS;
         let back = retreat.then(|| self.fall_back(player.pos)).flatten();
         let mut input = if let Some(back) = back {
             self.drive_to(game, back, false)
