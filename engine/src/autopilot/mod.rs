@@ -691,10 +691,10 @@ impl Autopilot {
         let actors = game.actors();
         // Floors that hurt take health too; ammo matters only with monsters.
         let low_health = player.health < LOW_HEALTH;
-        let low_ammo = game.stats().kills.1 > 0 && player.ammo[0] < 20 && player.ammo[1] < 4;
-        if !low_health && !low_ammo {
-            return None;
-        }
+        let monsters = game.stats().kills.1 > 0;
+        let low_ammo = monsters && player.ammo[0] < 20 && player.ammo[1] < 4;
+        let table = &actors.table;
+        let owned = |name: &str| player.weapons.iter().any(|&w| table.actors[w].name == name);
         let mut best: Option<(f64, u32, DVec2)> = None;
         for (i, a) in actors.list.iter().enumerate() {
             let def = &actors.table.actors[a.kind];
@@ -702,13 +702,19 @@ impl Autopilot {
                 continue;
             }
             let Some(pickup) = &def.pickup else { continue };
-            let useful = pickup.give.iter().any(|g| match g {
-                crate::actors::Give::Health { .. } => low_health && player.health < 100,
-                crate::actors::Give::Ammo { .. } => low_ammo,
-                _ => false,
+            // With monsters about, a weapon it lacks or better armour than
+            // it wears is worth a short detour too.
+            let (useful, range) = pickup.give.iter().fold((false, 0.0f64), |(u, r), g| match g {
+                crate::actors::Give::Health { .. } if low_health && player.health < 100 => (true, r.max(1500.0)),
+                crate::actors::Give::Ammo { .. } if low_ammo => (true, r.max(1500.0)),
+                crate::actors::Give::Weapon(name) if monsters && !owned(name) => (true, r.max(768.0)),
+                crate::actors::Give::Armor { points, .. } if monsters && player.armor < *points => {
+                    (true, r.max(768.0))
+                }
+                _ => (u, r),
             });
             let d = a.pos.distance(player.pos);
-            if useful && d < 1500.0 && best.is_none_or(|b| d < b.0) {
+            if useful && d < range && best.is_none_or(|b| d < b.0) {
                 best = Some((d, i as u32, a.pos));
             }
         }
