@@ -27,8 +27,8 @@ pub type Point = DVec2;
 use crate::actors::{ActorFlag, Category};
 use crate::map::special::{Activation, KeyColour};
 use crate::play::events::Event;
-use crate::play::sight::{self, Body};
 use crate::play::player::RADIUS;
+use crate::play::sight::{self, Body};
 use crate::play::{Game, TickInput};
 use nav::{Cell, Heights, LineId, NavGrid, CELL, DIRS};
 use plan::{line_of, Goal, Mechanisms, Purpose, Route, Search, Targets};
@@ -282,9 +282,7 @@ impl Autopilot {
         let back = retreat.then(|| self.fall_back(player.pos)).flatten();
         let mut input = if let Some(back) = back {
             self.drive_to(game, back, false)
-        } else if stand {
-            TickInput::default()
-        } else if matches!(self.status, Status::Stuck { .. }) && now < self.next_replan {
+        } else if stand || (matches!(self.status, Status::Stuck { .. }) && now < self.next_replan) {
             TickInput::default()
         } else {
             self.follow(game)
@@ -312,7 +310,7 @@ impl Autopilot {
                 .map(|w| w.slot);
             input.weapon = if in_hand == Some(weapon) { 0 } else { weapon };
             if stand {
-                input.strafe = if (now / 24) % 2 == 0 { 1 } else { -1 };
+                input.strafe = if (now / 24).is_multiple_of(2) { 1 } else { -1 };
                 input.forward = if fight.is_some_and(|f| f.2 < 192.0) { -1 } else { 0 };
                 input.run = true;
             } else if let Some(dir) = move_dir {
@@ -628,7 +626,7 @@ impl Autopilot {
         for (cost, line, goal) in candidates.iter().take(16).cloned() {
             let (sl, _, _, special) = line_of(map, line);
             let Some(special) = special else { continue };
-            let Some(after) = plan::predict(level, &heights, sl, special) else {
+            let Some(after) = plan::predict(level, heights, sl, special) else {
                 if unknown.is_none() {
                     unknown = Some((cost, line, goal));
                 }
@@ -659,7 +657,7 @@ impl Autopilot {
         }
         // The pick first, then the rest by distance.
         let pick = best.map(|b| (b.2, b.3)).or(unknown.map(|u| (u.1, u.2)));
-        let world = plan::World { heights: &heights, ..world };
+        let world = plan::World { heights, ..world };
         for (_, goal) in pick.into_iter().chain(candidates.into_iter().map(|c| (c.1, c.2))) {
             let targets = plan::targets_of(nav, map, &goal);
             if let Some(route) = self.search.run(&world, start, Some(&targets)) {
@@ -708,9 +706,7 @@ impl Autopilot {
                 crate::actors::Give::Health { .. } if low_health && player.health < 100 => (true, r.max(1500.0)),
                 crate::actors::Give::Ammo { .. } if low_ammo => (true, r.max(1500.0)),
                 crate::actors::Give::Weapon(name) if monsters && !owned(name) => (true, r.max(768.0)),
-                crate::actors::Give::Armor { points, .. } if monsters && player.armor < *points => {
-                    (true, r.max(768.0))
-                }
+                crate::actors::Give::Armor { points, .. } if monsters && player.armor < *points => (true, r.max(768.0)),
                 _ => (u, r),
             });
             let d = a.pos.distance(player.pos);
@@ -867,12 +863,10 @@ impl Autopilot {
         let window = a.at.saturating_sub(8)..(a.at + 10).min(cells.len());
         if self.nav.cell_at(pos).is_some_and(crushing) || crushing(c) {
             // Out from under it by the nearest cell of the route that is not.
-            let out = window
-                .filter(|&k| !crushing(cells[k]) && !a.route.teleport[k])
-                .min_by(|&i, &j| {
-                    let d = |k: usize| self.nav.centre_of(cells[k]).distance(pos);
-                    d(i).total_cmp(&d(j))
-                });
+            let out = window.filter(|&k| !crushing(cells[k]) && !a.route.teleport[k]).min_by(|&i, &j| {
+                let d = |k: usize| self.nav.centre_of(cells[k]).distance(pos);
+                d(i).total_cmp(&d(j))
+            });
             if let Some(k) = out {
                 a.idle = 0;
                 return Some(self.drive_to(game, self.nav.centre_of(cells[k]), false));

@@ -15,9 +15,9 @@ use crate::level::Level;
 use crate::map::special::{Action, Activation, CeilingTarget, DoorKind, KeyColour, LineSpecial};
 use crate::map::Map;
 use crate::play::collision::distance_to_segment;
+use crate::play::player::MAX_STEP;
 use crate::play::world::specials::{self, target_sectors};
 use crate::play::world::{floors, SpecialLine};
-use crate::play::player::MAX_STEP;
 use crate::play::USE_RANGE;
 
 /// Extra cost of standing in a cell whose floor hurts.
@@ -104,9 +104,8 @@ impl Mechanisms {
             let (line, _, _, special) = line_of(map, id);
             let Some(special) = special else { continue };
             let targets = target_sectors(level, line, special);
-            if let Action::Crusher { .. }
-            | Action::Floor { crush: true, .. }
-            | Action::Ceiling { crush: true, .. } = special.action
+            if let Action::Crusher { .. } | Action::Floor { crush: true, .. } | Action::Ceiling { crush: true, .. } =
+                special.action
             {
                 for &s in &targets {
                     m.crushers[s] = true;
