@@ -524,16 +524,19 @@ fn sectors_containing(map: &Map, p: DVec2) -> Vec<usize> {
     odd.iter().enumerate().filter(|(_, &o)| o).map(|(s, _)| s).collect()
 }
 
-/// Phase 3: things. The last player start is the one used, as in Doom (each
-/// start spawns the player in turn, and the last one keeps it; MAP20 of
-/// freedoom2 has a first start on a conveyor, a "voodoo doll").
+/// Phase 3: things. The last player start in the map is the one used, as
+/// in Doom (each start spawns the player in turn and the last keeps it; an
+/// earlier one is a "voodoo doll": freedoom2's MAP20 has one on a
+/// conveyor). With none in the map, the first is reported outside.
 fn find_player_start(map: &Map) -> Result<usize, Problem> {
     for (i, t) in map.things.iter().enumerate() {
         if !in_range(t.pos.x) || !in_range(t.pos.y) || !t.angle.is_finite() {
             return Err(Problem::BadThing { thing: i });
         }
     }
-    let start = map.things.iter().rposition(|t| t.kind == PLAYER_START).ok_or(Problem::NoPlayerStart)?;
+    let mut starts = map.things.iter().enumerate().filter(|(_, t)| t.kind == PLAYER_START).map(|(i, _)| i);
+    let first = starts.next().ok_or(Problem::NoPlayerStart)?;
+    let start = starts.filter(|&i| map.contains(map.things[i].pos)).last().unwrap_or(first);
     let p = map.things[start].pos;
     // In the map, a point on a two-sided line included; which sector it is
     // in is for the BSP to say, once compiled (CompiledMap::locate).
@@ -576,14 +579,19 @@ mod tests {
     }
 
     #[test]
-    fn the_last_player_start_is_the_player() {
-        let text = room_with_inner_loop("", "", "").replace(
-            r#"things: [Thing(kind: "player_start", x: 50.0, y: 50.0, angle: 0.0)]"#,
-            r#"things: [Thing(kind: "player_start", x: 50.0, y: 50.0, angle: 0.0),
-                       Thing(kind: "player_start", x: 200.0, y: 200.0, angle: 90.0)]"#,
-        );
-        let map = parse_map(&text, "t.ron").unwrap_or_else(|e| panic!("{e}"));
-        assert_eq!(map.player_start().pos, glam::DVec2::new(200.0, 200.0));
+    fn the_last_player_start_in_the_map_is_the_player() {
+        let things = |list: &str| {
+            room_with_inner_loop("", "", "").replace(
+                r#"things: [Thing(kind: "player_start", x: 50.0, y: 50.0, angle: 0.0)]"#,
+                &format!("things: [{list}]"),
+            )
+        };
+        let start = |text: String| parse_map(&text, "t.ron").unwrap_or_else(|e| panic!("{e}")).player_start().pos;
+        let first = r#"Thing(kind: "player_start", x: 50.0, y: 50.0, angle: 0.0)"#;
+        let last = r#"Thing(kind: "player_start", x: 200.0, y: 200.0, angle: 90.0)"#;
+        let outside = r#"Thing(kind: "player_start", x: 900.0, y: 900.0, angle: 90.0)"#;
+        assert_eq!(start(things(&format!("{first}, {last}"))), glam::DVec2::new(200.0, 200.0));
+        assert_eq!(start(things(&format!("{first}, {last}, {outside}"))), glam::DVec2::new(200.0, 200.0));
     }
 
     #[test]
