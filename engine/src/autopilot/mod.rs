@@ -58,6 +58,8 @@ const LOW_HEALTH: i32 = 60;
 /// A barrel nearer than this on the line of fire stops the bot firing (a
 /// barrel's blast reaches 128 units).
 const BARREL_CLEARANCE: f64 = 192.0;
+/// How far a barrel's blast reaches (128) and a little more.
+const BARREL_BLAST: f64 = 160.0;
 /// With this many monsters in sight, a fight is fought falling back: they
 /// follow one at a time through the way it came.
 const CROWD: u32 = 3;
@@ -182,6 +184,8 @@ pub struct Autopilot {
     fighting: u32,
     /// Something changed that may change the goal (a key picked up).
     rechoose: bool,
+    /// A barrel within [`BARREL_BLAST`] while fighting, last tick.
+    barrel_near: bool,
     /// Live monsters in sight last tick (counted up to [`CROWD`]).
     in_sight: u32,
     /// Health was under [`LOW_HEALTH`] last tick.
@@ -227,6 +231,7 @@ impl Autopilot {
             trail: vec![game.player().pos],
             low_health: false,
             in_sight: 0,
+            barrel_near: false,
         }
     }
 
@@ -275,7 +280,8 @@ impl Autopilot {
         // on; with only a fist, go on. Hurt, fall back the way it came,
         // still firing, to fight from behind a corner or go for health.
         self.fighting = if fight.is_some() { (self.fighting + 1) % (STAND_TICKS + GO_ON_TICKS) } else { 0 };
-        let retreat = fight.is_some() && (player.health < RETREAT_HEALTH || self.in_sight >= CROWD);
+        let retreat =
+            fight.is_some() && (player.health < RETREAT_HEALTH || self.in_sight >= CROWD || self.barrel_near);
         // Never stand on a floor that hurts.
         let hurting = self.hurts.get(player.sector).copied().unwrap_or(false);
         let stand = !retreat && !hurting && fight.is_some_and(|f| f.1 != 1) && self.fighting < STAND_TICKS;
@@ -1266,6 +1272,15 @@ impl Autopilot {
                 }
             }
         }
+        // A barrel close by in a fight: any shot, the bot's or an
+        // enemy's, can set it off. Fall back away from it.
+        self.barrel_near = best.is_some()
+            && actors.list.iter().any(|b| {
+                !b.removed
+                    && b.health > 0
+                    && table.actors[b.kind].name == "barrel"
+                    && b.pos.distance(player.pos) < BARREL_BLAST
+            });
         let (d, i) = best?;
         let to = actors.list[i].pos - player.pos;
         // A barrel close by on the line of fire: its blast would hurt the
