@@ -280,8 +280,7 @@ impl Autopilot {
         // on; with only a fist, go on. Hurt, fall back the way it came,
         // still firing, to fight from behind a corner or go for health.
         self.fighting = if fight.is_some() { (self.fighting + 1) % (STAND_TICKS + GO_ON_TICKS) } else { 0 };
-        let retreat =
-            fight.is_some() && (player.health < RETREAT_HEALTH || self.in_sight >= CROWD || self.barrel_near);
+        let retreat = fight.is_some() && (player.health < RETREAT_HEALTH || self.in_sight >= CROWD || self.barrel_near);
         // Never stand on a floor that hurts.
         let hurting = self.hurts.get(player.sector).copied().unwrap_or(false);
         let stand = !retreat && !hurting && fight.is_some_and(|f| f.1 != 1) && self.fighting < STAND_TICKS;
