@@ -146,6 +146,13 @@ struct Active {
     arrived: u32,
 }
 
+impl Active {
+    /// A route to `goal` just found, nothing done along it yet.
+    fn new(goal: Goal, purpose: Purpose, route: Route) -> Active {
+        Active { goal, purpose, route, at: 0, idle: 0, waited: 0, still: 0, reroutes: 0, presses: 0, arrived: 0 }
+    }
+}
+
 /// The bot. Make one per game with [`Autopilot::new`], then call
 /// [`Autopilot::tick`] before every [`Game::tick`].
 pub struct Autopilot {
@@ -190,6 +197,9 @@ pub struct Autopilot {
     in_sight: u32,
     /// Health was under [`LOW_HEALTH`] last tick.
     low_health: bool,
+    /// Cells within a body and a cell of a teleport line, where the bot
+    /// goes carefully unless its route takes the teleport.
+    near_teleport: BTreeSet<Cell>,
     /// Where the body has been, a point every [`TRAIL_STEP`] units, the
     /// newest last: the way back out of a fight going badly.
     trail: Vec<DVec2>,
@@ -205,6 +215,15 @@ impl Autopilot {
         let mut mech = Mechanisms::of(level);
         mech.locate_doors(&nav, map);
         let hurts = map.sectors.iter().map(|s| s.special.damage.is_some()).collect();
+        let mut near_teleport = BTreeSet::new();
+        for &l in mech.teleports.keys() {
+            let (_, a, b, _) = line_of(map, l);
+            let margin = DVec2::splat(RADIUS + CELL);
+            near_teleport.extend(nav.cells_in_box(a.min(b) - margin, a.max(b) + margin).filter(|&c| {
+                let p = nav.centre_of(c);
+                plan::nearest_on(p, a, b).distance(p) < RADIUS + CELL
+            }));
+        }
         Autopilot {
             nav,
             mech,
@@ -229,6 +248,7 @@ impl Autopilot {
             fighting: 0,
             rechoose: false,
             trail: vec![game.player().pos],
+            near_teleport,
             low_health: false,
             in_sight: 0,
             barrel_near: false,
@@ -282,7 +302,7 @@ impl Autopilot {
         self.fighting = if fight.is_some() { (self.fighting + 1) % (STAND_TICKS + GO_ON_TICKS) } else { 0 };
         let retreat = fight.is_some() && (player.health < RETREAT_HEALTH || self.in_sight >= CROWD || self.barrel_near);
         // Never stand on a floor that hurts.
-        let hurting = self.hurts.get(player.sector).copied().unwrap_or(false);
+        let hurting = self.on_hurting_floor(game);
         let stand = !retreat && !hurting && fight.is_some_and(|f| f.1 != 1) && self.fighting < STAND_TICKS;
         let back = retreat.then(|| self.fall_back(player.pos)).flatten();
         let mut input = if let Some(back) = back {
@@ -473,11 +493,16 @@ impl Autopilot {
         chosen
     }
 
+    /// Is the body's sector one whose floor hurts?
+    fn on_hurting_floor(&self, game: &Game) -> bool {
+        self.hurts.get(game.player().sector).copied().unwrap_or(false)
+    }
+
     /// With nothing to do while standing where the floor hurts: the way to
     /// the nearest floor that does not.
     fn off_hurting_floor(&mut self, game: &Game) -> Option<Active> {
         let player = game.player();
-        if !self.hurts.get(player.sector).copied().unwrap_or(false) {
+        if !self.on_hurting_floor(game) {
             return None;
         }
         let assumed = self.assume(game);
@@ -490,18 +515,7 @@ impl Autopilot {
         let mut targets = Targets::default();
         targets.add(plan::cells_near(&self.nav, self.nav.centre_of(safe), 1.0));
         let route = self.search.run(&world, start, Some(&targets))?;
-        Some(Active {
-            goal: Goal::Touch(self.nav.centre_of(safe), u32::MAX),
-            purpose: Purpose::Safety,
-            route,
-            at: 0,
-            idle: 0,
-            waited: 0,
-            still: 0,
-            reroutes: 0,
-            presses: 0,
-            arrived: 0,
-        })
+        Some(Active::new(Goal::Touch(self.nav.centre_of(safe), u32::MAX), Purpose::Safety, route))
     }
 
     fn choose_inner(&mut self, game: &Game) -> Option<Active> {
@@ -513,18 +527,7 @@ impl Autopilot {
         let start = self.nav.start_cell(game.player().pos, game.player().z, heights)?;
         let world = assumed.world(&self.nav, &self.mech, &self.hurts, map);
         let nav = &self.nav;
-        let active = |goal: Goal, purpose: Purpose, route: Route| Active {
-            goal,
-            purpose,
-            route,
-            at: 0,
-            idle: 0,
-            waited: 0,
-            still: 0,
-            reroutes: 0,
-            presses: 0,
-            arrived: 0,
-        };
+        let active = Active::new;
 
         // Supplies first when they are short and monsters are about.
         if let Some((goal, targets)) = self.supplies(game) {
@@ -782,9 +785,9 @@ impl Autopilot {
                     // nothing; a move given up may work now).
                     self.rounds += 1;
                     self.tried.retain(|&l, _| {
-                        let once = line_of(&game.level().compiled.map, l).3.is_some_and(|s| !s.repeat);
-                        once && (line_of(&game.level().compiled.map, l).3.is_some_and(|s| s.on == Activation::Walk)
-                            || Self::used_up(game, l))
+                        line_of(&game.level().compiled.map, l)
+                            .3
+                            .is_some_and(|s| !s.repeat && (s.on == Activation::Walk || Self::used_up(game, l)))
                     });
                     self.failures.clear();
                     self.unreachable.clear();
@@ -919,14 +922,7 @@ impl Autopilot {
         // A teleport line the route does not take, close by: go carefully
         // (a body that drifts over it is somewhere else).
         let teleporting = a.route.teleport[a.at..(a.at + 5).min(cells.len())].iter().any(|&t| t);
-        let near_teleport = !teleporting
-            && soon.iter().any(|&x| {
-                let p = self.nav.centre_of(x);
-                self.mech.teleports.keys().any(|&l| {
-                    let (_, a, b, _) = line_of(map, l);
-                    plan::nearest_on(p, a, b).distance(p) < RADIUS + CELL
-                })
-            });
+        let near_teleport = !teleporting && soon.iter().any(|x| self.near_teleport.contains(x));
         let ahead = if a.idle > STUCK_TICKS / 2 || on_ledge || near_teleport { 1 } else { 3 };
         let mut k = a.at + 1;
         while k < last && k < a.at + ahead && !a.route.teleport[k + 1] {
@@ -965,7 +961,7 @@ impl Autopilot {
         let keys = Self::keys_held(game);
         a.waited += 1;
         // Waiting on a floor that hurts is short.
-        let hurting = self.hurts.get(player.sector).copied().unwrap_or(false);
+        let hurting = self.on_hurting_floor(game);
         let patience = if hurting { 35 * 2 } else { 35 * 12 };
         if a.waited > patience || a.still > STILL_TICKS {
             a.idle = STUCK_TICKS + 1;
@@ -1000,15 +996,12 @@ impl Autopilot {
             let on = (player.z - live.floor[s]).abs() < 1.0
                 && self.nav.touched(a.route.cells[a.at]).contains(&(s as u32))
                 && !self.mech.lifts[s].is_empty();
-            let lines = if below {
-                &self.mech.lifts[s]
-            } else if on {
-                &self.mech.lift_down[s]
-            } else {
-                &Vec::new()
+            let lines = match (below, on) {
+                (true, _) => self.mech.lifts[s].clone(),
+                (false, true) => self.mech.lift_down[s].clone(),
+                _ => Vec::new(),
             };
             if !lines.is_empty() {
-                let lines = lines.clone();
                 let spent = self.spent(game);
                 for &line in &lines {
                     if spent.contains(&line) {
@@ -1031,18 +1024,7 @@ impl Autopilot {
                     }
                     if let Some(route) = self.route_to(game, &goal) {
                         self.give_up(&a.goal);
-                        *a = Active {
-                            goal,
-                            purpose: Purpose::Lift,
-                            route,
-                            at: 0,
-                            idle: 0,
-                            waited: 0,
-                            still: 0,
-                            reroutes: 0,
-                            presses: 0,
-                            arrived: 0,
-                        };
+                        *a = Active::new(goal, Purpose::Lift, route);
                         return Some(self.hold(game));
                     }
                 }
@@ -1158,22 +1140,7 @@ impl Autopilot {
                     if let Some(input) = self.use_line(game, line) {
                         if input.use_line {
                             a.presses += 1;
-                            if std::env::var_os("SIGHTLINE_AUTOPILOT_TRACE").is_some() {
-                                let level = game.level();
-                                let (sl, _, _, sp) = line_of(&level.compiled.map, line);
-                                let busy: Vec<(usize, bool)> = sp
-                                    .map(|sp| crate::play::world::specials::target_sectors(level, sl, sp))
-                                    .unwrap_or_default()
-                                    .into_iter()
-                                    .map(|s| (s, game.world().is_busy(s)))
-                                    .collect();
-                                eprintln!(
-                                    "press line {line} from {:?} facing {:.1}, live {}, targets busy {busy:?}",
-                                    player.pos,
-                                    player.angle,
-                                    game.world().special(level, sl).is_some()
-                                );
-                            }
+                            Self::trace_press(game, line);
                         }
                         return Some(input);
                     }
@@ -1219,8 +1186,7 @@ impl Autopilot {
             }
             Goal::Touch(pos, _) if a.purpose == Purpose::Safety => {
                 // Off the hurting floor, or as near the safe cell as it goes.
-                let player = game.player();
-                if !self.hurts.get(player.sector).copied().unwrap_or(false) || a.arrived > 70 {
+                if !self.on_hurting_floor(game) || a.arrived > 70 {
                     self.next_replan = now;
                     return None;
                 }
@@ -1238,6 +1204,28 @@ impl Autopilot {
                 Some(self.drive_to(game, pos, false))
             }
         }
+    }
+
+    /// With `SIGHTLINE_AUTOPILOT_TRACE` set: a press of `line`, where from,
+    /// whether the line is still live and which of its sectors are busy.
+    fn trace_press(game: &Game, line: LineId) {
+        if std::env::var_os("SIGHTLINE_AUTOPILOT_TRACE").is_none() {
+            return;
+        }
+        let (level, player) = (game.level(), game.player());
+        let (sl, _, _, special) = line_of(&level.compiled.map, line);
+        let busy: Vec<(usize, bool)> = special
+            .map(|sp| crate::play::world::specials::target_sectors(level, sl, sp))
+            .unwrap_or_default()
+            .into_iter()
+            .map(|s| (s, game.world().is_busy(s)))
+            .collect();
+        eprintln!(
+            "press line {line} from {:?} facing {:.1}, live {}, targets busy {busy:?}",
+            player.pos,
+            player.angle,
+            game.world().special(level, sl).is_some()
+        );
     }
 
     /// The enemy to shoot, if one is in sight: the angle to it and the
@@ -1271,30 +1259,30 @@ impl Autopilot {
                 }
             }
         }
-        // A barrel close by in a fight: any shot, the bot's or an
-        // enemy's, can set it off. Fall back away from it.
-        self.barrel_near = best.is_some()
-            && actors.list.iter().any(|b| {
-                !b.removed
-                    && b.health > 0
-                    && table.actors[b.kind].name == "barrel"
-                    && b.pos.distance(player.pos) < BARREL_BLAST
-            });
-        let (d, i) = best?;
-        let to = actors.list[i].pos - player.pos;
-        // A barrel close by on the line of fire: its blast would hurt the
-        // bot more than the shot hurts the enemy. Hold fire.
-        let barrel_in_the_way = actors.list.iter().any(|b| {
+        let Some((d, i)) = best else {
+            self.barrel_near = false;
+            return None;
+        };
+        let target = actors.list[i].pos;
+        let to = target - player.pos;
+        // Barrels close by in a fight: any shot, the bot's or an enemy's,
+        // can set one off, so fall back away from them; one on the line of
+        // fire would hurt the bot more than the shot hurts the enemy, so
+        // hold fire.
+        let mut in_the_way = false;
+        self.barrel_near = false;
+        for b in &actors.list {
+            if b.removed || b.health <= 0 || table.actors[b.kind].name != "barrel" {
+                continue;
+            }
             let p = b.pos - player.pos;
-            !b.removed
-                && b.health > 0
-                && table.actors[b.kind].name == "barrel"
-                && p.length() < BARREL_CLEARANCE
+            self.barrel_near |= p.length() < BARREL_BLAST;
+            in_the_way |= p.length() < BARREL_CLEARANCE
                 && p.length() < d
                 && p.dot(to) > 0.0
-                && plan::nearest_on(b.pos, player.pos, actors.list[i].pos).distance(b.pos) < 32.0
-        });
-        if barrel_in_the_way {
+                && plan::nearest_on(b.pos, player.pos, target).distance(b.pos) < 32.0;
+        }
+        if in_the_way {
             return None;
         }
         Some((to.y.atan2(to.x).to_degrees(), weapon_for(game, d), d))

@@ -282,6 +282,18 @@ impl NavGrid {
         grid
     }
 
+    /// The cells of the grid whose squares meet the box `lo`..`hi` (clipped
+    /// to the grid), row by row.
+    pub fn cells_in_box(&self, lo: DVec2, hi: DVec2) -> impl Iterator<Item = Cell> + '_ {
+        let far = self.origin + DVec2::new(self.width as f64, self.height as f64) * CELL - 1.0;
+        let corners = self.cell_at(lo.max(self.origin)).zip(self.cell_at(hi.min(far)));
+        let (x0, y0, x1, y1) = corners.map_or((1, 1, 0, 0), |(c0, c1)| {
+            let (c0, c1) = (c0 as usize, c1 as usize);
+            (c0 % self.width, c0 / self.width, c1 % self.width, c1 / self.width)
+        });
+        (y0..=y1).flat_map(move |y| (x0..=x1).map(move |x| (y * self.width + x) as Cell))
+    }
+
     pub fn cells(&self) -> usize {
         self.width * self.height
     }

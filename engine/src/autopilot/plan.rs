@@ -505,36 +505,22 @@ impl Search {
 pub fn use_cells(nav: &NavGrid, map: &Map, line: LineId) -> Targets {
     let (_, a, b, _) = line_of(map, line);
     let mut t = Targets::default();
-    let lo = a.min(b) - DVec2::splat(USE_REACH);
-    let hi = a.max(b) + DVec2::splat(USE_REACH);
-    let (Some(c0), Some(c1)) = (
-        nav.cell_at(lo.max(nav.origin)),
-        nav.cell_at(hi.min(nav.origin + DVec2::new(nav.width as f64, nav.height as f64) * CELL - 1.0)),
-    ) else {
-        return t;
-    };
-    let (x0, y0) = (c0 as usize % nav.width, c0 as usize / nav.width);
-    let (x1, y1) = (c1 as usize % nav.width, c1 as usize / nav.width);
-    for y in y0..=y1 {
-        for x in x0..=x1 {
-            let c = (y * nav.width + x) as Cell;
-            if !nav.standable(c) {
-                continue;
-            }
-            let p = nav.centre_of(c);
-            if crate::geom::front_distance(a, b, p) <= 0.0 || distance_to_segment(p, a, b) > USE_REACH {
-                continue;
-            }
-            // Aimed at the line's inner part (its ends are where niche
-            // walls meet it): the point across from the cell, or the middle.
-            let along = |t: f64| a + (b - a) * t;
-            let across = ((p - a).dot(b - a) / (b - a).length_squared().max(1e-9)).clamp(0.2, 0.8);
-            let reachable = [along(across), along(0.5)]
-                .into_iter()
-                .any(|q| q.distance(p) <= USE_REACH && clear_between(map, p, q, line));
-            if !reachable {
-                continue;
-            }
+    let reach = DVec2::splat(USE_REACH);
+    for c in nav.cells_in_box(a.min(b) - reach, a.max(b) + reach) {
+        if !nav.standable(c) {
+            continue;
+        }
+        let p = nav.centre_of(c);
+        if crate::geom::front_distance(a, b, p) <= 0.0 || distance_to_segment(p, a, b) > USE_REACH {
+            continue;
+        }
+        // Aimed at the line's inner part (its ends are where niche walls
+        // meet it): the point across from the cell, or the middle.
+        let along = |t: f64| a + (b - a) * t;
+        let reachable = [nearest_on(p, along(0.2), along(0.8)), along(0.5)]
+            .into_iter()
+            .any(|q| q.distance(p) <= USE_REACH && clear_between(map, p, q, line));
+        if reachable {
             t.cells.insert(c);
         }
     }
