@@ -186,7 +186,7 @@ fn closure(
         let mut changed = false;
         for &(colour, pos) in &t.keys {
             if !c.keys.contains(&colour)
-                && plan::cells_near(nav, pos, plan::TOUCH_REACH).cells().any(|x| c.reached[x as usize])
+                && plan::touch_cells(nav, &level.compiled.map, pos, None).cells().any(|x| c.reached[x as usize])
             {
                 c.keys.push(colour);
                 changed = true;
@@ -240,7 +240,7 @@ fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
     let map = &level.compiled.map;
     let nav = NavGrid::new(&level.compiled);
     let mut mech = Mechanisms::of(level);
-    mech.locate_doors(&nav, map);
+    mech.locate_doors(&nav, map, None);
     let t = things(level, &nav, skill);
     let hurts: Vec<bool> = map.sectors.iter().map(|s| s.special.damage.is_some()).collect();
     let mut search = Search::default();
@@ -263,8 +263,9 @@ fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
     };
     let c = closure(&nav, level, &mech, &t, start, Vec::new(), &hurts, &mut search);
     let place = |what: String, p: DVec2, reachable: bool| Place { what, x: p.x, y: p.y, reachable };
-    let near_reached =
-        |reached: &[bool], p: DVec2| plan::cells_near(&nav, p, plan::TOUCH_REACH).cells().any(|x| reached[x as usize]);
+    let near_reached = |reached: &[bool], p: DVec2| {
+        plan::touch_cells(&nav, &level.compiled.map, p, None).cells().any(|x| reached[x as usize])
+    };
 
     let mut exits = Vec::new();
     let mut exit_targets: Vec<(Targets, Option<LineId>)> = Vec::new();

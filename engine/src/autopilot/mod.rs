@@ -27,7 +27,7 @@ pub type Point = DVec2;
 use crate::actors::{ActorFlag, Category};
 use crate::map::special::{Activation, KeyColour};
 use crate::play::events::Event;
-use crate::play::player::RADIUS;
+use crate::play::player::{MAX_STEP, RADIUS};
 use crate::play::sight::{self, Body};
 use crate::play::{Game, TickInput};
 use nav::{Cell, Heights, LineId, NavGrid, CELL, DIRS};
@@ -41,6 +41,9 @@ const STUCK_TICKS: u32 = 70;
 const MAX_REROUTES: u32 = 3;
 /// Times the bot starts over (every switch untried) when it runs out of goals.
 const MAX_ROUNDS: u32 = 2;
+/// Ticks between two such rounds: one straight after another finds the
+/// level as it was (stuck meanwhile, the bot looks again each second).
+const ROUND_GAP: u64 = 35 * 10;
 /// A goal abandoned this often is not chosen again.
 const MAX_FAILURES: u32 = 3;
 /// Ticks to wait at a blocked move when nothing there moves and nothing can
@@ -51,6 +54,8 @@ const STILL_TICKS: u32 = 70;
 /// hold it for ever).
 const STAND_TICKS: u32 = 35 * 6;
 const GO_ON_TICKS: u32 = 35 * 2;
+/// Ticks without an enemy to fire at that end a fight.
+const CALM_TICKS: u32 = 35;
 /// A monster further than this is not fought.
 const FIGHT_RANGE: f64 = 1400.0;
 /// Below this health the bot goes for health it can reach.
@@ -187,8 +192,12 @@ pub struct Autopilot {
     hurts: Vec<bool>,
     /// Times everything was tried again after running out of goals.
     rounds: u32,
+    /// The tick of the last such round.
+    last_round: u64,
     /// Ticks into the current stand-and-fight cycle.
     fighting: u32,
+    /// Ticks since the last tick with an enemy to fire at.
+    calm: u32,
     /// Something changed that may change the goal (a key picked up).
     rechoose: bool,
     /// A barrel within [`BARREL_BLAST`] while fighting, last tick.
@@ -213,7 +222,7 @@ impl Autopilot {
         let figures = Figures { grid_seconds: started.elapsed().as_secs_f64(), ..Default::default() };
         let map = &level.compiled.map;
         let mut mech = Mechanisms::of(level);
-        mech.locate_doors(&nav, map);
+        mech.locate_doors(&nav, map, Some(&Self::keys_held(game)));
         let hurts = map.sectors.iter().map(|s| s.special.damage.is_some()).collect();
         let mut near_teleport = BTreeSet::new();
         for &l in mech.teleports.keys() {
@@ -245,7 +254,9 @@ impl Autopilot {
             log: Vec::new(),
             hurts,
             rounds: 0,
+            last_round: 0,
             fighting: 0,
+            calm: 0,
             rechoose: false,
             trail: vec![game.player().pos],
             near_teleport,
@@ -282,11 +293,17 @@ impl Autopilot {
             return TickInput::default();
         }
         self.note_crossings(game);
+        // A floor can come to hurt (a line that copies a neighbour's
+        // special as it lowers a floor to nukage).
+        for (hurts, sector) in self.hurts.iter_mut().zip(&game.level().compiled.map.sectors) {
+            *hurts = sector.special.damage.is_some();
+        }
         self.mech.settle_lifts(game.level(), |s| game.world().is_busy(s));
         self.bad.retain(|_, until| *until > now);
         if player.keys.len() != self.keys {
             self.keys = player.keys.len();
             self.rechoose = true;
+            self.mech.locate_doors(&self.nav, &game.level().compiled.map, Some(&Self::keys_held(game)));
         }
         // Health falling under the mark: look for some before going on.
         let low = player.health < LOW_HEALTH;
@@ -299,7 +316,18 @@ impl Autopilot {
         // to side, backing off what comes close) for a while before going
         // on; with only a fist, go on. Hurt, fall back the way it came,
         // still firing, to fight from behind a corner or go for health.
-        self.fighting = if fight.is_some() { (self.fighting + 1) % (STAND_TICKS + GO_ON_TICKS) } else { 0 };
+        // The fight's clock runs on through a second without a shot (an
+        // enemy dodging in and out of sight, fire held for a barrel): were
+        // it reset, the bot would never get its turn to go on.
+        if fight.is_some() {
+            self.fighting = (self.fighting + 1) % (STAND_TICKS + GO_ON_TICKS);
+            self.calm = 0;
+        } else {
+            self.calm += 1;
+            if self.calm > CALM_TICKS {
+                self.fighting = 0;
+            }
+        }
         let retreat = fight.is_some() && (player.health < RETREAT_HEALTH || self.in_sight >= CROWD || self.barrel_near);
         // Never stand on a floor that hurts.
         let hurting = self.on_hurting_floor(game);
@@ -338,6 +366,7 @@ impl Autopilot {
                 input.strafe = if (now / 24).is_multiple_of(2) { 1 } else { -1 };
                 input.forward = if fight.is_some_and(|f| f.2 < 192.0) { -1 } else { 0 };
                 input.run = true;
+                self.keep_footing(game, &mut input);
             } else if let Some(dir) = move_dir {
                 let rel = (dir - angle).to_radians();
                 let (s, c) = rel.sin_cos();
@@ -355,6 +384,9 @@ impl Autopilot {
                 } else {
                     0
                 };
+                if back.is_some() {
+                    self.keep_footing(game, &mut input);
+                }
             }
         }
         self.used_last = input.use_line;
@@ -371,6 +403,42 @@ impl Autopilot {
             self.trail.push(player.pos);
         }
         input
+    }
+
+    /// Moves made up in a fight (strafing, backing off, falling back while
+    /// facing the enemy) go only where the body keeps its footing: not off
+    /// a ledge it could not climb back (a pit is a soft lock), nor onto a
+    /// floor that hurts from one that does not. A strafe that would is
+    /// turned the other way, or dropped.
+    fn keep_footing(&self, game: &Game, input: &mut TickInput) {
+        let player = game.player();
+        let map = &game.level().compiled.map;
+        let live = live_heights(map);
+        let hurting = self.on_hurting_floor(game);
+        let facing = (player.angle + f64::from(input.turn)).to_radians();
+        let ahead = DVec2::new(facing.cos(), facing.sin());
+        let left = DVec2::new(-ahead.y, ahead.x);
+        let safe = |dir: DVec2| {
+            [16.0, 32.0, 48.0].iter().all(|&d| {
+                let Some(c) = self.nav.cell_at(player.pos + dir * d) else { return true };
+                let span = self.nav.span(c, &live);
+                let touched = self.nav.touched(c);
+                touched.is_empty()
+                    || (span.bottom >= player.z - MAX_STEP
+                        && (hurting || touched.iter().all(|&s| !self.hurts[s as usize])))
+            })
+        };
+        if input.forward != 0 && !safe(ahead * f64::from(input.forward)) {
+            input.forward = 0;
+        }
+        if input.strafe != 0 {
+            // Strafe 1 is to the right.
+            let right = -left;
+            let dir = right * f64::from(input.strafe);
+            if !safe(dir) {
+                input.strafe = if safe(-dir) { -input.strafe } else { 0 };
+            }
+        }
     }
 
     /// The point of the trail to fall back to from `pos`: the newest one
@@ -485,7 +553,7 @@ impl Autopilot {
     /// Chooses the next goal and the route to it.
     fn choose(&mut self, game: &Game) -> Option<Active> {
         let started = std::time::Instant::now();
-        let chosen = self.choose_inner(game).or_else(|| self.off_hurting_floor(game));
+        let chosen = self.choose_inner(game).map(|a| self.call_lift_first(game, a)).or_else(|| self.off_danger(game));
         let t = started.elapsed().as_secs_f64();
         self.figures.plans += 1;
         self.figures.plan_seconds += t;
@@ -493,16 +561,86 @@ impl Autopilot {
         chosen
     }
 
+    /// A route that boards a lift from below while the lift is up, with no
+    /// call of it on the way: call it first, from a switch reachable now
+    /// (one up on a ledge beside it, say) rather than at its foot, where
+    /// the switch may be out of reach (and the foot a nukage pit). A call
+    /// made in the last 20 seconds is not made again this way: the lift
+    /// was missed, and the route's own unblocking takes over.
+    fn call_lift_first(&mut self, game: &Game, active: Active) -> Active {
+        if active.purpose == Purpose::Lift {
+            return active;
+        }
+        let map = &game.level().compiled.map;
+        let live = live_heights(map);
+        let now = game.ticks();
+        let cells = &active.route.cells;
+        for i in 1..cells.len() {
+            if active.route.teleport[i] {
+                continue;
+            }
+            let from = self.nav.span(cells[i - 1], &live);
+            let up = self.nav.touched(cells[i]).iter().map(|&s| s as usize).find(|&s| {
+                !self.mech.lifts[s].is_empty() && live.floor[s] > from.high + MAX_STEP && !self.mech.perpetual[s]
+            });
+            let Some(lift) = up else { continue };
+            let lines = self.mech.lifts[lift].clone();
+            let on_the_way = lines.iter().any(|&l| {
+                let t = plan::targets_of(&self.nav, map, &Goal::Use(l));
+                cells[..i].iter().any(|&c| t.contains_cell(c))
+                    || cells[..i].windows(2).any(|w| {
+                        (0..8).any(|d| {
+                            self.nav.neighbour(w[0], d) == Some(w[1])
+                                && self.nav.crossings_of(w[0], d).any(|x| x.0 == l)
+                        })
+                    })
+            });
+            if on_the_way || lines.iter().any(|l| self.tried.get(l).is_some_and(|&t| now < t + 35 * 20)) {
+                return active;
+            }
+            for line in lines {
+                let goal = match line_of(map, line).3.map(|s| s.on) {
+                    Some(Activation::Use) => Goal::Use(line),
+                    Some(Activation::Walk) => Goal::Cross(line),
+                    _ => continue,
+                };
+                let Some(route) = self.route_to(game, &goal) else { continue };
+                // Not by the lift itself.
+                if !route.cells.iter().any(|&c| self.nav.touched(c).contains(&(lift as u32))) {
+                    self.log.push(format!("tick {now}: lift {lift} is up on the way: calling it first"));
+                    return Active::new(goal, Purpose::Lift, route);
+                }
+            }
+            return active;
+        }
+        active
+    }
+
+    /// Does a ceiling come down on `cell`, or a crushing floor go up under
+    /// it, with less than [`CRUSH_ROOM`] left?
+    fn crushing(&self, live: &Heights, cell: Cell) -> bool {
+        self.nav.touched(cell).iter().any(|&s| {
+            let s = s as usize;
+            let room = live.ceiling[s] - live.floor[s];
+            let closing = live.ceiling[s] < self.last.ceiling[s]
+                || (self.mech.crushers[s] && room < self.last.ceiling[s] - self.last.floor[s]);
+            closing && room < CRUSH_ROOM
+        })
+    }
+
     /// Is the body's sector one whose floor hurts?
     fn on_hurting_floor(&self, game: &Game) -> bool {
         self.hurts.get(game.player().sector).copied().unwrap_or(false)
     }
 
-    /// With nothing to do while standing where the floor hurts: the way to
-    /// the nearest floor that does not.
-    fn off_hurting_floor(&mut self, game: &Game) -> Option<Active> {
+    /// With nothing to do while standing where the floor hurts or a crusher
+    /// closes: the way to the nearest floor that does not hurt, out from
+    /// under every crusher.
+    fn off_danger(&mut self, game: &Game) -> Option<Active> {
         let player = game.player();
-        if !self.on_hurting_floor(game) {
+        let live = live_heights(&game.level().compiled.map);
+        let crushed = self.nav.cell_at(player.pos).is_some_and(|c| self.crushing(&live, c));
+        if !self.on_hurting_floor(game) && !crushed {
             return None;
         }
         let assumed = self.assume(game);
@@ -510,7 +648,8 @@ impl Autopilot {
         let world = assumed.world(&self.nav, &self.mech, &self.hurts, &game.level().compiled.map);
         self.search.run(&world, start, None);
         let safe = self.search.reached.iter().copied().find(|&c| {
-            self.nav.touched(c).iter().all(|&s| !self.hurts[s as usize]) && !self.nav.span(c, &assumed.heights).ledge()
+            self.nav.touched(c).iter().all(|&s| !self.hurts[s as usize] && !self.mech.crushers[s as usize])
+                && !self.nav.span(c, &assumed.heights).ledge()
         })?;
         let mut targets = Targets::default();
         targets.add(plan::cells_near(&self.nav, self.nav.centre_of(safe), 1.0));
@@ -577,7 +716,7 @@ impl Autopilot {
             {
                 continue;
             }
-            targets.add(plan::cells_near(nav, a.pos, plan::TOUCH_REACH));
+            targets.add(plan::touch_cells(nav, map, a.pos, Some(a.z)));
             wanted.push((i as u32, a.pos));
         }
         if !targets.is_empty() {
@@ -631,6 +770,7 @@ impl Autopilot {
         }
         let mut unknown: Option<(u32, LineId, Goal)> = None;
         let mut best: Option<(usize, u32, LineId, Goal)> = None;
+        let mut harmful = BTreeSet::new();
         for (cost, line, goal) in candidates.iter().take(16).cloned() {
             let (sl, _, _, special) = line_of(map, line);
             let Some(special) = special else { continue };
@@ -656,16 +796,22 @@ impl Autopilot {
             // A key coming within reach is worth more than any floor space.
             let key_opens = !targets.is_empty() && self.search.run(&world, start, Some(&targets)).is_some();
             self.search.run(&world, start, None);
-            let gain = self.search.reached.len().saturating_sub(base) + if key_opens { 1_000_000 } else { 0 };
+            let reached = self.search.reached.len();
+            let gain = reached.saturating_sub(base) + if key_opens { 1_000_000 } else { 0 };
             if gain > 8 && best.as_ref().is_none_or(|b| gain > b.0 * 2 || (gain * 2 > b.0 && cost < b.1)) {
                 best = Some((gain, cost, line, goal));
+            } else if !key_opens && reached + 8 < base && !special.repeat {
+                // A once-only line that shuts part of the level off (a
+                // floor raised across a way on): last of all.
+                harmful.insert(line);
             } else if unknown.is_none() {
                 unknown = Some((cost, line, goal));
             }
         }
-        // The pick first, then the rest by distance.
+        // The pick first, then the rest by distance, the harmful last.
         let pick = best.map(|b| (b.2, b.3)).or(unknown.map(|u| (u.1, u.2)));
         let world = plan::World { heights, ..world };
+        candidates.sort_by_key(|c| harmful.contains(&c.1));
         for (_, goal) in pick.into_iter().chain(candidates.into_iter().map(|c| (c.1, c.2))) {
             let targets = plan::targets_of(nav, map, &goal);
             if let Some(route) = self.search.run(&world, start, Some(&targets)) {
@@ -723,7 +869,8 @@ impl Autopilot {
             }
         }
         let (_, i, pos) = best?;
-        Some((Goal::Touch(pos, i), plan::cells_near(&self.nav, pos, plan::TOUCH_REACH)))
+        let z = actors.list[i as usize].z;
+        Some((Goal::Touch(pos, i), plan::touch_cells(&self.nav, &game.level().compiled.map, pos, Some(z))))
     }
 
     /// Follows the route: the input that moves along it, opens what is in
@@ -779,11 +926,12 @@ impl Autopilot {
                     self.active = Some(a);
                     self.status = Status::Playing;
                 }
-                None if self.rounds < MAX_ROUNDS => {
+                None if self.rounds < MAX_ROUNDS && (self.rounds == 0 || now >= self.last_round + ROUND_GAP) => {
                     // Nothing left to try: try everything again once more
                     // (a switch pressed while its sector was busy did
                     // nothing; a move given up may work now).
                     self.rounds += 1;
+                    self.last_round = now;
                     self.tried.retain(|&l, _| {
                         line_of(&game.level().compiled.map, l)
                             .3
@@ -805,8 +953,11 @@ impl Autopilot {
                         at: pos,
                         why: "no exit, key or untried switch or walk line within reach".into(),
                     };
-                    // Forget the moves given up on, and look again soon.
+                    // Forget the moves given up on and the items not
+                    // reached (a pedestal may still be coming down), and
+                    // look again soon.
                     self.bad.clear();
+                    self.unreachable.clear();
                     self.next_replan = now + 35;
                     return TickInput::default();
                 }
@@ -850,24 +1001,29 @@ impl Autopilot {
             self.next_replan = now;
             return None;
         }
+        // Fallen off a ledge beside the route: the body is well under every
+        // floor of the route near it. The move it was on is given up for a
+        // while, and the way found again from down here.
+        let live = live_heights(map);
+        let near = &cells[a.at..(a.at + 3).min(cells.len())];
+        if player.on_ground() && near.iter().all(|&x| player.z + MAX_STEP < self.nav.span(x, &live).low) {
+            if let Some(&n) = cells.get(a.at + 1) {
+                if let Some(d) = (0..8).find(|&d| self.nav.neighbour(cells[a.at], d) == Some(n)) {
+                    self.bad.insert(cells[a.at] * 8 + d as u32, now + 35 * 30);
+                }
+            }
+            self.next_replan = now;
+            return None;
+        }
         let last = cells.len() - 1;
         if a.arrived > 0 || a.at >= last || (a.at + 1 == last && self.nav.centre_of(cells[last]).distance(pos) < 20.0) {
             return self.arrive(game, a);
         }
         // The next move: can it be made now, as the level stands?
         let (c, n) = (cells[a.at], cells[a.at + 1]);
-        let live = live_heights(map);
         // A ceiling coming down, or a crushing floor going up: never wait
         // under it, never step under it.
-        let crushing = |cell: Cell| {
-            self.nav.touched(cell).iter().any(|&s| {
-                let s = s as usize;
-                let room = live.ceiling[s] - live.floor[s];
-                let closing = live.ceiling[s] < self.last.ceiling[s]
-                    || (self.mech.crushers[s] && room < self.last.ceiling[s] - self.last.floor[s]);
-                closing && room < CRUSH_ROOM
-            })
-        };
+        let crushing = |cell: Cell| self.crushing(&live, cell);
         let window = a.at.saturating_sub(8)..(a.at + 10).min(cells.len());
         if self.nav.cell_at(pos).is_some_and(crushing) || crushing(c) {
             // Out from under it by the nearest cell of the route that is not.
@@ -918,7 +1074,7 @@ impl Autopilot {
         // Steer for a point a little way along the route, not past a
         // teleport; when progress stalls, for the very next cell, slowly.
         let soon = &cells[a.at..(a.at + 4).min(cells.len())];
-        let on_ledge = soon.iter().any(|&x| self.nav.span(x, &live).ledge());
+        let on_ledge = soon.iter().any(|&x| self.nav.span(x, &live).ledge()) || self.coasting_off(game, a, &live);
         // A teleport line the route does not take, close by: go carefully
         // (a body that drifts over it is somewhere else).
         let teleporting = a.route.teleport[a.at..(a.at + 5).min(cells.len())].iter().any(|&t| t);
@@ -938,6 +1094,26 @@ impl Autopilot {
             target = self.nav.centre_of(before) + dir * CELL * 1.5;
         }
         Some(self.drive_to(game, target, k == last || ahead == 1 || near_teleport))
+    }
+
+    /// Would the body, coasting to a stop from its speed now, pass over a
+    /// drop the route does not take? At a run it slides about ten times
+    /// its speed: a bend beside a pit must be taken at a walk.
+    fn coasting_off(&self, game: &Game, a: &Active, live: &Heights) -> bool {
+        let player = game.player();
+        let slide = player.velocity * 10.0;
+        let route = &a.route.cells[a.at..(a.at + 16).min(a.route.cells.len())];
+        let steps = (slide.length() / 8.0).ceil() as usize;
+        (1..=steps).any(|i| {
+            let p = player.pos + slide * (i as f64 / steps as f64);
+            self.nav.cell_at(p).is_some_and(|c| {
+                let centre = self.nav.centre[c as usize];
+                centre != nav::NONE
+                    && live.floor[centre as usize] < player.z - MAX_STEP
+                    && !route.contains(&c)
+                    && !route.iter().any(|&r| self.nav.centre_of(r).distance(p) < CELL * 1.5)
+            })
+        })
     }
 
     /// The input that heads for `target`.
@@ -1162,7 +1338,9 @@ impl Autopilot {
                     return None;
                 }
                 let still = game.player().velocity.length() < 1.0;
-                let weapon = weapon_for(game, d.length());
+                // Only bullets set off a shot line (as in Doom): no
+                // rockets, plasma or BFG.
+                let weapon = weapon_for(game, Fire::Bullets);
                 let table = &game.actors().table;
                 let player = game.player();
                 let in_hand = player
@@ -1285,7 +1463,12 @@ impl Autopilot {
         if in_the_way {
             return None;
         }
-        Some((to.y.atan2(to.x).to_degrees(), weapon_for(game, d), d))
+        let fire = if d > ROCKET_SAFE && rocket_clear(&compiled.map, player.pos, player.z, target) {
+            Fire::Any
+        } else {
+            Fire::NoBlast
+        };
+        Some((to.y.atan2(to.x).to_degrees(), weapon_for(game, fire), d))
     }
 }
 
@@ -1371,8 +1554,45 @@ fn turn_to(from: f64, to: f64) -> f64 {
     }
 }
 
-/// The weapon slot to fight with at distance `d`: the best owned with ammo.
-fn weapon_for(game: &Game, d: f64) -> u8 {
+/// Closer than this a rocket's blast reaches the shooter.
+const ROCKET_SAFE: f64 = 300.0;
+
+/// Would a rocket fired from `from` (feet at `z`) at `to` fly clear of
+/// walls, ledges and low ceilings until it is past its blast's reach? A
+/// rocket that bursts on a corner or a step in front of the face is the
+/// bot's own death: the sight line to the target is not enough, the
+/// rocket has a body (radius 11) and flies at the height it is fired from.
+fn rocket_clear(map: &crate::map::Map, from: DVec2, z: f64, to: DVec2) -> bool {
+    const SIDE: f64 = 13.0;
+    let along = (to - from).normalize_or_zero();
+    let end = from + along * (to.distance(from) - 24.0).min(ROCKET_SAFE + 64.0);
+    let side = DVec2::new(-along.y, along.x) * SIDE;
+    let (low, high) = (z + 32.0 - 8.0, z + 32.0 + 16.0);
+    map.lines.iter().all(|l| {
+        if let Some(back) = &l.back {
+            let (f, b) = (&map.sectors[l.front.sector], &map.sectors[back.sector]);
+            if f.floor.max(b.floor) < low && f.ceiling.min(b.ceiling) > high {
+                return true;
+            }
+        }
+        let (a, b) = map.line_points(l);
+        [DVec2::ZERO, side, -side].iter().all(|&o| crate::play::trace::crossing(from + o, end + o, a, b).is_none())
+    })
+}
+
+/// Which weapons a shot may use.
+#[derive(Clone, Copy, PartialEq)]
+enum Fire {
+    Any,
+    /// No rocket launcher or BFG: a blast would reach the shooter.
+    NoBlast,
+    /// Hitscan only (a shot line wants bullets).
+    Bullets,
+}
+
+/// The weapon slot to fight with: the best owned with ammo that `fire`
+/// allows.
+fn weapon_for(game: &Game, fire: Fire) -> u8 {
     let player = game.player();
     let table = &game.actors().table;
     let mut best = (0, 1u8);
@@ -1387,9 +1607,9 @@ fn weapon_for(game: &Game, d: f64) -> u8 {
             2 => 3,
             3 => 6,
             4 => 5,
-            5 if d > 300.0 => 7,
-            6 => 8,
-            7 if d > 300.0 => 4,
+            5 if fire == Fire::Any => 7,
+            6 if fire != Fire::Bullets => 8,
+            7 if fire == Fire::Any => 4,
             _ => 0,
         };
         if score > best.0 {

@@ -15,7 +15,7 @@ use crate::level::Level;
 use crate::map::special::{Action, Activation, CeilingTarget, DoorKind, KeyColour, LineSpecial};
 use crate::map::Map;
 use crate::play::collision::distance_to_segment;
-use crate::play::player::MAX_STEP;
+use crate::play::player::{HEIGHT, MAX_STEP, RADIUS};
 use crate::play::world::specials::{self, target_sectors};
 use crate::play::world::{floors, SpecialLine};
 use crate::play::USE_RANGE;
@@ -25,6 +25,8 @@ const HURT_COST: u32 = 160;
 /// Extra cost of a cell on the edge of a drop (a body a little off its
 /// centre falls).
 const LEDGE_COST: u32 = 25;
+/// Further cost of a ledge cell whose very centre is over the drop.
+const OVER_DROP_COST: u32 = 100;
 /// Cost of a straight and a diagonal move.
 const STRAIGHT: u32 = 10;
 const DIAGONAL: u32 = 14;
@@ -239,7 +241,10 @@ fn lift_calls(level: &Level, id: LineId, on: Activation, lift: usize, top: f64) 
         match on {
             Activation::Use => {
                 if front && near {
-                    calls.0 |= sector == lift || (floor(sector) >= low - step && floor(sector) < top - step);
+                    // A switch facing the lift is pressed standing on it:
+                    // a call from the top only (the body cannot board a
+                    // raised lift to press it).
+                    calls.0 |= sector != lift && floor(sector) >= low - step && floor(sector) < top - step;
                     calls.1 |= floor(sector) >= top - step;
                 }
             }
@@ -255,11 +260,15 @@ fn lift_calls(level: &Level, id: LineId, on: Activation, lift: usize, top: f64) 
 impl Mechanisms {
     /// Finds the cells each manual door can be opened from (a door opens
     /// only from the front of one of its lines).
-    pub fn locate_doors(&mut self, nav: &NavGrid, map: &Map) {
+    /// With `keys`, only the lines those keys open count (a door whose
+    /// faces want different keys opens from one side only); without, all.
+    pub fn locate_doors(&mut self, nav: &NavGrid, map: &Map, keys: Option<&[KeyColour]>) {
         for s in 0..self.doors.len() {
             let mut cells = BTreeSet::new();
-            for &(line, _) in &self.doors[s] {
-                cells.extend(use_cells(nav, map, line).cells);
+            for &(line, key) in &self.doors[s] {
+                if key.is_none_or(|k| keys.is_none_or(|held| held.contains(&k))) {
+                    cells.extend(use_cells(nav, map, line).cells);
+                }
             }
             self.door_use[s] = cells.into_iter().collect();
         }
@@ -452,6 +461,11 @@ impl Search {
                 let mut step = if d < 4 { STRAIGHT } else { DIAGONAL } + u32::from(w.nav.narrow[next as usize]);
                 if to.ledge() {
                     step += LEDGE_COST;
+                    // Its centre over the drop: the body keeps its footing
+                    // only while it is pushed no further out.
+                    if centre != NONE && w.heights.floor[centre as usize] < to.high - MAX_STEP {
+                        step += OVER_DROP_COST;
+                    }
                 }
                 if centre != NONE && w.hurts[centre as usize] {
                     step += HURT_COST;
@@ -503,15 +517,26 @@ impl Search {
 /// The cells from which `line` can be used: on its front, the centre within
 /// use range, nothing solid between.
 pub fn use_cells(nav: &NavGrid, map: &Map, line: LineId) -> Targets {
+    let near = use_cells_within(nav, map, line, USE_REACH);
+    if !near.is_empty() {
+        return near;
+    }
+    // A switch on a ledge's face, or across a step: every cell that close
+    // has its body over the ledge. The press reaches further than the
+    // margin kept for steering (`use_line` presses within the use range).
+    use_cells_within(nav, map, line, USE_RANGE - 12.0)
+}
+
+/// [`use_cells`] within `reach` of the line.
+fn use_cells_within(nav: &NavGrid, map: &Map, line: LineId, reach: f64) -> Targets {
     let (_, a, b, _) = line_of(map, line);
     let mut t = Targets::default();
-    let reach = DVec2::splat(USE_REACH);
-    for c in nav.cells_in_box(a.min(b) - reach, a.max(b) + reach) {
+    for c in nav.cells_in_box(a.min(b) - DVec2::splat(reach), a.max(b) + DVec2::splat(reach)) {
         if !nav.standable(c) {
             continue;
         }
         let p = nav.centre_of(c);
-        if crate::geom::front_distance(a, b, p) <= 0.0 || distance_to_segment(p, a, b) > USE_REACH {
+        if crate::geom::front_distance(a, b, p) <= 0.0 || distance_to_segment(p, a, b) > reach {
             continue;
         }
         // Aimed at the line's inner part (its ends are where niche walls
@@ -519,7 +544,7 @@ pub fn use_cells(nav: &NavGrid, map: &Map, line: LineId) -> Targets {
         let along = |t: f64| a + (b - a) * t;
         let reachable = [nearest_on(p, along(0.2), along(0.8)), along(0.5)]
             .into_iter()
-            .any(|q| q.distance(p) <= USE_REACH && clear_between(map, p, q, line));
+            .any(|q| q.distance(p) <= reach && clear_between(map, p, q, line));
         if reachable {
             t.cells.insert(c);
         }
@@ -544,6 +569,72 @@ pub fn cells_near(nav: &NavGrid, p: DVec2, reach: f64) -> Targets {
             if nav.standable(c) && (nav.centre_of(c) - p).abs().max_element() <= reach {
                 t.cells.insert(c);
             }
+        }
+    }
+    t
+}
+
+/// The cells from which an item at `p` can be picked up: those within
+/// [`TOUCH_REACH`] (a square, as Doom's boxes touch), and those a little
+/// further from which a walk straight at it stops against a step or ledge
+/// (a two-sided line it cannot climb) with the item then in reach: a key on
+/// a pedestal is taken by walking into the pedestal.
+///
+/// With the item's height `z`, only cells whose floor (as the level stands)
+/// lets the body touch it: Doom's touch wants the item no more than the
+/// body's height above its feet, nor more than 8 below.
+pub fn touch_cells(nav: &NavGrid, map: &Map, p: DVec2, z: Option<f64>) -> Targets {
+    let mut t = touch_cells_at_any_height(nav, map, p);
+    if let Some(z) = z {
+        let live = Heights::of(map);
+        t.cells.retain(|&c| {
+            let feet = nav.span(c, &live).high;
+            z - feet <= HEIGHT && z - feet >= -8.0
+        });
+    }
+    t
+}
+
+fn touch_cells_at_any_height(nav: &NavGrid, map: &Map, p: DVec2) -> Targets {
+    let mut t = cells_near(nav, p, TOUCH_REACH);
+    let far = cells_near(nav, p, TOUCH_REACH + CELL);
+    for c in far.cells() {
+        if t.contains_cell(c) {
+            continue;
+        }
+        let from = nav.centre_of(c);
+        // The lines on the way, nearest first: the first that stops the
+        // body must be a step or ledge (two-sided), with the item in reach
+        // of the body standing against it.
+        let mut crossed: Vec<(f64, &crate::map::Line)> = map
+            .lines
+            .iter()
+            .filter_map(|l| {
+                let (a, b) = map.line_points(l);
+                crate::play::trace::crossing(from, p, a, b).map(|f| (f, l))
+            })
+            .collect();
+        crossed.sort_by(|x, y| x.0.total_cmp(&y.0));
+        for (f, line) in crossed {
+            let Some(back) = &line.back else { break };
+            if line.flags.impassable {
+                break;
+            }
+            let (a, b) = map.line_points(line);
+            let (near, beyond) = if crate::geom::front_distance(a, b, from) >= 0.0 {
+                (&map.sectors[line.front.sector], &map.sectors[back.sector])
+            } else {
+                (&map.sectors[back.sector], &map.sectors[line.front.sector])
+            };
+            if beyond.floor <= near.floor + MAX_STEP && beyond.ceiling - beyond.floor.max(near.floor) >= HEIGHT {
+                continue;
+            }
+            // Doom's touch wants the item no higher than the body is tall.
+            let stop = from + (p - from) * f - (p - from).normalize_or_zero() * RADIUS;
+            if (stop - p).abs().max_element() <= TOUCH_REACH && beyond.floor <= near.floor + HEIGHT {
+                t.cells.insert(c);
+            }
+            break;
         }
     }
     t
@@ -578,7 +669,7 @@ pub fn targets_of(nav: &NavGrid, map: &Map, goal: &Goal) -> Targets {
     match goal {
         Goal::Use(line) => use_cells(nav, map, *line),
         Goal::Cross(line) => crossing_of(*line),
-        Goal::Touch(p, _) => cells_near(nav, *p, TOUCH_REACH),
+        Goal::Touch(p, _) => touch_cells(nav, map, *p, None),
         Goal::Shoot(line) => shoot_cells(nav, map, *line),
     }
 }
