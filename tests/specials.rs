@@ -597,6 +597,22 @@ fn floors_move_to_each_of_dooms_targets_at_their_speeds() {
 }
 
 #[test]
+fn a_key_on_a_pedestal_does_not_hold_up_its_floor() {
+    // The card's box reaches over the pedestal's edge into the hall, where
+    // the opening is below nothing (floor 224, ceiling 128). Doom's
+    // PIT_ChangeSector passes over a thing that cannot be shot: the floor
+    // goes all the way down (it used to stop on its first step for ever).
+    let mut g = game("pedestal");
+    let s = tagged(&g, 1);
+    assert_eq!(floor(&g, s), 224.0);
+    stand(&mut g, 112.0, 40.0, 270.0);
+    press_use(&mut g);
+    let ticks = until(&mut g, IDLE, 400, |g| !moving(g, s));
+    assert_eq!(floor(&g, s), 0.0, "stopped after {ticks} ticks");
+    assert!((220..=230).contains(&ticks), "224 units at 1 a tick took {ticks}");
+}
+
+#[test]
 fn a_floor_takes_the_switch_lines_front_sectors_texture_and_special_at_once() {
     let mut g = game("floors");
     let bay = tagged(&g, 11);

@@ -186,7 +186,7 @@ fn closure(
         let mut changed = false;
         for &(colour, pos) in &t.keys {
             if !c.keys.contains(&colour)
-                && plan::touch_cells(nav, &level.compiled.map, pos, None).cells().any(|x| c.reached[x as usize])
+                && plan::touch_cells(nav, &level.compiled.map, pos).cells().any(|x| c.reached[x as usize])
             {
                 c.keys.push(colour);
                 changed = true;
@@ -264,7 +264,7 @@ fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
     let c = closure(&nav, level, &mech, &t, start, Vec::new(), &hurts, &mut search);
     let place = |what: String, p: DVec2, reachable: bool| Place { what, x: p.x, y: p.y, reachable };
     let near_reached = |reached: &[bool], p: DVec2| {
-        plan::touch_cells(&nav, &level.compiled.map, p, None).cells().any(|x| reached[x as usize])
+        plan::touch_cells(&nav, &level.compiled.map, p).cells().any(|x| reached[x as usize])
     };
 
     let mut exits = Vec::new();

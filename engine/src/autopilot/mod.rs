@@ -26,6 +26,7 @@ pub type Point = DVec2;
 
 use crate::actors::{ActorFlag, Category};
 use crate::map::special::{Activation, KeyColour};
+use crate::play::actors::Target;
 use crate::play::events::Event;
 use crate::play::player::{MAX_STEP, RADIUS};
 use crate::play::sight::{self, Body};
@@ -54,6 +55,8 @@ const STILL_TICKS: u32 = 70;
 /// hold it for ever).
 const STAND_TICKS: u32 = 35 * 6;
 const GO_ON_TICKS: u32 = 35 * 2;
+/// Missiles further than this are not dodged yet.
+const DODGE_RANGE: f64 = 400.0;
 /// Ticks without an enemy to fire at that end a fight.
 const CALM_TICKS: u32 = 35;
 /// A monster further than this is not fought.
@@ -198,6 +201,11 @@ pub struct Autopilot {
     fighting: u32,
     /// Ticks since the last tick with an enemy to fire at.
     calm: u32,
+    /// The way a missile just fired at will leave, and until when.
+    aim: Option<(f64, u64)>,
+    /// Times each walk line was crossed (a live once-only one is crossed
+    /// once more at most: it may do nothing for ever).
+    crossed: BTreeMap<LineId, u32>,
     /// Something changed that may change the goal (a key picked up).
     rechoose: bool,
     /// A barrel within [`BARREL_BLAST`] while fighting, last tick.
@@ -208,7 +216,7 @@ pub struct Autopilot {
     low_health: bool,
     /// Cells within a body and a cell of a teleport line, where the bot
     /// goes carefully unless its route takes the teleport.
-    near_teleport: BTreeSet<Cell>,
+    near_teleport: Vec<bool>,
     /// Where the body has been, a point every [`TRAIL_STEP`] units, the
     /// newest last: the way back out of a fight going badly.
     trail: Vec<DVec2>,
@@ -224,14 +232,16 @@ impl Autopilot {
         let mut mech = Mechanisms::of(level);
         mech.locate_doors(&nav, map, Some(&Self::keys_held(game)));
         let hurts = map.sectors.iter().map(|s| s.special.damage.is_some()).collect();
-        let mut near_teleport = BTreeSet::new();
+        let mut near_teleport = vec![false; nav.cells()];
         for &l in mech.teleports.keys() {
             let (_, a, b, _) = line_of(map, l);
             let margin = DVec2::splat(RADIUS + CELL);
-            near_teleport.extend(nav.cells_in_box(a.min(b) - margin, a.max(b) + margin).filter(|&c| {
+            for c in nav.cells_in_box(a.min(b) - margin, a.max(b) + margin) {
                 let p = nav.centre_of(c);
-                plan::nearest_on(p, a, b).distance(p) < RADIUS + CELL
-            }));
+                if plan::nearest_on(p, a, b).distance(p) < RADIUS + CELL {
+                    near_teleport[c as usize] = true;
+                }
+            }
         }
         Autopilot {
             nav,
@@ -257,6 +267,8 @@ impl Autopilot {
             last_round: 0,
             fighting: 0,
             calm: 0,
+            aim: None,
+            crossed: BTreeMap::new(),
             rechoose: false,
             trail: vec![game.player().pos],
             near_teleport,
@@ -342,6 +354,11 @@ impl Autopilot {
         };
         // Using a line needs the body to face it: no fighting on that tick.
         let fight = fight.filter(|_| !input.use_line);
+        if let Some((angle, until)) = self.aim.filter(|&(_, until)| now < until && fight.is_none()) {
+            // A rocket on its way out: it flies where the body faces.
+            input.turn = turn_to(player.angle, angle) as f32;
+            self.aim = Some((angle, until));
+        }
         if let Some((angle, weapon, _)) = fight {
             // Face the enemy and fire, moving the way the route wanted.
             let wanted = player.angle + f64::from(input.turn);
@@ -362,6 +379,15 @@ impl Autopilot {
                 .and_then(|w| table.actors[w].weapon.as_ref())
                 .map(|w| w.slot);
             input.weapon = if in_hand == Some(weapon) { 0 } else { weapon };
+            // No shot with the weapon being put away (a rocket fired as
+            // the enemy closes in bursts in the bot's face).
+            let ready = player.ready_weapon.and_then(|w| table.actors[w].weapon.as_ref()).map(|w| w.slot);
+            input.fire = player.pending_weapon.is_none() && ready == Some(weapon);
+            if input.fire && matches!(weapon, 5 | 7) {
+                // The missile leaves some ticks after the trigger (Doom's
+                // rocket launcher: 8): keep facing this way till then.
+                self.aim = Some((angle, now + 12));
+            }
             if stand {
                 input.strafe = if (now / 24).is_multiple_of(2) { 1 } else { -1 };
                 input.forward = if fight.is_some_and(|f| f.2 < 192.0) { -1 } else { 0 };
@@ -388,6 +414,9 @@ impl Autopilot {
                     self.keep_footing(game, &mut input);
                 }
             }
+        }
+        if !input.use_line {
+            self.dodge(game, &mut input);
         }
         self.used_last = input.use_line;
         self.last = Heights::of(&game.level().compiled.map);
@@ -441,6 +470,46 @@ impl Autopilot {
         }
     }
 
+    /// A monster's missile on its way to the body: step aside, across its
+    /// flight, to the side the body is already on (where it keeps its
+    /// footing; else the other). Imps' and cacodemons' fireballs, barons'
+    /// and arachnotrons' plasma fly slowly enough to be stepped out of.
+    fn dodge(&self, game: &Game, input: &mut TickInput) {
+        let player = game.player();
+        let actors = game.actors();
+        let mut threat: Option<(f64, DVec2)> = None;
+        for m in &actors.list {
+            let def = &actors.table.actors[m.kind];
+            if m.removed || m.source == Target::Player || !m.flags.has(ActorFlag::Missile) {
+                continue;
+            }
+            let v = m.vel.truncate();
+            let rel = player.pos - m.pos;
+            if v.length_squared() < 1.0 || rel.length() > DODGE_RANGE || v.dot(rel) <= 0.0 {
+                continue;
+            }
+            let t = v.dot(rel) / v.length_squared();
+            let miss = (rel - v * t).length();
+            if miss < RADIUS + def.radius + 8.0 && t < 40.0 && threat.is_none_or(|(tt, _)| t < tt) {
+                // Across the flight, away from its line.
+                let across = DVec2::new(-v.y, v.x).normalize_or_zero();
+                let away = if across.dot(rel - v * t) >= 0.0 { across } else { -across };
+                threat = Some((t, away));
+            }
+        }
+        let Some((_, away)) = threat else { return };
+        let facing = (player.angle + f64::from(input.turn)).to_radians();
+        let right = DVec2::new(facing.sin(), -facing.cos());
+        let strafe: i8 = if away.dot(right) >= 0.0 { 1 } else { -1 };
+        let mut dodged = TickInput { strafe, forward: input.forward, run: true, ..*input };
+        self.keep_footing(game, &mut dodged);
+        if dodged.strafe != 0 {
+            input.strafe = dodged.strafe;
+            input.forward = dodged.forward;
+            input.run = true;
+        }
+    }
+
     /// The point of the trail to fall back to from `pos`: the newest one
     /// not already reached (those are dropped); `None` at its start.
     fn fall_back(&mut self, pos: DVec2) -> Option<DVec2> {
@@ -468,6 +537,7 @@ impl Autopilot {
             }
         }
         for id in crossed {
+            *self.crossed.entry(id).or_insert(0) += 1;
             self.tried.insert(id, game.ticks());
         }
     }
@@ -475,7 +545,11 @@ impl Autopilot {
     /// Lines that are used up: set off once and not repeatable.
     fn spent(&self, game: &Game) -> BTreeSet<LineId> {
         let map = &game.level().compiled.map;
-        let tried = self.tried.keys().copied().filter(|&id| line_of(map, id).3.is_none_or(|s| !s.repeat));
+        // A once-only walk line crossed while its sectors were busy did
+        // nothing and stays live (the level says which).
+        let tried = self.tried.keys().copied().filter(|&id| {
+            line_of(map, id).3.is_none_or(|s| !s.repeat && (s.on != Activation::Walk || Self::used_up(game, id)))
+        });
         // A switch that has flipped for good shows it.
         let used = self.mech.triggers.iter().chain(self.mech.lifts.iter().flatten()).copied();
         tried.chain(used.filter(|&id| Self::used_up(game, id))).collect()
@@ -716,7 +790,7 @@ impl Autopilot {
             {
                 continue;
             }
-            targets.add(plan::touch_cells(nav, map, a.pos, Some(a.z)));
+            targets.add(plan::touch_cells(nav, map, a.pos));
             wanted.push((i as u32, a.pos));
         }
         if !targets.is_empty() {
@@ -731,11 +805,29 @@ impl Autopilot {
         let base = self.search.reached.len();
         let mut candidates: Vec<(u32, LineId, Goal)> = Vec::new();
         for &line in &self.mech.triggers {
-            if spent.contains(&line) || self.tried.contains_key(&line) {
+            if spent.contains(&line) {
                 continue;
             }
-            let (_, _, _, special) = line_of(map, line);
+            let (sl, _, _, special) = line_of(map, line);
             let Some(special) = special else { continue };
+            if let Some(&when) = self.tried.get(&line) {
+                // Tried: only a once-only walk line the level kept live
+                // (its sectors were busy then) is worth another go, once
+                // they are still.
+                let idle = || {
+                    crate::play::world::specials::target_sectors(level, sl, special)
+                        .into_iter()
+                        .all(|s| !game.world().is_busy(s))
+                };
+                let again = special.on == Activation::Walk
+                    && !special.repeat
+                    && self.crossed.get(&line).is_some_and(|&n| n < 2)
+                    && game.ticks() > when + 35 * 5
+                    && idle();
+                if !again {
+                    continue;
+                }
+            }
             if let crate::map::special::Action::Door { key: Some(k), .. } = special.action {
                 if !keys.contains(&k) {
                     continue;
@@ -869,8 +961,7 @@ impl Autopilot {
             }
         }
         let (_, i, pos) = best?;
-        let z = actors.list[i as usize].z;
-        Some((Goal::Touch(pos, i), plan::touch_cells(&self.nav, &game.level().compiled.map, pos, Some(z))))
+        Some((Goal::Touch(pos, i), plan::touch_cells(&self.nav, &game.level().compiled.map, pos)))
     }
 
     /// Follows the route: the input that moves along it, opens what is in
@@ -933,9 +1024,7 @@ impl Autopilot {
                     self.rounds += 1;
                     self.last_round = now;
                     self.tried.retain(|&l, _| {
-                        line_of(&game.level().compiled.map, l)
-                            .3
-                            .is_some_and(|s| !s.repeat && (s.on == Activation::Walk || Self::used_up(game, l)))
+                        line_of(&game.level().compiled.map, l).3.is_some_and(|s| !s.repeat && Self::used_up(game, l))
                     });
                     self.failures.clear();
                     self.unreachable.clear();
@@ -1078,7 +1167,7 @@ impl Autopilot {
         // A teleport line the route does not take, close by: go carefully
         // (a body that drifts over it is somewhere else).
         let teleporting = a.route.teleport[a.at..(a.at + 5).min(cells.len())].iter().any(|&t| t);
-        let near_teleport = !teleporting && soon.iter().any(|x| self.near_teleport.contains(x));
+        let near_teleport = !teleporting && soon.iter().any(|&x| self.near_teleport[x as usize]);
         let ahead = if a.idle > STUCK_TICKS / 2 || on_ledge || near_teleport { 1 } else { 3 };
         let mut k = a.at + 1;
         while k < last && k < a.at + ahead && !a.route.teleport[k + 1] {
@@ -1157,6 +1246,7 @@ impl Autopilot {
             // A manual door that is shut: use it.
             let shut = live.ceiling[s] - live.floor[s] < 56.0;
             if shut {
+                let mut closest: Option<(f64, DVec2)> = None;
                 for &(line, key) in &self.mech.doors[s] {
                     if key.is_some_and(|k| !keys.contains(&k)) {
                         continue;
@@ -1164,6 +1254,18 @@ impl Autopilot {
                     if let Some(input) = self.use_line(game, line) {
                         return Some(input);
                     }
+                    let (_, a, b, _) = line_of(map, line);
+                    let q = plan::nearest_on(player.pos, a, b);
+                    if crate::geom::front_distance(a, b, player.pos) > 0.0
+                        && closest.is_none_or(|(d, _)| q.distance(player.pos) < d)
+                    {
+                        closest = Some((q.distance(player.pos), q));
+                    }
+                }
+                // Out of reach, or another switch in front swallows the
+                // press: walk up to the door's face, then press.
+                if let Some((_, q)) = closest.filter(|&(d, _)| d > RADIUS + 2.0) {
+                    return Some(self.drive_to(game, q, true));
                 }
             }
             // A lift that is up: call it, from below, or from on it when
@@ -1268,8 +1370,42 @@ impl Autopilot {
         // Aim at the part of the line in front, a little inside its ends.
         let inset = plan::nearest_on(pos, a + (b - a) * 0.2, b - (b - a) * 0.2);
         let d = inset - pos;
+        if !Self::press_reaches(game, line, pos, pos + d.normalize_or_zero() * crate::play::USE_RANGE) {
+            return None;
+        }
         let turn = turn_to(game.player().angle, d.y.atan2(d.x).to_degrees());
         Some(TickInput { turn: turn as f32, use_line: !self.used_last, ..self.hold(game) })
+    }
+
+    /// Would a press from `from` aimed at `to` reach `line`? Doom's use
+    /// stops at the first line with a live use special (another switch in
+    /// front swallows the press) or at a wall with no opening.
+    fn press_reaches(game: &Game, line: LineId, from: DVec2, to: DVec2) -> bool {
+        let level = game.level();
+        let map = &level.compiled.map;
+        let mut first: Option<(f64, LineId)> = None;
+        for id in 0..(map.lines.len() + map.trigger_lines.len()) as u32 {
+            let (sl, a, b, _) = line_of(map, id);
+            let Some(t) = crate::play::trace::crossing(from, to, a, b) else { continue };
+            if first.is_some_and(|(ft, _)| ft <= t) {
+                continue;
+            }
+            let stops = game.world().special(level, sl).is_some_and(|s| s.on == Activation::Use)
+                || match sl {
+                    crate::play::world::SpecialLine::Wall(i) => {
+                        let l = &map.lines[i];
+                        l.back.as_ref().is_none_or(|back| {
+                            let (f, k) = (&map.sectors[l.front.sector], &map.sectors[back.sector]);
+                            f.ceiling.min(k.ceiling) <= f.floor.max(k.floor)
+                        })
+                    }
+                    _ => false,
+                };
+            if stops {
+                first = Some((t, id));
+            }
+        }
+        first.is_none_or(|(_, id)| id == line)
     }
 
     /// At the route's end: do what the goal asks.
@@ -1374,7 +1510,10 @@ impl Autopilot {
                 let gone = game.actors().list.get(actor as usize).is_none_or(|x| x.removed);
                 if gone || a.arrived > 70 {
                     if !gone {
+                        // Out of reach from here (behind a wall, too high):
+                        // given up for now, for good after a few tries.
                         self.unreachable.insert(actor);
+                        self.give_up(&a.goal);
                     }
                     self.next_replan = now;
                     return None;
@@ -1463,7 +1602,20 @@ impl Autopilot {
         if in_the_way {
             return None;
         }
-        let fire = if d > ROCKET_SAFE && rocket_clear(&compiled.map, player.pos, player.z, target) {
+        // Nothing else that stops a rocket (a monster stepping in, a barrel)
+        // near its flight while its blast would still reach the bot.
+        let crowded = actors.list.iter().enumerate().any(|(j, b)| {
+            let def = &table.actors[b.kind];
+            let p = b.pos - player.pos;
+            j != i
+                && !b.removed
+                && b.health > 0
+                && b.flags.has(ActorFlag::Shootable)
+                && p.length() < ROCKET_SAFE + 64.0
+                && p.dot(to) > 0.0
+                && plan::nearest_on(b.pos, player.pos, target).distance(b.pos) < def.radius + 16.0
+        });
+        let fire = if d > ROCKET_SAFE && !crowded && rocket_clear(&compiled.map, player.pos, player.z, target) {
             Fire::Any
         } else {
             Fire::NoBlast

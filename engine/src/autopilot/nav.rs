@@ -158,10 +158,12 @@ impl NavGrid {
                 }
             }
             let mut ok = room >= CLEAR;
-            // How far across from that wall the body reaches.
+            // How far across from that wall the body reaches (and a unit
+            // more: a gap exactly as wide as the body stops it, its circle
+            // wedged between the two sides).
             let across = |q: DVec2| {
                 if room < RADIUS && (q - p).dot(wall_at - p) < 0.0 {
-                    2.0 * RADIUS - room
+                    2.0 * RADIUS - room + 1.0
                 } else {
                     RADIUS
                 }

@@ -73,6 +73,9 @@ pub struct Mechanisms {
     /// the start and whenever it is still again; a perpetual lift's highest
     /// neighbouring floor).
     pub lift_top: Vec<f64>,
+    /// Per sector: the lowest neighbouring floor when the lift's lines
+    /// were last sorted.
+    pub lift_low: Vec<f64>,
     /// Per sector: whether some special crushes in it (a crusher, a floor
     /// or ceiling that crushes): the bot keeps out from under it as it
     /// closes.
@@ -95,6 +98,7 @@ impl Mechanisms {
             door_use: vec![Vec::new(); sectors],
             lifts: vec![Vec::new(); sectors],
             lift_top: map.sectors.iter().map(|s| s.floor).collect(),
+            lift_low: (0..sectors).map(|s| specials::lowest_floor_around(level, s)).collect(),
             crushers: vec![false; sectors],
             lift_down: vec![Vec::new(); sectors],
             lift_lines: vec![Vec::new(); sectors],
@@ -185,9 +189,13 @@ impl Mechanisms {
             if self.lift_lines[s].is_empty() || self.perpetual[s] || busy(s) {
                 continue;
             }
+            // Its bottom moves too when a neighbour's floor does (a pool
+            // lowered beside it brings a switch down there into reach).
             let floor = map.sectors[s].floor;
-            if floor != self.lift_top[s] {
+            let low = specials::lowest_floor_around(level, s);
+            if floor != self.lift_top[s] || low != self.lift_low[s] {
                 self.lift_top[s] = floor;
+                self.lift_low[s] = low;
                 self.sort_lift_lines(level, s);
             }
         }
@@ -426,8 +434,18 @@ impl Search {
                         && w.heights.low[s] < top
                         && here.iter().all(|&t| t as usize == s || w.heights.floor[t as usize] >= top - MAX_STEP)
                 };
-                if w.nav.touched(n).iter().any(|&s| up_only(s as usize)) {
-                    to = w.nav.span_where(n, w.heights, |s| up_only(s).then_some(w.heights.floor[s]));
+                // A lift called from its top only (its switch on the lift
+                // itself): from below it stays up.
+                let down_only = |s: usize| {
+                    let top = w.heights.floor[s];
+                    w.mech.lifts[s].is_empty()
+                        && !w.mech.lift_down[s].is_empty()
+                        && w.heights.low[s] < top
+                        && here.iter().all(|&t| t as usize != s && w.heights.floor[t as usize] < top - MAX_STEP)
+                };
+                let fixed = |s: usize| up_only(s) || down_only(s);
+                if w.nav.touched(n).iter().any(|&s| fixed(s as usize)) {
+                    to = w.nav.span_where(n, w.heights, |s| fixed(s).then_some(w.heights.floor[s]));
                 }
                 if !NavGrid::passable(from, to) {
                     continue;
@@ -518,13 +536,22 @@ impl Search {
 /// use range, nothing solid between.
 pub fn use_cells(nav: &NavGrid, map: &Map, line: LineId) -> Targets {
     let near = use_cells_within(nav, map, line, USE_REACH);
-    if !near.is_empty() {
+    // Cells with no room for the body as the level stands (a switch at the
+    // back of a low slot) do not count as near.
+    let now = Heights::of(map);
+    if near.cells().any(|c| {
+        let span = nav.span(c, &now);
+        span.ceiling - span.high >= HEIGHT
+    }) {
         return near;
     }
-    // A switch on a ledge's face, or across a step: every cell that close
-    // has its body over the ledge. The press reaches further than the
-    // margin kept for steering (`use_line` presses within the use range).
-    use_cells_within(nav, map, line, USE_RANGE - 12.0)
+    // A switch on a ledge's face, across a step or at the back of a slot:
+    // every cell that close has its body over the ledge or under the low
+    // ceiling. The press reaches further than the margin kept for
+    // steering (`use_line` presses within the use range).
+    let mut far = use_cells_within(nav, map, line, USE_RANGE - 6.0);
+    far.add(near);
+    far
 }
 
 /// [`use_cells`] within `reach` of the line.
@@ -579,23 +606,7 @@ pub fn cells_near(nav: &NavGrid, p: DVec2, reach: f64) -> Targets {
 /// further from which a walk straight at it stops against a step or ledge
 /// (a two-sided line it cannot climb) with the item then in reach: a key on
 /// a pedestal is taken by walking into the pedestal.
-///
-/// With the item's height `z`, only cells whose floor (as the level stands)
-/// lets the body touch it: Doom's touch wants the item no more than the
-/// body's height above its feet, nor more than 8 below.
-pub fn touch_cells(nav: &NavGrid, map: &Map, p: DVec2, z: Option<f64>) -> Targets {
-    let mut t = touch_cells_at_any_height(nav, map, p);
-    if let Some(z) = z {
-        let live = Heights::of(map);
-        t.cells.retain(|&c| {
-            let feet = nav.span(c, &live).high;
-            z - feet <= HEIGHT && z - feet >= -8.0
-        });
-    }
-    t
-}
-
-fn touch_cells_at_any_height(nav: &NavGrid, map: &Map, p: DVec2) -> Targets {
+pub fn touch_cells(nav: &NavGrid, map: &Map, p: DVec2) -> Targets {
     let mut t = cells_near(nav, p, TOUCH_REACH);
     let far = cells_near(nav, p, TOUCH_REACH + CELL);
     for c in far.cells() {
@@ -669,7 +680,7 @@ pub fn targets_of(nav: &NavGrid, map: &Map, goal: &Goal) -> Targets {
     match goal {
         Goal::Use(line) => use_cells(nav, map, *line),
         Goal::Cross(line) => crossing_of(*line),
-        Goal::Touch(p, _) => touch_cells(nav, map, *p, None),
+        Goal::Touch(p, _) => touch_cells(nav, map, *p),
         Goal::Shoot(line) => shoot_cells(nav, map, *line),
     }
 }
@@ -733,7 +744,7 @@ pub fn plan_heights(level: &Level, mech: &Mechanisms, keys: &[KeyColour], spent:
         }
     }
     for (s, lifts) in mech.lifts.iter().enumerate() {
-        if lifts.iter().any(|l| !spent.contains(l)) {
+        if lifts.iter().chain(&mech.lift_down[s]).any(|l| !spent.contains(l)) {
             h.low[s] = h.low[s].min(specials::lowest_floor_around(level, s));
             h.floor[s] = h.floor[s].max(mech.lift_top[s].min(h.ceiling[s] - 56.0));
         }

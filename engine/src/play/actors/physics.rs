@@ -189,7 +189,11 @@ impl Actors {
                 self.wake_physics(n);
             }
         }
-        o.ceiling - o.floor >= height
+        // Squeezed below no height at all (a ceiling under the floor across
+        // a line its box overlaps), it still fits: only a body that can be
+        // shot stops a moving plane (Doom's PIT_ChangeSector passes over
+        // the others).
+        yielding || o.ceiling - o.floor >= height
     }
 
     /// Puts actor `n` at `to` facing `angle`, standing still on the floor
