@@ -535,7 +535,8 @@ of it, and a walk line (secret exit) across its south-west corner.
 
 
 MAPS = {
-    "lift": lift, "doors": doors, "locked_door": locked_door, "pedestal": pedestal, "floors": floors, "ceilings": ceilings,
+    "lift": lift, "doors": doors, "locked_door": locked_door, "pedestal": pedestal, "floors": floors,
+    "ceilings": ceilings,
     "stairs": stairs, "donut": donut, "lights": lights, "sector_specials": sector_specials,
     "teleport": teleport, "switches": switches, "shoot": shoot, "exit": exits,
 }
