@@ -1381,31 +1381,8 @@ impl Autopilot {
     /// stops at the first line with a live use special (another switch in
     /// front swallows the press) or at a wall with no opening.
     fn press_reaches(game: &Game, line: LineId, from: DVec2, to: DVec2) -> bool {
-        let level = game.level();
-        let map = &level.compiled.map;
-        let mut first: Option<(f64, LineId)> = None;
-        for id in 0..(map.lines.len() + map.trigger_lines.len()) as u32 {
-            let (sl, a, b, _) = line_of(map, id);
-            let Some(t) = crate::play::trace::crossing(from, to, a, b) else { continue };
-            if first.is_some_and(|(ft, _)| ft <= t) {
-                continue;
-            }
-            let stops = game.world().special(level, sl).is_some_and(|s| s.on == Activation::Use)
-                || match sl {
-                    crate::play::world::SpecialLine::Wall(i) => {
-                        let l = &map.lines[i];
-                        l.back.as_ref().is_none_or(|back| {
-                            let (f, k) = (&map.sectors[l.front.sector], &map.sectors[back.sector]);
-                            f.ceiling.min(k.ceiling) <= f.floor.max(k.floor)
-                        })
-                    }
-                    _ => false,
-                };
-            if stops {
-                first = Some((t, id));
-            }
-        }
-        first.is_none_or(|(_, id)| id == line)
+        let wanted = line_of(&game.level().compiled.map, line).0;
+        game.use_stop(&mut Default::default(), from, to).is_none_or(|c| c.line == wanted)
     }
 
     /// At the route's end: do what the goal asks.

@@ -384,25 +384,30 @@ impl Game {
         let (sin, cos) = sin_cos_degrees(self.player.angle);
         let from = self.player.pos;
         let to = from + DVec2::new(cos, sin) * USE_RANGE;
-        let lines = Lines { map: &self.level.compiled.map, walls: &self.blockmap, triggers: &self.triggers };
-        let crossings = lines.along(&mut self.scratch, from, to);
-        for c in crossings {
-            if let Some(special) = self.world.special(&self.level, c.line) {
-                if special.on == Activation::Use {
-                    if c.from_front {
-                        let (world, mut ctx) = self.ctx();
-                        activate(world, &mut ctx, c.line, Activation::Use, Activator::Player, true);
-                    }
-                    return;
-                }
+        let mut scratch = std::mem::take(&mut self.scratch);
+        let stop = self.use_stop(&mut scratch, from, to);
+        self.scratch = scratch;
+        let Some(c) = stop else { return };
+        if self.world.special(&self.level, c.line).is_some_and(|s| s.on == Activation::Use) {
+            if c.from_front {
+                let (world, mut ctx) = self.ctx();
+                activate(world, &mut ctx, c.line, Activation::Use, Activator::Player, true);
             }
-            if let SpecialLine::Wall(i) = c.line {
-                if !self.opening(i).is_some_and(|(bottom, top)| top > bottom) {
-                    self.events.push(sound("noway", Origin::Player));
-                    return;
-                }
-            }
+        } else {
+            self.events.push(sound("noway", Origin::Player));
         }
+    }
+
+    /// Where a use from `from` towards `to` stops: the first line with a
+    /// live use special, or a wall with no opening; `None` when nothing
+    /// does. (The autopilot asks it before pressing: another switch in
+    /// front swallows the press.)
+    pub fn use_stop(&self, scratch: &mut trace::Scratch, from: DVec2, to: DVec2) -> Option<trace::Crossing> {
+        let lines = Lines { map: &self.level.compiled.map, walls: &self.blockmap, triggers: &self.triggers };
+        lines.along(scratch, from, to).into_iter().find(|c| {
+            self.world.special(&self.level, c.line).is_some_and(|s| s.on == Activation::Use)
+                || matches!(c.line, SpecialLine::Wall(i) if !self.opening(i).is_some_and(|(bottom, top)| top > bottom))
+        })
     }
 
     /// The lines with shoot specials that this tick's shots crossed before
