@@ -1,6 +1,6 @@
 //! The autopilot: on small maps that each need one mechanism (a lift, a
 //! switch and its remote door, a key and its door, a teleporter, a one-way
-//! drop) it reaches the exit through its inputs alone, and the mechanism was
+//! drop, a gap to jump at a run) it reaches the exit through its inputs alone, and the mechanism was
 //! really used; `check` finds a map's unreachable secret and its soft lock;
 //! a recorded run replays to the same state; and Freedoom's E1M1 is finished.
 
@@ -79,6 +79,24 @@ fn the_autopilot_jumps_down_a_one_way_drop() {
     let play = finish("drop", |play| feet.push(play.game.player().z));
     assert_eq!(feet.first(), Some(&96.0));
     assert_eq!(play.game.player().z, 0.0);
+}
+
+#[test]
+fn the_autopilot_clears_a_gap_with_a_running_jump() {
+    let mut lowest = f64::MAX;
+    let mut fastest = 0.0f64;
+    finish("gap", |play| {
+        lowest = lowest.min(play.game.player().z);
+        fastest = fastest.max(play.game.player().velocity.length());
+    });
+    assert!(lowest > -24.0, "the player fell into the pit (feet down to {lowest})");
+    assert!(fastest > 12.0, "no run: {fastest} units a tick at most");
+    // `check` finds the same way across, and the pit a soft lock.
+    let level = open_level(&map_path("tests/maps/autopilot_gap.ron"), &Default::default()).unwrap();
+    let (report, _) = check::check(level, 3);
+    assert!(report.exit_reachable, "{}", report.text());
+    assert!(report.soft_locks.iter().all(|s| s.to_sector == 1), "{}", report.text());
+    assert!(!report.soft_locks.is_empty(), "the pit: {}", report.text());
 }
 
 #[test]

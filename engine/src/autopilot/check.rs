@@ -24,6 +24,7 @@ use crate::actors::{ActorFlag, ActorTable};
 use crate::framebuffer::{rgb, Framebuffer};
 use crate::level::Level;
 use crate::map::special::{Activation, KeyColour};
+use crate::play::player::MAX_STEP;
 
 /// What `check` found.
 #[derive(Clone, Debug, serde::Serialize)]
@@ -394,7 +395,14 @@ fn forward_edges(
                 continue;
             }
             let Some(b) = nav.neighbour(a, d) else { continue };
-            if solid.contains(&b) || !NavGrid::passable(from, nav.span(b, heights)) {
+            let to = nav.span(b, heights);
+            if from.high - to.high > MAX_STEP {
+                // A running jump across the gap, as the search takes one.
+                if let Some(leap) = nav.leap(a, d, heights).filter(|l| !solid.contains(&l.to)) {
+                    edges.push((a, leap.to, Vec::new()));
+                }
+            }
+            if solid.contains(&b) || !NavGrid::passable(from, to) {
                 continue;
             }
             let mut to = b;

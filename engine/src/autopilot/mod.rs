@@ -8,12 +8,15 @@
 //! - [`nav`]: the navigation grid (16-unit cells, walls, heights).
 //! - [`plan`]: the level's mechanisms, the heights a plan assumes, the
 //!   search, and which goal to go for.
+//! - [`leap`]: running jumps across gaps: which runs clear which gaps, and
+//!   taking one.
 //! - this module: following a route (steering, doors, lifts, teleports,
 //!   getting unstuck), fighting, and the report.
 //! - [`check`]: what a map maker asks of a map: can the exit, each key,
 //!   secret and item be reached, and where can the player get stuck.
 
 pub mod check;
+pub mod leap;
 pub mod nav;
 pub mod plan;
 
@@ -152,12 +155,26 @@ struct Active {
     presses: u32,
     /// Ticks spent at the goal.
     arrived: u32,
+    /// A running jump under way.
+    leap: Option<leap::Run>,
 }
 
 impl Active {
     /// A route to `goal` just found, nothing done along it yet.
     fn new(goal: Goal, purpose: Purpose, route: Route) -> Active {
-        Active { goal, purpose, route, at: 0, idle: 0, waited: 0, still: 0, reroutes: 0, presses: 0, arrived: 0 }
+        Active {
+            goal,
+            purpose,
+            route,
+            at: 0,
+            idle: 0,
+            waited: 0,
+            still: 0,
+            reroutes: 0,
+            presses: 0,
+            arrived: 0,
+            leap: None,
+        }
     }
 }
 
@@ -323,7 +340,9 @@ impl Autopilot {
             self.rechoose = true;
         }
         self.low_health = low;
-        let fight = self.fight(game);
+        // Running at a gap, the body must keep its line: no fighting.
+        let leaping = self.active.as_ref().and_then(|a| a.leap).is_some_and(|l| l.running());
+        let fight = self.fight(game).filter(|_| !leaping);
         // With a gun, stand and fight what is in sight (strafing from side
         // to side, backing off what comes close) for a while before going
         // on; with only a fist, go on. Hurt, fall back the way it came,
@@ -415,7 +434,7 @@ impl Autopilot {
                 }
             }
         }
-        if !input.use_line {
+        if !input.use_line && !leaping {
             self.dodge(game, &mut input);
         }
         self.used_last = input.use_line;
@@ -969,7 +988,9 @@ impl Autopilot {
     fn follow(&mut self, game: &Game) -> TickInput {
         let now = game.ticks();
         let pos = game.player().pos;
-        let waiting = self.active.as_ref().is_some_and(|a| a.waited > 0);
+        // Waiting for a door, or on a running jump: no new plan now.
+        let waiting = self.active.as_ref().is_some_and(|a| a.waited > 0 || a.leap.is_some());
+        let leaping = self.active.as_ref().is_some_and(|a| a.leap.is_some());
         if now >= self.next_replan && !waiting && !self.rechoose {
             // Now and then the route to the same goal is found again (the
             // world moves, a move was given up); only a route that no
@@ -995,7 +1016,7 @@ impl Autopilot {
                 }
             }
         }
-        if self.active.is_none() || (now >= self.next_replan && !waiting) || self.rechoose {
+        if self.active.is_none() || (now >= self.next_replan && !waiting) || (self.rechoose && !leaping) {
             self.rechoose = false;
             if now < self.settle_until && self.active.is_none() {
                 return TickInput::default();
@@ -1065,6 +1086,9 @@ impl Autopilot {
     /// One tick along `active`; `None` when it is finished or abandoned
     /// (then a new goal is chosen next tick).
     fn step(&mut self, game: &Game, a: &mut Active) -> Option<TickInput> {
+        if let Some(input) = self.leap_step(game, a) {
+            return input;
+        }
         let now = game.ticks();
         let player = game.player();
         let pos = player.pos;
@@ -1128,6 +1152,10 @@ impl Autopilot {
             a.idle = 0;
             return Some(self.hold(game));
         }
+        if a.route.leap[a.at + 1] > 0 {
+            // A running jump from here: to the edge's centre first.
+            return Some(self.drive_to(game, self.nav.centre_of(c), true));
+        }
         if !a.route.teleport[a.at + 1] {
             let from = self.nav.span(c, &live);
             let to = self.nav.span(n, &live);
@@ -1170,7 +1198,7 @@ impl Autopilot {
         let near_teleport = !teleporting && soon.iter().any(|&x| self.near_teleport[x as usize]);
         let ahead = if a.idle > STUCK_TICKS / 2 || on_ledge || near_teleport { 1 } else { 3 };
         let mut k = a.at + 1;
-        while k < last && k < a.at + ahead && !a.route.teleport[k + 1] {
+        while k < last && k < a.at + ahead && !a.route.teleport[k + 1] && a.route.leap[k + 1] == 0 {
             k += 1;
         }
         let mut target = self.nav.centre_of(cells[k]);

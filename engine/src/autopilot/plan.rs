@@ -10,6 +10,7 @@ use std::collections::{BTreeMap, BTreeSet, BinaryHeap};
 
 use glam::DVec2;
 
+use super::leap;
 use super::nav::{Cell, Heights, LineId, NavGrid, CELL, NONE};
 use crate::level::Level;
 use crate::map::special::{Action, Activation, CeilingTarget, DoorKind, KeyColour, LineSpecial};
@@ -29,6 +30,9 @@ const LEDGE_COST: u32 = 25;
 const OVER_DROP_COST: u32 = 100;
 /// Cost of a straight and a diagonal move.
 const STRAIGHT: u32 = 10;
+/// Extra cost of a running jump (on top of its run-up, there and back,
+/// and its flight): a risk taken only when it saves a long way round.
+const LEAP_COST: u32 = 300;
 const DIAGONAL: u32 = 14;
 /// An item is picked up from a cell whose centre is this close along each
 /// axis: the body's box touches the item's (16 + 20 in Doom, boxes, not
@@ -343,6 +347,9 @@ pub struct Route {
     pub cells: Vec<Cell>,
     /// `teleport[i]`: the move into `cells[i]` was a teleport.
     pub teleport: Vec<bool>,
+    /// `leap[i]`: the move into `cells[i]` is a running jump with this many
+    /// cells of run-up (0: not a leap).
+    pub leap: Vec<u8>,
     pub cost: u32,
 }
 
@@ -352,6 +359,7 @@ pub struct Search {
     cost: Vec<u32>,
     prev: Vec<u32>,
     tele: Vec<bool>,
+    leap: Vec<u8>,
     seen: Vec<u32>,
     stamp: u32,
     heap: BinaryHeap<Reverse<(u32, Cell)>>,
@@ -388,6 +396,7 @@ impl Search {
             self.cost = vec![0; cells];
             self.prev = vec![NONE; cells];
             self.tele = vec![false; cells];
+            self.leap = vec![0; cells];
             self.seen = vec![0; cells];
             self.stamp = 0;
         }
@@ -403,6 +412,7 @@ impl Search {
         self.cost[start as usize] = 0;
         self.prev[start as usize] = NONE;
         self.tele[start as usize] = false;
+        self.leap[start as usize] = 0;
         self.heap.push(Reverse((0, start)));
         while let Some(Reverse((cost, c))) = self.heap.pop() {
             if cost > self.cost[c as usize] {
@@ -415,6 +425,9 @@ impl Search {
                 }
             }
             let from = w.nav.span(c, w.heights);
+            // Directions in which the next cell is a drop no step climbs
+            // back: a running jump may clear the gap.
+            let mut drops = 0u8;
             for d in 0..8 {
                 if !w.nav.open(c, d) || w.bad.contains(&(c * 8 + d as u32)) {
                     continue;
@@ -446,6 +459,9 @@ impl Search {
                 let fixed = |s: usize| up_only(s) || down_only(s);
                 if w.nav.touched(n).iter().any(|&s| fixed(s as usize)) {
                     to = w.nav.span_where(n, w.heights, |s| fixed(s).then_some(w.heights.floor[s]));
+                }
+                if from.high - to.high > MAX_STEP {
+                    drops |= 1 << d;
                 }
                 if !NavGrid::passable(from, to) {
                     continue;
@@ -488,37 +504,53 @@ impl Search {
                 if centre != NONE && w.hurts[centre as usize] {
                     step += HURT_COST;
                 }
-                let total = cost + step;
-                let n = next as usize;
-                if self.seen[n] != stamp || total < self.cost[n] {
-                    self.seen[n] = stamp;
-                    self.cost[n] = total;
-                    self.prev[n] = c;
-                    self.tele[n] = teleported;
-                    if met {
-                        return Some(self.route(next));
-                    }
-                    self.heap.push(Reverse((total, next)));
+                if self.relax(c, next, cost + step, teleported, 0) && met {
+                    return Some(self.route(next));
                 }
+            }
+            for d in (0..8).filter(|&d| drops & (1 << d) != 0) {
+                if w.bad.contains(&leap::key(c, d)) {
+                    continue;
+                }
+                let Some(jump) = w.nav.leap(c, d, w.heights) else { continue };
+                if w.blocked.contains(&jump.to) {
+                    continue;
+                }
+                let runup = u32::from(jump.runup) * 2 + u32::from(jump.cells);
+                let step = if d < 4 { STRAIGHT } else { DIAGONAL };
+                self.relax(c, jump.to, cost + LEAP_COST + runup * step, false, jump.runup);
             }
         }
         None
     }
 
+    /// Reaching `next` from `c` at `total`: kept if cheaper than known.
+    fn relax(&mut self, c: Cell, next: Cell, total: u32, teleported: bool, leap: u8) -> bool {
+        let n = next as usize;
+        if self.seen[n] == self.stamp && total >= self.cost[n] {
+            return false;
+        }
+        self.seen[n] = self.stamp;
+        self.cost[n] = total;
+        self.prev[n] = c;
+        self.tele[n] = teleported;
+        self.leap[n] = leap;
+        self.heap.push(Reverse((total, next)));
+        true
+    }
+
     fn route(&self, end: Cell) -> Route {
         let mut cells = vec![end];
-        let mut teleport = vec![self.tele[end as usize]];
         let mut c = end;
         while self.prev[c as usize] != NONE {
             c = self.prev[c as usize];
             cells.push(c);
-            teleport.push(self.tele[c as usize]);
         }
         cells.reverse();
-        teleport.reverse();
-        // `tele[c]` marks the move into c; after reversing, entry i says
-        // whether cells[i] was reached by a teleport.
-        Route { cells, teleport, cost: self.cost[end as usize] }
+        // `tele[c]` and `leap[c]` mark the move into c.
+        let teleport = cells.iter().map(|&c| self.tele[c as usize]).collect();
+        let leap = cells.iter().map(|&c| self.leap[c as usize]).collect();
+        Route { cells, teleport, leap, cost: self.cost[end as usize] }
     }
 
     /// Was `c` reached by the last search?
