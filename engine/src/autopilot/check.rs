@@ -136,6 +136,7 @@ fn flood(
         spent: &spent,
         hurts,
         shut: &shut,
+        wary: &[],
     };
     search.run(&w, start, None);
     let mut reached = vec![false; nav.cells()];

@@ -119,10 +119,11 @@ impl Assumed {
         &'a self,
         nav: &'a NavGrid,
         mech: &'a Mechanisms,
-        hurts: &'a [bool],
+        (hurts, wary): (&'a [bool], &'a [bool]),
         map: &'a crate::map::Map,
     ) -> plan::World<'a> {
         plan::World {
+            wary,
             nav,
             map,
             mech,
@@ -234,6 +235,9 @@ pub struct Autopilot {
     /// Cells within a body and a cell of a teleport line, where the bot
     /// goes carefully unless its route takes the teleport.
     near_teleport: Vec<bool>,
+    /// Cells near a teleport line that once took the body off a route that
+    /// did not go through it: searches keep off them where they can.
+    wary: Vec<bool>,
     /// Where the body has been, a point every [`TRAIL_STEP`] units, the
     /// newest last: the way back out of a fight going badly.
     trail: Vec<DVec2>,
@@ -251,13 +255,8 @@ impl Autopilot {
         let hurts = map.sectors.iter().map(|s| s.special.damage.is_some()).collect();
         let mut near_teleport = vec![false; nav.cells()];
         for &l in mech.teleports.keys() {
-            let (_, a, b, _) = line_of(map, l);
-            let margin = DVec2::splat(RADIUS + CELL);
-            for c in nav.cells_in_box(a.min(b) - margin, a.max(b) + margin) {
-                let p = nav.centre_of(c);
-                if plan::nearest_on(p, a, b).distance(p) < RADIUS + CELL {
-                    near_teleport[c as usize] = true;
-                }
+            for c in cells_near_line(&nav, map, l) {
+                near_teleport[c as usize] = true;
             }
         }
         Autopilot {
@@ -288,6 +287,7 @@ impl Autopilot {
             crossed: BTreeMap::new(),
             rechoose: false,
             trail: vec![game.player().pos],
+            wary: vec![false; near_teleport.len()],
             near_teleport,
             low_health: false,
             in_sight: 0,
@@ -322,6 +322,9 @@ impl Autopilot {
             return TickInput::default();
         }
         self.note_crossings(game);
+        if self.last_pos.distance(player.pos) > 64.0 {
+            self.note_teleport(game);
+        }
         // A floor can come to hurt (a line that copies a neighbour's
         // special as it lowers a floor to nukage).
         for (hurts, sector) in self.hurts.iter_mut().zip(&game.level().compiled.map.sectors) {
@@ -561,6 +564,37 @@ impl Autopilot {
         }
     }
 
+    /// The body was teleported: by a line its route did not take (it
+    /// drifted or coasted over it), the cells near that line are kept off
+    /// from now on.
+    fn note_teleport(&mut self, game: &Game) {
+        let map = &game.level().compiled.map;
+        let planned = self.active.as_ref().is_some_and(|a| {
+            a.route.teleport[a.at.saturating_sub(2)..(a.at + 6).min(a.route.cells.len())].iter().any(|&t| t)
+        });
+        let from = self.last_pos;
+        let near = self.mech.teleports.keys().copied().min_by(|&l, &m| {
+            let d = |l: LineId| {
+                let (_, a, b, _) = line_of(map, l);
+                plan::nearest_on(from, a, b).distance(from)
+            };
+            d(l).total_cmp(&d(m))
+        });
+        let Some(line) = near else { return };
+        let (_, a, b, _) = line_of(map, line);
+        if planned || plan::nearest_on(from, a, b).distance(from) > RADIUS + 32.0 {
+            return;
+        }
+        self.log.push(format!(
+            "tick {}: teleported by {} off the route: kept off from now on",
+            game.ticks(),
+            describe(map, line)
+        ));
+        for c in cells_near_line(&self.nav, map, line) {
+            self.wary[c as usize] = true;
+        }
+    }
+
     /// Lines that are used up: set off once and not repeatable.
     fn spent(&self, game: &Game) -> BTreeSet<LineId> {
         let map = &game.level().compiled.map;
@@ -738,7 +772,7 @@ impl Autopilot {
         }
         let assumed = self.assume(game);
         let start = self.nav.start_cell(player.pos, player.z, &assumed.heights)?;
-        let world = assumed.world(&self.nav, &self.mech, &self.hurts, &game.level().compiled.map);
+        let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.wary), &game.level().compiled.map);
         self.search.run(&world, start, None);
         let safe = self.search.reached.iter().copied().find(|&c| {
             self.nav.touched(c).iter().all(|&s| !self.hurts[s as usize] && !self.mech.crushers[s as usize])
@@ -757,7 +791,7 @@ impl Autopilot {
         let assumed = self.assume(game);
         let Assumed { heights, spent, .. } = &assumed;
         let start = self.nav.start_cell(game.player().pos, game.player().z, heights)?;
-        let world = assumed.world(&self.nav, &self.mech, &self.hurts, map);
+        let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.wary), map);
         let nav = &self.nav;
         let active = Active::new;
 
@@ -1347,7 +1381,7 @@ impl Autopilot {
         let map = &level.compiled.map;
         let assumed = self.assume(game);
         let start = self.nav.start_cell(game.player().pos, game.player().z, &assumed.heights)?;
-        let world = assumed.world(&self.nav, &self.mech, &self.hurts, map);
+        let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.wary), map);
         let targets = plan::targets_of(&self.nav, map, goal);
         self.search.run(&world, start, Some(&targets))
     }
@@ -1697,6 +1731,18 @@ pub fn run(
 const CRUSH_ROOM: f64 = 56.0 + 64.0;
 
 /// The live heights, lifts at the height they are.
+/// The cells whose centres are within a body and a cell of `line`.
+fn cells_near_line(nav: &NavGrid, map: &crate::map::Map, line: LineId) -> Vec<Cell> {
+    let (_, a, b, _) = line_of(map, line);
+    let margin = DVec2::splat(RADIUS + CELL);
+    nav.cells_in_box(a.min(b) - margin, a.max(b) + margin)
+        .filter(|&c| {
+            let p = nav.centre_of(c);
+            plan::nearest_on(p, a, b).distance(p) < RADIUS + CELL
+        })
+        .collect()
+}
+
 fn live_heights(map: &crate::map::Map) -> Heights {
     Heights::of(map)
 }

@@ -30,6 +30,8 @@ const LEDGE_COST: u32 = 25;
 const OVER_DROP_COST: u32 = 100;
 /// Cost of a straight and a diagonal move.
 const STRAIGHT: u32 = 10;
+/// Extra cost of a cell near a teleport line that took the body by accident.
+const WARY_COST: u32 = 60;
 /// Extra cost of a running jump (on top of its run-up, there and back,
 /// and its flight): a risk taken only when it saves a long way round.
 const LEAP_COST: u32 = 300;
@@ -384,6 +386,9 @@ pub struct World<'a> {
     /// Manual doors shut now (the heights assume them open): they can be
     /// entered only from a cell they can be opened from.
     pub shut: &'a [bool],
+    /// Per cell (or none at all): near a teleport line that once took the
+    /// body by accident; such cells cost more.
+    pub wary: &'a [bool],
 }
 
 impl Search {
@@ -503,6 +508,9 @@ impl Search {
                 }
                 if centre != NONE && w.hurts[centre as usize] {
                     step += HURT_COST;
+                }
+                if w.wary.get(next as usize).copied().unwrap_or(false) {
+                    step += WARY_COST;
                 }
                 if self.relax(c, next, cost + step, teleported, 0) && met {
                     return Some(self.route(next));
