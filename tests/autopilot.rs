@@ -31,7 +31,8 @@ fn finish(name: &str, mut watch: impl FnMut(&Playthrough)) -> Playthrough {
         true
     })
     .unwrap_or_else(|e| panic!("{e}"));
-    assert_eq!(outcome.exit, Some(Exit::Normal), "{name}: did not exit: {outcome:?}\n{}", bot.log.join("\n"));
+    let why = format!("died: {}, stuck: {:?}, after {} ticks", outcome.died, outcome.stuck, outcome.inputs.len());
+    assert_eq!(outcome.exit, Some(Exit::Normal), "{name}: did not exit ({why})\n{}", bot.log.join("\n"));
     play
 }
 

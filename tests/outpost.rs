@@ -238,7 +238,10 @@ fn the_outpost_is_fought_through_to_its_exit_on_the_middle_skill() {
         if d.pos().x > 1000.0 {
             break;
         }
-        let turn = d.turn_towards(0.0);
+        // Straight at the pad's middle (walking in from wherever the last
+        // step ended).
+        let to = w(784.0, 1248.0) - d.pos();
+        let turn = d.turn_towards(to.y.atan2(to.x).to_degrees());
         d.tick(TickInput { forward: 1, turn: turn as f32, ..Default::default() });
     }
     assert!(d.pos().x > 1000.0, "never teleported: at {}", d.pos());

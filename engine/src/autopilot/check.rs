@@ -399,7 +399,9 @@ fn forward_edges(
             let to = nav.span(b, heights);
             if from.high - to.high > MAX_STEP {
                 // A running jump across the gap, as the search takes one.
-                if let Some(leap) = nav.leap(a, d, heights).filter(|l| !solid.contains(&l.to)) {
+                if let Some(leap) =
+                    nav.leap(a, d, heights, |l| mech.teleports.contains_key(&l)).filter(|l| !solid.contains(&l.to))
+                {
                     edges.push((a, leap.to, Vec::new()));
                 }
             }

@@ -7,7 +7,7 @@
 //! fallen more than a step below the far side. Whether a given run clears
 //! a given gap is found here by playing the body's own rules tick by tick
 //! along the line of cells ([`NavGrid::leap`]): thrust and friction on the
-//! ground, the fall starting at twice gravity, a step of at most 24 and
+//! ground, the fall starting at twice gravity after a tick of none, a step of at most 24 and
 //! [`HEIGHT`] of room at every piece of the move. A cell's span describes
 //! the body at the cell's centre only, so the floor is read half a cell
 //! ahead of the body (edges come early) and the far side's face is met in
@@ -19,7 +19,7 @@
 
 use glam::DVec2;
 
-use super::nav::{Cell, Heights, NavGrid, CELL, DIRS};
+use super::nav::{Cell, Heights, LineId, NavGrid, CELL, DIRS};
 use super::plan::Route;
 use super::{turn_to, Active, Autopilot};
 use crate::play::player::{FRICTION, HEIGHT, MAX_STEP, RUN_THRUST};
@@ -152,7 +152,7 @@ fn run(line: &Line, runup: usize) -> Option<(f64, f64)> {
             z = low;
             vz = 0.0;
         } else if z > low {
-            vz = if vz == 0.0 { -2.0 } else { vz - 1.0 };
+            // The fall so far, then gravity (the world's own order).
             z += vz;
             if x >= 0.0 {
                 pit = pit.min(low);
@@ -160,6 +160,8 @@ fn run(line: &Line, runup: usize) -> Option<(f64, f64)> {
             if z <= low {
                 z = low;
                 vz = 0.0;
+            } else {
+                vz = if vz == 0.0 { -2.0 } else { vz - 1.0 };
             }
         }
         let ground = z <= low;
@@ -191,16 +193,20 @@ impl NavGrid {
     /// a drop no step climbs back): the shortest run-up straight behind `c`
     /// that carries the body over the gap to a floor well above the gap's
     /// bottom, and the cell it stops in. The line must be open cell to cell
-    /// (no solid wall across it) and cross no special line; the run-up must
-    /// be walkable both ways.
-    pub fn leap(&self, c: Cell, d: usize, heights: &Heights) -> Option<Leap> {
+    /// (no solid wall across it) and cross no line `refuse` names (a
+    /// teleport: the body would be elsewhere); the run-up must be walkable
+    /// both ways.
+    pub fn leap(&self, c: Cell, d: usize, heights: &Heights, refuse: impl Fn(LineId) -> bool) -> Option<Leap> {
         let mut behind = vec![c];
         let b = back(d);
         while behind.len() <= RUNUP_CELLS {
             let last = *behind.last().unwrap();
             let Some(n) = self.neighbour(last, b).filter(|_| self.open(last, b)) else { break };
             let (p, q) = (self.span(last, heights), self.span(n, heights));
-            if !NavGrid::passable(p, q) || !NavGrid::passable(q, p) || self.crossings_of(last, b).next().is_some() {
+            if !NavGrid::passable(p, q)
+                || !NavGrid::passable(q, p)
+                || self.crossings_of(last, b).any(|(l, _)| refuse(l))
+            {
                 break;
             }
             behind.push(n);
@@ -213,7 +219,7 @@ impl NavGrid {
         while cells.len() <= edge + FLIGHT_CELLS {
             let last = *cells.last().unwrap();
             let Some(n) = self.neighbour(last, d).filter(|_| self.open(last, d)) else { break };
-            if self.crossings_of(last, d).next().is_some() {
+            if self.crossings_of(last, d).any(|(l, _)| refuse(l)) {
                 break;
             }
             cells.push(n);
@@ -226,31 +232,36 @@ impl NavGrid {
             edge,
             step: step_length(d),
         };
+        // A run-up of `r` cells: where it stops, if it gets across to a
+        // cell on the landing's level and not on the edge of a drop (a
+        // corner that only grazes a high floor is slid off).
+        let attempt = |r: usize| {
+            let (stop, landing) = run(&line, r)?;
+            let landing_floor = line.under(landing)?.0;
+            let i = line.at(stop)?;
+            [i, i - 1].into_iter().find_map(|i| {
+                let ok = i > edge
+                    && (i - edge) as f64 * line.step >= landing - CELL
+                    && self.standable(line.cells[i])
+                    && !self.span(line.cells[i], heights).ledge()
+                    && (line.floor[i] - landing_floor).abs() <= MAX_STEP;
+                ok.then(|| Leap { to: line.cells[i], runup: r as u8, cells: (i - edge) as u8 })
+            })
+        };
         // The longest run-up first: with it failing, none works.
         let longest = edge;
-        run(&line, longest)?;
+        let best = attempt(longest)?;
         let (mut lo, mut hi) = (1, longest);
         while lo < hi {
             let mid = (lo + hi) / 2;
-            if run(&line, mid).is_some() {
+            if attempt(mid).is_some() {
                 hi = mid;
             } else {
                 lo = mid + 1;
             }
         }
         // A cell more than the least, for a start a little off.
-        let runup = (lo + 1).min(longest);
-        let (stop, landing) = run(&line, runup)?;
-        let landing_floor = line.under(landing)?.0;
-        // The cell it stops in, or the one before it, on the landing's level.
-        let i = line.at(stop)?;
-        [i, i - 1].into_iter().find_map(|i| {
-            let ok = i > edge
-                && (i - edge) as f64 * line.step >= landing - CELL
-                && self.standable(line.cells[i])
-                && (line.floor[i] - landing_floor).abs() <= MAX_STEP;
-            ok.then(|| Leap { to: line.cells[i], runup: runup as u8, cells: (i - edge) as u8 })
-        })
+        attempt((lo + 1).min(longest)).or_else(|| attempt(lo)).or(Some(best))
     }
 }
 

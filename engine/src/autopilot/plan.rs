@@ -520,7 +520,7 @@ impl Search {
                 if w.bad.contains(&leap::key(c, d)) {
                     continue;
                 }
-                let Some(jump) = w.nav.leap(c, d, w.heights) else { continue };
+                let Some(jump) = w.nav.leap(c, d, w.heights, |l| w.mech.teleports.contains_key(&l)) else { continue };
                 if w.blocked.contains(&jump.to) {
                     continue;
                 }

@@ -328,9 +328,10 @@ impl Player {
             self.z = self.floor;
             self.vz = 0.0;
         } else if self.z > self.floor {
-            // Doom starts a fall at twice gravity so stepping off a ledge is
-            // not a float.
-            self.vz = if self.vz == 0.0 { -2.0 * GRAVITY } else { self.vz - GRAVITY };
+            // As Doom's P_ZMovement: the fall so far moves the body, then
+            // gravity acts, starting at twice gravity so stepping off a
+            // ledge is not a float. The first tick over a drop the body
+            // does not sink yet: a running body carries that much further.
             self.z += self.vz;
             if self.z <= self.floor {
                 if self.vz < -SQUAT_SPEED {
@@ -338,6 +339,8 @@ impl Player {
                 }
                 self.z = self.floor;
                 self.vz = 0.0;
+            } else {
+                self.vz = if self.vz == 0.0 { -2.0 * GRAVITY } else { self.vz - GRAVITY };
             }
         } else {
             self.vz = 0.0;
