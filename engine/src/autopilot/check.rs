@@ -24,7 +24,6 @@ use crate::actors::{ActorFlag, ActorTable};
 use crate::framebuffer::{rgb, Framebuffer};
 use crate::level::Level;
 use crate::map::special::{Activation, KeyColour};
-use crate::play::player::MAX_STEP;
 
 /// What `check` found.
 #[derive(Clone, Debug, serde::Serialize)]
@@ -397,11 +396,9 @@ fn forward_edges(
             }
             let Some(b) = nav.neighbour(a, d) else { continue };
             let to = nav.span(b, heights);
-            if from.high - to.high > MAX_STEP {
+            if from.drops_to(&to) {
                 // A running jump across the gap, as the search takes one.
-                if let Some(leap) =
-                    nav.leap(a, d, heights, |l| mech.teleports.contains_key(&l)).filter(|l| !solid.contains(&l.to))
-                {
+                if let Some(leap) = plan::leap_from(nav, mech, heights, a, d).filter(|l| !solid.contains(&l.to)) {
                     edges.push((a, leap.to, Vec::new()));
                 }
             }

@@ -1730,7 +1730,6 @@ pub fn run(
 /// the body's height and a second or two of a crusher's travel.
 const CRUSH_ROOM: f64 = 56.0 + 64.0;
 
-/// The live heights, lifts at the height they are.
 /// The cells whose centres are within a body and a cell of `line`.
 fn cells_near_line(nav: &NavGrid, map: &crate::map::Map, line: LineId) -> Vec<Cell> {
     let (_, a, b, _) = line_of(map, line);
@@ -1743,6 +1742,7 @@ fn cells_near_line(nav: &NavGrid, map: &crate::map::Map, line: LineId) -> Vec<Ce
         .collect()
 }
 
+/// The live heights, lifts at the height they are.
 fn live_heights(map: &crate::map::Map) -> Heights {
     Heights::of(map)
 }

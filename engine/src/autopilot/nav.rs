@@ -73,6 +73,12 @@ impl Span {
     pub fn ledge(&self) -> bool {
         self.bottom < self.high - MAX_STEP
     }
+
+    /// Is a move from here to `to` a drop no step climbs back (where a
+    /// running jump may clear a gap)?
+    pub fn drops_to(&self, to: &Span) -> bool {
+        self.high - to.high > MAX_STEP
+    }
 }
 
 /// The sector `p` is in, if it is in the map: the BSP's leaf, and `p` in

@@ -30,12 +30,12 @@ const LEDGE_COST: u32 = 25;
 const OVER_DROP_COST: u32 = 100;
 /// Cost of a straight and a diagonal move.
 const STRAIGHT: u32 = 10;
+const DIAGONAL: u32 = 14;
 /// Extra cost of a cell near a teleport line that took the body by accident.
 const WARY_COST: u32 = 60;
 /// Extra cost of a running jump (on top of its run-up, there and back,
 /// and its flight): a risk taken only when it saves a long way round.
 const LEAP_COST: u32 = 300;
-const DIAGONAL: u32 = 14;
 /// An item is picked up from a cell whose centre is this close along each
 /// axis: the body's box touches the item's (16 + 20 in Doom, boxes, not
 /// circles) even across a railing or from under a ledge; less 2 for a body
@@ -465,7 +465,7 @@ impl Search {
                 if w.nav.touched(n).iter().any(|&s| fixed(s as usize)) {
                     to = w.nav.span_where(n, w.heights, |s| fixed(s).then_some(w.heights.floor[s]));
                 }
-                if from.high - to.high > MAX_STEP {
+                if from.drops_to(&to) {
                     drops |= 1 << d;
                 }
                 if !NavGrid::passable(from, to) {
@@ -520,7 +520,7 @@ impl Search {
                 if w.bad.contains(&leap::key(c, d)) {
                     continue;
                 }
-                let Some(jump) = w.nav.leap(c, d, w.heights, |l| w.mech.teleports.contains_key(&l)) else { continue };
+                let Some(jump) = leap_from(w.nav, w.mech, w.heights, c, d) else { continue };
                 if w.blocked.contains(&jump.to) {
                     continue;
                 }
@@ -570,6 +570,12 @@ impl Search {
     pub fn cost_to(&self, c: Cell) -> Option<u32> {
         self.was_reached(c).then(|| self.cost[c as usize])
     }
+}
+
+/// A running jump from `c` along direction `d`, as the search and `check`
+/// both take one: never over a teleport line (the body would be elsewhere).
+pub fn leap_from(nav: &NavGrid, mech: &Mechanisms, heights: &Heights, c: Cell, d: usize) -> Option<leap::Leap> {
+    nav.leap(c, d, heights, |l| mech.teleports.contains_key(&l))
 }
 
 /// The cells from which `line` can be used: on its front, the centre within
