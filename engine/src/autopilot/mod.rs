@@ -53,6 +53,12 @@ const MAX_FAILURES: u32 = 3;
 /// Ticks to wait at a blocked move when nothing there moves and nothing can
 /// be done about it.
 const STILL_TICKS: u32 = 70;
+/// Calls of one lift missed (it came back up before the body got on)
+/// after which a route's own unblocking takes over from calling it first.
+const MAX_LIFT_MISSES: u32 = 3;
+/// Times one repeatable line is taken again with nothing untried left: a
+/// door that shuts again would otherwise be opened for ever.
+const MAX_RETAKES: u32 = 2;
 /// Ticks spent standing to fight what is in sight, then ticks going on
 /// along the route while still firing (so an enemy it cannot kill does not
 /// hold it for ever).
@@ -64,6 +70,9 @@ const DODGE_RANGE: f64 = 400.0;
 const CALM_TICKS: u32 = 35;
 /// A monster further than this is not fought.
 const FIGHT_RANGE: f64 = 1400.0;
+/// How far a fist or chainsaw reaches beyond the enemy's radius (Doom's
+/// melee range is 64 from the body's centre).
+const MELEE_REACH: f64 = 64.0;
 /// Below this health the bot goes for health it can reach.
 const LOW_HEALTH: i32 = 60;
 /// A barrel nearer than this on the line of fire stops the bot firing (a
@@ -156,6 +165,10 @@ struct Active {
     presses: u32,
     /// Ticks spent at the goal.
     arrived: u32,
+    /// A press at the goal did nothing because the sectors it moves were
+    /// busy (a door switch pressed while its door is open): it waits for
+    /// them and presses again.
+    busy: bool,
     /// A running jump under way.
     leap: Option<leap::Run>,
 }
@@ -174,6 +187,7 @@ impl Active {
             reroutes: 0,
             presses: 0,
             arrived: 0,
+            busy: false,
             leap: None,
         }
     }
@@ -197,6 +211,16 @@ pub struct Autopilot {
     failures: BTreeMap<(u8, u32), u32>,
     /// Floor and ceiling heights last tick (to see what moves).
     last: Heights,
+    /// Repeatable lines taken again with nothing untried left, and how
+    /// often (see [`MAX_RETAKES`]).
+    retaken: BTreeMap<LineId, u32>,
+    /// Repeatable switches whose last press started nothing.
+    did_nothing: BTreeSet<LineId>,
+    /// Per sector, the last tick its floor moved.
+    floor_moved: Vec<u64>,
+    /// Per lift sector, calls missed (the lift came back up before the
+    /// body got on).
+    lift_misses: BTreeMap<usize, u32>,
     last_pos: DVec2,
     used_last: bool,
     /// No full replan before this tick (after setting something off, the
@@ -269,6 +293,10 @@ impl Autopilot {
             unreachable: BTreeSet::new(),
             failures: BTreeMap::new(),
             last: Heights::of(map),
+            did_nothing: BTreeSet::new(),
+            retaken: BTreeMap::new(),
+            floor_moved: vec![0; map.sectors.len()],
+            lift_misses: BTreeMap::new(),
             last_pos: game.player().pos,
             used_last: false,
             settle_until: 0,
@@ -441,7 +469,13 @@ impl Autopilot {
             self.dodge(game, &mut input);
         }
         self.used_last = input.use_line;
-        self.last = Heights::of(&game.level().compiled.map);
+        let heights = Heights::of(&game.level().compiled.map);
+        for (s, moved) in self.floor_moved.iter_mut().enumerate() {
+            if heights.floor[s] != self.last.floor[s] {
+                *moved = now;
+            }
+        }
+        self.last = heights;
         if self.last_pos.distance(player.pos) > 64.0 {
             // Teleported: the way back is not a walk.
             self.trail.clear();
@@ -692,8 +726,10 @@ impl Autopilot {
     /// call of it on the way: call it first, from a switch reachable now
     /// (one up on a ledge beside it, say) rather than at its foot, where
     /// the switch may be out of reach (and the foot a nukage pit). A call
-    /// made in the last 20 seconds is not made again this way: the lift
-    /// was missed, and the route's own unblocking takes over.
+    /// made in the last 20 seconds stands while the lift has not been down
+    /// and back up since; a lift that came back up before the body got on
+    /// was missed and is called again, [`MAX_LIFT_MISSES`] times at most,
+    /// after which the route's own unblocking takes over.
     fn call_lift_first(&mut self, game: &Game, active: Active) -> Active {
         if active.purpose == Purpose::Lift {
             return active;
@@ -722,8 +758,17 @@ impl Autopilot {
                         })
                     })
             });
-            if on_the_way || lines.iter().any(|l| self.tried.get(l).is_some_and(|&t| now < t + 35 * 20)) {
+            // A call made lately still stands, unless the lift has been
+            // down and come back up since (missed: call it again, a few
+            // times at most).
+            let called = lines.iter().filter_map(|l| self.tried.get(l)).max().copied();
+            let missed = called.is_some_and(|t| self.floor_moved[lift] > t && self.floor_moved[lift] + 1 < now);
+            let misses = self.lift_misses.get(&lift).copied().unwrap_or(0);
+            if on_the_way || called.is_some_and(|t| now < t + 35 * 20 && (!missed || misses >= MAX_LIFT_MISSES)) {
                 return active;
+            }
+            if missed {
+                *self.lift_misses.entry(lift).or_insert(0) += 1;
             }
             for line in lines {
                 let goal = match line_of(map, line).3.map(|s| s.on) {
@@ -857,51 +902,71 @@ impl Autopilot {
         self.search.run(&world, start, None);
         let base = self.search.reached.len();
         let mut candidates: Vec<(u32, LineId, Goal)> = Vec::new();
-        for &line in &self.mech.triggers {
-            if spent.contains(&line) {
-                continue;
+        // With nothing untried left, a repeatable line tried before (a
+        // door's switch seen from inside the closet it shut) is taken
+        // again, when it is foretold to open something.
+        let mut confined = false;
+        for pass in 0..2 {
+            if !candidates.is_empty() {
+                break;
             }
-            let (sl, _, _, special) = line_of(map, line);
-            let Some(special) = special else { continue };
-            if let Some(&when) = self.tried.get(&line) {
-                // Tried: only a once-only walk line the level kept live
-                // (its sectors were busy then) is worth another go, once
-                // they are still.
-                let idle = || {
-                    crate::play::world::specials::target_sectors(level, sl, special)
-                        .into_iter()
-                        .all(|s| !game.world().is_busy(s))
+            confined = pass == 1;
+            for &line in &self.mech.triggers {
+                if spent.contains(&line) {
+                    continue;
+                }
+                let (sl, _, _, special) = line_of(map, line);
+                let Some(special) = special else { continue };
+                if let Some(&when) = self.tried.get(&line) {
+                    // Tried: only a once-only walk line the level kept live
+                    // (its sectors were busy then) is worth another go, once
+                    // they are still.
+                    let idle = || {
+                        crate::play::world::specials::target_sectors(level, sl, special)
+                            .into_iter()
+                            .all(|s| !game.world().is_busy(s))
+                    };
+                    let again = special.on == Activation::Walk
+                        && !special.repeat
+                        && self.crossed.get(&line).is_some_and(|&n| n < 2)
+                        && game.ticks() > when + 35 * 5
+                        && idle();
+                    // And a switch whose last press started nothing (a door's
+                    // switch pressed while the door was open), once its
+                    // sectors are still.
+                    let again = again || (self.did_nothing.contains(&line) && game.ticks() > when + 35 * 2 && idle());
+                    let again = again
+                        || (confined
+                            && special.repeat
+                            && self.retaken.get(&line).is_none_or(|&n| n < MAX_RETAKES)
+                            && game.ticks() > when + 35 * 2
+                            && idle());
+                    if !again {
+                        continue;
+                    }
+                }
+                if let crate::map::special::Action::Door { key: Some(k), .. } = special.action {
+                    if !keys.contains(&k) {
+                        continue;
+                    }
+                }
+                let goal = match special.on {
+                    Activation::Use => Goal::Use(line),
+                    Activation::Walk => Goal::Cross(line),
+                    Activation::Shoot => Goal::Shoot(line),
                 };
-                let again = special.on == Activation::Walk
-                    && !special.repeat
-                    && self.crossed.get(&line).is_some_and(|&n| n < 2)
-                    && game.ticks() > when + 35 * 5
-                    && idle();
-                if !again {
+                if self.failed(&goal) {
                     continue;
                 }
-            }
-            if let crate::map::special::Action::Door { key: Some(k), .. } = special.action {
-                if !keys.contains(&k) {
-                    continue;
+                let cost = match &goal {
+                    Goal::Use(_) | Goal::Shoot(_) => {
+                        plan::targets_of(nav, map, &goal).cells().filter_map(|c| self.search.cost_to(c)).min()
+                    }
+                    _ => self.crossing_cost(line),
+                };
+                if let Some(cost) = cost {
+                    candidates.push((cost, line, goal));
                 }
-            }
-            let goal = match special.on {
-                Activation::Use => Goal::Use(line),
-                Activation::Walk => Goal::Cross(line),
-                Activation::Shoot => Goal::Shoot(line),
-            };
-            if self.failed(&goal) {
-                continue;
-            }
-            let cost = match &goal {
-                Goal::Use(_) | Goal::Shoot(_) => {
-                    plan::targets_of(nav, map, &goal).cells().filter_map(|c| self.search.cost_to(c)).min()
-                }
-                _ => self.crossing_cost(line),
-            };
-            if let Some(cost) = cost {
-                candidates.push((cost, line, goal));
             }
         }
         candidates.sort_by_key(|c| (c.0, c.1));
@@ -954,12 +1019,18 @@ impl Autopilot {
             }
         }
         // The pick first, then the rest by distance, the harmful last.
-        let pick = best.map(|b| (b.2, b.3)).or(unknown.map(|u| (u.1, u.2)));
+        let pick = best.map(|b| (b.2, b.3)).or(unknown.filter(|_| !confined).map(|u| (u.1, u.2)));
         let world = plan::World { heights, ..world };
         candidates.sort_by_key(|c| harmful.contains(&c.1));
-        for (_, goal) in pick.into_iter().chain(candidates.into_iter().map(|c| (c.1, c.2))) {
+        if confined {
+            candidates.clear();
+        }
+        for (line, goal) in pick.into_iter().chain(candidates.into_iter().map(|c| (c.1, c.2))) {
             let targets = plan::targets_of(nav, map, &goal);
             if let Some(route) = self.search.run(&world, start, Some(&targets)) {
+                if confined {
+                    *self.retaken.entry(line).or_insert(0) += 1;
+                }
                 return Some(active(goal, Purpose::Trigger, route));
             }
         }
@@ -1136,6 +1207,17 @@ impl Autopilot {
                 best = (d, k);
             }
         }
+        if best.0 > 64.0 {
+            // Left behind: a body running a diagonal cuts its corners and
+            // may pass every cell wider than 24; whatever cell ahead is
+            // nearest will do when it is close.
+            let ahead = (a.at + 1..(a.at + 16).min(cells.len()))
+                .map(|k| (self.nav.centre_of(cells[k]).distance(pos), k))
+                .min_by(|x, y| x.0.total_cmp(&y.0));
+            if let Some(near) = ahead.filter(|&(d, _)| d < 48.0) {
+                best = near;
+            }
+        }
         if best.1 > a.at {
             a.at = best.1;
             a.idle = 0;
@@ -1232,7 +1314,12 @@ impl Autopilot {
         let near_teleport = !teleporting && soon.iter().any(|&x| self.near_teleport[x as usize]);
         let ahead = if a.idle > STUCK_TICKS / 2 || on_ledge || near_teleport { 1 } else { 3 };
         let mut k = a.at + 1;
-        while k < last && k < a.at + ahead && !a.route.teleport[k + 1] && a.route.leap[k + 1] == 0 {
+        while k < last
+            && k < a.at + ahead
+            && !a.route.teleport[k]
+            && !a.route.teleport[k + 1]
+            && a.route.leap[k + 1] == 0
+        {
             k += 1;
         }
         let mut target = self.nav.centre_of(cells[k]);
@@ -1467,14 +1554,39 @@ impl Autopilot {
                 let player = game.player();
                 let settled = player.velocity.length() < 1.5;
                 let close = player.pos.distance(spot) < 10.0;
-                if a.arrived > 105 {
+                if a.arrived > if a.busy { 35 * 12 } else { 105 } {
                     self.tried.insert(line, now);
                     self.next_replan = now;
                     return None;
                 }
-                // The switch's click says the press worked.
-                let (sl, _, _, _) = line_of(&game.level().compiled.map, line);
-                let worked = game.events().iter().any(|e| matches!(e, Event::Special { line: l, .. } if *l == sl));
+                // The switch's click says the press worked; a press that
+                // started nothing (its sectors busy) is made again once
+                // they are still.
+                let (sl, _, _, special) = line_of(&game.level().compiled.map, line);
+                let pressed = |started: bool| {
+                    game.events()
+                        .iter()
+                        .any(|e| matches!(e, Event::Special { line: l, started: s } if *l == sl && *s == started))
+                };
+                let worked = pressed(true);
+                if pressed(false) && special.is_some_and(|s| s.repeat) {
+                    (a.busy, a.presses) = (true, 0);
+                    self.did_nothing.insert(line);
+                }
+                if worked {
+                    self.did_nothing.remove(&line);
+                }
+                if a.busy && !worked {
+                    let level = game.level();
+                    let busy = special.is_some_and(|sp| {
+                        crate::play::world::specials::target_sectors(level, sl, sp)
+                            .into_iter()
+                            .any(|s| game.world().is_busy(s))
+                    });
+                    if busy {
+                        return Some(self.hold(game));
+                    }
+                }
                 if worked || (a.presses >= 2 && self.failed_once(&a.goal)) {
                     self.tried.insert(line, now);
                     self.settle_until = now + 35;
@@ -1659,7 +1771,14 @@ impl Autopilot {
         } else {
             Fire::NoBlast
         };
-        Some((to.y.atan2(to.x).to_degrees(), weapon_for(game, fire), d))
+        let weapon = weapon_for(game, fire);
+        // With only a fist (or chainsaw), an enemy out of its reach is no
+        // fight: swinging at it, or falling back from it, only gives it
+        // time to shoot; go on (for ammo, say) instead.
+        if weapon == 1 && d > MELEE_REACH + table.actors[actors.list[i].kind].radius {
+            return None;
+        }
+        Some((to.y.atan2(to.x).to_degrees(), weapon, d))
     }
 }
 

@@ -33,6 +33,9 @@ const STRAIGHT: u32 = 10;
 const DIAGONAL: u32 = 14;
 /// Extra cost of a cell near a teleport line that took the body by accident.
 const WARY_COST: u32 = 60;
+/// Extra cost of walking onto a lift over a line that calls it down (the
+/// ride down and the wait for it to come back): some 20 cells.
+const LIFT_DROP_COST: u32 = 200;
 /// Extra cost of a running jump (on top of its run-up, there and back,
 /// and its flight): a risk taken only when it saves a long way round.
 const LEAP_COST: u32 = 300;
@@ -480,6 +483,7 @@ impl Search {
                 let mut next = n;
                 let mut teleported = false;
                 let mut met = false;
+                let mut lift_drop = false;
                 for (line, front) in w.nav.crossings_of(c, d) {
                     if targets.is_some_and(|t| t.lines.contains(&line)) {
                         met = true;
@@ -489,6 +493,12 @@ impl Search {
                     if special.on != Activation::Walk || w.spent.contains(&line) || !special.by.players() {
                         continue;
                     }
+                    // Walking onto a lift over a line that calls it down:
+                    // the floor goes from under the body, which rides down
+                    // and waits for it to come back up. Walking round is
+                    // better where there is a way round.
+                    let onto = w.nav.centre[n as usize];
+                    lift_drop |= onto != NONE && w.mech.lift_down[onto as usize].contains(&line);
                     if let (Some(&dest), true) = (w.mech.teleports.get(&line), front) {
                         if let Some(t) = w.nav.standable_near(dest, 2) {
                             next = t;
@@ -511,6 +521,9 @@ impl Search {
                 }
                 if w.wary.get(next as usize).copied().unwrap_or(false) {
                     step += WARY_COST;
+                }
+                if lift_drop {
+                    step += LIFT_DROP_COST;
                 }
                 if self.relax(c, next, cost + step, teleported, 0) && met {
                     return Some(self.route(next));
@@ -581,14 +594,29 @@ pub fn leap_from(nav: &NavGrid, mech: &Mechanisms, heights: &Heights, c: Cell, d
 /// The cells from which `line` can be used: on its front, the centre within
 /// use range, nothing solid between.
 pub fn use_cells(nav: &NavGrid, map: &Map, line: LineId) -> Targets {
-    let near = use_cells_within(nav, map, line, USE_REACH);
+    let mut near = use_cells_within(nav, map, line, USE_REACH);
     // Cells with no room for the body as the level stands (a switch at the
     // back of a low slot) do not count as near.
     let now = Heights::of(map);
-    if near.cells().any(|c| {
+    let roomy = |c: Cell| {
         let span = nav.span(c, &now);
         span.ceiling - span.high >= HEIGHT
-    }) {
+    };
+    if near.cells().any(roomy) {
+        // A switch on a ledge's top, facing the floor below: the near
+        // cells are all on the ledge or over its edge, and the press also
+        // reaches from the floor below, a step or more down from every
+        // near floor one can stand on away from an edge.
+        let floors: Vec<f64> =
+            near.cells().filter(|&c| roomy(c) && !nav.span(c, &now).ledge()).map(|c| nav.span(c, &now).high).collect();
+        let below: Vec<Cell> = use_cells_within(nav, map, line, USE_RANGE - 6.0)
+            .cells()
+            .filter(|&c| {
+                let span = nav.span(c, &now);
+                roomy(c) && !span.ledge() && floors.iter().all(|&f| (f - span.high).abs() > MAX_STEP)
+            })
+            .collect();
+        near.cells.extend(below);
         return near;
     }
     // A switch on a ledge's face, across a step or at the back of a slot:
@@ -672,7 +700,7 @@ pub fn touch_cells(nav: &NavGrid, map: &Map, p: DVec2) -> Targets {
             })
             .collect();
         crossed.sort_by(|x, y| x.0.total_cmp(&y.0));
-        for (f, line) in crossed {
+        for (_, line) in crossed {
             let Some(back) = &line.back else { break };
             if line.flags.impassable {
                 break;
@@ -686,8 +714,16 @@ pub fn touch_cells(nav: &NavGrid, map: &Map, p: DVec2) -> Targets {
             if beyond.floor <= near.floor + MAX_STEP && beyond.ceiling - beyond.floor.max(near.floor) >= HEIGHT {
                 continue;
             }
-            // Doom's touch wants the item no higher than the body is tall.
-            let stop = from + (p - from) * f - (p - from).normalize_or_zero() * RADIUS;
+            // Where the body's circle first meets the line (its ends too:
+            // a pedestal's corner stops a slanting walk early). Doom's
+            // touch wants the item no higher than the body is tall.
+            let (len, dir) = ((p - from).length(), (p - from).normalize_or_zero());
+            let mut stop = from;
+            let mut s = 0.0;
+            while s <= len && distance_to_segment(from + dir * s, a, b) > RADIUS {
+                stop = from + dir * s;
+                s += 1.0;
+            }
             if (stop - p).abs().max_element() <= TOUCH_REACH && beyond.floor <= near.floor + HEIGHT {
                 t.cells.insert(c);
             }
