@@ -901,73 +901,13 @@ impl Autopilot {
         // Switches and walk lines: what could each open?
         self.search.run(&world, start, None);
         let base = self.search.reached.len();
-        let mut candidates: Vec<(u32, LineId, Goal)> = Vec::new();
         // With nothing untried left, a repeatable line tried before (a
         // door's switch seen from inside the closet it shut) is taken
         // again, when it is foretold to open something.
-        let mut confined = false;
-        for pass in 0..2 {
-            if !candidates.is_empty() {
-                break;
-            }
-            confined = pass == 1;
-            for &line in &self.mech.triggers {
-                if spent.contains(&line) {
-                    continue;
-                }
-                let (sl, _, _, special) = line_of(map, line);
-                let Some(special) = special else { continue };
-                if let Some(&when) = self.tried.get(&line) {
-                    // Tried: only a once-only walk line the level kept live
-                    // (its sectors were busy then) is worth another go, once
-                    // they are still.
-                    let idle = || {
-                        crate::play::world::specials::target_sectors(level, sl, special)
-                            .into_iter()
-                            .all(|s| !game.world().is_busy(s))
-                    };
-                    let again = special.on == Activation::Walk
-                        && !special.repeat
-                        && self.crossed.get(&line).is_some_and(|&n| n < 2)
-                        && game.ticks() > when + 35 * 5
-                        && idle();
-                    // And a switch whose last press started nothing (a door's
-                    // switch pressed while the door was open), once its
-                    // sectors are still.
-                    let again = again || (self.did_nothing.contains(&line) && game.ticks() > when + 35 * 2 && idle());
-                    let again = again
-                        || (confined
-                            && special.repeat
-                            && self.retaken.get(&line).is_none_or(|&n| n < MAX_RETAKES)
-                            && game.ticks() > when + 35 * 2
-                            && idle());
-                    if !again {
-                        continue;
-                    }
-                }
-                if let crate::map::special::Action::Door { key: Some(k), .. } = special.action {
-                    if !keys.contains(&k) {
-                        continue;
-                    }
-                }
-                let goal = match special.on {
-                    Activation::Use => Goal::Use(line),
-                    Activation::Walk => Goal::Cross(line),
-                    Activation::Shoot => Goal::Shoot(line),
-                };
-                if self.failed(&goal) {
-                    continue;
-                }
-                let cost = match &goal {
-                    Goal::Use(_) | Goal::Shoot(_) => {
-                        plan::targets_of(nav, map, &goal).cells().filter_map(|c| self.search.cost_to(c)).min()
-                    }
-                    _ => self.crossing_cost(line),
-                };
-                if let Some(cost) = cost {
-                    candidates.push((cost, line, goal));
-                }
-            }
+        let mut candidates = self.trigger_candidates(game, &spent, &keys, false);
+        let confined = candidates.is_empty();
+        if confined {
+            candidates = self.trigger_candidates(game, &spent, &keys, true);
         }
         candidates.sort_by_key(|c| (c.0, c.1));
         if std::env::var_os("SIGHTLINE_AUTOPILOT_TRACE").is_some() {
@@ -1035,6 +975,74 @@ impl Autopilot {
             }
         }
         None
+    }
+
+    /// The switches and walk lines worth setting off now, with the cost of
+    /// the way to each (after a flood from the start): those not tried
+    /// yet, and of those tried, a once-only walk line the level kept live
+    /// (its sectors were busy then) and a switch whose last press started
+    /// nothing, once their sectors are still. `confined` (nothing else
+    /// left): any repeatable line tried before, [`MAX_RETAKES`] times.
+    fn trigger_candidates(
+        &self,
+        game: &Game,
+        spent: &BTreeSet<LineId>,
+        keys: &[KeyColour],
+        confined: bool,
+    ) -> Vec<(u32, LineId, Goal)> {
+        let (nav, map) = (&self.nav, &game.level().compiled.map);
+        let mut candidates = Vec::new();
+        for &line in &self.mech.triggers {
+            if spent.contains(&line) {
+                continue;
+            }
+            let Some(special) = line_of(map, line).3 else { continue };
+            if let Some(&when) = self.tried.get(&line) {
+                let since = game.ticks().saturating_sub(when);
+                let again = if special.on == Activation::Walk && !special.repeat {
+                    self.crossed.get(&line).is_some_and(|&n| n < 2) && since > 35 * 5
+                } else {
+                    since > 35 * 2
+                        && (self.did_nothing.contains(&line)
+                            || confined && special.repeat && self.retaken.get(&line).is_none_or(|&n| n < MAX_RETAKES))
+                };
+                if !again || Self::targets_busy(game, line) {
+                    continue;
+                }
+            }
+            if let crate::map::special::Action::Door { key: Some(k), .. } = special.action {
+                if !keys.contains(&k) {
+                    continue;
+                }
+            }
+            let goal = match special.on {
+                Activation::Use => Goal::Use(line),
+                Activation::Walk => Goal::Cross(line),
+                Activation::Shoot => Goal::Shoot(line),
+            };
+            if self.failed(&goal) {
+                continue;
+            }
+            let cost = match &goal {
+                Goal::Use(_) | Goal::Shoot(_) => {
+                    plan::targets_of(nav, map, &goal).cells().filter_map(|c| self.search.cost_to(c)).min()
+                }
+                _ => self.crossing_cost(line),
+            };
+            if let Some(cost) = cost {
+                candidates.push((cost, line, goal));
+            }
+        }
+        candidates
+    }
+
+    /// Is any sector `line`'s special moves busy now?
+    fn targets_busy(game: &Game, line: LineId) -> bool {
+        let level = game.level();
+        let (sl, _, _, special) = line_of(&level.compiled.map, line);
+        special.is_some_and(|sp| {
+            crate::play::world::specials::target_sectors(level, sl, sp).into_iter().any(|s| game.world().is_busy(s))
+        })
     }
 
     /// The cheapest reached cell from which a move crosses `line` (after a
@@ -1576,16 +1584,8 @@ impl Autopilot {
                 if worked {
                     self.did_nothing.remove(&line);
                 }
-                if a.busy && !worked {
-                    let level = game.level();
-                    let busy = special.is_some_and(|sp| {
-                        crate::play::world::specials::target_sectors(level, sl, sp)
-                            .into_iter()
-                            .any(|s| game.world().is_busy(s))
-                    });
-                    if busy {
-                        return Some(self.hold(game));
-                    }
+                if a.busy && !worked && Self::targets_busy(game, line) {
+                    return Some(self.hold(game));
                 }
                 if worked || (a.presses >= 2 && self.failed_once(&a.goal)) {
                     self.tried.insert(line, now);
