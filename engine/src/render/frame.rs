@@ -57,6 +57,74 @@ impl std::ops::AddAssign for FrameStats {
     }
 }
 
+/// Where a frame's time went, in nanoseconds summed over its strips (and so
+/// over its threads), measured only when [`super::RenderOptions::profile`]
+/// asks: a stopwatch read per seg costs a few percent of a small frame.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Breakdown {
+    /// Binding the view, the per-frame tables, finding the sprites, planning,
+    /// and adding up the workers' totals.
+    pub setup: u64,
+    /// The BSP walk less its segs' columns: nodes, bounding boxes, leaves,
+    /// seg facing and projection, the occlusion array's open runs.
+    pub walk: u64,
+    /// The segs' columns: walls, per-column floors, ceilings and sky, and
+    /// the clip bounds and visplane runs they leave.
+    pub walls: u64,
+    /// Floors and ceilings drawn as spans after the walk.
+    pub spans: u64,
+    /// Sprites and see-through middles.
+    pub masked: u64,
+    /// Copying each strip's column-major canvas into the framebuffer.
+    pub copy: u64,
+}
+
+impl Breakdown {
+    /// The parts in the order a frame runs them, with their names.
+    pub fn parts(&self) -> [(&'static str, u64); 6] {
+        [
+            ("setup", self.setup),
+            ("walk", self.walk),
+            ("walls", self.walls),
+            ("spans", self.spans),
+            ("masked", self.masked),
+            ("copy", self.copy),
+        ]
+    }
+
+    pub fn total(&self) -> u64 {
+        self.parts().iter().map(|p| p.1).sum()
+    }
+}
+
+impl std::ops::AddAssign for Breakdown {
+    fn add_assign(&mut self, o: Breakdown) {
+        self.setup += o.setup;
+        self.walk += o.walk;
+        self.walls += o.walls;
+        self.spans += o.spans;
+        self.masked += o.masked;
+        self.copy += o.copy;
+    }
+}
+
+/// A stopwatch that runs only when the frame is profiled.
+#[derive(Clone, Copy)]
+pub(crate) struct Lap(Option<std::time::Instant>);
+
+impl Lap {
+    #[inline]
+    pub(crate) fn start(profile: bool) -> Lap {
+        Lap(profile.then(std::time::Instant::now))
+    }
+
+    /// Nanoseconds since the start (0 when not profiling).
+    #[inline]
+    pub(crate) fn ns(self) -> u64 {
+        self.0.map_or(0, |t| t.elapsed().as_nanos() as u64)
+    }
+}
+
 /// What a column's walk left open beyond a depth: after the seg at `depth`
 /// was drawn there, only rows `[top, bottom)` still show what lies behind it
 /// (empty once the column closed). Sprites and masked middles farther away
@@ -117,6 +185,8 @@ pub(crate) struct Scene<'a> {
     pub inv_rows: &'a [f64],
     /// Things in view, far to near (see [`super::sprites`]).
     pub sprites: &'a [VisSprite],
+    /// Time the frame's parts (see [`Breakdown`]).
+    pub profile: bool,
 }
 
 /// The frame as the caller keeps it: the shared tables, the totals of the
@@ -138,6 +208,8 @@ pub struct Frame {
     /// Writes per pixel (row-major), kept only when counting was asked for.
     pub(crate) counts: Vec<u16>,
     pub stats: FrameStats,
+    /// Where the last frame's time went, when it was profiled.
+    pub breakdown: Breakdown,
     /// What the last frame did (see [`super::plan`]).
     pub plan: Plan,
     /// Lines that drew at least one column this frame (an automap's "seen").
@@ -165,6 +237,7 @@ impl Frame {
             self.counts.resize(w * h, 0);
         }
         self.stats = FrameStats::default();
+        self.breakdown = Breakdown::default();
         if self.workers.len() < workers {
             self.workers.resize_with(workers, StripFrame::default);
         }
@@ -176,6 +249,7 @@ impl Frame {
         self.seen_lines.resize(lines, false);
         for worker in &self.workers[..workers] {
             self.stats += worker.stats;
+            self.breakdown += worker.breakdown;
             for (seen, &s) in self.seen_lines.iter_mut().zip(&worker.seen_lines) {
                 *seen |= s;
             }
@@ -219,6 +293,7 @@ pub(crate) struct StripFrame {
     pub(crate) visplanes: Visplanes,
     /// What this worker's strips cost, and the lines they showed.
     pub(crate) stats: FrameStats,
+    pub(crate) breakdown: Breakdown,
     pub(crate) seen_lines: Vec<bool>,
     /// Depth buffer and scratch canvas of the z-buffer renderer (study only).
     pub(crate) zbuffer: super::zbuffer::Buffers,
@@ -228,6 +303,7 @@ impl StripFrame {
     /// Forgets the last frame: no strips drawn yet, no lines seen.
     pub(crate) fn begin_frame(&mut self, width: usize, lines: usize) {
         self.stats = FrameStats::default();
+        self.breakdown = Breakdown::default();
         self.seen_lines.clear();
         self.seen_lines.resize(lines, false);
         for v in [&mut self.clip_top, &mut self.clip_bottom] {

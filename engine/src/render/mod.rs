@@ -28,8 +28,8 @@ pub mod visplanes;
 pub mod walls;
 pub mod zbuffer;
 
-pub use frame::{Frame, FrameStats};
-use frame::{Scene, StripFrame};
+pub use frame::{Breakdown, Frame, FrameStats};
+use frame::{Lap, Scene, StripFrame};
 pub use shade::Shade;
 pub use view::{Camera, View};
 
@@ -114,6 +114,8 @@ pub struct RenderOptions {
     /// another on the calling thread; more start a pool kept in the [`Frame`]
     /// (see [`parallel`]). The frame is the same whatever the count.
     pub threads: usize,
+    /// Time the frame's parts into [`Frame::breakdown`] (a few percent slower).
+    pub profile: bool,
 }
 
 impl Default for RenderOptions {
@@ -127,6 +129,7 @@ impl Default for RenderOptions {
             ray: raycast::RayMethod::default(),
             threads: 1,
             sampling: columns::Sampling::default(),
+            profile: false,
         }
     }
 }
@@ -148,6 +151,7 @@ pub fn render_frame(
     frame: &mut Frame,
     fb: &mut Framebuffer,
 ) -> FrameStats {
+    let setup = Lap::start(options.profile);
     let cam = Camera::new(view, fb.width, fb.height);
     let (w, h) = (cam.width, cam.height);
     let threads = options.threads.max(1);
@@ -173,7 +177,9 @@ pub fn render_frame(
         rows: view::Rows { cam: &cam, slopes: row_slopes },
         inv_rows,
         sprites,
+        profile: options.profile,
     };
+    let mut setup_ns = setup.ns();
     let lines = level.map.lines.len();
     let draw = |strip: &mut StripFrame, (x0, x1)| draw_strip(&scene, options, oracle.as_ref(), strip, (x0, x1));
     let pool = if threads > 1 && strips.len() > 1 { pool.get(threads - 1) } else { None };
@@ -183,8 +189,10 @@ pub fn render_frame(
             strip.begin_frame(w, lines);
             for &(x0, x1) in strips.iter() {
                 draw(strip, (x0, x1));
+                let copy = Lap::start(options.profile);
                 columns::present_strip(&strip.canvas, h, fb.pixels.chunks_exact_mut(w).map(|r| &mut r[x0..x1]));
                 columns::present_strip(&strip.counts, h, counts.chunks_exact_mut(w).map(|r| &mut r[x0..x1]));
+                strip.breakdown.copy += copy.ns();
             }
             1
         }
@@ -202,14 +210,19 @@ pub fn render_frame(
                 .collect();
             parallel::run(pool, &mut workers[..used], jobs, &|strip, job| {
                 draw(strip, (job.x0, job.x1));
+                let copy = Lap::start(options.profile);
                 columns::present_strip(&strip.canvas, h, job.rows.into_iter());
                 columns::present_strip(&strip.counts, h, job.counts.into_iter());
+                strip.breakdown.copy += copy.ns();
             });
             used
         }
     };
+    let gather = Lap::start(options.profile);
     frame.gather(used, lines);
     frame.stats.sprites_in_view = frame.sprites.len() as u64;
+    setup_ns += gather.ns();
+    frame.breakdown.setup += setup_ns;
     frame.stats
 }
 
@@ -232,15 +245,22 @@ fn draw_strip(
     out.sampling = options.sampling;
     match options.renderer {
         Renderer::Bsp | Renderer::Raycast => {
+            // The walk's own time is what its segs' columns did not take.
+            let (walk, walls) = (Lap::start(scene.profile), strip.breakdown.walls);
             if options.renderer == Renderer::Bsp {
                 bsp::render(scene, strip, &mut out);
             } else {
                 raycast::render(scene, strip, &mut out, options.ray, (x0, x1));
             }
+            strip.breakdown.walk += walk.ns().saturating_sub(strip.breakdown.walls - walls);
+            let spans = Lap::start(scene.profile);
             let cam = scene.cam;
             strip.visplanes.draw(&mut out, cam, &scene.lighting, scene.inv_rows, &scene.level.materials.textures);
+            strip.breakdown.spans += spans.ns();
             if scene.plan.masked_pass() {
+                let masked = Lap::start(scene.profile);
                 sprites::draw(scene, strip, &mut out, (x0, x1));
+                strip.breakdown.masked += masked.ns();
             }
         }
         Renderer::Reference => {

@@ -9,7 +9,7 @@
 use glam::DVec2;
 
 use super::columns::ColumnWriter;
-use super::frame::{Scene, StripFrame};
+use super::frame::{Lap, Scene, StripFrame};
 use super::light::fake_contrast;
 use super::plan::Plan;
 use super::planes::{paint_plane, PlanePaint};
@@ -88,6 +88,7 @@ pub(crate) fn draw_seg(scene: &Scene, seg: &Seg, frame: &mut StripFrame, out: &m
     let Some((x0, x1)) = cam.project_span(cam.to_camera(seg.v1), cam.to_camera(seg.v2)) else {
         return;
     };
+    let columns = Lap::start(scene.profile);
     let cols = seg_columns(level, seg, line, (from, dir, cross_from), scene.shade, &scene.plan);
     let mut drew = false;
     let mut x = x0;
@@ -99,6 +100,7 @@ pub(crate) fn draw_seg(scene: &Scene, seg: &Seg, frame: &mut StripFrame, out: &m
         drew = true;
         x = stop;
     }
+    frame.breakdown.walls += columns.ns();
     frame.stats.walls_drawn += u64::from(drew);
     if drew {
         frame.seen_lines[seg.line] = true;

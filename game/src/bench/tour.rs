@@ -2,8 +2,10 @@
 //! (`sightline::tour::things_tour`: the player start, then every thing's
 //! position looking eight ways). One untimed pass warms caches and the
 //! allocations; then every frame of `--repeat` passes is timed on its own,
-//! `render_frame` only (no PNG, no window). Prints a short table, and with
-//! `--json` one JSON object as the last line of stdout.
+//! `render_frame` only (no PNG, no window). Then one more pass with the
+//! renderer's stopwatches on gives the breakdown: the mean time per frame of
+//! each part (set-up, walk, wall columns, spans, masked, copy-out). Prints a
+//! short table, and with `--json` one JSON object as the last line of stdout.
 
 use std::time::{Duration, Instant};
 
@@ -11,7 +13,7 @@ use anyhow::{bail, Result};
 use sightline::bsp::BuildOptions;
 use sightline::campaign::{open, MapRef};
 use sightline::play::DEFAULT_SKILL;
-use sightline::render::{render_frame, Frame, RenderOptions, View};
+use sightline::render::{render_frame, Breakdown, Frame, RenderOptions, View};
 use sightline::tour::things_tour;
 use sightline::Framebuffer;
 
@@ -54,6 +56,18 @@ pub fn run(args: &BenchTourArgs) -> Result<()> {
         times.extend(views.iter().map(&mut render));
     }
 
+    // The breakdown's own pass: the stopwatches cost a little, so its frames
+    // are not among the timed ones.
+    let profiled = RenderOptions { profile: true, ..options };
+    let mut parts = Breakdown::default();
+    let profile_start = Instant::now();
+    for view in &views {
+        render_frame(&level, view, &profiled, &mut frame, &mut fb);
+        parts += frame.breakdown;
+    }
+    let profiled_ms = profile_start.elapsed().as_secs_f64() * 1000.0 / views.len() as f64;
+    let part_ms = |ns: u64| ns as f64 / 1e6 / views.len() as f64;
+
     let summary = Summary::of(&mut times);
     let size = format!("{width}x{height}");
     println!("map       {} ({} poses x {passes} passes)", args.map, views.len());
@@ -62,7 +76,17 @@ pub fn run(args: &BenchTourArgs) -> Result<()> {
     println!("median    {:.4} ms ({:.0} fps)", summary.median_ms, summary.fps_median());
     println!("p95       {:.4} ms", summary.p95_ms);
     println!("mean      {:.4} ms", summary.mean_ms);
+    println!(
+        "breakdown (one profiled pass, mean per frame, {profiled_ms:.4} ms a frame with the stopwatches; \
+         with threads, summed over them):"
+    );
+    let total = parts.total().max(1) as f64;
+    for (name, ns) in parts.parts() {
+        println!("  {name:<8}{:>9.4} ms {:>5.1}%", part_ms(ns), ns as f64 / total * 100.0);
+    }
     if args.json {
+        let breakdown: serde_json::Map<String, serde_json::Value> =
+            parts.parts().iter().map(|&(name, ns)| (format!("{name}_ms"), part_ms(ns).into())).collect();
         let json = serde_json::json!({
             "map": args.map.to_string(),
             "size": size,
@@ -74,6 +98,8 @@ pub fn run(args: &BenchTourArgs) -> Result<()> {
             "p95_ms": summary.p95_ms,
             "mean_ms": summary.mean_ms,
             "fps_median": summary.fps_median(),
+            "breakdown": breakdown,
+            "profiled_mean_ms": profiled_ms,
         });
         println!("{json}");
     }
