@@ -146,13 +146,25 @@ impl ColumnWriter<'_> {
         // Steps of a whole texture or more (far walls) wrap by modulo.
         let dv = (dv * f64::from(1u32 << FRAC)) as i64 % wrap;
         let base = (x - self.x0) * self.height;
-        for p in &mut self.canvas[base + y0 as usize..base + y1 as usize] {
-            *p = tint.apply(column[(v >> FRAC) as usize]);
-            v += dv;
+        let run = &mut self.canvas[base + y0 as usize..base + y1 as usize];
+        // Two passes: the texels first (a load and a store each, the wrap
+        // tested once per stretch), then the light over the whole run, a
+        // loop of plain arithmetic the compiler vectorises.
+        let mut rest = &mut run[..];
+        while !rest.is_empty() {
+            // Rows before v wraps: the stretch needs no wrap test.
+            let until_wrap = if dv > 0 { ((wrap - v + dv - 1) / dv) as usize } else { rest.len() };
+            let (stretch, tail) = rest.split_at_mut(until_wrap.min(rest.len()));
+            for p in stretch.iter_mut() {
+                *p = column[(v >> FRAC) as usize];
+                v += dv;
+            }
             if v >= wrap {
                 v -= wrap;
             }
+            rest = tail;
         }
+        tint.apply_all(run);
         self.count(x, y0, y1);
     }
 }

@@ -85,6 +85,14 @@ impl Tint {
         let g = (((c & 0x0000_ff00) * self.scale) >> 8) & 0x0000_ff00;
         ((rb | g) + self.fog) | 0xff00_0000
     }
+
+    /// [`Tint::apply`] to every pixel of `pixels`, in place.
+    #[inline]
+    pub fn apply_all(&self, pixels: &mut [u32]) {
+        for p in pixels {
+            *p = self.apply(*p);
+        }
+    }
 }
 
 #[cfg(test)]
