@@ -85,6 +85,14 @@ impl ColumnWriter<'_> {
         }
     }
 
+    /// Writes `pixels` to row `y` from column `x0` on: a horizontal span of
+    /// the opaque pass.
+    #[inline]
+    pub fn put_row(&mut self, y: i32, x0: usize, pixels: &[u32]) {
+        let mut colours = pixels.iter();
+        self.fill_row(y, x0, x0 + pixels.len(), |_| colours.next().copied().unwrap_or_default());
+    }
+
     /// Writes one pixel of the masked pass (sprites, see-through middles).
     #[inline]
     pub fn put_masked(&mut self, x: usize, y: i32, colour: u32) {

@@ -42,6 +42,8 @@ pub(crate) struct Visplanes {
     width: usize,
     /// Per row, the column where the span being gathered started.
     span_start: Vec<usize>,
+    /// One span's texels, lit in place before they go to the canvas.
+    row: Vec<u32>,
 }
 
 impl Visplanes {
@@ -99,6 +101,7 @@ impl Visplanes {
         textures: &crate::texture::TextureSet,
     ) {
         self.span_start.resize(cam.height, 0);
+        self.row.resize(self.width, 0);
         for k in 0..self.used {
             let p = &self.planes[k];
             if p.min > p.max {
@@ -114,7 +117,7 @@ impl Visplanes {
                 // Only the rows where the two columns differ matter:
                 // [t1, b1) minus [t2, b2) ends spans, the reverse opens them.
                 for y in (t1..b1.min(t2)).chain(t1.max(b2)..b1) {
-                    span.draw(out, y as i32, self.span_start[y as usize], i);
+                    span.draw(out, &mut self.row, y as i32, self.span_start[y as usize], i);
                 }
                 for y in (t2..b2.min(t1)).chain(t2.max(b1)..b2) {
                     self.span_start[y as usize] = i;
@@ -139,8 +142,8 @@ struct SpanPainter<'a> {
 const FRAC: u32 = 16;
 
 impl SpanPainter<'_> {
-    /// Row `y`, strip columns `[i0, i1)`.
-    fn draw(&self, out: &mut ColumnWriter, y: i32, i0: usize, i1: usize) {
+    /// Row `y`, strip columns `[i0, i1)`; `row` is scratch as wide as the strip.
+    fn draw(&self, out: &mut ColumnWriter, row: &mut [u32], y: i32, i0: usize, i1: usize) {
         let cam = self.cam;
         let dist = (self.key.height - cam.z) * self.inv_rows[y as usize];
         // On or beyond the horizon the row never meets the plane: sample far.
@@ -177,21 +180,35 @@ impl SpanPainter<'_> {
         let mut v = (fixed(-anchor.y, h).clamp(0, hf - 1) + columns * dv).rem_euclid(hf);
         let texels = &self.texture.texels;
         let height = self.texture.height;
-        out.fill_row(y, x0, x1, |_| {
-            let c = texels[(u >> FRAC) as usize * height + (v >> FRAC) as usize];
-            u += du;
-            if u >= wf {
-                u -= wf;
-            } else if u < 0 {
-                u += wf;
+        // Three passes, as the wall columns: the texels into `row`, the
+        // light over it (vectorised), then the row into the canvas.
+        let row = &mut row[..x1 - x0];
+        if w.count_ones() == 1 && h.count_ones() == 1 {
+            // Power-of-two sizes (every Doom flat): wrap by masking, no tests.
+            let (umask, vmask, shift) = (wf - 1, hf - 1, h.trailing_zeros());
+            for p in row.iter_mut() {
+                *p = texels[((u >> FRAC) << shift | v >> FRAC) as usize];
+                u = (u + du) & umask;
+                v = (v + dv) & vmask;
             }
-            v += dv;
-            if v >= hf {
-                v -= hf;
-            } else if v < 0 {
-                v += hf;
+        } else {
+            for p in row.iter_mut() {
+                *p = texels[(u >> FRAC) as usize * height + (v >> FRAC) as usize];
+                u += du;
+                if u >= wf {
+                    u -= wf;
+                } else if u < 0 {
+                    u += wf;
+                }
+                v += dv;
+                if v >= hf {
+                    v -= hf;
+                } else if v < 0 {
+                    v += hf;
+                }
             }
-            tint.apply(c)
-        });
+        }
+        tint.apply_all(row);
+        out.put_row(y, x0, row);
     }
 }
