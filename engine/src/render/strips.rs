@@ -8,9 +8,16 @@
 //! its bounding-box culling and early stop do the rest, so each strip visits
 //! only what it shows. The same strips are the unit of parallel rendering.
 
-/// Bytes of canvas a strip may span. Measured on the maze at 1920x1080 (ms per
-/// frame): 128 KiB 2.3-3.2, 256 KiB 2.0-2.2, 512 KiB 2.3, 1 MiB 2.4-3.6.
-const STRIP_BYTES: usize = 256 * 1024;
+/// Bytes of canvas a strip may span: half the 2 MiB L2 of the machine it was
+/// measured on. Freedoom's E1M4 tour (ms per frame, medians, one run each;
+/// 256 KiB / 512 KiB / 1 MiB / 2 MiB / 4 MiB): 1920x1080 one thread
+/// 3.57 / 3.47 / 3.46 / 3.45 / 3.73, two threads 2.43 / 2.17 / 2.03 / 2.05 /
+/// 2.22, 3840x2160 one thread 19.5 / 15.5 / 15.3 / 14.7 / 14.4. Narrow strips
+/// cost twice: each span is at most a strip wide, so its set-up is paid per
+/// few pixels, and at 4K 256 KiB is a 16-column strip whose every row piece
+/// is a single cache line. (An older, smaller-L2 machine measured the maze
+/// at 1080p best at 256 KiB: 2.0-2.2 against 2.4-3.6 ms for 1 MiB.)
+const STRIP_BYTES: usize = 1024 * 1024;
 
 /// Strip widths are multiples of this many columns (one 64-byte cache line of
 /// pixels), so neighbouring strips never share a line.

@@ -173,25 +173,31 @@ impl SpanPainter<'_> {
             ((c - (c / size_f).floor() * size_f) * one as f64) as i64
         };
         let (wf, hf) = (w << FRAC, h << FRAC);
-        let du = (step.x * one as f64) as i64 % wf;
-        let dv = (-step.y * one as f64) as i64 % hf;
+        let (du, dv) = ((step.x * one as f64) as i64, (-step.y * one as f64) as i64);
+        let (u0, v0) = (fixed(anchor.x, w).clamp(0, wf - 1), fixed(-anchor.y, h).clamp(0, hf - 1));
         let columns = x0 as i64;
-        let mut u = (fixed(anchor.x, w).clamp(0, wf - 1) + columns * du).rem_euclid(wf);
-        let mut v = (fixed(-anchor.y, h).clamp(0, hf - 1) + columns * dv).rem_euclid(hf);
         let texels = &self.texture.texels;
-        let height = self.texture.height;
         // Three passes, as the wall columns: the texels into `row`, the
         // light over it (vectorised), then the row into the canvas.
         let row = &mut row[..x1 - x0];
         if w.count_ones() == 1 && h.count_ones() == 1 {
-            // Power-of-two sizes (every Doom flat): wrap by masking, no tests.
+            // Power-of-two sizes (every Doom flat): wrap by masking, with no
+            // tests and no divisions (a mask keeps a sum modulo the size
+            // whatever multiples of it the steps carry).
             let (umask, vmask, shift) = (wf - 1, hf - 1, h.trailing_zeros());
+            let mut u = u0.wrapping_add(columns.wrapping_mul(du)) & umask;
+            let mut v = v0.wrapping_add(columns.wrapping_mul(dv)) & vmask;
             for p in row.iter_mut() {
                 *p = texels[((u >> FRAC) << shift | v >> FRAC) as usize];
-                u = (u + du) & umask;
-                v = (v + dv) & vmask;
+                u = u.wrapping_add(du) & umask;
+                v = v.wrapping_add(dv) & vmask;
             }
         } else {
+            // Steps of a whole texture or more (far planes) wrap by modulo.
+            let (du, dv) = (du % wf, dv % hf);
+            let mut u = (u0 + columns * du).rem_euclid(wf);
+            let mut v = (v0 + columns * dv).rem_euclid(hf);
+            let height = self.texture.height;
             for p in row.iter_mut() {
                 *p = texels[(u >> FRAC) as usize * height + (v >> FRAC) as usize];
                 u += du;
