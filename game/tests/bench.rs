@@ -36,6 +36,15 @@ fn bench_tour_ends_with_a_json_line() {
         assert!(v.is_finite() && v > 0.0, "{key} = {v}");
     }
     assert!(json["p95_ms"].as_f64() >= json["median_ms"].as_f64());
+    // The breakdown: every part, none negative, the walls and the copy there.
+    let parts = ["setup", "walk", "walls", "spans", "masked", "copy"];
+    for part in parts {
+        let v = json["breakdown"][format!("{part}_ms")].as_f64().unwrap_or_else(|| panic!("{part} missing: {json}"));
+        assert!(v.is_finite() && v >= 0.0, "{part} = {v}");
+    }
+    assert!(json["breakdown"]["walls_ms"].as_f64() > Some(0.0), "{json}");
+    assert!(json["breakdown"]["copy_ms"].as_f64() > Some(0.0), "{json}");
+    assert!(json["profiled_mean_ms"].as_f64() > Some(0.0), "{json}");
 }
 
 #[test]
@@ -43,6 +52,7 @@ fn bench_tour_without_json_prints_only_the_table() {
     let out = sightline(&["bench", "tour", "maps/room.ron", "--size", "32x20", "--repeat", "1"]);
     let stdout = stdout_of(&out);
     assert!(stdout.contains("median"), "{stdout}");
+    assert!(stdout.contains("breakdown") && stdout.contains("walls"), "{stdout}");
     assert!(!stdout.contains('{'), "{stdout}");
 }
 
