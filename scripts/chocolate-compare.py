@@ -25,7 +25,6 @@ Usage: scripts/chocolate-compare.py [--rounds N] [--out FILE]
 """
 
 import argparse
-import json
 import os
 import re
 import resource
@@ -35,17 +34,9 @@ import sys
 import tempfile
 from pathlib import Path
 
-from wadlump import extract_lump, one_tic_demo
+from e1m4 import WAD, one_tic_demo, set_out, sightline_binary, sightline_tour
 
-ROOT = Path(__file__).resolve().parent.parent
-WAD = Path(os.environ.get("SIGHTLINE_DOOM_DIR", "/usr/share/games/doom")) / "freedoom1.wad"
 CHOCOLATE = "/usr/games/chocolate-doom"
-
-
-def sightline_binary():
-    subprocess.run(["cargo", "build", "--release", "--quiet", "-p", "sightline-game"], cwd=ROOT, check=True)
-    target = Path(os.environ.get("CARGO_TARGET_DIR", ROOT / "target"))
-    return target / "release" / "sightline"
 
 
 def chocolate_run(home, demo):
@@ -74,14 +65,6 @@ def chocolate_ms(home, short):
     return ms, tics, (cpu - fixed) * 1000.0 / max(tics - 1, 1)
 
 
-def sightline_tour(binary, ron, size, threads):
-    out = subprocess.run(
-        [str(binary), "bench", "tour", str(ron), "--size", size, "--threads", str(threads), "--json"],
-        capture_output=True, text=True, check=True,
-    )
-    return json.loads(out.stdout.strip().splitlines()[-1])
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--rounds", type=int, default=5)
@@ -93,11 +76,8 @@ def main():
     binary = sightline_binary()
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
-        subprocess.run([str(binary), "import", str(WAD), "--map", "E1M4", "-o", str(tmp)],
-                       check=True, capture_output=True)
-        ron = tmp / "e1m4.ron"
-        demo, short = tmp / "demo1.lmp", tmp / "short.lmp"
-        extract_lump(WAD, "DEMO1", demo)
+        ron, demo = set_out(binary, tmp)
+        short = tmp / "short.lmp"
         one_tic_demo(demo, short)
         keys = ["chocolate", "chocolate cpu", "320x200 t1", "320x200 t2"]
         rounds = {k: [] for k in keys}

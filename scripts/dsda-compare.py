@@ -28,7 +28,6 @@ Usage: scripts/dsda-compare.py [--size WxH] [--rounds N] [--out FILE]
 """
 
 import argparse
-import json
 import os
 import re
 import statistics
@@ -37,10 +36,8 @@ import sys
 import tempfile
 from pathlib import Path
 
-from wadlump import extract_lump, one_tic_demo
+from e1m4 import WAD, one_tic_demo, set_out, sightline_binary, sightline_tour
 
-ROOT = Path(__file__).resolve().parent.parent
-WAD = Path(os.environ.get("SIGHTLINE_DOOM_DIR", "/usr/share/games/doom")) / "freedoom1.wad"
 DSDA = "/usr/games/dsda-doom"
 
 # SDL_GetWindowFlags with SDL_WINDOW_SHOWN (0x4) and SDL_WINDOW_INPUT_FOCUS
@@ -56,12 +53,6 @@ uint32_t SDL_GetWindowFlags(SDL_Window *window) {
     return real(window) | 0x4u | 0x200u;
 }
 """
-
-
-def sightline_binary():
-    subprocess.run(["cargo", "build", "--release", "--quiet", "-p", "sightline-game"], cwd=ROOT, check=True)
-    target = Path(os.environ.get("CARGO_TARGET_DIR", ROOT / "target"))
-    return target / "release" / "sightline"
 
 
 def dsda_setup(home, size, demo):
@@ -95,15 +86,6 @@ def dsda_ms(env, home, demo, shim=None):
     return 1000.0 / float(m.group(3)), int(m.group(1))
 
 
-def sightline_tour(binary, ron, size, threads):
-    out = subprocess.run(
-        [str(binary), "bench", "tour", str(ron), "--size", size, "--threads", str(threads), "--repeat", "1",
-         "--json"],
-        capture_output=True, text=True, check=True,
-    )
-    return json.loads(out.stdout.strip().splitlines()[-1])
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--size", default="1920x1080")
@@ -116,11 +98,7 @@ def main():
     binary = sightline_binary()
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
-        subprocess.run([str(binary), "import", str(WAD), "--map", "E1M4", "-o", str(tmp)],
-                       check=True, capture_output=True)
-        ron = tmp / "e1m4.ron"
-        demo = tmp / "demo1.lmp"
-        extract_lump(WAD, "DEMO1", demo)
+        ron, demo = set_out(binary, tmp)
         env, shim = dsda_setup(tmp, args.size, demo)
         keys = ["dsda", "dsda focused", "t1", "t2"]
         rounds = {k: [] for k in keys}
@@ -132,7 +110,7 @@ def main():
                 rounds[key].append(ms)
                 frames[key] = tics
             for key, threads in (("t1", 1), ("t2", 2)):
-                j = sightline_tour(binary, ron, args.size, threads)
+                j = sightline_tour(binary, ron, args.size, threads, repeat=1)
                 rounds[key].append(j["median_ms"])
                 frames[key] = j["frames"]
                 parts[key] = j["breakdown"]

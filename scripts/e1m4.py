@@ -1,0 +1,61 @@
+"""What the E1M4 comparison scripts (chocolate-compare.py, dsda-compare.py)
+share: Sightline's binary, Freedoom's E1M4 and its DEMO1 set out in a
+directory, a timed tour, a lump out of a WAD, and a one-tic cut of a demo
+(to time a port's start-up and level load alone)."""
+
+import json
+import os
+import struct
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+WAD = Path(os.environ.get("SIGHTLINE_DOOM_DIR", "/usr/share/games/doom")) / "freedoom1.wad"
+
+
+def sightline_binary():
+    """Builds the release binary and returns its path."""
+    subprocess.run(["cargo", "build", "--release", "--quiet", "-p", "sightline-game"], cwd=ROOT, check=True)
+    target = Path(os.environ.get("CARGO_TARGET_DIR", ROOT / "target"))
+    return target / "release" / "sightline"
+
+
+def set_out(binary, directory):
+    """Imports E1M4 and extracts DEMO1 (which plays it) into `directory`;
+    returns the map's and the demo's paths."""
+    subprocess.run([str(binary), "import", str(WAD), "--map", "E1M4", "-o", str(directory)],
+                   check=True, capture_output=True)
+    demo = directory / "demo1.lmp"
+    extract_lump(WAD, "DEMO1", demo)
+    return directory / "e1m4.ron", demo
+
+
+def sightline_tour(binary, ron, size, threads, repeat=None):
+    """`sightline bench tour` of `ron`: its JSON object."""
+    command = [str(binary), "bench", "tour", str(ron), "--size", size, "--threads", str(threads), "--json"]
+    if repeat is not None:
+        command += ["--repeat", str(repeat)]
+    out = subprocess.run(command, capture_output=True, text=True, check=True)
+    return json.loads(out.stdout.strip().splitlines()[-1])
+
+
+def extract_lump(wad, name, out):
+    """Writes lump `name` of the WAD at path `wad` to the path `out`."""
+    data = wad.read_bytes()
+    count, offset = struct.unpack_from("<ii", data, 4)
+    for i in range(count):
+        pos, size, raw = struct.unpack_from("<ii8s", data, offset + 16 * i)
+        if raw.rstrip(b"\0").decode("ascii", "replace").upper() == name:
+            out.write_bytes(data[pos:pos + size])
+            return
+    sys.exit(f"{wad}: no {name} lump")
+
+
+def one_tic_demo(demo, out):
+    """Writes the first tic of a one-player Doom 1.9 demo (13-byte header,
+    4 bytes a tic, 0x80 at the end) to `out`."""
+    data = demo.read_bytes()
+    if len(data) < 17 or sum(data[9:13]) != 1:
+        sys.exit(f"{demo}: not a one-player Doom 1.9 demo")
+    out.write_bytes(data[:13 + 4] + b"\x80")
