@@ -28,13 +28,12 @@ import argparse
 import os
 import re
 import resource
-import statistics
 import subprocess
 import sys
 import tempfile
 from pathlib import Path
 
-from e1m4 import WAD, one_tic_demo, set_out, sightline_binary, sightline_tour
+from e1m4 import WAD, one_tic_demo, rounds_table, set_out, sightline_binary, sightline_tour
 
 CHOCOLATE = "/usr/games/chocolate-doom"
 
@@ -94,26 +93,16 @@ def main():
                 frames[key] = j["frames"]
             print(f"round {r + 1} (load {loads[-1]:.2f}): "
                   + ", ".join(f"{k} {v[-1]:.3f} ms" for k, v in rounds.items()), file=sys.stderr)
-    med = {k: statistics.median(v) for k, v in rounds.items()}
-    lines = [
-        "| what | frames per run | median ms/frame (of rounds) | fps | all rounds (ms) |",
-        "|---|---|---|---|---|",
-    ]
     labels = {
         "chocolate": "Chocolate Doom timedemo demo1 (E1M4), 320x200, 8-bit, -noblit, as it reports",
         "chocolate cpu": "Chocolate Doom, the same runs' CPU time per frame (start-up left out; the melt's sleeps take none)",
         "320x200 t1": "Sightline E1M4 tour, 320x200, 1 thread",
         "320x200 t2": "Sightline E1M4 tour, 320x200, 2 threads",
     }
-    for k in keys:
-        v = rounds[k]
-        lines.append(f"| {labels[k]} | {frames[k]} | {med[k]:.3f} | {1000 / med[k]:.0f} | "
-                     + " ".join(f"{x:.3f}" for x in v) + " |")
-    lines.append("")
+    lines, med = rounds_table(keys, labels, rounds, frames, loads)
     lines.append(f"Chocolate Doom / Sightline at 320x200, one thread: **{med['chocolate'] / med['320x200 t1']:.2f}x** "
                  f"against its timedemo figure (goal: at least 4x), "
                  f"{med['chocolate cpu'] / med['320x200 t1']:.2f}x against its CPU time per frame.")
-    lines.append("Load average (1 min) at each round's start: " + ", ".join(f"{x:.2f}" for x in loads) + ".")
     report = "\n".join(lines)
     print(report)
     if args.out:

@@ -30,13 +30,12 @@ Usage: scripts/dsda-compare.py [--size WxH] [--rounds N] [--out FILE]
 import argparse
 import os
 import re
-import statistics
 import subprocess
 import sys
 import tempfile
 from pathlib import Path
 
-from e1m4 import WAD, one_tic_demo, set_out, sightline_binary, sightline_tour
+from e1m4 import WAD, one_tic_demo, rounds_table, set_out, sightline_binary, sightline_tour
 
 DSDA = "/usr/games/dsda-doom"
 
@@ -116,25 +115,15 @@ def main():
                 parts[key] = j["breakdown"]
             print(f"round {r + 1} (load {loads[-1]:.2f}): "
                   + ", ".join(f"{k} {v[-1]:.3f} ms" for k, v in rounds.items()), file=sys.stderr)
-    med = {k: statistics.median(v) for k, v in rounds.items()}
     labels = {
         "dsda": f"dsda-doom timedemo demo1 (E1M4), {args.size}, software, as is (sleeps 5 ms a frame unfocused)",
         "dsda focused": f"dsda-doom timedemo demo1 (E1M4), {args.size}, software, window reported focused",
         "t1": f"Sightline E1M4 tour, {args.size}, 1 thread",
         "t2": f"Sightline E1M4 tour, {args.size}, 2 threads",
     }
-    lines = [
-        "| what | frames per run | median ms/frame (of rounds) | fps | all rounds (ms) |",
-        "|---|---|---|---|---|",
-    ]
-    for k in keys:
-        v = rounds[k]
-        lines.append(f"| {labels[k]} | {frames[k]} | {med[k]:.3f} | {1000 / med[k]:.0f} | "
-                     + " ".join(f"{x:.3f}" for x in v) + " |")
-    lines.append("")
+    lines, med = rounds_table(keys, labels, rounds, frames, loads)
     lines.append(f"dsda-doom / Sightline one thread: **{med['dsda focused'] / med['t1']:.2f}x** against the focused "
                  f"run, {med['dsda'] / med['t1']:.2f}x against the run as is (goal: at least 2x).")
-    lines.append(f"Load average (1 min) at each round's start: " + ", ".join(f"{x:.2f}" for x in loads) + ".")
     lines.append("")
     lines.append("Sightline's last round by part (ms per frame, summed over threads):")
     names = [f"{n}_ms" for n in ("setup", "walk", "walls", "spans", "masked", "copy")]

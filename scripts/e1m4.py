@@ -5,6 +5,7 @@ directory, a timed tour, a lump out of a WAD, and a one-tic cut of a demo
 
 import json
 import os
+import statistics
 import struct
 import subprocess
 import sys
@@ -59,3 +60,20 @@ def one_tic_demo(demo, out):
     if len(data) < 17 or sum(data[9:13]) != 1:
         sys.exit(f"{demo}: not a one-player Doom 1.9 demo")
     out.write_bytes(data[:13 + 4] + b"\x80")
+
+
+def rounds_table(keys, labels, rounds, frames, loads):
+    """The comparison's table: per row its frames per run, the median of its
+    rounds' figures, fps and every round; then the load at each round's
+    start. Returns the lines and the medians."""
+    med = {k: statistics.median(rounds[k]) for k in keys}
+    lines = [
+        "| what | frames per run | median ms/frame (of rounds) | fps | all rounds (ms) |",
+        "|---|---|---|---|---|",
+    ]
+    for k in keys:
+        lines.append(f"| {labels[k]} | {frames[k]} | {med[k]:.3f} | {1000 / med[k]:.0f} | "
+                     + " ".join(f"{x:.3f}" for x in rounds[k]) + " |")
+    lines.append("")
+    lines.append("Load average (1 min) at each round's start: " + ", ".join(f"{x:.2f}" for x in loads) + ".")
+    return lines, med
