@@ -30,10 +30,9 @@ import re
 import resource
 import subprocess
 import sys
-import tempfile
 from pathlib import Path
 
-from e1m4 import WAD, one_tic_demo, rounds_table, set_out, sightline_binary, sightline_tour
+from e1m4 import WAD, one_tic_demo, prepared, report, rounds_table, sightline_tour
 
 CHOCOLATE = "/usr/games/chocolate-doom"
 
@@ -69,13 +68,7 @@ def main():
     parser.add_argument("--rounds", type=int, default=5)
     parser.add_argument("--out", type=Path)
     args = parser.parse_args()
-    for need in (WAD, Path(CHOCOLATE)):
-        if not need.exists():
-            sys.exit(f"missing {need}: apt-get install chocolate-doom freedoom")
-    binary = sightline_binary()
-    with tempfile.TemporaryDirectory() as tmp:
-        tmp = Path(tmp)
-        ron, demo = set_out(binary, tmp)
+    with prepared(CHOCOLATE, "chocolate-doom") as (binary, tmp, ron, demo):
         short = tmp / "short.lmp"
         one_tic_demo(demo, short)
         keys = ["chocolate", "chocolate cpu", "320x200 t1", "320x200 t2"]
@@ -103,10 +96,7 @@ def main():
     lines.append(f"Chocolate Doom / Sightline at 320x200, one thread: **{med['chocolate'] / med['320x200 t1']:.2f}x** "
                  f"against its timedemo figure (goal: at least 4x), "
                  f"{med['chocolate cpu'] / med['320x200 t1']:.2f}x against its CPU time per frame.")
-    report = "\n".join(lines)
-    print(report)
-    if args.out:
-        args.out.write_text(report + "\n")
+    report(lines, args.out)
 
 
 if __name__ == "__main__":

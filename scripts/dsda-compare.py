@@ -32,10 +32,9 @@ import os
 import re
 import subprocess
 import sys
-import tempfile
 from pathlib import Path
 
-from e1m4 import WAD, one_tic_demo, rounds_table, set_out, sightline_binary, sightline_tour
+from e1m4 import WAD, one_tic_demo, prepared, report, rounds_table, sightline_tour
 
 DSDA = "/usr/games/dsda-doom"
 
@@ -91,13 +90,7 @@ def main():
     parser.add_argument("--rounds", type=int, default=3)
     parser.add_argument("--out", type=Path)
     args = parser.parse_args()
-    for need in (WAD, Path(DSDA)):
-        if not need.exists():
-            sys.exit(f"missing {need}: apt-get install dsda-doom freedoom")
-    binary = sightline_binary()
-    with tempfile.TemporaryDirectory() as tmp:
-        tmp = Path(tmp)
-        ron, demo = set_out(binary, tmp)
+    with prepared(DSDA, "dsda-doom") as (binary, tmp, ron, demo):
         env, shim = dsda_setup(tmp, args.size, demo)
         keys = ["dsda", "dsda focused", "t1", "t2"]
         rounds = {k: [] for k in keys}
@@ -131,10 +124,7 @@ def main():
     lines.append("|---|" + "---|" * len(names))
     for k in ("t1", "t2"):
         lines.append(f"| {k[1:]} | " + " | ".join(f"{parts[k][n]:.3f}" for n in names) + " |")
-    report = "\n".join(lines)
-    print(report)
-    if args.out:
-        args.out.write_text(report + "\n")
+    report(lines, args.out)
 
 
 if __name__ == "__main__":

@@ -9,6 +9,8 @@ import statistics
 import struct
 import subprocess
 import sys
+import tempfile
+from contextlib import contextmanager
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -22,14 +24,23 @@ def sightline_binary():
     return target / "release" / "sightline"
 
 
-def set_out(binary, directory):
-    """Imports E1M4 and extracts DEMO1 (which plays it) into `directory`;
-    returns the map's and the demo's paths."""
-    subprocess.run([str(binary), "import", str(WAD), "--map", "E1M4", "-o", str(directory)],
-                   check=True, capture_output=True)
-    demo = directory / "demo1.lmp"
-    extract_lump(WAD, "DEMO1", demo)
-    return directory / "e1m4.ron", demo
+@contextmanager
+def prepared(port, package):
+    """Checks that freedoom1.wad and the port's binary `port` are there (else
+    exits naming `package` to install), builds Sightline, and sets out E1M4
+    (imported) and DEMO1 (which plays it) in a temporary directory. Yields
+    Sightline's binary, the directory, the map and the demo."""
+    for need in (WAD, Path(port)):
+        if not need.exists():
+            sys.exit(f"missing {need}: apt-get install {package} freedoom")
+    binary = sightline_binary()
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = Path(tmp)
+        subprocess.run([str(binary), "import", str(WAD), "--map", "E1M4", "-o", str(tmp)],
+                       check=True, capture_output=True)
+        demo = tmp / "demo1.lmp"
+        extract_lump(WAD, "DEMO1", demo)
+        yield binary, tmp, tmp / "e1m4.ron", demo
 
 
 def sightline_tour(binary, ron, size, threads, repeat=None):
@@ -77,3 +88,11 @@ def rounds_table(keys, labels, rounds, frames, loads):
     lines.append("")
     lines.append("Load average (1 min) at each round's start: " + ", ".join(f"{x:.2f}" for x in loads) + ".")
     return lines, med
+
+
+def report(lines, out):
+    """Prints the report, and writes it to `out` too when given."""
+    text = "\n".join(lines)
+    print(text)
+    if out:
+        out.write_text(text + "\n")
