@@ -82,6 +82,10 @@ impl DrawnThing {
     /// eighths centred on the eight directions. An eye in front of it sees
     /// view 0. Both renderers ask this, so their sprites agree.
     pub fn texture_seen_from(&self, eye: glam::DVec2) -> crate::texture::TextureId {
+        // Most things (every item) look the same from all sides: no angle.
+        if self.views.iter().all(|&v| v == self.views[0]) {
+            return self.views[0];
+        }
         let d = self.pos - eye;
         let towards = d.y.atan2(d.x).to_degrees();
         let eighth = ((towards - self.angle + 180.0 + 22.5) / 45.0).floor();

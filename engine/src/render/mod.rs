@@ -190,7 +190,7 @@ pub fn render_frame(
             for &(x0, x1) in strips.iter() {
                 draw(strip, (x0, x1));
                 let copy = Lap::start(options.profile);
-                columns::present_strip(&strip.canvas, h, fb.pixels.chunks_exact_mut(w).map(|r| &mut r[x0..x1]));
+                columns::present_pixels(&strip.canvas, h, fb.pixels.chunks_exact_mut(w).map(|r| &mut r[x0..x1]));
                 columns::present_strip(&strip.counts, h, counts.chunks_exact_mut(w).map(|r| &mut r[x0..x1]));
                 strip.breakdown.copy += copy.ns();
             }
@@ -211,7 +211,7 @@ pub fn render_frame(
             parallel::run(pool, &mut workers[..used], jobs, &|strip, job| {
                 draw(strip, (job.x0, job.x1));
                 let copy = Lap::start(options.profile);
-                columns::present_strip(&strip.canvas, h, job.rows.into_iter());
+                columns::present_pixels(&strip.canvas, h, job.rows.into_iter());
                 columns::present_strip(&strip.counts, h, job.counts.into_iter());
                 strip.breakdown.copy += copy.ns();
             });

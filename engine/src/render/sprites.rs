@@ -56,7 +56,8 @@ pub(crate) fn collect(level: &Level, cam: &Camera, sprites: &mut Vec<VisSprite>)
     // Far to near. At equal depth the lower-numbered thing is drawn last, on
     // top, and a sprite goes over a masked middle: the reference walks near
     // to far and lets the first it meets win, in that same order.
-    sprites.sort_by(|a, b| b.depth.total_cmp(&a.depth).then(b.thing.cmp(&a.thing)));
+    // (Keys are unique, so the unstable sort gives the one order.)
+    sprites.sort_unstable_by(|a, b| b.depth.total_cmp(&a.depth).then(b.thing.cmp(&a.thing)));
 }
 
 /// What every masked column draw needs to know.
