@@ -139,6 +139,33 @@ pub fn line_intersection(p0: DVec2, p1: DVec2, q0: DVec2, q1: DVec2) -> DVec2 {
     p0 + r * t
 }
 
+/// `x.floor()` as an integer (saturating, NaN to 0, as `x.floor() as i64`
+/// is), without the call to libm's `floor` that baseline x86-64 makes: the
+/// renderers' per-column and per-span texture wraps use it.
+#[inline]
+pub fn floor_i64(x: f64) -> i64 {
+    let t = x as i64;
+    t.saturating_sub(i64::from(t as f64 > x))
+}
+
+/// `x.floor()`, to the bit for every finite `x` (a zero keeps its sign, as
+/// libm's does), without the libm call; see [`floor_i64`].
+#[inline]
+pub fn floor(x: f64) -> f64 {
+    // Beyond 2^52 every f64 is whole already (and infinities and NaN pass).
+    if !(x.abs() < 4_503_599_627_370_496.0) {
+        return x;
+    }
+    let t = x as i64 as f64;
+    let t = if t > x { t - 1.0 } else { t };
+    // -0.5 floors to -1; -0.0 must stay -0.0, as 0.0 stays 0.0.
+    if t == 0.0 {
+        0.0f64.copysign(x)
+    } else {
+        t
+    }
+}
+
 /// Sine and cosine of an angle in degrees, exact at multiples of 90 degrees so
 /// that axis-aligned views cast exactly axis-aligned rays (cos 90 is 0, not 6e-17).
 pub fn sin_cos_degrees(degrees: f64) -> (f64, f64) {
@@ -178,6 +205,20 @@ impl Aabb {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn floors_agree_with_libm() {
+        let mut values = vec![0.0, -0.0, 0.5, -0.5, 1.0, -1.0, 1e-300, -1e-300, 2.5, -2.5, 1e15 + 0.5, -1e15 - 0.5];
+        values.extend([4_503_599_627_370_496.0, -4_503_599_627_370_497.0, 1e19, -1e19, 1e300, -1e300]);
+        values.extend([f64::INFINITY, f64::NEG_INFINITY, f64::MAX, f64::MIN, f64::EPSILON, -f64::EPSILON]);
+        values.extend((0..2000).map(|i| (i as f64 - 1000.0) * 0.37 + 1e-9 * i as f64));
+        for v in values {
+            assert_eq!(floor(v).to_bits(), v.floor().to_bits(), "{v}");
+            assert_eq!(floor_i64(v), v.floor() as i64, "{v}");
+        }
+        assert!(floor(f64::NAN).is_nan());
+        assert_eq!(floor_i64(f64::NAN), 0);
+    }
+
     use super::*;
 
     fn v(x: f64, y: f64) -> DVec2 {

@@ -89,8 +89,18 @@ impl ColumnWriter<'_> {
     /// the opaque pass.
     #[inline]
     pub fn put_row(&mut self, y: i32, x0: usize, pixels: &[u32]) {
-        let mut colours = pixels.iter();
-        self.fill_row(y, x0, x0 + pixels.len(), |_| colours.next().copied().unwrap_or_default());
+        let start = (x0 - self.x0) * self.height + y as usize;
+        // A plain strided store: through `fill_row`'s closure the compiler
+        // kept the iterator on the stack, a third of the spans' time.
+        for (p, &c) in self.canvas[start..].iter_mut().step_by(self.height).zip(pixels) {
+            *p = c;
+        }
+        self.written += pixels.len() as u64;
+        if let Some(counts) = self.counts.as_deref_mut() {
+            for c in counts[start..].iter_mut().step_by(self.height).take(pixels.len()) {
+                *c = c.saturating_add(1);
+            }
+        }
     }
 
     /// Writes one pixel of the masked pass (sprites, see-through middles).
@@ -150,9 +160,13 @@ impl ColumnWriter<'_> {
         const FRAC: u32 = 16;
         let h = column.len() as i64;
         let wrap = h << FRAC;
-        let mut v = (v.rem_euclid(h as f64) * f64::from(1u32 << FRAC)) as i64 % wrap;
+        // Wrapped without libm's `fmod` or, for power-of-two heights (most
+        // textures), an integer division: both showed per column at 320x200.
+        let v = crate::geom::floor_i64(v * f64::from(1u32 << FRAC));
+        let mut v = if h.count_ones() == 1 { v & (wrap - 1) } else { v.rem_euclid(wrap) };
         // Steps of a whole texture or more (far walls) wrap by modulo.
-        let dv = (dv * f64::from(1u32 << FRAC)) as i64 % wrap;
+        let dv = (dv * f64::from(1u32 << FRAC)) as i64;
+        let dv = if dv < wrap { dv } else { dv % wrap };
         let base = (x - self.x0) * self.height;
         let run = &mut self.canvas[base + y0 as usize..base + y1 as usize];
         // Two passes: the texels first (a load and a store each, the wrap
@@ -160,8 +174,13 @@ impl ColumnWriter<'_> {
         // loop of plain arithmetic the compiler vectorises.
         let mut rest = &mut run[..];
         while !rest.is_empty() {
-            // Rows before v wraps: the stretch needs no wrap test.
-            let until_wrap = if dv > 0 { ((wrap - v + dv - 1) / dv) as usize } else { rest.len() };
+            // Rows before v wraps: the stretch needs no wrap test. A run that
+            // ends first (a magnified wall) needs no division to say so.
+            let until_wrap = if dv == 0 || (rest.len() as i64 - 1) * dv < wrap - v {
+                rest.len()
+            } else {
+                ((wrap - v + dv - 1) / dv) as usize
+            };
             let (stretch, tail) = rest.split_at_mut(until_wrap.min(rest.len()));
             for p in stretch.iter_mut() {
                 *p = column[(v >> FRAC) as usize];

@@ -149,7 +149,7 @@ impl MaskedPass<'_> {
             }
             shade => Texels::Solid(colour(shade, Surface::Wall { line: m.line }, light, 1.0)),
         };
-        let u = (m.u.floor() as i64).rem_euclid(texture.width as i64) as usize;
+        let u = texture.wrap_column(crate::geom::floor_i64(m.u));
         let bottom = top - texture.height as f64;
         let (rows, scale) = (self.scene.rows, self.cam.focal / m.depth);
         let rows = (rows.first_at_or_below(m.depth, scale, top), rows.first_at_or_below(m.depth, scale, bottom));

@@ -111,7 +111,9 @@ impl Camera {
     /// [`Self::left_of_or_on`] settles it.
     pub fn first_column_at_or_right(&self, p: DVec2) -> usize {
         let sx = self.cx + p.y / p.x * self.focal;
-        let mut x = (sx - 0.5).ceil().clamp(0.0, self.width as f64) as usize;
+        // Truncation is within one of the ceil (a libm call on baseline
+        // x86-64); the searches below end on the same column from any start.
+        let mut x = (sx - 0.5).clamp(0.0, self.width as f64) as usize;
         while x > 0 && self.left_of_or_on(p, x - 1) {
             x -= 1;
         }
@@ -141,7 +143,7 @@ impl Camera {
     pub fn first_row_at_or_below(&self, depth: f64, height: f64) -> i32 {
         let sy = self.cy - (height - self.z) * self.focal / depth;
         // NaN clamps to NaN and casts to 0: harmless, never UB.
-        let mut y = (sy - 0.5).ceil().clamp(0.0, self.height as f64) as i32;
+        let mut y = (sy - 0.5).clamp(0.0, self.height as f64) as i32;
         while y > 0 && !self.row_above(y - 1, depth, height) {
             y -= 1;
         }

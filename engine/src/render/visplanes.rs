@@ -170,7 +170,7 @@ impl SpanPainter<'_> {
         let one = 1i64 << FRAC;
         let fixed = |c: f64, size: i64| -> i64 {
             let size_f = size as f64;
-            ((c - (c / size_f).floor() * size_f) * one as f64) as i64
+            ((c - crate::geom::floor(c / size_f) * size_f) * one as f64) as i64
         };
         let (wf, hf) = (w << FRAC, h << FRAC);
         let (du, dv) = ((step.x * one as f64) as i64, (-step.y * one as f64) as i64);

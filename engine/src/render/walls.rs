@@ -304,7 +304,7 @@ impl WallColumn<'_> {
             return;
         }
         let (scene, depth) = (self.scene, self.depth);
-        let u = (self.u.floor() as i64).rem_euclid(texture.width as i64) as usize;
+        let u = texture.wrap_column(crate::geom::floor_i64(self.u));
         // Row y's ray is at height z + depth * slope(y) on the wall.
         let height = scene.cam.z + depth * scene.rows.slopes[rows.0 as usize];
         let dv = depth / scene.cam.focal;

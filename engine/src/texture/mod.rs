@@ -70,6 +70,14 @@ impl Texture {
         decode::decode_png(std::io::Cursor::new(bytes), path)
     }
 
+    /// Texture column `u` wrapped into `0..width`: a mask for power-of-two
+    /// widths (most textures), no integer division.
+    #[inline]
+    pub fn wrap_column(&self, u: i64) -> usize {
+        let width = self.width as i64;
+        (if width.count_ones() == 1 { u & (width - 1) } else { u.rem_euclid(width) }) as usize
+    }
+
     /// Column `u`, top texel first. `u < width`.
     #[inline]
     pub fn column(&self, u: usize) -> &[u32] {
