@@ -110,6 +110,24 @@ impl ColumnWriter<'_> {
         self.masked_written += 1;
     }
 
+    /// Writes rows `[y0, y1)` of column `x` in the masked pass where
+    /// `pixel(y)` says opaque, keeping what is there elsewhere (a select,
+    /// not a branch).
+    #[inline]
+    pub fn put_opaque(&mut self, x: usize, y0: i32, y1: i32, mut pixel: impl FnMut(i32) -> (u32, bool)) {
+        if y1 <= y0 {
+            return;
+        }
+        let base = (x - self.x0) * self.height;
+        let mut written = 0;
+        for (y, p) in (y0..y1).zip(&mut self.canvas[base + y0 as usize..base + y1 as usize]) {
+            let (colour, opaque) = pixel(y);
+            *p = if opaque { colour } else { *p };
+            written += u64::from(opaque);
+        }
+        self.masked_written += written;
+    }
+
     /// Writes one pixel of the masked pass two-thirds over what is there (a
     /// translucent middle texture: Boom's default translucency table is
     /// about 66% opaque).

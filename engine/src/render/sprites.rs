@@ -120,8 +120,9 @@ impl MaskedPass<'_> {
             Shade::Textured if s.fuzz => Texels::Fuzz(self.scene.level.time),
             Shade::Textured => Texels::Tinted(self.scene.lighting.tint(s.light, s.depth)),
         };
-        let cam = self.cam;
-        let rows = (cam.first_row_at_or_below(s.depth, top), cam.first_row_at_or_below(s.depth, s.floor));
+        // The frame's row table answers as the camera does, without a division per row tried.
+        let (rows, scale) = (self.scene.rows, self.cam.focal / s.depth);
+        let rows = (rows.first_at_or_below(s.depth, scale, top), rows.first_at_or_below(s.depth, scale, s.floor));
         SpriteColumns { texture, top, rows, paint }
     }
 
@@ -177,24 +178,39 @@ impl MaskedPass<'_> {
         let cam = self.cam;
         let (open_top, open_bottom) = self.window(x, depth, cam.height as i32);
         let column = texture.column(u.min(texture.width - 1));
-        for y in rows.0.max(open_top)..rows.1.min(open_bottom) {
-            let v = top - (cam.z + depth * self.scene.rows.slopes[y as usize]);
-            let texel = column[(v.max(0.0) as usize).min(texture.height - 1)];
-            if texel >> 24 == 0 {
-                continue;
-            }
-            let c = match paint {
-                Texels::Solid(c) => c,
-                Texels::Tinted(t) => t.apply(texel),
-                Texels::Fuzz(time) => {
-                    out.put_fuzz(x, y, fuzz_offset(x, y, time));
-                    continue;
+        let (y0, y1) = (rows.0.max(open_top), rows.1.min(open_bottom));
+        let slopes = self.scene.rows.slopes;
+        let texel = |y: i32| {
+            let v = top - (cam.z + depth * slopes[y as usize]);
+            column[(v.max(0.0) as usize).min(texture.height - 1)]
+        };
+        match paint {
+            // The common case as one run without a branch per texel: a
+            // sprite's transparent texels mispredicted at every edge.
+            Texels::Tinted(tint) if !translucent => out.put_opaque(x, y0, y1, |y| {
+                let t = texel(y);
+                (tint.apply(t), t >> 24 != 0)
+            }),
+            _ => {
+                for y in y0..y1 {
+                    let t = texel(y);
+                    if t >> 24 == 0 {
+                        continue;
+                    }
+                    let c = match paint {
+                        Texels::Solid(c) => c,
+                        Texels::Tinted(tint) => tint.apply(t),
+                        Texels::Fuzz(time) => {
+                            out.put_fuzz(x, y, fuzz_offset(x, y, time));
+                            continue;
+                        }
+                    };
+                    if translucent {
+                        out.put_blended(x, y, c);
+                    } else {
+                        out.put_masked(x, y, c);
+                    }
                 }
-            };
-            if translucent {
-                out.put_blended(x, y, c);
-            } else {
-                out.put_masked(x, y, c);
             }
         }
     }

@@ -111,9 +111,9 @@ impl Camera {
     /// [`Self::left_of_or_on`] settles it.
     pub fn first_column_at_or_right(&self, p: DVec2) -> usize {
         let sx = self.cx + p.y / p.x * self.focal;
-        // Truncation is within one of the ceil (a libm call on baseline
-        // x86-64); the searches below end on the same column from any start.
-        let mut x = (sx - 0.5).clamp(0.0, self.width as f64) as usize;
+        // The searches below end on the same column from any start; from
+        // the ceil, each tests once and stops.
+        let mut x = ceil_within(sx - 0.5, self.width) as usize;
         while x > 0 && self.left_of_or_on(p, x - 1) {
             x -= 1;
         }
@@ -143,7 +143,7 @@ impl Camera {
     pub fn first_row_at_or_below(&self, depth: f64, height: f64) -> i32 {
         let sy = self.cy - (height - self.z) * self.focal / depth;
         // NaN clamps to NaN and casts to 0: harmless, never UB.
-        let mut y = (sy - 0.5).clamp(0.0, self.height as f64) as i32;
+        let mut y = ceil_within(sy - 0.5, self.height);
         while y > 0 && !self.row_above(y - 1, depth, height) {
             y -= 1;
         }
@@ -177,6 +177,15 @@ impl Camera {
     }
 }
 
+/// `x` clamped to `0..=max` and rounded up, without libm's `ceil` (a call
+/// on baseline x86-64). NaN clamps to NaN and casts to 0: harmless.
+#[inline]
+fn ceil_within(x: f64, max: usize) -> i32 {
+    let x = x.clamp(0.0, max as f64);
+    let t = x as i32;
+    t + i32::from(f64::from(t) < x)
+}
+
 /// The row predicates of a [`Camera`] with every row's slope looked up in a
 /// table made once a frame (`slopes[y] == cam.row_slope(y)`, the same
 /// numbers, so the same answers): in the walk's per-column row searches a
@@ -202,10 +211,11 @@ impl Rows<'_> {
     pub fn first_at_or_below(&self, depth: f64, scale: f64, height: f64) -> i32 {
         let cam = self.cam;
         let sy = cam.cy - (height - cam.z) * scale;
-        // NaN clamps to NaN and casts to 0: harmless, never UB. The cast
-        // truncates a value in 0..=height, so it is within one of the ceil
-        // (which is a libm call on baseline x86-64).
-        let mut y = (sy - 0.5).clamp(0.0, cam.height as f64) as i32;
+        // From the ceil, the searches below test once each and stop, but
+        // at rounding's edge: a start off by one cost a third of the walls'
+        // per-column time in mispredicted loop exits (the first guess was a
+        // truncation, to avoid libm's `ceil`).
+        let mut y = ceil_within(sy - 0.5, cam.height);
         while y > 0 && !self.above(y - 1, depth, height) {
             y -= 1;
         }
