@@ -20,7 +20,7 @@ pub(crate) fn render(scene: &Scene, frame: &mut StripFrame, out: &mut ColumnWrit
             break;
         }
         if let Some(bbox) = bbox {
-            if !box_visible(cam, &bbox, frame) {
+            if !box_visible(cam, scene.slopes, &bbox, frame) {
                 frame.stats.subtrees_culled += 1;
                 continue;
             }
@@ -83,7 +83,7 @@ fn fill_void(frame: &mut StripFrame, out: &mut ColumnWriter, shade: Shade) {
 /// Could anything inside `bbox` still show? Projects the box's silhouette (the
 /// two corners that bound it as seen from the eye, as Doom's R_CheckBBox picks
 /// them) and asks the occlusion array about the columns between.
-fn box_visible(cam: &Camera, bbox: &Aabb, frame: &StripFrame) -> bool {
+fn box_visible(cam: &Camera, slopes: &[f64], bbox: &Aabb, frame: &StripFrame) -> bool {
     // Within a unit of the box, call it visible: the silhouette argument below
     // needs the eye clear of the box by much more than NEAR.
     let grown = Aabb { min: bbox.min - 1.0, max: bbox.max + 1.0 };
@@ -115,7 +115,7 @@ fn box_visible(cam: &Camera, bbox: &Aabb, frame: &StripFrame) -> bool {
         (2, 2) => (c[1], c[3]),
         _ => return true,
     };
-    match cam.project_span(cam.to_camera(a), cam.to_camera(b)) {
+    match cam.project_span_in(slopes, cam.to_camera(a), cam.to_camera(b)) {
         Some((x0, x1)) => frame.occlusion.any_open(x0, x1),
         None => false,
     }

@@ -157,7 +157,7 @@ pub fn render_frame(
     let threads = options.threads.max(1);
     frame.begin(&cam, options.count_writes, threads);
     if !options.disabled.sprites {
-        sprites::collect(level, &cam, &mut frame.sprites);
+        sprites::collect(level, &cam, &frame.slopes, &mut frame.sprites);
     }
     let plan = plan::Plan::new(level, frame.sprites.len(), options.disabled);
     frame.plan = plan;

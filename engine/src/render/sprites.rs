@@ -33,7 +33,7 @@ pub(crate) struct VisSprite {
 }
 
 /// Finds the things in view and sorts them far to near, into `sprites`.
-pub(crate) fn collect(level: &Level, cam: &Camera, sprites: &mut Vec<VisSprite>) {
+pub(crate) fn collect(level: &Level, cam: &Camera, slopes: &[f64], sprites: &mut Vec<VisSprite>) {
     sprites.clear();
     for t in &level.things {
         let q = cam.to_camera(t.pos);
@@ -45,8 +45,8 @@ pub(crate) fn collect(level: &Level, cam: &Camera, sprites: &mut Vec<VisSprite>)
         let w = level.materials.textures.get(texture).width as f64;
         let left = q.y - w / 2.0;
         // One column of slack each side: the per-column predicate decides.
-        let x0 = cam.first_column_at_or_right(glam::DVec2::new(q.x, left)).saturating_sub(1);
-        let x1 = (cam.first_column_at_or_right(glam::DVec2::new(q.x, left + w)) + 1).min(cam.width);
+        let x0 = cam.first_column_in(slopes, glam::DVec2::new(q.x, left)).saturating_sub(1);
+        let x1 = (cam.first_column_in(slopes, glam::DVec2::new(q.x, left + w)) + 1).min(cam.width);
         if x0 >= x1 {
             continue;
         }

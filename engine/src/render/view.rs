@@ -110,14 +110,29 @@ impl Camera {
     /// left, in `0..=width`. The projection gives the answer up to rounding;
     /// [`Self::left_of_or_on`] settles it.
     pub fn first_column_at_or_right(&self, p: DVec2) -> usize {
+        self.first_column_by(p, |x| self.column_slope(x))
+    }
+
+    /// [`Self::first_column_at_or_right`] with each column's slope looked up
+    /// in `slopes` (`slopes[x] == self.column_slope(x)`, the frame's table):
+    /// the same answer without a division per column tried.
+    #[inline]
+    pub(crate) fn first_column_in(&self, slopes: &[f64], p: DVec2) -> usize {
+        self.first_column_by(p, |x| slopes[x])
+    }
+
+    #[inline]
+    fn first_column_by(&self, p: DVec2, slope: impl Fn(usize) -> f64) -> usize {
         let sx = self.cx + p.y / p.x * self.focal;
         // The searches below end on the same column from any start; from
         // the ceil, each tests once and stops.
         let mut x = ceil_within(sx - 0.5, self.width) as usize;
-        while x > 0 && self.left_of_or_on(p, x - 1) {
+        // `left_of_or_on`, with the slope given.
+        let left_of_or_on = |x: usize| p.y <= slope(x) * p.x;
+        while x > 0 && left_of_or_on(x - 1) {
             x -= 1;
         }
-        while x < self.width && !self.left_of_or_on(p, x) {
+        while x < self.width && !left_of_or_on(x) {
             x += 1;
         }
         x
@@ -162,6 +177,17 @@ impl Camera {
     /// after clipping it to depth >= [`NEAR`]. The segment must face the viewer
     /// (viewer on its right), so that `a` projects left of `b`.
     pub fn project_span(&self, a: DVec2, b: DVec2) -> Option<(usize, usize)> {
+        self.project_span_by(a, b, |p| self.first_column_at_or_right(p))
+    }
+
+    /// [`Self::project_span`] with the frame's column slopes (see [`Self::first_column_in`]).
+    #[inline]
+    pub(crate) fn project_span_in(&self, slopes: &[f64], a: DVec2, b: DVec2) -> Option<(usize, usize)> {
+        self.project_span_by(a, b, |p| self.first_column_in(slopes, p))
+    }
+
+    #[inline]
+    fn project_span_by(&self, a: DVec2, b: DVec2, column: impl Fn(DVec2) -> usize) -> Option<(usize, usize)> {
         let (mut a, mut b) = (a, b);
         if a.x < NEAR && b.x < NEAR {
             return None;
@@ -171,8 +197,7 @@ impl Camera {
         } else if b.x < NEAR {
             b = b + (a - b) * ((NEAR - b.x) / (a.x - b.x));
         }
-        let x0 = self.first_column_at_or_right(a);
-        let x1 = self.first_column_at_or_right(b);
+        let (x0, x1) = (column(a), column(b));
         (x0 < x1).then_some((x0, x1))
     }
 }

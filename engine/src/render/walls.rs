@@ -85,7 +85,7 @@ pub(crate) fn draw_seg(scene: &Scene, seg: &Seg, frame: &mut StripFrame, out: &m
     if !facing || !cross_from.is_finite() {
         return;
     }
-    let Some((x0, x1)) = cam.project_span(cam.to_camera(seg.v1), cam.to_camera(seg.v2)) else {
+    let Some((x0, x1)) = cam.project_span_in(scene.slopes, cam.to_camera(seg.v1), cam.to_camera(seg.v2)) else {
         return;
     };
     let columns = Lap::start(scene.profile);
