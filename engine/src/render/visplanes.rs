@@ -108,7 +108,8 @@ impl Visplanes {
                 continue;
             }
             let texture = textures.get(p.key.texture);
-            let span = SpanPainter { cam, lighting, inv_rows, texture, key: p.key, x0: self.x0 };
+            let ray = cam.forward + cam.right * cam.column_slope(0);
+            let span = SpanPainter { cam, lighting, inv_rows, texture, key: p.key, x0: self.x0, ray };
             // Doom's R_MakeSpans: walk the columns; rows that stop being
             // covered end a span, rows that start being covered open one.
             let (mut t1, mut b1) = (0u16, 0u16);
@@ -136,6 +137,8 @@ struct SpanPainter<'a> {
     texture: &'a Texture,
     key: PlaneKey,
     x0: usize,
+    /// The ray of column 0 (forward + right * slope(0)), the same for every span.
+    ray: glam::DVec2,
 }
 
 /// Fixed-point fraction bits of the texture coordinate steppers.
@@ -155,8 +158,7 @@ impl SpanPainter<'_> {
         // the same anchor, the point under column 0, so a pixel's texel
         // depends on its position alone, not on where its span began: the
         // same however the screen is cut into strips or the plane into spans.
-        let ray = cam.forward + cam.right * cam.column_slope(0);
-        let anchor = cam.eye + ray * dist;
+        let anchor = cam.eye + self.ray * dist;
         let step = cam.right * (dist / cam.focal);
         if out.sampling.bilinear {
             let texture = self.texture;

@@ -44,6 +44,8 @@ struct SegColumns<'a> {
     length: f64,
     /// `cross(from, dir)`: depth at slope t is `cross_from / cross((1, t), dir)`.
     cross_from: f64,
+    /// `focal / cross_from`: times `cross((1, t), dir)`, the column's scale.
+    focal_per_cross: f64,
     /// Texture column at the line's start of this side, and whether the side
     /// runs against the line (a back side measures from the line's `to`).
     u_offset: f64,
@@ -89,7 +91,7 @@ pub(crate) fn draw_seg(scene: &Scene, seg: &Seg, frame: &mut StripFrame, out: &m
         return;
     };
     let columns = Lap::start(scene.profile);
-    let cols = seg_columns(level, seg, line, (from, dir, cross_from), scene.shade, &scene.plan);
+    let cols = seg_columns(level, seg, line, (from, dir, cross_from, cam.focal), scene.shade, &scene.plan);
     let mut drew = false;
     let mut x = x0;
     while let Some(start) = frame.occlusion.next_open(x, x1) {
@@ -111,7 +113,7 @@ fn seg_columns<'a>(
     level: &'a Level,
     seg: &Seg,
     line: &Line,
-    (from, dir, cross_from): (DVec2, DVec2, f64),
+    (from, dir, cross_from, focal): (DVec2, DVec2, f64, f64),
     shade: Shade,
     plan: &Plan,
 ) -> SegColumns<'a> {
@@ -153,6 +155,7 @@ fn seg_columns<'a>(
         dir,
         length: dir.length(),
         cross_from,
+        focal_per_cross: focal / cross_from,
         u_offset: side_offsets(side, level.time).0,
         backwards: seg.side == LineSide::Back,
         ceiling,
@@ -220,10 +223,18 @@ fn wall_paints<'a>(
 #[inline]
 fn draw_column(scene: &Scene, s: &SegColumns, x: usize, frame: &mut StripFrame, out: &mut ColumnWriter) {
     let t = scene.slopes[x];
-    let depth = s.cross_from / cross(DVec2::new(1.0, t), s.dir);
-    // Columns inside the near-clipped span are at depth >= NEAR up to rounding.
-    let depth = if depth.is_finite() { depth.max(NEAR) } else { NEAR };
-    let scale = scene.cam.focal / depth;
+    let across = cross(DVec2::new(1.0, t), s.dir);
+    let depth = s.cross_from / across;
+    // `scale` (focal / depth) only starts the row searches, which end on the
+    // same rows from any start: a multiply, off the division's critical
+    // path, where a second division held up every row search.
+    let (depth, scale) = if depth.is_finite() && depth >= NEAR {
+        (depth, across * s.focal_per_cross)
+    } else {
+        // Columns inside the near-clipped span are at depth >= NEAR up to rounding.
+        let depth = if depth.is_finite() { depth.max(NEAR) } else { NEAR };
+        (depth, scene.cam.focal / depth)
+    };
     let row = |height: f64| scene.rows.first_at_or_below(depth, scale, height);
     let (top, bottom) = (frame.clip_top[x], frame.clip_bottom[x]);
     let ceiling_end = row(s.ceiling).clamp(top, bottom);
