@@ -200,7 +200,14 @@ impl ColumnWriter<'_> {
                 ((wrap - v + dv - 1) / dv) as usize
             };
             let (stretch, tail) = rest.split_at_mut(until_wrap.min(rest.len()));
-            for p in stretch.iter_mut() {
+            // Two rows an iteration: half the loop's own count and test.
+            let mut pairs = stretch.chunks_exact_mut(2);
+            for pair in &mut pairs {
+                pair[0] = column[(v >> FRAC) as usize];
+                pair[1] = column[((v + dv) >> FRAC) as usize];
+                v += 2 * dv;
+            }
+            for p in pairs.into_remainder() {
                 *p = column[(v >> FRAC) as usize];
                 v += dv;
             }
