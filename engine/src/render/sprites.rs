@@ -90,8 +90,9 @@ pub(crate) fn draw(scene: &Scene, frame: &mut StripFrame, out: &mut ColumnWriter
             next[x] = m.prev;
         }
     };
+    let mut texel_rows = Vec::new();
     for s in scene.sprites.iter().filter(|s| s.x0 < x1 && s.x1 > x0) {
-        let sprite = pass.sprite(s);
+        let sprite = pass.sprite(s, &mut texel_rows);
         for x in s.x0.max(x0)..s.x1.min(x1) {
             drain(out, x, s.depth);
             pass.sprite_column(out, s, &sprite, x);
@@ -105,13 +106,15 @@ pub(crate) fn draw(scene: &Scene, frame: &mut StripFrame, out: &mut ColumnWriter
 /// What is the same in every column of one sprite.
 struct SpriteColumns<'a> {
     texture: &'a Texture,
-    top: f64,
     rows: (i32, i32),
     paint: Texels,
+    /// The texel row each screen row of `rows` shows: a sprite is at one
+    /// depth, so every column of it shares them.
+    texel_rows: &'a [u32],
 }
 
 impl MaskedPass<'_> {
-    fn sprite<'t>(&'t self, s: &VisSprite) -> SpriteColumns<'t> {
+    fn sprite<'t>(&'t self, s: &VisSprite, texel_rows: &'t mut Vec<u32>) -> SpriteColumns<'t> {
         let texture = self.scene.level.materials.textures.get(s.texture);
         let top = s.floor + texture.height as f64;
         let paint = match self.scene.shade {
@@ -123,7 +126,10 @@ impl MaskedPass<'_> {
         // The frame's row table answers as the camera does, without a division per row tried.
         let (rows, scale) = (self.scene.rows, self.cam.focal / s.depth);
         let rows = (rows.first_at_or_below(s.depth, scale, top), rows.first_at_or_below(s.depth, scale, s.floor));
-        SpriteColumns { texture, top, rows, paint }
+        let texel_row = self.texel_row(texture, s.depth, top);
+        texel_rows.clear();
+        texel_rows.extend((rows.0..rows.1).map(|y| texel_row(y) as u32));
+        SpriteColumns { texture, rows, paint, texel_rows }
     }
 
     fn sprite_column(&self, out: &mut ColumnWriter, s: &VisSprite, c: &SpriteColumns, x: usize) {
@@ -131,7 +137,8 @@ impl MaskedPass<'_> {
         if !(0.0..c.texture.width as f64).contains(&u) {
             return;
         }
-        self.put_texels(out, x, s.depth, c.rows, (c.texture, u as usize, c.top), c.paint, false);
+        let texel_row = |y: i32| c.texel_rows[(y - c.rows.0) as usize] as usize;
+        self.put_texels(out, x, s.depth, c.rows, (c.texture, u as usize, texel_row), c.paint, false);
     }
 
     fn masked_column(&self, out: &mut ColumnWriter, m: &super::frame::MaskedColumn, x: usize) {
@@ -159,31 +166,36 @@ impl MaskedPass<'_> {
         // Translucent middles (Boom's 260) blend only when textured, so
         // the flat and ids pictures stay comparable with the reference.
         let translucent = line.flags.translucent && self.scene.shade == Shade::Textured;
-        self.put_texels(out, x, m.depth, rows, (texture, u, top), paint, translucent);
+        self.put_texels(out, x, m.depth, rows, (texture, u, self.texel_row(texture, m.depth, top)), paint, translucent);
+    }
+
+    /// The texel row screen row `y` shows of `texture` standing at `depth`
+    /// with texel row 0 at height `top` (texel row `v` is at `top - v`).
+    fn texel_row<'t>(&'t self, texture: &'t Texture, depth: f64, top: f64) -> impl Fn(i32) -> usize + 't {
+        let (z, slopes) = (self.cam.z, self.scene.rows.slopes);
+        move |y| {
+            let v = top - (z + depth * slopes[y as usize]);
+            (v.max(0.0) as usize).min(texture.height - 1)
+        }
     }
 
     /// Writes the opaque texels of texture column `u` over rows `rows` of
-    /// column `x`, clipped to the window left open in front of `depth`; texel
-    /// row `v` is at height `top - v`.
+    /// column `x`, clipped to the window left open in front of `depth`; row
+    /// `y` shows texel row `texel_row(y)`.
     fn put_texels(
         &self,
         out: &mut ColumnWriter,
         x: usize,
         depth: f64,
         rows: (i32, i32),
-        (texture, u, top): (&Texture, usize, f64),
+        (texture, u, texel_row): (&Texture, usize, impl Fn(i32) -> usize),
         paint: Texels,
         translucent: bool,
     ) {
-        let cam = self.cam;
-        let (open_top, open_bottom) = self.window(x, depth, cam.height as i32);
+        let (open_top, open_bottom) = self.window(x, depth, self.cam.height as i32);
         let column = texture.column(u.min(texture.width - 1));
         let (y0, y1) = (rows.0.max(open_top), rows.1.min(open_bottom));
-        let slopes = self.scene.rows.slopes;
-        let texel = |y: i32| {
-            let v = top - (cam.z + depth * slopes[y as usize]);
-            column[(v.max(0.0) as usize).min(texture.height - 1)]
-        };
+        let texel = |y: i32| column[texel_row(y)];
         match paint {
             // The common case as one run without a branch per texel: a
             // sprite's transparent texels mispredicted at every edge.
