@@ -187,6 +187,8 @@ pub(crate) struct Scene<'a> {
     pub sprites: &'a [VisSprite],
     /// Time the frame's parts (see [`Breakdown`]).
     pub profile: bool,
+    /// The sky's per-frame table (see [`super::planes::SkyView`]).
+    pub sky: super::planes::SkyView<'a>,
 }
 
 /// The frame as the caller keeps it: the shared tables, the totals of the
@@ -197,6 +199,8 @@ pub struct Frame {
     pub(crate) slopes: Vec<f64>,
     pub(crate) row_slopes: Vec<f64>,
     pub(crate) inv_rows: Vec<f64>,
+    /// Each row's sky texel row, when the frame has a sky.
+    pub(crate) sky_rows: Vec<u32>,
     /// Things in view, far to near.
     pub(crate) sprites: Vec<VisSprite>,
     /// The strips `[x0, x1)` of this frame.

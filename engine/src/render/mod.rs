@@ -165,7 +165,12 @@ pub fn render_frame(
     frame.strips.extend(strips::strips(w, h, threads));
     let oracle = (options.renderer == Renderer::Reference)
         .then(|| reference::Reference::new(level, &cam).leaving_out(options.disabled));
-    let Frame { slopes, row_slopes, inv_rows, sprites, strips, workers, pool, counts, .. } = frame;
+    let sky_height = level.materials.sky.map(|t| level.materials.textures.get(t).height).filter(|_| plan.sky);
+    frame.sky_rows.clear();
+    if let Some(height) = sky_height {
+        frame.sky_rows.extend(frame.row_slopes.iter().map(|&s| planes::sky_row(height, s) as u32));
+    }
+    let Frame { slopes, row_slopes, inv_rows, sky_rows, sprites, strips, workers, pool, counts, .. } = frame;
     let scene = Scene {
         level,
         cam: &cam,
@@ -178,6 +183,7 @@ pub fn render_frame(
         inv_rows,
         sprites,
         profile: options.profile,
+        sky: planes::SkyView { angle: cam.angle_radians(), texture_height: sky_height.unwrap_or(0), rows: sky_rows },
     };
     let mut setup_ns = setup.ns();
     let lines = level.map.lines.len();

@@ -32,6 +32,27 @@ const SKY_TEXELS_AROUND: f64 = 1024.0;
 /// the top: the lowest fifth (hills) hangs below the horizon.
 const SKY_HORIZON: f64 = 0.8;
 
+const TEXELS_PER_RADIAN: f64 = SKY_TEXELS_AROUND / TAU;
+
+/// The sky texel row (of a sky `height` texels tall) that a screen row of
+/// slope `slope` shows: the same for every column, so a frame tabulates it
+/// once ([`SkyView`]).
+pub(crate) fn sky_row(height: usize, slope: f64) -> usize {
+    // `-slope(y)` is `(y + 0.5 - cy) / focal` to the bit.
+    let v = height as f64 * SKY_HORIZON + -slope * TEXELS_PER_RADIAN;
+    (v.max(0.0) as usize).min(height - 1)
+}
+
+/// What every sky column of a frame shares: the view's angle (an `atan2`
+/// once, not per column) and each screen row's sky texel row, for the sky
+/// texture `texture_height` texels tall (empty when the frame has no sky).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct SkyView<'a> {
+    pub angle: f64,
+    pub texture_height: usize,
+    pub rows: &'a [u32],
+}
+
 /// Paints rows `[y0, y1)` of column `x`, whose ray has sideways slope `t`.
 pub(crate) fn paint_plane(
     out: &mut ColumnWriter,
@@ -97,17 +118,17 @@ pub(crate) fn paint_plane(
             });
         }
         PlanePaint::Sky(texture) => {
-            let (w, h) = (texture.width as f64, texture.height as f64);
-            let texels_per_radian = SKY_TEXELS_AROUND / TAU;
-            let angle = cam.angle_radians() - t.atan();
-            let u = (-angle * texels_per_radian).rem_euclid(w) as usize;
+            let w = texture.width as f64;
+            let angle = scene.sky.angle - t.atan();
+            let u = (-angle * TEXELS_PER_RADIAN).rem_euclid(w) as usize;
             let column = texture.column(u.min(texture.width - 1));
-            let slopes = scene.rows.slopes;
-            out.fill_with(x, y0, y1, |y| {
-                // `-slope(y)` is `(y + 0.5 - cy) / focal` to the bit.
-                let v = h * SKY_HORIZON + -slopes[y as usize] * texels_per_radian;
-                column[(v.max(0.0) as usize).min(texture.height - 1)]
-            });
+            let sky = scene.sky;
+            if sky.texture_height == texture.height && sky.rows.len() == cam.height {
+                out.fill_with(x, y0, y1, |y| column[sky.rows[y as usize] as usize]);
+            } else {
+                let slopes = scene.rows.slopes;
+                out.fill_with(x, y0, y1, |y| column[sky_row(texture.height, slopes[y as usize])]);
+            }
         }
     }
 }
