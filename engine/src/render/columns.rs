@@ -77,9 +77,15 @@ impl ColumnWriter<'_> {
         for (x, p) in (x0..x1).zip(self.canvas[start..].iter_mut().step_by(self.height)) {
             *p = colour(x);
         }
-        self.written += (x1 - x0) as u64;
+        self.count_row(start, x1 - x0);
+    }
+
+    /// Records a write of `n` pixels along a row from canvas index `start`.
+    #[inline]
+    fn count_row(&mut self, start: usize, n: usize) {
+        self.written += n as u64;
         if let Some(counts) = self.counts.as_deref_mut() {
-            for c in counts[start..].iter_mut().step_by(self.height).take(x1 - x0) {
+            for c in counts[start..].iter_mut().step_by(self.height).take(n) {
                 *c = c.saturating_add(1);
             }
         }
@@ -95,12 +101,7 @@ impl ColumnWriter<'_> {
         for (p, &c) in self.canvas[start..].iter_mut().step_by(self.height).zip(pixels) {
             *p = c;
         }
-        self.written += pixels.len() as u64;
-        if let Some(counts) = self.counts.as_deref_mut() {
-            for c in counts[start..].iter_mut().step_by(self.height).take(pixels.len()) {
-                *c = c.saturating_add(1);
-            }
-        }
+        self.count_row(start, pixels.len());
     }
 
     /// Writes one pixel of the masked pass (sprites, see-through middles).
@@ -181,7 +182,7 @@ impl ColumnWriter<'_> {
         // Wrapped without libm's `fmod` or, for power-of-two heights (most
         // textures), an integer division: both showed per column at 320x200.
         let v = crate::geom::floor_i64(v * f64::from(1u32 << FRAC));
-        let mut v = if h.count_ones() == 1 { v & (wrap - 1) } else { v.rem_euclid(wrap) };
+        let mut v = crate::texture::wrap(v, wrap);
         // Steps of a whole texture or more (far walls) wrap by modulo.
         let dv = (dv * f64::from(1u32 << FRAC)) as i64;
         let dv = if dv < wrap { dv } else { dv % wrap };

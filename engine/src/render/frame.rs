@@ -294,6 +294,9 @@ pub(crate) struct StripFrame {
     /// Masked middles to draw, and each column's latest entry.
     pub(crate) masked: Vec<MaskedColumn>,
     pub(crate) last_masked: Vec<u32>,
+    /// The masked pass's scratch: the texel row of each screen row of the
+    /// sprite being drawn.
+    pub(crate) sprite_rows: Vec<u32>,
     pub(crate) visplanes: Visplanes,
     /// What this worker's strips cost, and the lines they showed.
     pub(crate) stats: FrameStats,

@@ -87,7 +87,7 @@ pub(super) fn open_whole_columns(
 ) -> Option<(usize, usize)> {
     let cam = scene.cam;
     // A back-facing seg projects right to left, an empty span.
-    let (a, b) = cam.project_span(cam.to_camera(seg.v1), cam.to_camera(seg.v2))?;
+    let (a, b) = cam.project_span_in(scene.slopes, cam.to_camera(seg.v1), cam.to_camera(seg.v2))?;
     let (a, b) = (a.max(x0), b.min(x1));
     if a >= b {
         return None;

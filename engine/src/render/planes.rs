@@ -138,7 +138,5 @@ pub(crate) fn paint_plane(
 #[inline]
 fn wrap(c: f64, size: f64, inv: f64) -> usize {
     let q = c * inv;
-    let whole = q as i64 as f64;
-    let whole = if whole > q { whole - 1.0 } else { whole };
-    (((q - whole) * size) as usize).min(size as usize - 1)
+    (((q - crate::geom::floor(q)) * size) as usize).min(size as usize - 1)
 }

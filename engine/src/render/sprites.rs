@@ -82,7 +82,7 @@ struct MaskedPass<'a> {
 pub(crate) fn draw(scene: &Scene, frame: &mut StripFrame, out: &mut ColumnWriter, (x0, x1): (usize, usize)) {
     // Each column's next masked middle to draw, deepest first: the walk's
     // list heads, consumed in place (the next strip resets them).
-    let StripFrame { last_masked: next, masked, events, last_event, .. } = frame;
+    let StripFrame { last_masked: next, masked, events, last_event, sprite_rows, .. } = frame;
     let pass = MaskedPass { scene, cam: scene.cam, events, last_event };
     let mut drain = |out: &mut ColumnWriter, x: usize, depth: f64| {
         while let Some(m) = (next[x] != NONE).then(|| &masked[next[x] as usize]).filter(|m| m.depth >= depth) {
@@ -90,9 +90,8 @@ pub(crate) fn draw(scene: &Scene, frame: &mut StripFrame, out: &mut ColumnWriter
             next[x] = m.prev;
         }
     };
-    let mut texel_rows = Vec::new();
     for s in scene.sprites.iter().filter(|s| s.x0 < x1 && s.x1 > x0) {
-        let sprite = pass.sprite(s, &mut texel_rows);
+        let sprite = pass.sprite(s, sprite_rows);
         for x in s.x0.max(x0)..s.x1.min(x1) {
             drain(out, x, s.depth);
             pass.sprite_column(out, s, &sprite, x);

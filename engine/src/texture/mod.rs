@@ -37,6 +37,18 @@ pub struct Texture {
     pub opaque: bool,
 }
 
+/// `i` wrapped into `0..size` (`size > 0`): a mask when `size` is a power
+/// of two (most texture sizes, and so their fixed-point spans), else
+/// `rem_euclid`'s integer division.
+#[inline]
+pub fn wrap(i: i64, size: i64) -> i64 {
+    if size.count_ones() == 1 {
+        i & (size - 1)
+    } else {
+        i.rem_euclid(size)
+    }
+}
+
 impl Texture {
     /// Builds a texture from `f(u, v) -> [r, g, b, a]`, called column by column.
     ///
@@ -74,8 +86,7 @@ impl Texture {
     /// widths (most textures), no integer division.
     #[inline]
     pub fn wrap_column(&self, u: i64) -> usize {
-        let width = self.width as i64;
-        (if width.count_ones() == 1 { u & (width - 1) } else { u.rem_euclid(width) }) as usize
+        wrap(u, self.width as i64) as usize
     }
 
     /// Column `u`, top texel first. `u < width`.
