@@ -1,7 +1,8 @@
-//! The autopilot: on small maps that each need one mechanism (a lift, a
-//! switch and its remote door, a key and its door, a teleporter, a one-way
-//! drop, a gap to jump at a run) it reaches the exit through its inputs alone, and the mechanism was
-//! really used; `check` finds a map's unreachable secret and its soft lock;
+//! The autopilot: on small maps that each need one mechanism (a lift up, a
+//! lift down by the switch on it, a switch and its remote door, a key and
+//! its door, a teleporter, a one-way drop, a gap to jump at a run) it
+//! reaches the exit through its inputs alone, and the mechanism was really
+//! used; `check` finds a map's unreachable secret and its soft lock;
 //! a recorded run replays to the same state; and Freedoom's E1M1 is finished.
 
 use glam::DVec2;
@@ -46,6 +47,13 @@ fn the_autopilot_rides_a_lift_up_to_the_exit() {
     });
     assert_eq!(lowest, 0.0, "the lift was never called down");
     assert_eq!(highest_feet, 128.0, "the player never rode up");
+}
+
+#[test]
+fn the_autopilot_rides_a_lift_down_by_the_switch_on_it() {
+    let mut lowest_feet = f64::MAX;
+    finish("lift_down", |play| lowest_feet = lowest_feet.min(play.game.player().z));
+    assert_eq!(lowest_feet, 0.0, "the player never rode down");
 }
 
 #[test]
@@ -136,7 +144,7 @@ fn check_finds_the_unreachable_secret_and_the_soft_lock() {
 
 #[test]
 fn check_finds_no_flaw_in_the_mechanism_maps() {
-    for name in ["lift", "remote_door", "key_door", "teleporter", "drop", "crusher"] {
+    for name in ["lift", "lift_down", "remote_door", "key_door", "teleporter", "drop", "crusher"] {
         let level = open_level(&map_path(&format!("tests/maps/autopilot_{name}.ron")), &Default::default()).unwrap();
         let (report, _) = check::check(level, 3);
         assert!(report.exit_reachable, "{name}: {}", report.text());

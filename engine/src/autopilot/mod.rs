@@ -171,6 +171,8 @@ struct Active {
     busy: bool,
     /// A running jump under way.
     leap: Option<leap::Run>,
+    /// The tick the goal was chosen (0 when not known).
+    started: u64,
 }
 
 impl Active {
@@ -189,6 +191,7 @@ impl Active {
             arrived: 0,
             busy: false,
             leap: None,
+            started: 0,
         }
     }
 }
@@ -982,7 +985,8 @@ impl Autopilot {
     /// yet, and of those tried, a once-only walk line the level kept live
     /// (its sectors were busy then) and a switch whose last press started
     /// nothing, once their sectors are still. `confined` (nothing else
-    /// left): any repeatable line tried before, [`MAX_RETAKES`] times.
+    /// left): any repeatable line tried before, [`MAX_RETAKES`] times. No
+    /// line whose sectors are moving now is worth anything until they stop.
     fn trigger_candidates(
         &self,
         game: &Game,
@@ -1006,9 +1010,15 @@ impl Autopilot {
                         && (self.did_nothing.contains(&line)
                             || confined && special.repeat && self.retaken.get(&line).is_none_or(|&n| n < MAX_RETAKES))
                 };
-                if !again || Self::targets_busy(game, line) {
+                if !again {
                     continue;
                 }
+            }
+            // A sector already moving takes no new special: the line would
+            // do nothing now (and walking over a rising crusher's sibling
+            // line to set it off is how a body gets crushed).
+            if Self::targets_busy(game, line) {
+                continue;
             }
             if let crate::map::special::Action::Door { key: Some(k), .. } = special.action {
                 if !keys.contains(&k) {
@@ -1136,7 +1146,8 @@ impl Autopilot {
             }
             self.next_replan = now + REPLAN_EVERY;
             match self.choose(game) {
-                Some(a) => {
+                Some(mut a) => {
+                    a.started = now;
                     let what = match &a.goal {
                         Goal::Use(l) | Goal::Cross(l) | Goal::Shoot(l) => describe(&game.level().compiled.map, *l),
                         Goal::Touch(p, _) => format!("({:.0}, {:.0})", p.x, p.y),
@@ -1357,7 +1368,7 @@ impl Autopilot {
                 centre != nav::NONE
                     && live.floor[centre as usize] < player.z - MAX_STEP
                     && !route.contains(&c)
-                    && !route.iter().any(|&r| self.nav.centre_of(r).distance(p) < CELL * 1.5)
+                    && !route.iter().any(|&r| self.nav.centre_of(r).distance(p) < CELL * 0.75)
             })
         })
     }
@@ -1392,6 +1403,9 @@ impl Autopilot {
             return None;
         }
         a.idle = 0;
+        // The way on is higher than the body can step (a lift it rides has
+        // gone down under it, or not come up yet).
+        let way_up = self.nav.span(next, live).low > player.z + MAX_STEP;
         let mut around = self.nav.touched(next).to_vec();
         around.extend_from_slice(self.nav.touched(a.route.cells[a.at]));
         for s in around {
@@ -1430,10 +1444,14 @@ impl Autopilot {
             let below = live.floor[s] > player.z + 24.0;
             let on = (player.z - live.floor[s]).abs() < 1.0
                 && self.nav.touched(a.route.cells[a.at]).contains(&(s as u32))
-                && !self.mech.lifts[s].is_empty();
+                && !(self.mech.lifts[s].is_empty() && self.mech.lift_down[s].is_empty());
+            if on && way_up && game.world().is_busy(s) {
+                // Riding it: it comes back up by itself.
+                return Some(self.hold(game));
+            }
             let lines = match (below, on) {
                 (true, _) => self.mech.lifts[s].clone(),
-                (false, true) => self.mech.lift_down[s].clone(),
+                (false, true) if !way_up => self.mech.lift_down[s].clone(),
                 _ => Vec::new(),
             };
             if !lines.is_empty() {
@@ -1459,7 +1477,7 @@ impl Autopilot {
                     }
                     if let Some(route) = self.route_to(game, &goal) {
                         self.give_up(&a.goal);
-                        *a = Active::new(goal, Purpose::Lift, route);
+                        *a = Active { started: game.ticks(), ..Active::new(goal, Purpose::Lift, route) };
                         return Some(self.hold(game));
                     }
                 }
@@ -1643,7 +1661,28 @@ impl Autopilot {
                 })
             }
             Goal::Cross(line) => {
-                // The route ends past the line; the crossing is noted.
+                // The route ends past the line, but a body that cut a
+                // corner may have passed beside a short line (the four
+                // 16-unit sides of E3M7's key pad) or stopped short of it
+                // (E3M9's exit pad, within the 20 units that end a route):
+                // until the line is really crossed (`note_crossings`),
+                // line up square in front of it, on whichever side the body
+                // is, and walk across. Walk lines go off either way.
+                let crossed = self.tried.get(&line).is_some_and(|&t| t >= a.started);
+                if !crossed && a.arrived < 105 {
+                    let (_, p, q, _) = line_of(&game.level().compiled.map, line);
+                    let pos = game.player().pos;
+                    let d = (q - p).normalize_or_zero();
+                    let length = (q - p).length();
+                    let inset = length.min(16.0) / 2.0;
+                    let at = p + d * (pos - p).dot(d).clamp(inset, length - inset);
+                    let here = crate::geom::front_distance(p, q, pos);
+                    let over = DVec2::new(d.y, -d.x) * if here > 0.0 { -1.0 } else { 1.0 };
+                    let lined_up = (pos - at).dot(d).abs() <= 3.0;
+                    let target = if lined_up { at + over * 12.0 } else { at - over * 20.0 };
+                    return Some(self.drive_to(game, target, true));
+                }
+                // The crossing is noted.
                 self.tried.insert(line, now);
                 self.settle_until = now + 35;
                 self.next_replan = now + 35;
