@@ -259,12 +259,11 @@ pub struct Autopilot {
     in_sight: u32,
     /// Health was under [`LOW_HEALTH`] last tick.
     low_health: bool,
-    /// Cells within a body and a cell of a teleport line, where the bot
-    /// goes carefully unless its route takes the teleport.
+    /// Cells within a body and a cell of a teleport line: searches keep
+    /// off them where they can (a body that cuts a bend past a line's end
+    /// is sent elsewhere, E2M9), and the bot goes carefully there unless
+    /// its route takes the teleport.
     near_teleport: Vec<bool>,
-    /// Cells near a teleport line that once took the body off a route that
-    /// did not go through it: searches keep off them where they can.
-    wary: Vec<bool>,
     /// Where the body has been, a point every [`TRAIL_STEP`] units, the
     /// newest last: the way back out of a fight going badly.
     trail: Vec<DVec2>,
@@ -318,7 +317,6 @@ impl Autopilot {
             crossed: BTreeMap::new(),
             rechoose: false,
             trail: vec![game.player().pos],
-            wary: vec![false; near_teleport.len()],
             near_teleport,
             low_health: false,
             in_sight: 0,
@@ -601,9 +599,8 @@ impl Autopilot {
         }
     }
 
-    /// The body was teleported: by a line its route did not take (it
-    /// drifted or coasted over it), the cells near that line are kept off
-    /// from now on.
+    /// The body was teleported by a line its route did not take (it
+    /// drifted or coasted over it): logged.
     fn note_teleport(&mut self, game: &Game) {
         let map = &game.level().compiled.map;
         let planned = self.active.as_ref().is_some_and(|a| {
@@ -622,14 +619,7 @@ impl Autopilot {
         if planned || plan::nearest_on(from, a, b).distance(from) > RADIUS + 32.0 {
             return;
         }
-        self.log.push(format!(
-            "tick {}: teleported by {} off the route: kept off from now on",
-            game.ticks(),
-            describe(map, line)
-        ));
-        for c in cells_near_line(&self.nav, map, line) {
-            self.wary[c as usize] = true;
-        }
+        self.log.push(format!("tick {}: teleported by {} off the route", game.ticks(), describe(map, line)));
     }
 
     /// Lines that are used up: set off once and not repeatable.
@@ -820,7 +810,8 @@ impl Autopilot {
         }
         let assumed = self.assume(game);
         let start = self.nav.start_cell(player.pos, player.z, &assumed.heights)?;
-        let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.wary), &game.level().compiled.map);
+        let world =
+            assumed.world(&self.nav, &self.mech, (&self.hurts, &self.near_teleport), &game.level().compiled.map);
         self.search.run(&world, start, None);
         let safe = self.search.reached.iter().copied().find(|&c| {
             self.nav.touched(c).iter().all(|&s| !self.hurts[s as usize] && !self.mech.crushers[s as usize])
@@ -839,7 +830,7 @@ impl Autopilot {
         let assumed = self.assume(game);
         let Assumed { heights, spent, .. } = &assumed;
         let start = self.nav.start_cell(game.player().pos, game.player().z, heights)?;
-        let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.wary), map);
+        let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.near_teleport), map);
         let nav = &self.nav;
         let active = Active::new;
 
@@ -1354,13 +1345,31 @@ impl Autopilot {
     }
 
     /// Would the body, coasting to a stop from its speed now, pass over a
-    /// drop the route does not take? At a run it slides about ten times
-    /// its speed: a bend beside a pit must be taken at a walk.
+    /// drop or a teleport line the route does not take? At a run it slides
+    /// about ten times its speed: a bend beside a pit must be taken at a
+    /// walk.
     fn coasting_off(&self, game: &Game, a: &Active, live: &Heights) -> bool {
         let player = game.player();
         let slide = player.velocity * 10.0;
-        let route = &a.route.cells[a.at..(a.at + 16).min(a.route.cells.len())];
+        let ahead = a.at..(a.at + 16).min(a.route.cells.len());
+        // Over a teleport line's front the route does not take (E2M9: a
+        // run out of a teleporter's arrival, round a bend, back over the
+        // line that sends it there).
+        let map = &game.level().compiled.map;
         let steps = (slide.length() / 8.0).ceil() as usize;
+        if !a.route.teleport[ahead.clone()].iter().any(|&t| t)
+            && self.mech.teleports.keys().any(|&l| {
+                let (_, p, q, _) = line_of(map, l);
+                crate::geom::front_distance(p, q, player.pos) > 0.0
+                    && (1..=steps).any(|i| {
+                        let at = player.pos + slide * (i as f64 / steps as f64);
+                        plan::nearest_on(at, p, q).distance(at) < RADIUS + 8.0
+                    })
+            })
+        {
+            return true;
+        }
+        let route = &a.route.cells[ahead];
         (1..=steps).any(|i| {
             let p = player.pos + slide * (i as f64 / steps as f64);
             self.nav.cell_at(p).is_some_and(|c| {
@@ -1494,7 +1503,7 @@ impl Autopilot {
         let map = &level.compiled.map;
         let assumed = self.assume(game);
         let start = self.nav.start_cell(game.player().pos, game.player().z, &assumed.heights)?;
-        let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.wary), map);
+        let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.near_teleport), map);
         let targets = plan::targets_of(&self.nav, map, goal);
         self.search.run(&world, start, Some(&targets))
     }
@@ -1682,10 +1691,13 @@ impl Autopilot {
                     let target = if lined_up { at + over * 12.0 } else { at - over * 20.0 };
                     return Some(self.drive_to(game, target, true));
                 }
-                // The crossing is noted.
+                // The crossing is noted. A lift called down this way is
+                // boarded at once (it waits three seconds at the bottom);
+                // anything else is given a second to move.
                 self.tried.insert(line, now);
-                self.settle_until = now + 35;
-                self.next_replan = now + 35;
+                let settle = if a.purpose == Purpose::Lift { 0 } else { 35 };
+                self.settle_until = now + settle;
+                self.next_replan = now + settle;
                 None
             }
             Goal::Touch(pos, _) if a.purpose == Purpose::Safety => {
