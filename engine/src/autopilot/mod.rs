@@ -809,7 +809,7 @@ impl Autopilot {
             return None;
         }
         let assumed = self.assume(game);
-        let start = self.nav.start_cell(player.pos, player.z, &assumed.heights)?;
+        let start = self.nav.start_cell(player.pos, player.z, &assumed.heights, |c| assumed.blocked.contains(&c))?;
         let world =
             assumed.world(&self.nav, &self.mech, (&self.hurts, &self.near_teleport), &game.level().compiled.map);
         self.search.run(&world, start, None);
@@ -829,7 +829,8 @@ impl Autopilot {
         let keys = Self::keys_held(game);
         let assumed = self.assume(game);
         let Assumed { heights, spent, .. } = &assumed;
-        let start = self.nav.start_cell(game.player().pos, game.player().z, heights)?;
+        let start =
+            self.nav.start_cell(game.player().pos, game.player().z, heights, |c| assumed.blocked.contains(&c))?;
         let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.near_teleport), map);
         let nav = &self.nav;
         let active = Active::new;
@@ -1502,7 +1503,9 @@ impl Autopilot {
         let level = game.level();
         let map = &level.compiled.map;
         let assumed = self.assume(game);
-        let start = self.nav.start_cell(game.player().pos, game.player().z, &assumed.heights)?;
+        let start = self
+            .nav
+            .start_cell(game.player().pos, game.player().z, &assumed.heights, |c| assumed.blocked.contains(&c))?;
         let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.near_teleport), map);
         let targets = plan::targets_of(&self.nav, map, goal);
         self.search.run(&world, start, Some(&targets))

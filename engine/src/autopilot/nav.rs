@@ -346,8 +346,10 @@ impl NavGrid {
 
     /// The cell a body at `pos` with its feet at `z` is best taken to be
     /// in: the nearest standable one whose floor is within a step of the
-    /// feet (a body pressed against a ledge is not on top of it).
-    pub fn start_cell(&self, pos: DVec2, z: f64, heights: &Heights) -> Option<Cell> {
+    /// feet (a body pressed against a ledge is not on top of it), and not
+    /// one `avoid` names where another will do (a cell a solid thing
+    /// stands on: a body pressed against E4M9's column is beside it).
+    pub fn start_cell(&self, pos: DVec2, z: f64, heights: &Heights, avoid: impl Fn(Cell) -> bool) -> Option<Cell> {
         let q = ((pos - self.origin) / CELL).floor();
         let mut best: Option<(f64, Cell)> = None;
         for dy in -3i64..=3 {
@@ -361,7 +363,8 @@ impl NavGrid {
                     continue;
                 }
                 let span = self.span(c, heights);
-                let off = if z + MAX_STEP < span.low || z > span.high + MAX_STEP { 1e6 } else { 0.0 };
+                let off = if z + MAX_STEP < span.low || z > span.high + MAX_STEP { 1e6 } else { 0.0 }
+                    + if avoid(c) { 1e5 } else { 0.0 };
                 let d = self.centre_of(c).distance_squared(pos) + off;
                 if best.is_none_or(|(b, _)| d < b) {
                     best = Some((d, c));
