@@ -34,7 +34,7 @@ use crate::play::events::Event;
 use crate::play::player::{MAX_STEP, RADIUS};
 use crate::play::sight::{self, Body};
 use crate::play::{Game, TickInput};
-use nav::{Cell, Heights, LineId, NavGrid, CELL, DIRS};
+use nav::{Cell, Heights, LineId, NavGrid, Span, CELL, DIRS};
 use plan::{line_of, Goal, Mechanisms, Purpose, Route, Search, Targets};
 
 /// Ticks between full replans while a route is followed.
@@ -124,6 +124,13 @@ struct Assumed {
 }
 
 impl Assumed {
+    /// The cell the player's body is taken to be in, by these heights,
+    /// beside rather than on a cell a solid thing stands on.
+    fn start(&self, nav: &NavGrid, game: &Game) -> Option<Cell> {
+        let player = game.player();
+        nav.start_cell(player.pos, player.z, &self.heights, |c| self.blocked.contains(&c))
+    }
+
     fn world<'a>(
         &'a self,
         nav: &'a NavGrid,
@@ -171,13 +178,14 @@ struct Active {
     busy: bool,
     /// A running jump under way.
     leap: Option<leap::Run>,
-    /// The tick the goal was chosen (0 when not known).
+    /// The tick the goal was chosen.
     started: u64,
 }
 
 impl Active {
-    /// A route to `goal` just found, nothing done along it yet.
-    fn new(goal: Goal, purpose: Purpose, route: Route) -> Active {
+    /// A route to `goal` just found at tick `started`, nothing done along
+    /// it yet.
+    fn new(goal: Goal, purpose: Purpose, route: Route, started: u64) -> Active {
         Active {
             goal,
             purpose,
@@ -191,7 +199,7 @@ impl Active {
             arrived: 0,
             busy: false,
             leap: None,
-            started: 0,
+            started,
         }
     }
 }
@@ -773,7 +781,7 @@ impl Autopilot {
                 // Not by the lift itself.
                 if !route.cells.iter().any(|&c| self.nav.touched(c).contains(&(lift as u32))) {
                     self.log.push(format!("tick {now}: lift {lift} is up on the way: calling it first"));
-                    return Active::new(goal, Purpose::Lift, route);
+                    return Active::new(goal, Purpose::Lift, route, now);
                 }
             }
             return active;
@@ -809,7 +817,7 @@ impl Autopilot {
             return None;
         }
         let assumed = self.assume(game);
-        let start = self.nav.start_cell(player.pos, player.z, &assumed.heights, |c| assumed.blocked.contains(&c))?;
+        let start = assumed.start(&self.nav, game)?;
         let world =
             assumed.world(&self.nav, &self.mech, (&self.hurts, &self.near_teleport), &game.level().compiled.map);
         self.search.run(&world, start, None);
@@ -820,7 +828,7 @@ impl Autopilot {
         let mut targets = Targets::default();
         targets.add(plan::cells_near(&self.nav, self.nav.centre_of(safe), 1.0));
         let route = self.search.run(&world, start, Some(&targets))?;
-        Some(Active::new(Goal::Touch(self.nav.centre_of(safe), u32::MAX), Purpose::Safety, route))
+        Some(Active::new(Goal::Touch(self.nav.centre_of(safe), u32::MAX), Purpose::Safety, route, game.ticks()))
     }
 
     fn choose_inner(&mut self, game: &Game) -> Option<Active> {
@@ -829,11 +837,10 @@ impl Autopilot {
         let keys = Self::keys_held(game);
         let assumed = self.assume(game);
         let Assumed { heights, spent, .. } = &assumed;
-        let start =
-            self.nav.start_cell(game.player().pos, game.player().z, heights, |c| assumed.blocked.contains(&c))?;
+        let start = assumed.start(&self.nav, game)?;
         let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.near_teleport), map);
         let nav = &self.nav;
-        let active = Active::new;
+        let active = |goal, purpose, route| Active::new(goal, purpose, route, game.ticks());
 
         // Supplies first when they are short and monsters are about.
         if let Some((goal, targets)) = self.supplies(game) {
@@ -1138,8 +1145,7 @@ impl Autopilot {
             }
             self.next_replan = now + REPLAN_EVERY;
             match self.choose(game) {
-                Some(mut a) => {
-                    a.started = now;
+                Some(a) => {
                     let what = match &a.goal {
                         Goal::Use(l) | Goal::Cross(l) | Goal::Shoot(l) => describe(&game.level().compiled.map, *l),
                         Goal::Touch(p, _) => format!("({:.0}, {:.0})", p.x, p.y),
@@ -1297,7 +1303,7 @@ impl Autopilot {
                 );
             }
             if !NavGrid::passable(from, to) {
-                if let Some(input) = self.unblock(game, a, n, &live) {
+                if let Some(input) = self.unblock(game, a, (n, to), &live) {
                     return Some(input);
                 }
             }
@@ -1395,9 +1401,10 @@ impl Autopilot {
         TickInput { forward: i8::from(push), turn: turn as f32, run: !slow, ..Default::default() }
     }
 
-    /// The next move is blocked as the level stands: open the door, call
-    /// the lift, or wait for what is moving.
-    fn unblock(&mut self, game: &Game, a: &mut Active, next: Cell, live: &Heights) -> Option<TickInput> {
+    /// The next move, to cell `next` whose span is `to` as the level
+    /// stands, is blocked: open the door, call the lift, or wait for what
+    /// is moving.
+    fn unblock(&mut self, game: &Game, a: &mut Active, (next, to): (Cell, Span), live: &Heights) -> Option<TickInput> {
         let level = game.level();
         let map = &level.compiled.map;
         let player = game.player();
@@ -1415,7 +1422,7 @@ impl Autopilot {
         a.idle = 0;
         // The way on is higher than the body can step (a lift it rides has
         // gone down under it, or not come up yet).
-        let way_up = self.nav.span(next, live).low > player.z + MAX_STEP;
+        let way_up = to.low > player.z + MAX_STEP;
         let mut around = self.nav.touched(next).to_vec();
         around.extend_from_slice(self.nav.touched(a.route.cells[a.at]));
         for s in around {
@@ -1487,7 +1494,7 @@ impl Autopilot {
                     }
                     if let Some(route) = self.route_to(game, &goal) {
                         self.give_up(&a.goal);
-                        *a = Active { started: game.ticks(), ..Active::new(goal, Purpose::Lift, route) };
+                        *a = Active::new(goal, Purpose::Lift, route, game.ticks());
                         return Some(self.hold(game));
                     }
                 }
@@ -1503,9 +1510,7 @@ impl Autopilot {
         let level = game.level();
         let map = &level.compiled.map;
         let assumed = self.assume(game);
-        let start = self
-            .nav
-            .start_cell(game.player().pos, game.player().z, &assumed.heights, |c| assumed.blocked.contains(&c))?;
+        let start = assumed.start(&self.nav, game)?;
         let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.near_teleport), map);
         let targets = plan::targets_of(&self.nav, map, goal);
         self.search.run(&world, start, Some(&targets))
