@@ -1,6 +1,7 @@
 //! The autopilot: on small maps that each need one mechanism (a lift up, a
 //! lift down by the switch on it, a switch and its remote door, a key and
-//! its door, a teleporter, a one-way drop, a gap to jump at a run) it
+//! its door, a teleporter, a one-way drop, a gap to jump at a run, a
+//! radiation suit before a long wade through nukage) it
 //! reaches the exit through its inputs alone, and the mechanism was really
 //! used; `check` finds a map's unreachable secret and its soft lock;
 //! a recorded run replays to the same state; and Freedoom's E1M1 is finished.
@@ -54,6 +55,18 @@ fn the_autopilot_rides_a_lift_down_by_the_switch_on_it() {
     let mut lowest_feet = f64::MAX;
     finish("lift_down", |play| lowest_feet = lowest_feet.min(play.game.player().z));
     assert_eq!(lowest_feet, 0.0, "the player never rode down");
+}
+
+#[test]
+fn the_autopilot_fetches_a_radiation_suit_before_a_long_wade_through_nukage() {
+    let suit = sightline::play::pickups::power_slot(sightline::actors::Power::IronFeet);
+    let mut suited_in_pool = false;
+    let play = finish("suit", |play| {
+        let p = play.game.player();
+        suited_in_pool |= p.sector == 1 && p.powers[suit] > 0;
+    });
+    assert!(suited_in_pool, "it waded in without the suit");
+    assert!(play.game.player().health > 50, "health {}", play.game.player().health);
 }
 
 #[test]
@@ -144,7 +157,7 @@ fn check_finds_the_unreachable_secret_and_the_soft_lock() {
 
 #[test]
 fn check_finds_no_flaw_in_the_mechanism_maps() {
-    for name in ["lift", "lift_down", "remote_door", "key_door", "teleporter", "drop", "crusher"] {
+    for name in ["lift", "lift_down", "remote_door", "key_door", "teleporter", "drop", "crusher", "suit"] {
         let level = open_level(&map_path(&format!("tests/maps/autopilot_{name}.ron")), &Default::default()).unwrap();
         let (report, _) = check::check(level, 3);
         assert!(report.exit_reachable, "{name}: {}", report.text());

@@ -14,8 +14,10 @@ use std::path::PathBuf;
 
 use glam::DVec2;
 use sightline::actors::KeyForm;
-use sightline::map::special::{Damage, KeyColour, LightEffect, SectorSpecial};
+use sightline::actors::Power;
+use sightline::map::special::{Damage, KeyColour, LightEffect, SectorSpecial, Suit};
 use sightline::play::events::{Event, Origin};
+use sightline::play::pickups::power_slot;
 use sightline::play::player::Key;
 use sightline::play::world::doors::DoorState;
 use sightline::play::world::plats::PlatState;
@@ -617,7 +619,10 @@ fn a_floor_takes_the_switch_lines_front_sectors_texture_and_special_at_once() {
     let mut g = game("floors");
     let bay = tagged(&g, 11);
     let alcove = g.level().map.lines[line_tagged(&g, 11)].front.sector;
-    let damage5 = SectorSpecial { damage: Some(Damage { amount: 5, every: 32, exit_below: 0 }), ..Default::default() };
+    let damage5 = SectorSpecial {
+        damage: Some(Damage { amount: 5, every: 32, exit_below: 0, suit: Default::default() }),
+        ..Default::default()
+    };
     assert_eq!(g.level().map.sectors[alcove].special, damage5);
     assert_eq!(g.level().map.sectors[alcove].floor_texture.as_deref(), Some("GRASS"));
     assert_eq!(g.level().map.sectors[bay].floor_texture.as_deref(), Some("FLOOR"));
@@ -634,8 +639,10 @@ fn a_floor_takes_the_switch_lines_front_sectors_texture_and_special_at_once() {
 
 #[test]
 fn a_floor_takes_the_texture_of_the_neighbour_it_arrives_at_copying_or_clearing_its_special() {
-    let damage =
-        |amount| SectorSpecial { damage: Some(Damage { amount, every: 32, exit_below: 0 }), ..Default::default() };
+    let damage = |amount| SectorSpecial {
+        damage: Some(Damage { amount, every: 32, exit_below: 0, suit: Default::default() }),
+        ..Default::default()
+    };
     // (bay, new texture, special after arrival)
     for (k, texture, special) in [(11u16, "DIRT", damage(10)), (12, "WATER", SectorSpecial::default())] {
         let mut g = game("floors");
@@ -1047,6 +1054,58 @@ fn damage_hurts_every_32_ticks_only_with_the_feet_on_the_floor() {
         health = h;
     }
     assert!((6..=7).contains(&hurts.len()), "{hurts:?}");
+}
+
+/// Ticks idle `ticks` times and returns each hurt the body took.
+fn hurts_over(g: &mut Game, ticks: u32) -> Vec<i32> {
+    let mut health = g.player().health;
+    let mut hurts = Vec::new();
+    for _ in 0..ticks {
+        g.tick(&IDLE);
+        let h = g.player().health;
+        if h != health {
+            hurts.push(health - h);
+        }
+        health = h;
+    }
+    hurts
+}
+
+#[test]
+fn a_radiation_suit_shields_from_nukage_leaks_on_20_floors_and_not_on_the_exit_floor() {
+    let suit = power_slot(Power::IronFeet);
+    // The 10-damage pool: no hurt while the suit lasts, hurts again after.
+    let mut g = game("sector_specials");
+    stand(&mut g, 264.0, 128.0, 0.0);
+    until(&mut g, WALK, 20, |g| g.player().z == -8.0);
+    g.player_mut().powers[suit] = 300;
+    assert_eq!(hurts_over(&mut g, 290), Vec::<i32>::new(), "hurt through the suit");
+    assert!(!hurts_over(&mut g, 100).is_empty(), "no hurt after the suit ran out");
+    // The same pool as a 20 floor (Doom's 4 and 16): through the suit 5
+    // times in 256, so a few hurts of 20 in a long wait, far fewer than bare.
+    let text = std::fs::read_to_string(map("sector_specials")).unwrap();
+    let leaky = text.replace("Damage(amount: 10)", "Damage(amount: 20, suit: Leaks)");
+    assert_ne!(leaky, text);
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("leaky_pool.ron");
+    std::fs::write(&path, leaky).unwrap();
+    let mut g = Game::new(load(&path)).unwrap_or_else(|e| panic!("{e}"));
+    let damage = g.level().map.sectors[1].special.damage;
+    assert_eq!(damage, Some(Damage { amount: 20, every: 32, exit_below: 0, suit: Suit::Leaks }));
+    stand(&mut g, 264.0, 128.0, 0.0);
+    until(&mut g, WALK, 20, |g| g.player().z == -8.0);
+    g.player_mut().powers[suit] = 1_000_000;
+    g.player_mut().health = 100_000;
+    let hurts = hurts_over(&mut g, 32 * 1000);
+    assert!(hurts.iter().all(|&h| h == 20), "{hurts:?}");
+    // 1000 chances at 5/256: about 20 (a binomial's 3 sigma is 13).
+    assert!((5..=40).contains(&hurts.len()), "{} hurts in 1000 chances", hurts.len());
+    // The exit floor (Doom's 11) hurts whatever the player wears.
+    let mut g = game("sector_specials");
+    stand(&mut g, 896.0, 128.0, 0.0);
+    g.player_mut().powers[suit] = 1000;
+    let hurts = hurts_over(&mut g, 64);
+    assert_eq!(hurts, [20, 20]);
 }
 
 #[test]

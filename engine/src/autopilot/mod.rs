@@ -75,6 +75,11 @@ const FIGHT_RANGE: f64 = 1400.0;
 const MELEE_REACH: f64 = 64.0;
 /// Below this health the bot goes for health it can reach.
 const LOW_HEALTH: i32 = 60;
+/// A route whose floors would take this much health (or half what is left)
+/// fetches a radiation suit first, if one is nearer than the goal.
+const SUIT_DOSE: u32 = 30;
+/// Ticks of suit left under which floors that hurt are avoided again.
+const SUIT_MARGIN: i32 = 35 * 5;
 /// A barrel nearer than this on the line of fire stops the bot firing (a
 /// barrel's blast reaches 128 units).
 const BARREL_CLEARANCE: f64 = 192.0;
@@ -364,8 +369,11 @@ impl Autopilot {
         }
         // A floor can come to hurt (a line that copies a neighbour's
         // special as it lowers a floor to nukage).
+        // A suit with a few seconds left shields from all but the floors it
+        // is no use on (its rare leaks are taken).
+        let suited = player.powers[crate::play::pickups::power_slot(crate::actors::Power::IronFeet)] > SUIT_MARGIN;
         for (hurts, sector) in self.hurts.iter_mut().zip(&game.level().compiled.map.sectors) {
-            *hurts = sector.special.damage.is_some();
+            *hurts = sector.special.damage.is_some_and(|d| !suited || d.suit == crate::map::special::Suit::Useless);
         }
         self.mech.settle_lifts(game.level(), |s| game.world().is_busy(s));
         self.bad.retain(|_, until| *until > now);
@@ -715,12 +723,78 @@ impl Autopilot {
     /// Chooses the next goal and the route to it.
     fn choose(&mut self, game: &Game) -> Option<Active> {
         let started = std::time::Instant::now();
-        let chosen = self.choose_inner(game).map(|a| self.call_lift_first(game, a)).or_else(|| self.off_danger(game));
+        let chosen = self
+            .choose_inner(game)
+            .map(|a| self.suit_first(game, a))
+            .map(|a| self.call_lift_first(game, a))
+            .or_else(|| self.off_danger(game));
         let t = started.elapsed().as_secs_f64();
         self.figures.plans += 1;
         self.figures.plan_seconds += t;
         self.figures.worst_plan_seconds = self.figures.worst_plan_seconds.max(t);
         chosen
+    }
+
+    /// A route that wades through more floor that hurts than the body can
+    /// take with health to spare (at a walk, two ticks a cell, and a wait at
+    /// its end): fetch a radiation suit first, when one can be reached for
+    /// less than the route's own cost, and the body wears none.
+    fn suit_first(&mut self, game: &Game, active: Active) -> Active {
+        if matches!(active.purpose, Purpose::Supplies | Purpose::Safety) {
+            return active;
+        }
+        let map = &game.level().compiled.map;
+        let damage = |c: Cell| {
+            self.nav.touched(c).iter().filter_map(|&s| map.sectors[s as usize].special.damage).map(|d| d.amount).max()
+        };
+        // Hurts every 32 ticks, two ticks a cell: a sixteenth of the cells'
+        // damage; and at the end, where it presses and waits for what it
+        // set off, about four hurts more.
+        let cells = &active.route.cells;
+        let hurting = |c: &&Cell| self.hurts_at(**c);
+        let end = cells.last().filter(hurting).and_then(|&c| damage(c)).unwrap_or(0) * 4;
+        let dose = cells.iter().filter(hurting).filter_map(|&c| damage(c)).sum::<u32>() / 16 + end;
+        let health = game.player().health.max(0) as u32;
+        if dose < SUIT_DOSE.min(health / 2) {
+            return active;
+        }
+        let actors = game.actors();
+        let mut targets = Targets::default();
+        let mut suits = Vec::new();
+        for (i, a) in actors.list.iter().enumerate() {
+            let def = &actors.table.actors[a.kind];
+            let shields = def.pickup.as_ref().is_some_and(|p| {
+                p.give.iter().any(|g| matches!(g, crate::actors::Give::Power(crate::actors::Power::IronFeet)))
+            });
+            if shields
+                && !a.removed
+                && !self.unreachable.contains(&(i as u32))
+                && !self.failed(&Goal::Touch(a.pos, i as u32))
+            {
+                targets.add(plan::touch_cells(&self.nav, map, a.pos));
+                suits.push((i as u32, a.pos));
+            }
+        }
+        if suits.is_empty() {
+            return active;
+        }
+        let assumed = self.assume(game);
+        let Some(start) = assumed.start(&self.nav, game) else { return active };
+        let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.near_teleport), map);
+        let Some(route) = self.search.run(&world, start, Some(&targets)).filter(|r| r.cost < active.route.cost) else {
+            return active;
+        };
+        let end = self.nav.centre_of(*route.cells.last().unwrap_or(&start));
+        let Some(&(i, pos)) = suits.iter().min_by(|a, b| a.1.distance(end).total_cmp(&b.1.distance(end))) else {
+            return active;
+        };
+        self.log.push(format!("tick {}: the way wades through about {dose} damage: a suit first", game.ticks()));
+        Active::new(Goal::Touch(pos, i), Purpose::Supplies, route, game.ticks())
+    }
+
+    /// Does standing in `cell` hurt now?
+    fn hurts_at(&self, cell: Cell) -> bool {
+        self.nav.touched(cell).iter().any(|&s| self.hurts[s as usize])
     }
 
     /// A route that boards a lift from below while the lift is up, with no
@@ -777,9 +851,15 @@ impl Autopilot {
                     Some(Activation::Walk) => Goal::Cross(line),
                     _ => continue,
                 };
-                let Some(route) = self.route_to(game, &goal) else { continue };
-                // Not by the lift itself.
-                if !route.cells.iter().any(|&c| self.nav.touched(c).contains(&(lift as u32))) {
+                // The lift stays up until called: the way to its switch
+                // cannot cross it.
+                let up = |h: &mut Heights| (h.low[lift], h.floor[lift]) = (live.floor[lift], live.floor[lift]);
+                let Some(route) = self.route_with(game, &goal, up) else { continue };
+                // Not pressed from by the lift itself (the way there may
+                // run beside it: MAP20's switch is in a slot over the lava
+                // the lift stands in).
+                let pressed_from = route.cells.last().map_or(&[][..], |&c| self.nav.touched(c));
+                if !pressed_from.contains(&(lift as u32)) {
                     self.log.push(format!("tick {now}: lift {lift} is up on the way: calling it first"));
                     return Active::new(goal, Purpose::Lift, route, now);
                 }
@@ -1507,9 +1587,15 @@ impl Autopilot {
 
     /// A route to `goal` from here, with the heights a plan assumes.
     fn route_to(&mut self, game: &Game, goal: &Goal) -> Option<Route> {
+        self.route_with(game, goal, |_| {})
+    }
+
+    /// [`Self::route_to`] with the assumed heights changed by `adjust`.
+    fn route_with(&mut self, game: &Game, goal: &Goal, adjust: impl FnOnce(&mut Heights)) -> Option<Route> {
         let level = game.level();
         let map = &level.compiled.map;
-        let assumed = self.assume(game);
+        let mut assumed = self.assume(game);
+        adjust(&mut assumed.heights);
         let start = assumed.start(&self.nav, game)?;
         let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.near_teleport), map);
         let targets = plan::targets_of(&self.nav, map, goal);

@@ -339,6 +339,32 @@ pub struct Damage {
     /// (Doom's type 11, E1M8's exit floor); 0 never does.
     #[serde(default, skip_serializing_if = "is_zero_u32")]
     pub exit_below: u32,
+    /// What a radiation suit does against it.
+    #[serde(default, skip_serializing_if = "Suit::is_default")]
+    pub suit: Suit,
+}
+
+/// What a radiation suit does against a damaging floor. Doom's suit shields
+/// from its 5 and 10 floors, lets its 20 floors through now and then
+/// ([`SUIT_LEAK`] hurts in 256), and does nothing on E1M8's exit floor.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum Suit {
+    /// No hurt while the suit lasts.
+    #[default]
+    Shields,
+    /// A hurt only when a random byte is below [`SUIT_LEAK`].
+    Leaks,
+    /// The floor hurts as if there were no suit.
+    Useless,
+}
+
+/// Doom's chance, in 256, that a 20-damage floor hurts through the suit.
+pub const SUIT_LEAK: u8 = 5;
+
+impl Suit {
+    fn is_default(&self) -> bool {
+        *self == Suit::Shields
+    }
 }
 
 /// A timed door in a sector (Doom's types 10 and 14).

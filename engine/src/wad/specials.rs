@@ -9,8 +9,8 @@
 use crate::map::source::LineSpecialSource;
 use crate::map::special::{
     Action, Activation, CeilingTarget, Change, ChangeFrom, Damage, DoorKind, DoorTimer, FloorTarget, KeyColour,
-    LightChange, LightEffect, Scroll, SectorSpecial, SpecialChange, Who, DOOR_SHUT, DOOR_SPEED, DOOR_WAIT, FLOOR_SPEED,
-    LIFT_SPEED, LIFT_WAIT, PERPETUAL_SPEED, STAIR_SPEED, STAIR_STEP,
+    LightChange, LightEffect, Scroll, SectorSpecial, SpecialChange, Suit, Who, DOOR_SHUT, DOOR_SPEED, DOOR_WAIT,
+    FLOOR_SPEED, LIFT_SPEED, LIFT_WAIT, PERPETUAL_SPEED, STAIR_SPEED, STAIR_STEP,
 };
 
 /// What a line special number comes to.
@@ -373,7 +373,11 @@ fn generalized(number: u16, tag: u16) -> Result<Effect, String> {
 pub fn sector_special(number: i16) -> Result<SectorSpecial, String> {
     let n = number as u16;
     let mut s = SectorSpecial::default();
-    let damage = |amount| Some(Damage { amount, every: 32, exit_below: 0 });
+    // Doom's suit shields from 5 and 10 and lets 20 through now and then.
+    let damage = |amount| {
+        let suit = if amount >= 20 { Suit::Leaks } else { Suit::Shields };
+        Some(Damage { amount, every: 32, exit_below: 0, suit })
+    };
     s.light = match n & 31 {
         1 => Some(LightEffect::BlinkRandom),
         2 | 4 => Some(LightEffect::StrobeFast),
@@ -391,7 +395,7 @@ pub fn sector_special(number: i16) -> Result<SectorSpecial, String> {
         7 => s.damage = damage(5),
         9 => s.secret = true,
         10 => s.timer = Some(DoorTimer::CloseIn30s),
-        11 => s.damage = Some(Damage { amount: 20, every: 32, exit_below: 10 }),
+        11 => s.damage = Some(Damage { amount: 20, every: 32, exit_below: 10, suit: Suit::Useless }),
         14 => s.timer = Some(DoorTimer::RaiseIn5Min),
         // Name the number the WAD holds: for a Boom generalized type (32 and
         // up) the bad part is only its low five bits.

@@ -418,7 +418,7 @@ secret room level with the first, and an exit floor (Doom's sector type 11).
                     label="Nukage pool, floor -8: 10 damage every 32 ticks")
     secret = m.sector(0, 128, 176, "TILE", special="SectorSpecial(secret: true)", label="Secret room")
     exit_floor = m.sector(0, 128, 96, "DIRT",
-                          special="SectorSpecial(damage: Damage(amount: 20, exit_below: 10))",
+                          special="SectorSpecial(damage: Damage(amount: 20, exit_below: 10, suit: Useless))",
                           label="Exit floor: 20 damage every 32 ticks, the level ends at 10 health or less")
     m.region(room, rect(0, 0, 256, 256))
     m.region(pool, rect(256, 0, 512, 256))

@@ -1,13 +1,16 @@
 //! Sector specials (Doom's P_SpawnSpecials and P_PlayerInSpecialSector):
 //! the light effects and door timers that start with the level, and what a
 //! sector does to the player standing on its floor: damage every 32 ticks,
-//! a secret counted the first time.
+//! a secret counted the first time. A radiation suit shields from damage
+//! as the floor's [`Suit`] says.
 
 use super::doors::{Door, DoorState};
 use super::lights::Light;
 use super::{say, Ctx, Exit, Thinker, World};
+use crate::actors::Power;
 use crate::level::Level;
-use crate::map::special::{DoorKind, DoorTimer, DOOR_SHUT, DOOR_SPEED, DOOR_WAIT};
+use crate::map::special::{DoorKind, DoorTimer, Suit, DOOR_SHUT, DOOR_SPEED, DOOR_WAIT, SUIT_LEAK};
+use crate::play::pickups::power_slot;
 use crate::play::random::GameRng;
 
 /// Ticks before a sector's timed door acts (Doom: 30 s and 5 minutes).
@@ -43,7 +46,16 @@ pub fn player_in_sector(world: &mut World, ctx: &mut Ctx) {
         return;
     }
     if let Some(damage) = s.special.damage {
-        if ctx.time % u64::from(damage.every) == 0 {
+        let suited = player.powers[power_slot(Power::IronFeet)] > 0;
+        // A suit's leak draws its random byte only when a hurt is due.
+        let due = ctx.time % u64::from(damage.every) == 0;
+        let hurts = !suited
+            || match damage.suit {
+                Suit::Shields => false,
+                Suit::Leaks => due && ctx.rng.byte() < SUIT_LEAK,
+                Suit::Useless => true,
+            };
+        if due && hurts {
             player.hurt(damage.amount as i32);
             if damage.exit_below > 0 && player.health <= damage.exit_below as i32 {
                 *ctx.exit = Some(Exit::Normal);

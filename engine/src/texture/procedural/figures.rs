@@ -365,6 +365,20 @@ const ITEMS: &[(&str, fn() -> Texture)] = &[
         cross(&mut p, 6.0, 6.1, 4.0);
         item(&p, (28, 20))
     }),
+    ("SUITA0", || {
+        // The radiation suit, hung up empty: boots, legs, body, arms, a
+        // hood with a dark visor.
+        let (green, dark) = (hex(0x4a9a3a), hex(0x2e6a26));
+        let mut p = vec![Part::block(Vec3::new(0.0, 0.0, 30.0), Vec3::new(3.5, 7.0, 9.0), green)];
+        for side in [-1.0, 1.0] {
+            p.push(Part::limb(Vec3::new(0.0, 3.5 * side, 2.0), Vec3::new(0.0, 3.5 * side, 21.0), 2.6, green));
+            p.push(Part::block(Vec3::new(1.0, 3.5 * side, 1.5), Vec3::new(3.5, 2.8, 1.5), hex(0x303030)));
+            p.push(Part::limb(Vec3::new(0.0, 8.5 * side, 37.0), Vec3::new(0.5, 9.5 * side, 22.0), 2.0, green));
+        }
+        p.push(Part::limb(Vec3::new(0.0, 0.0, 42.0), Vec3::new(0.0, 0.0, 44.0), 4.2, dark));
+        p.push(Part::block(Vec3::new(3.6, 0.0, 43.0), Vec3::new(0.5, 2.6, 1.6), hex(0x1c2024)).shiny(0.9));
+        item(&p, (26, 50))
+    }),
     ("BON1A0", || bonus_flask(0.0)),
     ("BON1B0", || bonus_flask(0.33)),
     ("BON1C0", || bonus_flask(0.66)),
