@@ -80,6 +80,8 @@ const LOW_HEALTH: i32 = 60;
 const SUIT_DOSE: u32 = 30;
 /// Ticks of suit left under which floors that hurt are avoided again.
 const SUIT_MARGIN: i32 = 35 * 5;
+/// Cells within this of where the body fell off a ledge are wary.
+const FALL_WARY: f64 = 24.0;
 /// A barrel nearer than this on the line of fire stops the bot firing (a
 /// barrel's blast reaches 128 units).
 const BARREL_CLEARANCE: f64 = 192.0;
@@ -272,11 +274,12 @@ pub struct Autopilot {
     in_sight: u32,
     /// Health was under [`LOW_HEALTH`] last tick.
     low_health: bool,
-    /// Cells within a body and a cell of a teleport line: searches keep
-    /// off them where they can (a body that cuts a bend past a line's end
-    /// is sent elsewhere, E2M9), and the bot goes carefully there unless
-    /// its route takes the teleport.
-    near_teleport: Vec<bool>,
+    /// Cells to keep off where a search can, and to go carefully on: those
+    /// within a body and a cell of a teleport line (a body that cuts a bend
+    /// past a line's end is sent elsewhere, E2M9; unless the route takes
+    /// the teleport), and those around where the body fell off a ledge
+    /// (MAP20's walkway over lava, whose way back up is a teleporter).
+    wary: Vec<bool>,
     /// Where the body has been, a point every [`TRAIL_STEP`] units, the
     /// newest last: the way back out of a fight going badly.
     trail: Vec<DVec2>,
@@ -292,10 +295,10 @@ impl Autopilot {
         let mut mech = Mechanisms::of(level);
         mech.locate_doors(&nav, map, Some(&Self::keys_held(game)));
         let hurts = map.sectors.iter().map(|s| s.special.damage.is_some()).collect();
-        let mut near_teleport = vec![false; nav.cells()];
+        let mut wary = vec![false; nav.cells()];
         for &l in mech.teleports.keys() {
             for c in cells_near_line(&nav, map, l) {
-                near_teleport[c as usize] = true;
+                wary[c as usize] = true;
             }
         }
         Autopilot {
@@ -330,7 +333,7 @@ impl Autopilot {
             crossed: BTreeMap::new(),
             rechoose: false,
             trail: vec![game.player().pos],
-            near_teleport,
+            wary,
             low_health: false,
             in_sight: 0,
             barrel_near: false,
@@ -780,7 +783,7 @@ impl Autopilot {
         }
         let assumed = self.assume(game);
         let Some(start) = assumed.start(&self.nav, game) else { return active };
-        let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.near_teleport), map);
+        let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.wary), map);
         let Some(route) = self.search.run(&world, start, Some(&targets)).filter(|r| r.cost < active.route.cost) else {
             return active;
         };
@@ -898,8 +901,7 @@ impl Autopilot {
         }
         let assumed = self.assume(game);
         let start = assumed.start(&self.nav, game)?;
-        let world =
-            assumed.world(&self.nav, &self.mech, (&self.hurts, &self.near_teleport), &game.level().compiled.map);
+        let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.wary), &game.level().compiled.map);
         self.search.run(&world, start, None);
         let safe = self.search.reached.iter().copied().find(|&c| {
             self.nav.touched(c).iter().all(|&s| !self.hurts[s as usize] && !self.mech.crushers[s as usize])
@@ -918,7 +920,7 @@ impl Autopilot {
         let assumed = self.assume(game);
         let Assumed { heights, spent, .. } = &assumed;
         let start = assumed.start(&self.nav, game)?;
-        let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.near_teleport), map);
+        let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.wary), map);
         let nav = &self.nav;
         let active = |goal, purpose, route| Active::new(goal, purpose, route, game.ticks());
 
@@ -1333,6 +1335,15 @@ impl Autopilot {
         let live = live_heights(map);
         let near = &cells[a.at..(a.at + 3).min(cells.len())];
         if player.on_ground() && near.iter().all(|&x| player.z + MAX_STEP < self.nav.span(x, &live).low) {
+            // The ledge it fell from, and its neighbourhood, are kept off
+            // and walked carefully from now on.
+            let around =
+                cells[a.at.saturating_sub(2)..(a.at + 3).min(cells.len())].iter().map(|&c| self.nav.centre_of(c));
+            for p in around.chain([pos]) {
+                for c in self.nav.cells_in_box(p - DVec2::splat(FALL_WARY), p + DVec2::splat(FALL_WARY)) {
+                    self.wary[c as usize] = true;
+                }
+            }
             if let Some(&n) = cells.get(a.at + 1) {
                 if let Some(d) = (0..8).find(|&d| self.nav.neighbour(cells[a.at], d) == Some(n)) {
                     self.bad.insert(cells[a.at] * 8 + d as u32, now + 35 * 30);
@@ -1408,8 +1419,8 @@ impl Autopilot {
         // A teleport line the route does not take, close by: go carefully
         // (a body that drifts over it is somewhere else).
         let teleporting = a.route.teleport[a.at..(a.at + 5).min(cells.len())].iter().any(|&t| t);
-        let near_teleport = !teleporting && soon.iter().any(|&x| self.near_teleport[x as usize]);
-        let ahead = if a.idle > STUCK_TICKS / 2 || on_ledge || near_teleport { 1 } else { 3 };
+        let wary = !teleporting && soon.iter().any(|&x| self.wary[x as usize]);
+        let ahead = if a.idle > STUCK_TICKS / 2 || on_ledge || wary { 1 } else { 3 };
         let mut k = a.at + 1;
         while k < last
             && k < a.at + ahead
@@ -1428,7 +1439,7 @@ impl Autopilot {
             let dir = via.map_or(DVec2::ZERO, |d| DVec2::new(DIRS[d].0 as f64, DIRS[d].1 as f64));
             target = self.nav.centre_of(before) + dir * CELL * 1.5;
         }
-        Some(self.drive_to(game, target, k == last || ahead == 1 || near_teleport))
+        Some(self.drive_to(game, target, k == last || ahead == 1 || wary))
     }
 
     /// Would the body, coasting to a stop from its speed now, pass over a
@@ -1597,7 +1608,7 @@ impl Autopilot {
         let mut assumed = self.assume(game);
         adjust(&mut assumed.heights);
         let start = assumed.start(&self.nav, game)?;
-        let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.near_teleport), map);
+        let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.wary), map);
         let targets = plan::targets_of(&self.nav, map, goal);
         self.search.run(&world, start, Some(&targets))
     }
