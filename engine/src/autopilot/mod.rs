@@ -370,11 +370,11 @@ impl Autopilot {
         if self.last_pos.distance(player.pos) > 64.0 {
             self.note_teleport(game);
         }
-        // A floor can come to hurt (a line that copies a neighbour's
-        // special as it lowers a floor to nukage).
         // A suit with a few seconds left shields from all but the floors it
         // is no use on (its rare leaks are taken).
         let suited = player.powers[crate::play::pickups::power_slot(crate::actors::Power::IronFeet)] > SUIT_MARGIN;
+        // A floor can come to hurt (a line that copies a neighbour's
+        // special as it lowers a floor to nukage).
         for (hurts, sector) in self.hurts.iter_mut().zip(&game.level().compiled.map.sectors) {
             *hurts = sector.special.damage.is_some_and(|d| !suited || d.suit == crate::map::special::Suit::Useless);
         }
@@ -755,8 +755,8 @@ impl Autopilot {
         // set off, about four hurts more.
         let cells = &active.route.cells;
         let hurting = |c: &&Cell| self.hurts_at(**c);
-        let end = cells.last().filter(hurting).and_then(|&c| damage(c)).unwrap_or(0) * 4;
-        let dose = cells.iter().filter(hurting).filter_map(|&c| damage(c)).sum::<u32>() / 16 + end;
+        let wait = cells.last().filter(hurting).and_then(|&c| damage(c)).unwrap_or(0) * 4;
+        let dose = cells.iter().filter(hurting).filter_map(|&c| damage(c)).sum::<u32>() / 16 + wait;
         let health = game.player().health.max(0) as u32;
         if dose < SUIT_DOSE.min(health / 2) {
             return active;
