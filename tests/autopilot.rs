@@ -1,7 +1,8 @@
 //! The autopilot: on small maps that each need one mechanism (a lift up, a
 //! lift down by the switch on it, a switch and its remote door, a key and
 //! its door, a teleporter, a one-way drop, a gap to jump at a run, a
-//! radiation suit before a long wade through nukage) it
+//! radiation suit before a long wade through nukage, health before a
+//! shorter one it would not live through) it
 //! reaches the exit through its inputs alone, and the mechanism was really
 //! used; `check` finds a map's unreachable secret and its soft lock;
 //! a recorded run replays to the same state; and Freedoom's E1M1 is finished.
@@ -67,6 +68,23 @@ fn the_autopilot_fetches_a_radiation_suit_before_a_long_wade_through_nukage() {
     });
     assert!(suited_in_pool, "it waded in without the suit");
     assert!(play.game.player().health > 50, "health {}", play.game.player().health);
+}
+
+#[test]
+fn the_autopilot_fetches_health_before_a_wade_it_would_not_live_through() {
+    let options = GameOptions { no_monsters: true, ..GameOptions::default() };
+    let mut play = Playthrough::of(&map("heal"), options).unwrap_or_else(|e| panic!("{e}"));
+    play.game.player_mut().health = 30;
+    let mut healed_before_pool = false;
+    let (outcome, bot) = autopilot::run(&mut play, 35 * 60, |play, _| {
+        let p = play.game.player();
+        healed_before_pool |= p.sector == 0 && p.health > 30;
+        true
+    })
+    .unwrap_or_else(|e| panic!("{e}"));
+    let why = format!("died: {}, after {} ticks", outcome.died, outcome.inputs.len());
+    assert_eq!(outcome.exit, Some(Exit::Normal), "did not exit ({why})\n{}", bot.log.join("\n"));
+    assert!(healed_before_pool, "it waded in at 30 health");
 }
 
 #[test]
@@ -157,7 +175,7 @@ fn check_finds_the_unreachable_secret_and_the_soft_lock() {
 
 #[test]
 fn check_finds_no_flaw_in_the_mechanism_maps() {
-    for name in ["lift", "lift_down", "remote_door", "key_door", "teleporter", "drop", "crusher", "suit"] {
+    for name in ["lift", "lift_down", "remote_door", "key_door", "teleporter", "drop", "crusher", "suit", "heal"] {
         let level = open_level(&map_path(&format!("tests/maps/autopilot_{name}.ron")), &Default::default()).unwrap();
         let (report, _) = check::check(level, 3);
         assert!(report.exit_reachable, "{name}: {}", report.text());

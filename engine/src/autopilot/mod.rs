@@ -741,7 +741,8 @@ impl Autopilot {
     /// A route that wades through more floor that hurts than the body can
     /// take with health to spare (at a walk, two ticks a cell, and a wait at
     /// its end): fetch a radiation suit first, when one can be reached for
-    /// less than the route's own cost, and the body wears none.
+    /// less than the route's own cost, and the body wears none; a wade it
+    /// would not live through fetches a suit or health from however far.
     fn suit_first(&mut self, game: &Game, active: Active) -> Active {
         if matches!(active.purpose, Purpose::Supplies | Purpose::Safety) {
             return active;
@@ -761,13 +762,20 @@ impl Autopilot {
         if dose < SUIT_DOSE.min(health / 2) {
             return active;
         }
+        // A wade it would not live through: health will do as well, from
+        // however far.
+        let lethal = dose + 5 >= health;
         let actors = game.actors();
         let mut targets = Targets::default();
         let mut suits = Vec::new();
         for (i, a) in actors.list.iter().enumerate() {
             let def = &actors.table.actors[a.kind];
             let shields = def.pickup.as_ref().is_some_and(|p| {
-                p.give.iter().any(|g| matches!(g, crate::actors::Give::Power(crate::actors::Power::IronFeet)))
+                p.give.iter().any(|g| match g {
+                    crate::actors::Give::Power(crate::actors::Power::IronFeet) => true,
+                    crate::actors::Give::Health { .. } => lethal,
+                    _ => false,
+                })
             });
             if shields
                 && !a.removed
@@ -784,7 +792,9 @@ impl Autopilot {
         let assumed = self.assume(game);
         let Some(start) = assumed.start(&self.nav, game) else { return active };
         let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.wary), map);
-        let Some(route) = self.search.run(&world, start, Some(&targets)).filter(|r| r.cost < active.route.cost) else {
+        let Some(route) =
+            self.search.run(&world, start, Some(&targets)).filter(|r| lethal || r.cost < active.route.cost)
+        else {
             return active;
         };
         let end = self.nav.centre_of(*route.cells.last().unwrap_or(&start));
