@@ -26,9 +26,15 @@ fn map(name: &str) -> MapRef {
 
 /// Plays `name` without monsters until the exit (at most a minute of game
 /// time), calling `watch` after every tick; panics unless it exits.
-fn finish(name: &str, mut watch: impl FnMut(&Playthrough)) -> Playthrough {
+fn finish(name: &str, watch: impl FnMut(&Playthrough)) -> Playthrough {
+    finish_from(name, |_| {}, watch)
+}
+
+/// [`finish`] with the game changed by `setup` before the bot starts.
+fn finish_from(name: &str, setup: impl FnOnce(&mut Playthrough), mut watch: impl FnMut(&Playthrough)) -> Playthrough {
     let options = GameOptions { no_monsters: true, ..GameOptions::default() };
     let mut play = Playthrough::of(&map(name), options).unwrap_or_else(|e| panic!("{e}"));
+    setup(&mut play);
     let (outcome, bot) = autopilot::run(&mut play, 35 * 60, |play, _| {
         watch(play);
         true
@@ -72,18 +78,15 @@ fn the_autopilot_fetches_a_radiation_suit_before_a_long_wade_through_nukage() {
 
 #[test]
 fn the_autopilot_fetches_health_before_a_wade_it_would_not_live_through() {
-    let options = GameOptions { no_monsters: true, ..GameOptions::default() };
-    let mut play = Playthrough::of(&map("heal"), options).unwrap_or_else(|e| panic!("{e}"));
-    play.game.player_mut().health = 30;
     let mut healed_before_pool = false;
-    let (outcome, bot) = autopilot::run(&mut play, 35 * 60, |play, _| {
-        let p = play.game.player();
-        healed_before_pool |= p.sector == 0 && p.health > 30;
-        true
-    })
-    .unwrap_or_else(|e| panic!("{e}"));
-    let why = format!("died: {}, after {} ticks", outcome.died, outcome.inputs.len());
-    assert_eq!(outcome.exit, Some(Exit::Normal), "did not exit ({why})\n{}", bot.log.join("\n"));
+    finish_from(
+        "heal",
+        |play| play.game.player_mut().health = 30,
+        |play| {
+            let p = play.game.player();
+            healed_before_pool |= p.sector == 0 && p.health > 30;
+        },
+    );
     assert!(healed_before_pool, "it waded in at 30 health");
 }
 

@@ -728,7 +728,7 @@ impl Autopilot {
         let started = std::time::Instant::now();
         let chosen = self
             .choose_inner(game)
-            .map(|a| self.suit_first(game, a))
+            .map(|a| self.protection_first(game, a))
             .map(|a| self.call_lift_first(game, a))
             .or_else(|| self.off_danger(game));
         let t = started.elapsed().as_secs_f64();
@@ -743,7 +743,7 @@ impl Autopilot {
     /// its end): fetch a radiation suit first, when one can be reached for
     /// less than the route's own cost, and the body wears none; a wade it
     /// would not live through fetches a suit or health from however far.
-    fn suit_first(&mut self, game: &Game, active: Active) -> Active {
+    fn protection_first(&mut self, game: &Game, active: Active) -> Active {
         if matches!(active.purpose, Purpose::Supplies | Purpose::Safety) {
             return active;
         }
@@ -767,26 +767,26 @@ impl Autopilot {
         let lethal = dose + 5 >= health;
         let actors = game.actors();
         let mut targets = Targets::default();
-        let mut suits = Vec::new();
+        let mut wanted = Vec::new();
         for (i, a) in actors.list.iter().enumerate() {
             let def = &actors.table.actors[a.kind];
-            let shields = def.pickup.as_ref().is_some_and(|p| {
+            let helps = def.pickup.as_ref().is_some_and(|p| {
                 p.give.iter().any(|g| match g {
                     crate::actors::Give::Power(crate::actors::Power::IronFeet) => true,
                     crate::actors::Give::Health { .. } => lethal,
                     _ => false,
                 })
             });
-            if shields
+            if helps
                 && !a.removed
                 && !self.unreachable.contains(&(i as u32))
                 && !self.failed(&Goal::Touch(a.pos, i as u32))
             {
                 targets.add(plan::touch_cells(&self.nav, map, a.pos));
-                suits.push((i as u32, a.pos));
+                wanted.push((i as u32, a.pos));
             }
         }
-        if suits.is_empty() {
+        if wanted.is_empty() {
             return active;
         }
         let assumed = self.assume(game);
@@ -798,10 +798,11 @@ impl Autopilot {
             return active;
         };
         let end = self.nav.centre_of(*route.cells.last().unwrap_or(&start));
-        let Some(&(i, pos)) = suits.iter().min_by(|a, b| a.1.distance(end).total_cmp(&b.1.distance(end))) else {
+        let Some(&(i, pos)) = wanted.iter().min_by(|a, b| a.1.distance(end).total_cmp(&b.1.distance(end))) else {
             return active;
         };
-        self.log.push(format!("tick {}: the way wades through about {dose} damage: a suit first", game.ticks()));
+        let what = &actors.table.actors[actors.list[i as usize].kind].name;
+        self.log.push(format!("tick {}: the way wades through about {dose} damage: {what} first", game.ticks()));
         Active::new(Goal::Touch(pos, i), Purpose::Supplies, route, game.ticks())
     }
 

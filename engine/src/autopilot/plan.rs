@@ -31,7 +31,8 @@ const OVER_DROP_COST: u32 = 100;
 /// Cost of a straight and a diagonal move.
 const STRAIGHT: u32 = 10;
 const DIAGONAL: u32 = 14;
-/// Extra cost of a cell near a teleport line (within 32 units).
+/// Extra cost of a wary cell: near a teleport line (within 32 units), or
+/// where the body once fell off a ledge.
 const WARY_COST: u32 = 60;
 /// Extra cost of walking onto a lift over a line that calls it down (the
 /// ride down and the wait for it to come back): some 20 cells.
@@ -389,8 +390,8 @@ pub struct World<'a> {
     /// Manual doors shut now (the heights assume them open): they can be
     /// entered only from a cell they can be opened from.
     pub shut: &'a [bool],
-    /// Per cell (or none at all): near a teleport line; such cells cost
-    /// more, so routes not taking the teleport keep clear of it.
+    /// Per cell (or none at all): near a teleport line or where the body
+    /// fell off a ledge; such cells cost more, so routes keep clear.
     pub wary: &'a [bool],
 }
 
