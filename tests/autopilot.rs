@@ -1,6 +1,7 @@
 //! The autopilot: on small maps that each need one mechanism (a lift up, a
 //! lift down by the switch on it, a switch and its remote door, a key and
-//! its door, a teleporter, a one-way drop, a gap to jump at a run, a
+//! its door, a teleporter, a one-way drop, a gap to jump at a run, a stair
+//! of steps narrower than its grid, a gap as wide as the body to go round, a
 //! radiation suit before a long wade through nukage, health before a
 //! shorter one it would not live through) it
 //! reaches the exit through its inputs alone, and the mechanism was really
@@ -143,6 +144,25 @@ fn the_autopilot_clears_a_gap_with_a_running_jump() {
 }
 
 #[test]
+fn the_autopilot_climbs_a_stair_of_steps_narrower_than_a_cell() {
+    let mut feet = vec![0.0f64];
+    let play = finish("stair", |play| feet.push(play.game.player().z));
+    let rise = feet.windows(2).map(|w| w[1] - w[0]).fold(0.0f64, f64::max);
+    assert!(rise <= 24.0, "a climb of {rise} in one tick: not a step at a time");
+    assert_eq!(play.game.player().z, 144.0);
+}
+
+#[test]
+fn the_autopilot_goes_round_a_gap_the_body_wedges_in() {
+    let gap = DVec2::new(368.0, 256.0);
+    let mut nearest = f64::MAX;
+    let play = finish("wedge", |play| nearest = nearest.min(play.game.player().pos.distance(gap)));
+    assert!(nearest > 32.0, "the body went for the 32-unit gap (within {nearest:.1} of it)");
+    // The way round is about 1,500 units: a run, not a wait at the gap.
+    assert!(play.game.ticks() < 35 * 8, "{} ticks", play.game.ticks());
+}
+
+#[test]
 fn the_autopilot_passes_under_a_crusher_unhurt() {
     let mut lowest = f64::MAX;
     let mut least_health = i32::MAX;
@@ -178,7 +198,19 @@ fn check_finds_the_unreachable_secret_and_the_soft_lock() {
 
 #[test]
 fn check_finds_no_flaw_in_the_mechanism_maps() {
-    for name in ["lift", "lift_down", "remote_door", "key_door", "teleporter", "drop", "crusher", "suit", "heal"] {
+    for name in [
+        "lift",
+        "lift_down",
+        "remote_door",
+        "key_door",
+        "teleporter",
+        "drop",
+        "stair",
+        "wedge",
+        "crusher",
+        "suit",
+        "heal",
+    ] {
         let level = open_level(&map_path(&format!("tests/maps/autopilot_{name}.ron")), &Default::default()).unwrap();
         let (report, _) = check::check(level, 3);
         assert!(report.exit_reachable, "{name}: {}", report.text());

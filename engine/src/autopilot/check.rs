@@ -402,7 +402,7 @@ fn forward_edges(
                     edges.push((a, leap.to, Vec::new()));
                 }
             }
-            if solid.contains(&b) || !NavGrid::passable(from, to) {
+            if solid.contains(&b) || !nav.climbable(a, d, from, to, heights) {
                 continue;
             }
             let mut to = b;

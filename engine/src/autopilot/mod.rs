@@ -1404,7 +1404,10 @@ impl Autopilot {
                     a.idle
                 );
             }
-            if !NavGrid::passable(from, to) {
+            let climbable = (0..8)
+                .find(|&d| self.nav.neighbour(c, d) == Some(n))
+                .map_or(NavGrid::passable(from, to), |d| self.nav.climbable(c, d, from, to, &live));
+            if !climbable {
                 if let Some(input) = self.unblock(game, a, (n, to), &live) {
                     return Some(input);
                 }

@@ -24,6 +24,12 @@ pub const CELL: f64 = 16.0;
 pub const CLEAR: f64 = 7.5;
 /// Walls nearer than this make a cell cost more to pass.
 const ROOMY: f64 = 32.0;
+/// Points between two cells' centres at which a move over steps narrower
+/// than a cell is followed (a quarter of a straight move apart).
+const RAMP_POINTS: usize = 3;
+/// A gap between solid walls narrower than the body's width and this much
+/// more wedges it: its circle cannot be centred in it exactly enough.
+const WEDGE: f64 = 1.5;
 /// A cell index.
 pub type Cell = u32;
 /// No sector (outside the map).
@@ -96,6 +102,109 @@ pub fn inside(compiled: &CompiledMap, p: DVec2) -> Option<usize> {
     segs.iter().all(|s| crate::geom::front_distance(s.v1, s.v2, p) >= 0.0).then_some(leaf.sector)
 }
 
+/// What a body's circle centred at a point meets: see [`survey`].
+struct Survey {
+    /// The sector under the centre.
+    sector: u32,
+    /// The centre is far enough from every solid wall to be stood on.
+    clear: bool,
+    /// How far the nearest solid wall is, up to [`ROOMY`].
+    room: f64,
+}
+
+/// The body's circle centred at `p`: the sectors it overlaps (into
+/// `found`, sorted, the one under the centre among them), and whether it
+/// can stand there. `None` outside the map.
+fn survey(
+    compiled: &CompiledMap,
+    blockmap: &Blockmap,
+    query: &mut LineQuery,
+    p: DVec2,
+    found: &mut Vec<u32>,
+) -> Option<Survey> {
+    let map = &compiled.map;
+    let sector = inside(compiled, p)?;
+    let r = DVec2::splat(ROOMY);
+    let near = query.run(blockmap, map.lines.len(), p - r, p + r);
+    found.clear();
+    found.push(sector as u32);
+    let solid = |line: &crate::map::Line| line.back.is_none() || line.flags.impassable;
+    // The nearest solid wall: the body is pushed off it, so whatever
+    // is across from it must leave room for the whole body.
+    let mut room = ROOMY;
+    let mut wall_at = p;
+    for &i in near {
+        let line = &map.lines[i as usize];
+        if solid(line) {
+            let (a, b) = map.line_points(line);
+            let q = crate::autopilot::plan::nearest_on(p, a, b);
+            if q.distance(p) < room {
+                room = q.distance(p);
+                wall_at = q;
+            }
+        }
+    }
+    let mut clear = room >= CLEAR;
+    // How far across from that wall the body reaches (and a unit
+    // more: a gap exactly as wide as the body stops it, its circle
+    // wedged between the two sides).
+    let across = |q: DVec2| {
+        if room < RADIUS && (q - p).dot(wall_at - p) < 0.0 {
+            2.0 * RADIUS - room + 1.0
+        } else {
+            RADIUS
+        }
+    };
+    for &i in near {
+        let line = &map.lines[i as usize];
+        let (a, b) = map.line_points(line);
+        let q = crate::autopilot::plan::nearest_on(p, a, b);
+        let d = q.distance(p);
+        if solid(line) {
+            // A solid line keeps the body off it (what is behind it
+            // is never under the body), and two too close on either
+            // side leave no room between.
+            clear &= d >= CLEAR && (q == wall_at || d >= across(q) || across(q) == RADIUS);
+            continue;
+        }
+        if d >= across(q) {
+            continue;
+        }
+        found.extend(std::iter::once(&line.front).chain(&line.back).map(|s| s.sector as u32));
+    }
+    found.sort_unstable();
+    found.dedup();
+    Some(Survey { sector: sector as u32, clear, room })
+}
+
+/// Would the body's circle, centred at `p` and moving along the unit
+/// vector `m`, be wedged between two solid walls beside it, one on each
+/// side of its way, less than its width and [`WEDGE`] apart across it?
+fn wedged(map: &Map, blockmap: &Blockmap, query: &mut LineQuery, p: DVec2, m: DVec2) -> bool {
+    let reach = 2.0 * RADIUS + WEDGE;
+    let r = DVec2::splat(reach);
+    // Per side of the way: the nearest wall beside the body, across it.
+    let (mut left, mut right) = (f64::MAX, f64::MAX);
+    for &i in query.run(blockmap, map.lines.len(), p - r, p + r) {
+        let line = &map.lines[i as usize];
+        if line.back.is_some() && !line.flags.impassable {
+            continue;
+        }
+        let (a, b) = map.line_points(line);
+        let u = crate::autopilot::plan::nearest_on(p, a, b) - p;
+        if u.dot(m).abs() > CELL / 2.0 {
+            continue;
+        }
+        let across = m.perp_dot(u);
+        if across > 0.0 {
+            left = left.min(across);
+        } else if across < 0.0 {
+            right = right.min(-across);
+        }
+    }
+    left + right < reach
+}
+
 pub struct NavGrid {
     pub origin: DVec2,
     pub width: usize,
@@ -115,6 +224,15 @@ pub struct NavGrid {
     /// Special lines a move crosses: `(cell * 8 + dir, line, from_front)`,
     /// sorted.
     crossings: Vec<(u32, LineId, bool)>,
+    /// Moves between cells more than a step apart whose circles overlap
+    /// three floor heights or more (a stair of narrow steps), as the map
+    /// starts: `(cell * 8 + dir, first)`, sorted. The
+    /// circle at the `k`-th of [`RAMP_POINTS`] points along the move
+    /// overlaps the sectors `ramp_touch[ramp_start[first + k] as
+    /// usize..ramp_start[first + k + 1] as usize]`.
+    ramps: Vec<(u32, u32)>,
+    ramp_start: Vec<u32>,
+    ramp_touch: Vec<u32>,
 }
 
 impl NavGrid {
@@ -141,65 +259,15 @@ impl NavGrid {
         for c in 0..cells {
             touch_start.push(touch.len() as u32);
             let p = origin + DVec2::new((c % width) as f64 + 0.5, (c / width) as f64 + 0.5) * CELL;
-            let Some(sector) = inside(compiled, p) else { continue };
-            centre[c] = sector as u32;
-            let r = DVec2::splat(ROOMY);
-            let near = query.run(&blockmap, map.lines.len(), p - r, p + r);
-            found.clear();
-            found.push(sector as u32);
-            let solid = |line: &crate::map::Line| line.back.is_none() || line.flags.impassable;
-            // The nearest solid wall: the body is pushed off it, so whatever
-            // is across from it must leave room for the whole body.
-            let mut room = ROOMY;
-            let mut wall_at = p;
-            for &i in near {
-                let line = &map.lines[i as usize];
-                if solid(line) {
-                    let (a, b) = map.line_points(line);
-                    let q = crate::autopilot::plan::nearest_on(p, a, b);
-                    if q.distance(p) < room {
-                        room = q.distance(p);
-                        wall_at = q;
-                    }
-                }
-            }
-            let mut ok = room >= CLEAR;
-            // How far across from that wall the body reaches (and a unit
-            // more: a gap exactly as wide as the body stops it, its circle
-            // wedged between the two sides).
-            let across = |q: DVec2| {
-                if room < RADIUS && (q - p).dot(wall_at - p) < 0.0 {
-                    2.0 * RADIUS - room + 1.0
-                } else {
-                    RADIUS
-                }
-            };
-            for &i in near {
-                let line = &map.lines[i as usize];
-                let (a, b) = map.line_points(line);
-                let q = crate::autopilot::plan::nearest_on(p, a, b);
-                let d = q.distance(p);
-                if solid(line) {
-                    // A solid line keeps the body off it (what is behind it
-                    // is never under the body), and two too close on either
-                    // side leave no room between.
-                    ok &= d >= CLEAR && (q == wall_at || d >= across(q) || across(q) == RADIUS);
-                    continue;
-                }
-                if d >= across(q) {
-                    continue;
-                }
-                found.extend(std::iter::once(&line.front).chain(&line.back).map(|s| s.sector as u32));
-            }
-            found.sort_unstable();
-            found.dedup();
+            let Some(survey) = survey(compiled, &blockmap, &mut query, p, &mut found) else { continue };
+            centre[c] = survey.sector;
             touch.extend_from_slice(&found);
-            clear[c] = ok;
-            narrow[c] = if room < RADIUS {
+            clear[c] = survey.clear;
+            narrow[c] = if survey.room < RADIUS {
                 12
-            } else if room < RADIUS + 8.0 {
+            } else if survey.room < RADIUS + 8.0 {
                 4
-            } else if room < ROOMY {
+            } else if survey.room < ROOMY {
                 1
             } else {
                 0
@@ -216,6 +284,9 @@ impl NavGrid {
             walls: vec![0xff; cells],
             narrow,
             crossings: Vec::new(),
+            ramps: Vec::new(),
+            ramp_start: Vec::new(),
+            ramp_touch: Vec::new(),
         };
         let triggers = Blockmap::of_trigger_lines(map);
         let walls_count = map.lines.len() as u32;
@@ -233,6 +304,18 @@ impl NavGrid {
                 };
                 let q = grid.centre_of(n);
                 if !clear[n as usize] {
+                    bits |= 1 << d;
+                    continue;
+                }
+                // Between two cells near walls, a gap the body wedges in
+                // (Freedoom MAP29's 32 units between a post's corner and a
+                // wall's: both cells clear of it, the move through it not).
+                let near_walls = grid.narrow[c] >= 4 && grid.narrow[n as usize] >= 4;
+                let mut wedged_at = |k: usize| {
+                    let at = p.lerp(q, k as f64 / (RAMP_POINTS + 1) as f64);
+                    wedged(map, &blockmap, &mut query, at, (q - p).normalize())
+                };
+                if near_walls && (1..=RAMP_POINTS).any(&mut wedged_at) {
                     bits |= 1 << d;
                     continue;
                 }
@@ -287,6 +370,47 @@ impl NavGrid {
             }
         }
         grid.crossings.sort_unstable();
+        // Stairs of steps narrower than a cell: a move between two cells can
+        // climb more than a step in all, one step at a time. The circle is
+        // surveyed at points along the moves that might.
+        for c in 0..cells as Cell {
+            for d in 0..8 {
+                let Some(n) = grid.neighbour(c, d).filter(|_| grid.open(c, d)) else { continue };
+                // Only where, as the map starts, the two cells' floors are
+                // more than a step apart and the circles overlap floors at
+                // three heights or more (with two, the climb is one step
+                // whatever lies between). Stairs are built so; a floor
+                // moved later is not surveyed for.
+                let floor = |s: &u32| map.sectors[*s as usize].floor;
+                let high = |c: Cell| grid.touched(c).iter().map(floor).fold(f64::MIN, f64::max);
+                if (high(c) - high(n)).abs() <= MAX_STEP {
+                    continue;
+                }
+                let mut floors: Vec<f64> = grid.touched(c).iter().chain(grid.touched(n)).map(floor).collect();
+                floors.sort_by(f64::total_cmp);
+                floors.dedup();
+                if floors.len() < 3 {
+                    continue;
+                }
+                let (p, q) = (grid.centre_of(c), grid.centre_of(n));
+                let first = grid.ramp_start.len() as u32;
+                let before = grid.ramp_touch.len();
+                let mut inside_map = true;
+                for k in 1..=RAMP_POINTS {
+                    let at = p.lerp(q, k as f64 / (RAMP_POINTS + 1) as f64);
+                    grid.ramp_start.push(grid.ramp_touch.len() as u32);
+                    inside_map &= survey(compiled, &blockmap, &mut query, at, &mut found).is_some();
+                    grid.ramp_touch.extend_from_slice(&found);
+                }
+                if inside_map {
+                    grid.ramps.push((c * 8 + d as u32, first));
+                } else {
+                    grid.ramp_start.truncate(first as usize);
+                    grid.ramp_touch.truncate(before);
+                }
+            }
+        }
+        grid.ramp_start.push(grid.ramp_touch.len() as u32);
         grid
     }
 
@@ -412,16 +536,36 @@ impl NavGrid {
     /// [`NavGrid::span`] with some sectors' floors held where `fixed` says
     /// (not able to go lower).
     pub fn span_where(&self, c: Cell, heights: &Heights, fixed: impl Fn(usize) -> Option<f64>) -> Span {
-        let mut span = Span { low: f64::MIN, high: f64::MIN, ceiling: f64::MAX, bottom: f64::MAX };
-        for &s in self.touched(c) {
-            let s = s as usize;
-            let (floor, low) = fixed(s).map_or((heights.floor[s], heights.low[s]), |f| (f, f));
-            span.bottom = span.bottom.min(floor);
-            span.low = span.low.max(low);
-            span.high = span.high.max(floor);
-            span.ceiling = span.ceiling.min(heights.ceiling[s]);
+        span_over(self.touched(c), heights, fixed)
+    }
+
+    /// Can the body go from `c` to its neighbour `d`, under `from` and `to`:
+    /// [`NavGrid::passable`], or a climb of more than a step in all over
+    /// steps narrower than a cell, each point along the move a step at
+    /// most above the last.
+    pub fn climbable(&self, c: Cell, d: usize, from: Span, to: Span, heights: &Heights) -> bool {
+        if NavGrid::passable(from, to) {
+            return true;
         }
-        span
+        // Only a climb (a body falls as it goes, and meets a low ceiling
+        // before it is down), and only over floors that stay put (a lift's
+        // range would let each point take it at a different height).
+        let still = |s: &Span| s.low == s.high;
+        if to.high <= from.high + MAX_STEP || !still(&from) || !still(&to) {
+            return false;
+        }
+        let Ok(i) = self.ramps.binary_search_by_key(&(c * 8 + d as u32), |r| r.0) else { return false };
+        let first = self.ramps[i].1 as usize;
+        let mut last = from;
+        for k in first..first + RAMP_POINTS {
+            let touched = &self.ramp_touch[self.ramp_start[k] as usize..self.ramp_start[k + 1] as usize];
+            let span = span_over(touched, heights, |_| None);
+            if !still(&span) || span.high < last.high || !NavGrid::passable(last, span) {
+                return false;
+            }
+            last = span;
+        }
+        NavGrid::passable(last, to)
     }
 
     /// Can the body go from a cell under `from` to one under `to`: a step of
@@ -433,4 +577,19 @@ impl NavGrid {
         let feet = from.low.max(to.low - MAX_STEP);
         feet <= from.high && to.ceiling - to.low.max(feet) >= HEIGHT
     }
+}
+
+/// The floor and ceiling under a circle overlapping `touched`, with some
+/// sectors' floors held where `fixed` says.
+fn span_over(touched: &[u32], heights: &Heights, fixed: impl Fn(usize) -> Option<f64>) -> Span {
+    let mut span = Span { low: f64::MIN, high: f64::MIN, ceiling: f64::MAX, bottom: f64::MAX };
+    for &s in touched {
+        let s = s as usize;
+        let (floor, low) = fixed(s).map_or((heights.floor[s], heights.low[s]), |f| (f, f));
+        span.bottom = span.bottom.min(floor);
+        span.low = span.low.max(low);
+        span.high = span.high.max(floor);
+        span.ceiling = span.ceiling.min(heights.ceiling[s]);
+    }
+    span
 }

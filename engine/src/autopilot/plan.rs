@@ -472,7 +472,7 @@ impl Search {
                 if from.drops_to(&to) {
                     drops |= 1 << d;
                 }
-                if !NavGrid::passable(from, to) {
+                if !w.nav.climbable(c, d, from, to, w.heights) {
                     continue;
                 }
                 let door_shut = w.nav.touched(n).iter().any(|&s| {
