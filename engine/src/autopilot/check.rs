@@ -349,7 +349,7 @@ fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
                     .unwrap_or(0);
                 let sb = nav.centre[b as usize] as usize;
                 if seen.insert((sa, sb)) {
-                    let adjacent = (0..8).any(|d| nav.neighbour(a, d) == Some(b));
+                    let adjacent = nav.direction(a, b).is_some();
                     let p = nav.centre_of(b);
                     let how = if adjacent { "a one-way drop" } else { "a teleport" };
                     soft_locks.push(SoftLock { from_sector: sa, to_sector: sb, x: p.x, y: p.y, how: how.into() });

@@ -841,10 +841,7 @@ impl Autopilot {
                 let t = plan::targets_of(&self.nav, map, &Goal::Use(l));
                 cells[..i].iter().any(|&c| t.contains_cell(c))
                     || cells[..i].windows(2).any(|w| {
-                        (0..8).any(|d| {
-                            self.nav.neighbour(w[0], d) == Some(w[1])
-                                && self.nav.crossings_of(w[0], d).any(|x| x.0 == l)
-                        })
+                        self.nav.direction(w[0], w[1]).is_some_and(|d| self.nav.crossings_of(w[0], d).any(|x| x.0 == l))
                     })
             });
             // A call made lately still stands, unless the lift has been
@@ -1356,7 +1353,7 @@ impl Autopilot {
                 }
             }
             if let Some(&n) = cells.get(a.at + 1) {
-                if let Some(d) = (0..8).find(|&d| self.nav.neighbour(cells[a.at], d) == Some(n)) {
+                if let Some(d) = self.nav.direction(cells[a.at], n) {
                     self.bad.insert(cells[a.at] * 8 + d as u32, now + 35 * 30);
                 }
             }
@@ -1404,9 +1401,10 @@ impl Autopilot {
                     a.idle
                 );
             }
-            let climbable = (0..8)
-                .find(|&d| self.nav.neighbour(c, d) == Some(n))
-                .map_or(NavGrid::passable(from, to), |d| self.nav.climbable(c, d, from, to, &live));
+            let climbable = self
+                .nav
+                .direction(c, n)
+                .map_or_else(|| NavGrid::passable(from, to), |d| self.nav.climbable(c, d, from, to, &live));
             if !climbable {
                 if let Some(input) = self.unblock(game, a, (n, to), &live) {
                     return Some(input);
@@ -1415,7 +1413,7 @@ impl Autopilot {
         }
         if a.idle > STUCK_TICKS {
             // Give the move up for a while and plan around it.
-            if let Some(d) = (0..8).find(|&d| self.nav.neighbour(c, d) == Some(n)) {
+            if let Some(d) = self.nav.direction(c, n) {
                 self.bad.insert(c * 8 + d as u32, now + 35 * 30);
             }
             self.next_replan = now;

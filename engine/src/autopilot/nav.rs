@@ -1,6 +1,9 @@
 //! The navigation grid: the map cut into [`CELL`]-unit squares, each
 //! knowing the sector under its centre and every sector the player's circle
-//! would overlap there, and which of its eight neighbours a wall cuts off.
+//! would overlap there, and which of its eight neighbours a wall cuts off
+//! (or a gap the body would wedge in: `wedged`). Moves up a stair of steps
+//! narrower than a cell also know the sectors under the circle at points
+//! along them ([`NavGrid::climbable`]).
 //!
 //! What never changes (walls, which sectors a cell touches, which special
 //! lines a move between two cells crosses) is computed once per map; what
@@ -24,12 +27,16 @@ pub const CELL: f64 = 16.0;
 pub const CLEAR: f64 = 7.5;
 /// Walls nearer than this make a cell cost more to pass.
 const ROOMY: f64 = 32.0;
-/// Points between two cells' centres at which a move over steps narrower
-/// than a cell is followed (a quarter of a straight move apart).
-const RAMP_POINTS: usize = 3;
-/// A gap between solid walls narrower than the body's width and this much
-/// more wedges it: its circle cannot be centred in it exactly enough.
-const WEDGE: f64 = 1.5;
+/// Points between two cells' centres at which a move is tried more
+/// closely (a quarter of a straight move apart): the floors under the
+/// circle on a stair of narrow steps, the walls beside it in a gap.
+const MOVE_POINTS: usize = 3;
+/// A gap between solid walls as wide as the body, or this much wider, stops
+/// it: its circle would have to be centred in the gap exactly.
+const SNUG: f64 = 1.0;
+/// A cell whose nearest solid wall is closer than this is near walls: a
+/// move between two such cells is tried for a gap the body wedges in.
+const NEAR_WALLS: f64 = RADIUS + CELL / 2.0;
 /// A cell index.
 pub type Cell = u32;
 /// No sector (outside the map).
@@ -145,12 +152,12 @@ fn survey(
         }
     }
     let mut clear = room >= CLEAR;
-    // How far across from that wall the body reaches (and a unit
-    // more: a gap exactly as wide as the body stops it, its circle
-    // wedged between the two sides).
+    // How far across from that wall the body reaches (and `SNUG` more: a
+    // gap exactly as wide as the body stops it, its circle wedged between
+    // the two sides).
     let across = |q: DVec2| {
         if room < RADIUS && (q - p).dot(wall_at - p) < 0.0 {
-            2.0 * RADIUS - room + 1.0
+            2.0 * RADIUS - room + SNUG
         } else {
             RADIUS
         }
@@ -178,13 +185,14 @@ fn survey(
 }
 
 /// Would the body's circle, centred at `p` and moving along the unit
-/// vector `m`, be wedged between two solid walls beside it, one on each
-/// side of its way, less than its width and [`WEDGE`] apart across it?
+/// vector `m`, be wedged in a gap: the nearest solid walls beside it (less
+/// than half a cell ahead or behind), one on each side of its way, less
+/// than its width and [`SNUG`] apart?
 fn wedged(map: &Map, blockmap: &Blockmap, query: &mut LineQuery, p: DVec2, m: DVec2) -> bool {
-    let reach = 2.0 * RADIUS + WEDGE;
+    let reach = 2.0 * RADIUS + SNUG;
     let r = DVec2::splat(reach);
-    // Per side of the way: the nearest wall beside the body, across it.
-    let (mut left, mut right) = (f64::MAX, f64::MAX);
+    // Per side of the way: the wall point nearest across it.
+    let (mut left, mut right): (Option<DVec2>, Option<DVec2>) = (None, None);
     for &i in query.run(blockmap, map.lines.len(), p - r, p + r) {
         let line = &map.lines[i as usize];
         if line.back.is_some() && !line.flags.impassable {
@@ -196,13 +204,17 @@ fn wedged(map: &Map, blockmap: &Blockmap, query: &mut LineQuery, p: DVec2, m: DV
             continue;
         }
         let across = m.perp_dot(u);
-        if across > 0.0 {
-            left = left.min(across);
-        } else if across < 0.0 {
-            right = right.min(-across);
+        let side = if across > 0.0 { &mut left } else { &mut right };
+        if across != 0.0 && side.is_none_or(|v| across.abs() < m.perp_dot(v).abs()) {
+            *side = Some(u);
         }
     }
-    left + right < reach
+    left.zip(right).is_some_and(|(u, v)| u.distance(v) < reach)
+}
+
+/// The points along the move from `p` to `q` it is tried at more closely.
+fn points_along(p: DVec2, q: DVec2) -> impl Iterator<Item = DVec2> {
+    (1..=MOVE_POINTS).map(move |k| p.lerp(q, k as f64 / (MOVE_POINTS + 1) as f64))
 }
 
 pub struct NavGrid {
@@ -224,10 +236,10 @@ pub struct NavGrid {
     /// Special lines a move crosses: `(cell * 8 + dir, line, from_front)`,
     /// sorted.
     crossings: Vec<(u32, LineId, bool)>,
-    /// Moves between cells more than a step apart whose circles overlap
+    /// Moves up to a cell more than a step higher whose circles overlap
     /// three floor heights or more (a stair of narrow steps), as the map
     /// starts: `(cell * 8 + dir, first)`, sorted. The
-    /// circle at the `k`-th of [`RAMP_POINTS`] points along the move
+    /// circle at the `k`-th of [`MOVE_POINTS`] points along the move
     /// overlaps the sectors `ramp_touch[ramp_start[first + k] as
     /// usize..ramp_start[first + k + 1] as usize]`.
     ramps: Vec<(u32, u32)>,
@@ -255,6 +267,7 @@ impl NavGrid {
         let mut touch = Vec::new();
         let mut clear = vec![false; cells];
         let mut narrow = vec![0u8; cells];
+        let mut near_walls = vec![false; cells];
         let mut found = Vec::new();
         for c in 0..cells {
             touch_start.push(touch.len() as u32);
@@ -263,6 +276,7 @@ impl NavGrid {
             centre[c] = survey.sector;
             touch.extend_from_slice(&found);
             clear[c] = survey.clear;
+            near_walls[c] = survey.room < NEAR_WALLS;
             narrow[c] = if survey.room < RADIUS {
                 12
             } else if survey.room < RADIUS + 8.0 {
@@ -310,12 +324,10 @@ impl NavGrid {
                 // Between two cells near walls, a gap the body wedges in
                 // (Freedoom MAP29's 32 units between a post's corner and a
                 // wall's: both cells clear of it, the move through it not).
-                let near_walls = grid.narrow[c] >= 4 && grid.narrow[n as usize] >= 4;
-                let mut wedged_at = |k: usize| {
-                    let at = p.lerp(q, k as f64 / (RAMP_POINTS + 1) as f64);
-                    wedged(map, &blockmap, &mut query, at, (q - p).normalize())
-                };
-                if near_walls && (1..=RAMP_POINTS).any(&mut wedged_at) {
+                if near_walls[c]
+                    && near_walls[n as usize]
+                    && points_along(p, q).any(|at| wedged(map, &blockmap, &mut query, at, (q - p).normalize()))
+                {
                     bits |= 1 << d;
                     continue;
                 }
@@ -370,48 +382,55 @@ impl NavGrid {
             }
         }
         grid.crossings.sort_unstable();
-        // Stairs of steps narrower than a cell: a move between two cells can
-        // climb more than a step in all, one step at a time. The circle is
-        // surveyed at points along the moves that might.
-        for c in 0..cells as Cell {
+        grid.survey_ramps(compiled, &blockmap, &mut query);
+        grid
+    }
+
+    /// Stairs of steps narrower than a cell: a move between two cells can
+    /// climb more than a step in all, one step at a time. The circle is
+    /// surveyed at points along the moves that might: where, as the map
+    /// starts, the cell moved to is more than a step above the one moved
+    /// from and the two circles overlap floors at three heights or more
+    /// (with two, the climb is one rise of more than a step whatever lies
+    /// between). Stairs are built so; a floor moved later is not surveyed
+    /// for.
+    fn survey_ramps(&mut self, compiled: &CompiledMap, blockmap: &Blockmap, query: &mut LineQuery) {
+        let map = &compiled.map;
+        let floor = |s: &u32| map.sectors[*s as usize].floor;
+        let high: Vec<f64> =
+            (0..self.cells() as Cell).map(|c| self.touched(c).iter().map(floor).fold(f64::MIN, f64::max)).collect();
+        let mut floors = Vec::new();
+        let mut found = Vec::new();
+        for c in 0..self.cells() as Cell {
             for d in 0..8 {
-                let Some(n) = grid.neighbour(c, d).filter(|_| grid.open(c, d)) else { continue };
-                // Only where, as the map starts, the two cells' floors are
-                // more than a step apart and the circles overlap floors at
-                // three heights or more (with two, the climb is one step
-                // whatever lies between). Stairs are built so; a floor
-                // moved later is not surveyed for.
-                let floor = |s: &u32| map.sectors[*s as usize].floor;
-                let high = |c: Cell| grid.touched(c).iter().map(floor).fold(f64::MIN, f64::max);
-                if (high(c) - high(n)).abs() <= MAX_STEP {
+                let Some(n) = self.neighbour(c, d).filter(|_| self.open(c, d)) else { continue };
+                if high[n as usize] - high[c as usize] <= MAX_STEP {
                     continue;
                 }
-                let mut floors: Vec<f64> = grid.touched(c).iter().chain(grid.touched(n)).map(floor).collect();
+                floors.clear();
+                floors.extend(self.touched(c).iter().chain(self.touched(n)).map(floor));
                 floors.sort_by(f64::total_cmp);
                 floors.dedup();
                 if floors.len() < 3 {
                     continue;
                 }
-                let (p, q) = (grid.centre_of(c), grid.centre_of(n));
-                let first = grid.ramp_start.len() as u32;
-                let before = grid.ramp_touch.len();
+                let first = self.ramp_start.len() as u32;
+                let before = self.ramp_touch.len();
                 let mut inside_map = true;
-                for k in 1..=RAMP_POINTS {
-                    let at = p.lerp(q, k as f64 / (RAMP_POINTS + 1) as f64);
-                    grid.ramp_start.push(grid.ramp_touch.len() as u32);
-                    inside_map &= survey(compiled, &blockmap, &mut query, at, &mut found).is_some();
-                    grid.ramp_touch.extend_from_slice(&found);
+                for at in points_along(self.centre_of(c), self.centre_of(n)) {
+                    self.ramp_start.push(self.ramp_touch.len() as u32);
+                    inside_map &= survey(compiled, blockmap, query, at, &mut found).is_some();
+                    self.ramp_touch.extend_from_slice(&found);
                 }
                 if inside_map {
-                    grid.ramps.push((c * 8 + d as u32, first));
+                    self.ramps.push((c * 8 + d as u32, first));
                 } else {
-                    grid.ramp_start.truncate(first as usize);
-                    grid.ramp_touch.truncate(before);
+                    self.ramp_start.truncate(first as usize);
+                    self.ramp_touch.truncate(before);
                 }
             }
         }
-        grid.ramp_start.push(grid.ramp_touch.len() as u32);
-        grid
+        self.ramp_start.push(self.ramp_touch.len() as u32);
     }
 
     /// The cells of the grid whose squares meet the box `lo`..`hi` (clipped
@@ -510,6 +529,11 @@ impl NavGrid {
             .then(|| (ny as usize * self.width + nx as usize) as Cell)
     }
 
+    /// The direction from `c` to `n`, if `n` is one of its neighbours.
+    pub fn direction(&self, c: Cell, n: Cell) -> Option<usize> {
+        (0..8).find(|&d| self.neighbour(c, d) == Some(n))
+    }
+
     /// Is the move from `c` to its neighbour `d` free of solid walls?
     pub fn open(&self, c: Cell, d: usize) -> bool {
         self.walls[c as usize] & (1 << d) == 0
@@ -557,7 +581,7 @@ impl NavGrid {
         let Ok(i) = self.ramps.binary_search_by_key(&(c * 8 + d as u32), |r| r.0) else { return false };
         let first = self.ramps[i].1 as usize;
         let mut last = from;
-        for k in first..first + RAMP_POINTS {
+        for k in first..first + MOVE_POINTS {
             let touched = &self.ramp_touch[self.ramp_start[k] as usize..self.ramp_start[k + 1] as usize];
             let span = span_over(touched, heights, |_| None);
             if !still(&span) || span.high < last.high || !NavGrid::passable(last, span) {
