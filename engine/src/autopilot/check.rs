@@ -18,7 +18,7 @@ use std::collections::BTreeSet;
 
 use glam::DVec2;
 
-use super::nav::{Cell, Heights, LineId, NavGrid, CELL, NONE};
+use super::nav::{solid, Cell, Heights, LineId, NavGrid, CELL, NONE};
 use super::plan::{self, line_of, Mechanisms, Search, Targets};
 use crate::actors::{ActorFlag, ActorTable};
 use crate::framebuffer::{rgb, Framebuffer};
@@ -464,7 +464,7 @@ impl Drawing {
             let (a, b) = map.line_points(l);
             let colour = if l.special.is_some() {
                 rgb(90, 140, 255)
-            } else if l.back.is_none() || l.flags.impassable {
+            } else if solid(l) {
                 rgb(235, 235, 235)
             } else {
                 rgb(120, 120, 120)

@@ -109,6 +109,11 @@ pub fn inside(compiled: &CompiledMap, p: DVec2) -> Option<usize> {
     segs.iter().all(|s| crate::geom::front_distance(s.v1, s.v2, p) >= 0.0).then_some(leaf.sector)
 }
 
+/// A line the body cannot cross: one-sided, or marked impassable.
+pub fn solid(line: &crate::map::Line) -> bool {
+    line.back.is_none() || line.flags.impassable
+}
+
 /// What a body's circle centred at a point meets: see [`survey`].
 struct Survey {
     /// The sector under the centre.
@@ -135,7 +140,6 @@ fn survey(
     let near = query.run(blockmap, map.lines.len(), p - r, p + r);
     found.clear();
     found.push(sector as u32);
-    let solid = |line: &crate::map::Line| line.back.is_none() || line.flags.impassable;
     // The nearest solid wall: the body is pushed off it, so whatever
     // is across from it must leave room for the whole body.
     let mut room = ROOMY;
@@ -195,7 +199,7 @@ fn wedged(map: &Map, blockmap: &Blockmap, query: &mut LineQuery, p: DVec2, m: DV
     let (mut left, mut right): (Option<DVec2>, Option<DVec2>) = (None, None);
     for &i in query.run(blockmap, map.lines.len(), p - r, p + r) {
         let line = &map.lines[i as usize];
-        if line.back.is_some() && !line.flags.impassable {
+        if !solid(line) {
             continue;
         }
         let (a, b) = map.line_points(line);
@@ -238,11 +242,11 @@ pub struct NavGrid {
     crossings: Vec<(u32, LineId, bool)>,
     /// Moves up to a cell more than a step higher whose circles overlap
     /// three floor heights or more (a stair of narrow steps), as the map
-    /// starts: `(cell * 8 + dir, first)`, sorted. The
-    /// circle at the `k`-th of [`MOVE_POINTS`] points along the move
-    /// overlaps the sectors `ramp_touch[ramp_start[first + k] as
-    /// usize..ramp_start[first + k + 1] as usize]`.
-    ramps: Vec<(u32, u32)>,
+    /// starts: `cell * 8 + dir`, sorted. For the `i`-th, the circle at the
+    /// `k`-th of [`MOVE_POINTS`] points along the move overlaps the sectors
+    /// `ramp_touch[ramp_start[j] as usize..ramp_start[j + 1] as usize]`,
+    /// `j` being `i * MOVE_POINTS + k`.
+    ramps: Vec<u32>,
     ramp_start: Vec<u32>,
     ramp_touch: Vec<u32>,
 }
@@ -311,7 +315,7 @@ impl NavGrid {
             // Diagonals start shut; the next pass opens those that are clear.
             let mut bits = 0xf0u8;
             let p = grid.centre_of(c as Cell);
-            for (d, _) in DIRS.iter().enumerate().take(4) {
+            for (d, &(dx, dy)) in DIRS.iter().enumerate().take(4) {
                 let Some(n) = grid.neighbour(c as Cell, d) else {
                     bits |= 1 << d;
                     continue;
@@ -326,7 +330,8 @@ impl NavGrid {
                 // wall's: both cells clear of it, the move through it not).
                 if near_walls[c]
                     && near_walls[n as usize]
-                    && points_along(p, q).any(|at| wedged(map, &blockmap, &mut query, at, (q - p).normalize()))
+                    && points_along(p, q)
+                        .any(|at| wedged(map, &blockmap, &mut query, at, DVec2::new(dx as f64, dy as f64)))
                 {
                     bits |= 1 << d;
                     continue;
@@ -336,7 +341,7 @@ impl NavGrid {
                     let line = &map.lines[i as usize];
                     let (a, b) = map.line_points(line);
                     let Some(_) = crossing(p, q, a, b) else { continue };
-                    if line.back.is_none() || line.flags.impassable {
+                    if solid(line) {
                         bits |= 1 << d;
                     } else if line.special.is_some() {
                         let front = crate::geom::front_distance(a, b, p) > 0.0;
@@ -414,7 +419,7 @@ impl NavGrid {
                 if floors.len() < 3 {
                     continue;
                 }
-                let first = self.ramp_start.len() as u32;
+                let first = self.ramp_start.len();
                 let before = self.ramp_touch.len();
                 let mut inside_map = true;
                 for at in points_along(self.centre_of(c), self.centre_of(n)) {
@@ -423,9 +428,9 @@ impl NavGrid {
                     self.ramp_touch.extend_from_slice(&found);
                 }
                 if inside_map {
-                    self.ramps.push((c * 8 + d as u32, first));
+                    self.ramps.push(c * 8 + d as u32);
                 } else {
-                    self.ramp_start.truncate(first as usize);
+                    self.ramp_start.truncate(first);
                     self.ramp_touch.truncate(before);
                 }
             }
@@ -578,10 +583,9 @@ impl NavGrid {
         if to.high <= from.high + MAX_STEP || !still(&from) || !still(&to) {
             return false;
         }
-        let Ok(i) = self.ramps.binary_search_by_key(&(c * 8 + d as u32), |r| r.0) else { return false };
-        let first = self.ramps[i].1 as usize;
+        let Ok(i) = self.ramps.binary_search(&(c * 8 + d as u32)) else { return false };
         let mut last = from;
-        for k in first..first + MOVE_POINTS {
+        for k in i * MOVE_POINTS..(i + 1) * MOVE_POINTS {
             let touched = &self.ramp_touch[self.ramp_start[k] as usize..self.ramp_start[k + 1] as usize];
             let span = span_over(touched, heights, |_| None);
             if !still(&span) || span.high < last.high || !NavGrid::passable(last, span) {
