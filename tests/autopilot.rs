@@ -2,8 +2,9 @@
 //! lift down by the switch on it, a switch and its remote door, a key and
 //! its door, a teleporter, a one-way drop, a gap to jump at a run, a stair
 //! of steps narrower than its grid, a gap as wide as the body to go round, a
-//! radiation suit before a long wade through nukage, health before a
-//! shorter one it would not live through) it
+//! boss brain shot at from a rising lift, a radiation suit before a long
+//! wade through nukage, health before a shorter one it would not live
+//! through) it
 //! reaches the exit through its inputs alone, and the mechanism was really
 //! used; `check` finds a map's unreachable secret and its soft lock;
 //! a recorded run replays to the same state; and Freedoom's E1M1 is finished.
@@ -175,6 +176,33 @@ fn the_autopilot_passes_under_a_crusher_unhurt() {
 }
 
 #[test]
+fn the_autopilot_kills_the_boss_brain_from_a_rising_lift() {
+    // No exit line: the brain's death ends the level. No shot from the
+    // floor passes the slit; only rockets fired from the lift as it rides
+    // up past 144 to 168 do (three: 250 health, about 80 a blast).
+    let mut fired_from = Vec::new();
+    let mut rockets = 0;
+    let play = finish("brain", |play| {
+        let table = &play.game.actors().table;
+        let now = play
+            .game
+            .actors()
+            .list
+            .iter()
+            .filter(|a| !a.removed && table.actors[a.kind].name == "rocket_projectile")
+            .count();
+        if now > rockets {
+            fired_from.push(play.game.player().z);
+        }
+        rockets = now;
+    });
+    assert!(fired_from.len() >= 3, "rockets fired from floors {fired_from:?}");
+    assert!(fired_from.iter().all(|&z| (144.0..=168.0).contains(&z)), "rockets fired from floors {fired_from:?}");
+    let brain = play.game.actors().list.iter().find(|a| play.game.actors().table.actors[a.kind].name == "boss_brain");
+    assert!(brain.is_some_and(|b| b.health <= 0), "the brain lives");
+}
+
+#[test]
 fn check_finds_the_unreachable_secret_and_the_soft_lock() {
     let level = open_level(&map_path("tests/maps/autopilot_flawed.ron"), &Default::default()).unwrap();
     let (report, drawing) = check::check(level, 3);
@@ -207,6 +235,7 @@ fn check_finds_no_flaw_in_the_mechanism_maps() {
         "stair",
         "wedge",
         "crusher",
+        "brain",
         "suit",
         "heal",
     ] {

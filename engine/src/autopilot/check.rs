@@ -18,9 +18,10 @@ use std::collections::BTreeSet;
 
 use glam::DVec2;
 
+use super::brain;
 use super::nav::{solid, Cell, Heights, LineId, NavGrid, CELL, NONE};
 use super::plan::{self, line_of, Mechanisms, Search, Targets};
-use crate::actors::{ActorFlag, ActorTable};
+use crate::actors::{ActorFlag, ActorTable, Category};
 use crate::framebuffer::{rgb, Framebuffer};
 use crate::level::Level;
 use crate::map::special::{Activation, KeyColour};
@@ -276,6 +277,22 @@ fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
         let ok = met(&nav, &c.reached, &targets, walk);
         exits.push(place(if secret { "secret exit".into() } else { "exit".into() }, (a + b) / 2.0, ok));
         exit_targets.push((targets, walk));
+    }
+    // No exit line: the boss brain's death ends the level, if a rocket
+    // fired from a lift the player reaches hurts it.
+    if mech.exits.is_empty() {
+        let table = ActorTable::active();
+        for (i, thing) in map.things.iter().enumerate().filter(|(_, t)| t.in_single_player(skill)) {
+            let Some(def) = table.get(&thing.kind).filter(|d| d.category == Category::BossBrain) else { continue };
+            let body = brain::body(&level.compiled, def, thing.pos, i);
+            let mut targets = Targets::default();
+            for spot in brain::spots(&nav, &level.compiled, &mech, &body, &c.heights.floor) {
+                targets.add(plan::cells_near(&nav, nav.centre_of(spot.cell), 1.0));
+            }
+            let ok = targets.cells().any(|x| c.reached[x as usize]);
+            exits.push(place("exit (the boss brain, by a rocket from a lift)".into(), thing.pos, ok));
+            exit_targets.push((targets, None));
+        }
     }
     let exit_reachable = exits.iter().any(|e| e.reachable);
     let mut keys = Vec::new();

@@ -10,11 +10,14 @@
 //!   search, and which goal to go for.
 //! - [`leap`]: running jumps across gaps: which runs clear which gaps, and
 //!   taking one.
+//! - [`brain`]: the boss brain (MAP30): from where on a lift, and at which
+//!   heights, a rocket fired level bursts near enough to hurt it.
 //! - this module: following a route (steering, doors, lifts, teleports,
 //!   getting unstuck), fighting, and the report.
 //! - [`check`]: what a map maker asks of a map: can the exit, each key,
 //!   secret and item be reached, and where can the player get stuck.
 
+pub mod brain;
 pub mod check;
 pub mod leap;
 pub mod nav;
@@ -92,6 +95,16 @@ const BARREL_BLAST: f64 = 160.0;
 const CROWD: u32 = 3;
 /// Below this health a fight is fought falling back.
 const RETREAT_HEALTH: i32 = 40;
+/// Ticks on a lift firing at the boss brain before the ride is given up
+/// (a lift goes down, waits three seconds and comes back up).
+const RIDE_TICKS: u32 = 35 * 20;
+/// A drop deeper than this is stepped off at a creep, under [`CREEP`]
+/// units a tick ...
+const LONG_DROP: f64 = 128.0;
+/// ... onto a landing narrower than a walking body falling from there
+/// would cross at this many units a tick.
+const WALK: f64 = 8.0;
+const CREEP: f64 = 1.0;
 /// The spacing of the trail's points, and how many are kept.
 const TRAIL_STEP: f64 = 32.0;
 const TRAIL_POINTS: usize = 128;
@@ -175,7 +188,8 @@ struct Active {
     still: u32,
     /// Times the route was found again on the way.
     reroutes: u32,
-    /// Uses pressed at the goal.
+    /// Uses pressed at the goal (rockets fired, riding to fire at the boss
+    /// brain).
     presses: u32,
     /// Ticks spent at the goal.
     arrived: u32,
@@ -270,6 +284,10 @@ pub struct Autopilot {
     rechoose: bool,
     /// A barrel within [`BARREL_BLAST`] while fighting, last tick.
     barrel_near: bool,
+    /// Last tick the body headed for a floor far below, stepping off at a
+    /// creep (see [`Autopilot::drive_to`]): no fighting or dodging, which
+    /// would throw it off at speed.
+    creeping: std::cell::Cell<bool>,
     /// Live monsters in sight last tick (counted up to [`CROWD`]).
     in_sight: u32,
     /// Health was under [`LOW_HEALTH`] last tick.
@@ -337,6 +355,7 @@ impl Autopilot {
             low_health: false,
             in_sight: 0,
             barrel_near: false,
+            creeping: std::cell::Cell::new(false),
         }
     }
 
@@ -393,7 +412,12 @@ impl Autopilot {
         self.low_health = low;
         // Running at a gap, the body must keep its line: no fighting.
         let leaping = self.active.as_ref().and_then(|a| a.leap).is_some_and(|l| l.running());
-        let fight = self.fight(game).filter(|_| !leaping);
+        let riding = self.riding();
+        // On the lift at the bottom, it fights where it stands (turning and
+        // firing, not moving); once the lift starts up, it keeps its aim.
+        let rising = riding && self.lift_rising(game);
+        let creeping = self.creeping.take();
+        let fight = self.fight(game).filter(|_| !leaping && !rising && !creeping);
         // With a gun, stand and fight what is in sight (strafing from side
         // to side, backing off what comes close) for a while before going
         // on; with only a fist, go on. Hurt, fall back the way it came,
@@ -410,10 +434,15 @@ impl Autopilot {
                 self.fighting = 0;
             }
         }
-        let retreat = fight.is_some() && (player.health < RETREAT_HEALTH || self.in_sight >= CROWD || self.barrel_near);
+        // A boss brain spits monsters for as long as it lives: a fight
+        // stood or fallen back from never ends, so it is fought on the way.
+        let endless = !brain::live(game).is_empty();
+        let retreat = !endless
+            && fight.is_some()
+            && (player.health < RETREAT_HEALTH || self.in_sight >= CROWD || self.barrel_near);
         // Never stand on a floor that hurts.
         let hurting = self.on_hurting_floor(game);
-        let stand = !retreat && !hurting && fight.is_some_and(|f| f.1 != 1) && self.fighting < STAND_TICKS;
+        let stand = !retreat && !endless && !hurting && fight.is_some_and(|f| f.1 != 1) && self.fighting < STAND_TICKS;
         let back = retreat.then(|| self.fall_back(player.pos)).flatten();
         let mut input = if let Some(back) = back {
             self.drive_to(game, back, false)
@@ -484,8 +513,11 @@ impl Autopilot {
                     self.keep_footing(game, &mut input);
                 }
             }
+            if riding {
+                (input.forward, input.strafe) = (0, 0);
+            }
         }
-        if !input.use_line && !leaping {
+        if !input.use_line && !leaping && !riding && !creeping {
             self.dodge(game, &mut input);
         }
         self.used_last = input.use_line;
@@ -967,6 +999,12 @@ impl Autopilot {
                 return Some(active(goal, Purpose::Exit, route));
             }
         }
+        // No exit line within reach: the boss brain's death ends the level.
+        if let Some(a) = self.brain_goal(game) {
+            return Some(a);
+        }
+        let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.wary), map);
+        let nav = &self.nav;
         // Keys not yet held.
         let mut targets = Targets::default();
         let mut wanted = Vec::new();
@@ -1165,8 +1203,11 @@ impl Autopilot {
         let player = game.player();
         let actors = game.actors();
         // Floors that hurt take health too; ammo matters only with monsters.
-        let low_health = player.health < LOW_HEALTH;
-        let monsters = game.stats().kills.1 > 0;
+        // A boss brain spits monsters for as long as it lives (even with
+        // none placed): health and armour are worth fetching sooner.
+        let endless = !brain::live(game).is_empty();
+        let low_health = player.health < if endless { 100 } else { LOW_HEALTH };
+        let monsters = game.stats().kills.1 > 0 || endless;
         let low_ammo = monsters && player.ammo[0] < 20 && player.ammo[1] < 4;
         let table = &actors.table;
         let owned = |name: &str| player.weapons.iter().any(|&w| table.actors[w].name == name);
@@ -1200,8 +1241,9 @@ impl Autopilot {
     fn follow(&mut self, game: &Game) -> TickInput {
         let now = game.ticks();
         let pos = game.player().pos;
-        // Waiting for a door, or on a running jump: no new plan now.
-        let waiting = self.active.as_ref().is_some_and(|a| a.waited > 0 || a.leap.is_some());
+        // Waiting for a door, on a running jump or riding a lift to fire at
+        // the boss brain: no new plan now.
+        let waiting = self.active.as_ref().is_some_and(|a| a.waited > 0 || a.leap.is_some()) || self.riding();
         let leaping = self.active.as_ref().is_some_and(|a| a.leap.is_some());
         if now >= self.next_replan && !waiting && !self.rechoose {
             // Now and then the route to the same goal is found again (the
@@ -1239,6 +1281,7 @@ impl Autopilot {
                     let what = match &a.goal {
                         Goal::Use(l) | Goal::Cross(l) | Goal::Shoot(l) => describe(&game.level().compiled.map, *l),
                         Goal::Touch(p, _) => format!("({:.0}, {:.0})", p.x, p.y),
+                        Goal::Brain(p, _) => format!("the boss brain, from ({:.0}, {:.0})", p.x, p.y),
                     };
                     self.log.push(format!(
                         "tick {now}: at ({:.0}, {:.0}) {:?} {what}, {} cells",
@@ -1497,6 +1540,27 @@ impl Autopilot {
         let player = game.player();
         let d = target - player.pos;
         let turn = turn_to(player.angle, d.y.atan2(d.x).to_degrees());
+        // Heading for a narrow landing far below: off the edge at a creep.
+        // A falling body keeps its speed, and from high up even a walk
+        // carries it past (the 16-unit ledge round MAP30's lift, 512 below
+        // its top). Narrow: where a walking body would come down, the floor
+        // falls away again.
+        let sectors = &game.level().compiled.map.sectors;
+        let floor_at = |p: DVec2| {
+            let c = self.nav.cell_at(p)?;
+            self.nav.touched(c).iter().map(|&s| sectors[s as usize].floor).max_by(|a, b| a.total_cmp(b))
+        };
+        let long = floor_at(target).filter(|&f| player.z - f > LONG_DROP);
+        // Falling `h` takes sqrt(2h) ticks (gravity is a unit a tick per
+        // tick), in which a walking body goes some 8 units a tick.
+        let past = long.and_then(|f| floor_at(target + d.normalize_or_zero() * WALK * (2.0 * (player.z - f)).sqrt()));
+        if player.on_ground() && long.is_some_and(|f| past.is_some_and(|p| p < f - MAX_STEP)) {
+            self.creeping.set(true);
+            if player.velocity.length() > CREEP {
+                return self.hold(game);
+            }
+            return TickInput { forward: 1, turn: turn as f32, ..Default::default() };
+        }
         let speed = player.velocity.length();
         let slow = gently;
         // Coast when close: friction carries the body about ten times its speed.
@@ -1817,6 +1881,7 @@ impl Autopilot {
                 self.next_replan = now + settle;
                 None
             }
+            Goal::Brain(spot, actor) => self.fire_at_brain(game, a, spot, actor),
             Goal::Touch(pos, _) if a.purpose == Purpose::Safety => {
                 // Off the hurting floor, or as near the safe cell as it goes.
                 if !self.on_hurting_floor(game) || a.arrived > 70 {
@@ -1862,6 +1927,133 @@ impl Autopilot {
             player.angle,
             game.world().special(level, sl).is_some()
         );
+    }
+
+    /// On the lift, to fire at the boss brain as it rides up.
+    fn riding(&self) -> bool {
+        self.active.as_ref().is_some_and(|a| matches!(a.goal, Goal::Brain(..)) && a.arrived > 0)
+    }
+
+    /// Has the lift under the boss brain goal's spot left its bottom?
+    fn lift_rising(&self, game: &Game) -> bool {
+        let Some(Goal::Brain(spot, _)) = self.active.as_ref().map(|a| a.goal.clone()) else { return false };
+        let lift = self.nav.cell_at(spot).and_then(|c| self.nav.touched(c).first().copied());
+        lift.is_some_and(|s| game.player().z > self.mech.lift_low[s as usize] + 1.0)
+    }
+
+    /// With no exit line within reach and a live boss brain, the rocket
+    /// launcher and rockets: the lift to fire from ([`brain::spots`]). The
+    /// body goes to its place on it; at rest above the heights a shot hurts
+    /// from, the lift is called down first (the body drops off it to reach
+    /// the call), and moving with the place out of reach, the body waits
+    /// by the call.
+    fn brain_goal(&mut self, game: &Game) -> Option<Active> {
+        let target = *brain::live(game).first()?;
+        brain::launcher(game)?;
+        let level = game.level();
+        let map = &level.compiled.map;
+        let floors: Vec<f64> = map.sectors.iter().map(|s| s.floor).collect();
+        let spot = *brain::spots(&self.nav, &level.compiled, &self.mech, &target.body, &floors).first()?;
+        let goal = Goal::Brain(self.nav.centre_of(spot.cell), target.actor);
+        if self.failed(&goal) {
+            return None;
+        }
+        let (lift, now) = (spot.lift, game.ticks());
+        let live = live_heights(map);
+        if game.world().is_busy(lift) || live.floor[lift] <= spot.high {
+            if let Some(route) = self.route_to(game, &goal) {
+                return Some(Active::new(goal, Purpose::Exit, route, now));
+            }
+        }
+        // At rest above the heights to fire from: call it. Moving with
+        // its place out of reach: wait by its call for it to stop.
+        {
+            // Every line that lowers it (those sorted as calls from below
+            // wait for it to come to rest at its new top).
+            for (line, on) in self.mech.lift_lines[lift].clone() {
+                let call = match on {
+                    Activation::Use => Goal::Use(line),
+                    Activation::Walk => Goal::Cross(line),
+                    _ => continue,
+                };
+                let up = |h: &mut Heights| (h.low[lift], h.floor[lift]) = (live.floor[lift], live.floor[lift]);
+                if let Some(route) = self.route_with(game, &call, up) {
+                    self.log.push(format!("tick {now}: lift {lift} is up: calling it for a shot at the boss brain"));
+                    return Some(Active::new(call, Purpose::Lift, route, now));
+                }
+            }
+        }
+        None
+    }
+
+    /// On the lift under `spot`: keep the place, face the boss brain with
+    /// the launcher up, and fire when the rocket, leaving some ticks from
+    /// now with the lift that much further up, would burst near enough to
+    /// hurt it. The ride ends when the lift is at rest.
+    fn fire_at_brain(&mut self, game: &Game, a: &mut Active, spot: DVec2, actor: u32) -> Option<TickInput> {
+        let now = game.ticks();
+        let level = game.level();
+        let map = &level.compiled.map;
+        let target = brain::live(game).into_iter().find(|b| b.actor == actor);
+        let lift = self.nav.cell_at(spot).and_then(|c| match self.nav.touched(c) {
+            &[s] => Some(s as usize),
+            _ => None,
+        });
+        let (Some(target), Some(lift), Some(lead)) = (target, lift, brain::launcher(game)) else {
+            self.next_replan = now;
+            return None;
+        };
+        if (!game.world().is_busy(lift) && a.arrived > 1) || a.arrived > RIDE_TICKS {
+            self.next_replan = now;
+            return None;
+        }
+        let player = game.player();
+        let rising = (map.sectors[lift].floor - self.last.floor[lift]).max(0.0);
+        let then = player.z + rising * f64::from(lead);
+        let to = target.body.pos - player.pos;
+        let turn = turn_to(player.angle, to.y.atan2(to.x).to_degrees());
+        let table = &game.actors().table;
+        let slot = |w: Option<usize>| w.and_then(|w| table.actors[w].weapon.as_ref()).map(|w| w.slot);
+        let in_hand = slot(player.pending_weapon.or(player.ready_weapon));
+        let ready = player.pending_weapon.is_none() && slot(player.ready_weapon) == Some(brain::LAUNCHER_SLOT);
+        let blast = brain::blast(&level.compiled, &mut self.sight, player.pos, then + brain::ROCKET_Z, &target.body);
+        let fire = ready && turn.abs() < 1.0 && blast >= brain::WORTH;
+        if std::env::var_os("SIGHTLINE_AUTOPILOT_TRACE").is_some() {
+            eprintln!(
+                "brain tick {now} pos {:?} z {} then {then} blast {blast} ready {ready} turn {turn:.1} arrived {}",
+                player.pos, player.z, a.arrived
+            );
+        }
+        // The trigger is held through the heights that hurt; one rocket
+        // leaves (the launcher takes 20 ticks a shot).
+        if fire && a.presses == 0 {
+            a.presses += 1;
+            self.log.push(format!("tick {now}: rocket at the boss brain from a floor at {:.0}", player.z));
+        }
+        // Back to the place, sideways or backwards as need be: the body
+        // keeps facing the brain.
+        let back = spot - player.pos;
+        let keep = if back.length() > 8.0 && player.velocity.length() * 6.0 < back.length() {
+            let rel = (back.y.atan2(back.x) - player.angle.to_radians()).sin_cos();
+            let step = |x: f64| {
+                if x > 0.38 {
+                    1
+                } else if x < -0.38 {
+                    -1
+                } else {
+                    0
+                }
+            };
+            TickInput { forward: step(rel.1), strafe: -step(rel.0), ..Default::default() }
+        } else {
+            self.hold(game)
+        };
+        Some(TickInput {
+            turn: turn as f32,
+            fire,
+            weapon: if in_hand == Some(brain::LAUNCHER_SLOT) { 0 } else { brain::LAUNCHER_SLOT },
+            ..keep
+        })
     }
 
     /// The enemy to shoot, if one is in sight: the angle to it and the

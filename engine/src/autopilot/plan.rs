@@ -313,6 +313,9 @@ pub enum Goal {
     Shoot(LineId),
     /// Walk onto this spot (an item, a key).
     Touch(DVec2, u32),
+    /// Ride the lift under this spot and fire at the boss brain (actor)
+    /// as it passes the heights a shot hurts it from.
+    Brain(DVec2, u32),
 }
 
 impl Goal {
@@ -323,6 +326,7 @@ impl Goal {
             Goal::Cross(line) => (1, *line),
             Goal::Touch(_, thing) => (2, *thing),
             Goal::Shoot(line) => (3, *line),
+            Goal::Brain(_, actor) => (4, *actor),
         }
     }
 }
@@ -765,6 +769,7 @@ pub fn targets_of(nav: &NavGrid, map: &Map, goal: &Goal) -> Targets {
         Goal::Cross(line) => crossing_of(*line),
         Goal::Touch(p, _) => touch_cells(nav, map, *p),
         Goal::Shoot(line) => shoot_cells(nav, map, *line),
+        Goal::Brain(p, _) => cells_near(nav, *p, 1.0),
     }
 }
 

@@ -333,6 +333,22 @@ fn item(parts: &[Part], size: (usize, usize)) -> Texture {
     render(&parts, &Camera { above: 20.0, ..Camera::sprite(1, size) })
 }
 
+/// The boss brain: a great brain on a stalk, its folds in darker ridges;
+/// in pain (`hurt`) it flushes red.
+fn boss_brain(hurt: bool) -> Texture {
+    let (flesh, fold) = if hurt { (hex(0xd05050), hex(0x902828)) } else { (hex(0xd88c8c), hex(0x9a5656)) };
+    let mut p = vec![
+        Part::limb(Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 0.0, 16.0), 4.0, hex(0x6a3a3a)),
+        Part::ball(Vec3::new(0.0, 0.0, 30.0), Vec3::new(12.0, 18.0, 13.0), flesh).shiny(0.3),
+    ];
+    for k in 0..5 {
+        let y = -12.0 + 6.0 * k as f32;
+        p.push(Part::limb(Vec3::new(10.0, y, 20.0), Vec3::new(9.0, y * 0.8, 41.0), 1.2, fold));
+    }
+    p.push(Part::limb(Vec3::new(11.0, -15.0, 31.0), Vec3::new(11.0, 15.0, 31.0), 1.2, fold));
+    item(&p, (48, 48))
+}
+
 fn cross(parts: &mut Vec<Part>, top: f32, front: f32, s: f32) {
     let red = hex(0xd01818);
     parts.push(Part::block(Vec3::new(front, 0.0, top), Vec3::new(0.4, s, s * 0.3), red));
@@ -365,6 +381,30 @@ const ITEMS: &[(&str, fn() -> Texture)] = &[
         cross(&mut p, 6.0, 6.1, 4.0);
         item(&p, (28, 20))
     }),
+    ("LAUNA0", || {
+        // The rocket launcher, lying on its side: a long tube, a sight on
+        // top, a grip below, the muzzle's rim.
+        let (olive, dark) = (hex(0x5a6a48), hex(0x2c3028));
+        let p = [
+            Part::limb(Vec3::new(0.0, -13.0, 3.5), Vec3::new(0.0, 13.0, 3.5), 3.2, olive).shiny(0.4),
+            Part::limb(Vec3::new(0.0, 12.5, 3.5), Vec3::new(0.0, 13.5, 3.5), 3.6, dark),
+            Part::block(Vec3::new(0.0, -2.0, 7.5), Vec3::new(1.0, 3.0, 1.2), dark),
+            Part::block(Vec3::new(1.5, -5.0, 1.0), Vec3::new(1.2, 1.5, 1.0), dark),
+        ];
+        item(&p, (32, 14))
+    }),
+    ("BROKA0", || {
+        // A box of rockets: a crate with five warheads showing.
+        let mut p = vec![Part::block(Vec3::new(0.0, 0.0, 4.0), Vec3::new(4.5, 9.0, 4.0), hex(0x6a5030))];
+        for k in 0..5 {
+            let y = -7.2 + 3.6 * k as f32;
+            p.push(Part::limb(Vec3::new(0.0, y, 8.0), Vec3::new(0.0, y, 10.5), 1.4, hex(0x707468)).shiny(0.5));
+            p.push(Part::limb(Vec3::new(0.0, y, 10.5), Vec3::new(0.0, y, 12.0), 1.0, hex(0xb02020)));
+        }
+        item(&p, (22, 16))
+    }),
+    ("BBRNA0", || boss_brain(false)),
+    ("BBRNB0", || boss_brain(true)),
     ("SUITA0", || {
         // The radiation suit, hung up empty: boots, legs, body, arms, a
         // hood with a dark visor.
