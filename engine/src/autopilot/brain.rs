@@ -7,37 +7,40 @@
 //! This module finds where that works: for each standing place on a lift,
 //! the heights at which a rocket fired level at the brain bursts near
 //! enough to hurt it ([`spots`]), and, as the body rides, whether a rocket
-//! fired now would ([`blast`]).
+//! fired now would ([`blast`]); and it drives the bot there
+//! ([`Autopilot::brain_goal`]) and on the ride.
 
 use glam::DVec2;
 
-use crate::actors::{Arg, Category};
+use crate::actors::{ActorTable, Arg, Category};
+use crate::map::special::Activation;
 use crate::map::Map;
+use crate::play::actors::attacks::MISSILE_HEIGHT;
 use crate::play::sight::{self, Body};
-use crate::play::Game;
+use crate::play::{Game, TickInput};
 use crate::CompiledMap;
 
-use super::nav::{Cell, NavGrid};
-use super::plan::Mechanisms;
+use super::nav::{Cell, Heights, NavGrid};
+use super::plan::{Goal, Mechanisms, Purpose};
+use super::{live_heights, turn_to, Active, Autopilot};
 
-/// A rocket's body (Doom's: radius 11, height 8), speed per tick, and the
-/// reach of its blast; a rocket leaves the launcher this high above the
-/// shooter's feet.
-const ROCKET_RADIUS: f64 = 11.0;
-const ROCKET_HEIGHT: f64 = 8.0;
-const ROCKET_SPEED: f64 = 20.0;
+/// The reach of a rocket's blast (Doom's `A_Explode`: 128, and 128 damage
+/// at its centre).
 const BLAST: f64 = 128.0;
-pub const ROCKET_Z: f64 = 32.0;
 /// A shot is worth firing when its blast does at least this much.
-pub const WORTH: i32 = 40;
-/// The burst must be this far from the shooter (its blast reaches 128).
-const SAFE: f64 = 192.0;
-/// Lifts this far from the brain at most are looked at.
+const WORTH: i32 = 40;
+/// Lifts this far from the brain at most, along either axis, are looked at.
 const LOOK: f64 = 2048.0;
 /// A body's height: a lift's floor goes no nearer its ceiling.
 const HEADROOM: f64 = 56.0;
 /// Heights tried on a lift, this far apart.
 const Z_STEP: f64 = 2.0;
+/// The rocket launcher's weapon slot (as the fight's choice of weapon has
+/// it).
+pub const LAUNCHER_SLOT: u8 = 5;
+/// Ticks on a lift firing at the boss brain before the ride is given up
+/// (a lift goes down, waits three seconds and comes back up).
+const RIDE_TICKS: u32 = 35 * 20;
 
 /// A live boss brain.
 #[derive(Clone, Copy, Debug)]
@@ -70,6 +73,59 @@ pub fn live(game: &Game) -> Vec<Brain> {
         .collect()
 }
 
+/// The rocket a launcher fires: its body and speed (from its actor), how
+/// high above the shooter's feet it leaves, and the ticks from the trigger
+/// to its leaving (the launcher's `Fire` states before the first that
+/// launches an actor: Doom's 8).
+#[derive(Clone, Copy, Debug)]
+pub struct Rocket {
+    pub radius: f64,
+    pub height: f64,
+    pub speed: f64,
+    pub lead: u32,
+}
+
+/// The rocket launcher, if `game`'s player has it with a rocket for a
+/// shot: the rocket it fires.
+pub fn launcher(game: &Game) -> Option<Rocket> {
+    let player = game.player();
+    let table = &game.actors().table;
+    player.weapons.iter().find_map(|&w| {
+        let def = table.actors[w].weapon.as_ref().filter(|d| d.slot == LAUNCHER_SLOT)?;
+        let ammo = def.ammo.is_none_or(|k| player.ammo[k.index()] >= def.ammo_use.max(1));
+        rocket_of(table, w).filter(|_| ammo)
+    })
+}
+
+/// The rocket of the table's rocket launcher (the weapon in
+/// [`LAUNCHER_SLOT`]), whoever holds it.
+pub fn table_rocket(table: &ActorTable) -> Option<Rocket> {
+    let w = table.actors.iter().position(|a| a.weapon.as_ref().is_some_and(|d| d.slot == LAUNCHER_SLOT))?;
+    rocket_of(table, w)
+}
+
+/// The rocket weapon `w` fires.
+fn rocket_of(table: &ActorTable, w: usize) -> Option<Rocket> {
+    let mut state = table.actors[w].label("Fire")?;
+    let mut lead = 0u32;
+    for _ in 0..16 {
+        let s = table.state(state);
+        let launched = s.action.as_ref().and_then(|a| {
+            a.args.iter().find_map(|g| match g {
+                Arg::Actor(k) => Some(*k),
+                _ => None,
+            })
+        });
+        if let Some(k) = launched {
+            let missile = &table.actors[table.spawned(k)];
+            return Some(Rocket { radius: missile.radius, height: missile.height, speed: missile.speed(false), lead });
+        }
+        lead += s.tics.max(0) as u32;
+        state = s.next?;
+    }
+    None
+}
+
 /// One line a rocket's way crosses: how far along, and the sectors either
 /// side (none for a wall).
 struct Crossing {
@@ -79,10 +135,10 @@ struct Crossing {
 
 /// The lines crossed by a level flight from `from` towards `to` and on
 /// past it, by the rocket's centre and its two sides, nearest first.
-fn crossings(map: &Map, from: DVec2, to: DVec2) -> Vec<Crossing> {
+fn crossings(map: &Map, rocket: &Rocket, from: DVec2, to: DVec2) -> Vec<Crossing> {
     let along = (to - from).normalize_or_zero();
     let reach = from.distance(to) + BLAST;
-    let side = DVec2::new(-along.y, along.x) * ROCKET_RADIUS;
+    let side = DVec2::new(-along.y, along.x) * rocket.radius;
     let mut out = Vec::new();
     for l in &map.lines {
         let (a, b) = map.line_points(l);
@@ -102,6 +158,7 @@ fn crossings(map: &Map, from: DVec2, to: DVec2) -> Vec<Crossing> {
 /// out where it would be worth firing from).
 struct Shot<'a> {
     compiled: &'a CompiledMap,
+    rocket: &'a Rocket,
     lift: Option<(usize, f64)>,
 }
 
@@ -114,52 +171,66 @@ impl Shot<'_> {
     }
 
     /// Does a rocket with its bottom at `z` pass the line between sectors
-    /// `f` and `b`?
+    /// `f` and `b`? (A missile whose bottom comes down to a floor bursts.)
     fn passes(&self, (f, b): (usize, usize), z: f64) -> bool {
         let sectors = &self.compiled.map.sectors;
-        self.floor(f).max(self.floor(b)) <= z && sectors[f].ceiling.min(sectors[b].ceiling) >= z + ROCKET_HEIGHT
+        self.floor(f).max(self.floor(b)) < z && sectors[f].ceiling.min(sectors[b].ceiling) >= z + self.rocket.height
+    }
+
+    /// The damage a rocket fired level from `from`, its bottom at `z`, at
+    /// the brain does to it (0 when it bursts too far away, out of the
+    /// brain's sight, or within its blast of the shooter), given the way's
+    /// crossings.
+    fn damage(&self, scratch: &mut sight::Scratch, from: DVec2, z: f64, brain: &Body, ways: &[Crossing]) -> i32 {
+        let along = (brain.pos - from).normalize_or_zero();
+        let stop = ways.iter().find(|c| !c.sides.is_some_and(|s| self.passes(s, z))).map_or(f64::INFINITY, |c| c.at);
+        // A direct hit: the rocket meets the brain's box before anything else.
+        let level_with = z < brain.z + brain.height && z + self.rocket.height > brain.z;
+        if level_with && from.distance(brain.pos) - brain.radius - self.rocket.radius < stop {
+            return BLAST as i32;
+        }
+        if !stop.is_finite() {
+            return 0;
+        }
+        // Doom's blast: by the larger axis distance, less the body's radius.
+        let reach = |p: DVec2, q: DVec2, radius: f64| {
+            let d = (p - q).abs();
+            (d.x.max(d.y) - radius).max(0.0).floor()
+        };
+        // It bursts where it last stood before the wall: up to one piece of
+        // its move (the engine cuts a move into pieces of 15 at most) short
+        // of it. The nearer of the two ends counts.
+        let piece = self.rocket.speed.min(crate::play::actors::physics::MAX_PIECE);
+        let mut worst = i32::MAX;
+        for back in [self.rocket.radius, self.rocket.radius + piece] {
+            let burst = from + along * (stop - back);
+            let dist = reach(brain.pos, burst, brain.radius);
+            if dist >= BLAST || reach(from, burst, crate::play::player::RADIUS) < BLAST {
+                return 0;
+            }
+            let spot =
+                Body { pos: burst, z, height: self.rocket.height, radius: self.rocket.radius, index: usize::MAX };
+            if !sight::sight(self.compiled, scratch, brain, &spot) {
+                return 0;
+            }
+            worst = worst.min((BLAST - dist) as i32);
+        }
+        worst
     }
 }
 
-/// The damage a rocket fired level from `from`, its bottom at `z`, at the
-/// brain does to it (0 when it bursts too far away, out of the brain's
-/// sight, or near the shooter), given the way's crossings.
-fn damage(shot: &Shot, scratch: &mut sight::Scratch, from: DVec2, z: f64, brain: &Body, ways: &[Crossing]) -> i32 {
-    let along = (brain.pos - from).normalize_or_zero();
-    let stop = ways.iter().find(|c| !c.sides.is_some_and(|s| shot.passes(s, z))).map_or(f64::INFINITY, |c| c.at);
-    // A direct hit: the rocket meets the brain's box before anything else.
-    let to_brain = from.distance(brain.pos);
-    let level_with = z < brain.z + brain.height && z + ROCKET_HEIGHT > brain.z;
-    if level_with && to_brain - brain.radius - ROCKET_RADIUS < stop {
-        return BLAST as i32;
-    }
-    if !stop.is_finite() || stop < SAFE {
-        return 0;
-    }
-    // It bursts where it last stood before the wall: up to a tick's flight
-    // short of it. The nearer of the two ends counts.
-    let mut worst = i32::MAX;
-    for back in [ROCKET_RADIUS, ROCKET_RADIUS + ROCKET_SPEED] {
-        let burst = from + along * (stop - back);
-        let d = (brain.pos - burst).abs();
-        let dist = (d.x.max(d.y) - brain.radius).max(0.0).floor();
-        if dist >= BLAST {
-            return 0;
-        }
-        let spot = Body { pos: burst, z, height: ROCKET_HEIGHT, radius: ROCKET_RADIUS, index: usize::MAX };
-        if !sight::sight(shot.compiled, scratch, brain, &spot) {
-            return 0;
-        }
-        worst = worst.min((BLAST - dist) as i32);
-    }
-    worst
-}
-
-/// The damage a rocket fired now from `from`, its bottom at `z`, would do
-/// to `brain`.
-pub fn blast(compiled: &CompiledMap, scratch: &mut sight::Scratch, from: DVec2, z: f64, brain: &Body) -> i32 {
-    let ways = crossings(&compiled.map, from, brain.pos);
-    damage(&Shot { compiled, lift: None }, scratch, from, z, brain, &ways)
+/// The damage `rocket`, fired now from `from` with its bottom at `z`, would
+/// do to `brain`.
+pub fn blast(
+    compiled: &CompiledMap,
+    scratch: &mut sight::Scratch,
+    rocket: &Rocket,
+    from: DVec2,
+    z: f64,
+    brain: &Body,
+) -> i32 {
+    let ways = crossings(&compiled.map, rocket, from, brain.pos);
+    Shot { compiled, rocket, lift: None }.damage(scratch, from, z, brain, &ways)
 }
 
 /// A place to fire from: a cell wholly on a lift, and the lowest and
@@ -173,12 +244,19 @@ pub struct Spot {
     pub high: f64,
 }
 
-/// Where to fire at `brain` from, with the sectors' floors at `floors`
-/// (the level's own, or those a plan assumes): every cell wholly on a lift
-/// (not a perpetual one) within reach of it, with the heights the lift
-/// passes through (its lowest neighbouring floor to its top) that make a
-/// shot worth firing. The widest window first.
-pub fn spots(nav: &NavGrid, compiled: &CompiledMap, mech: &Mechanisms, brain: &Body, floors: &[f64]) -> Vec<Spot> {
+/// Where to fire `rocket` at `brain` from, with the sectors' floors at
+/// `floors` (the level's own, or those a plan assumes): every cell wholly
+/// on a lift (not a perpetual one) within reach of it, with the heights the
+/// lift passes through (its lowest neighbouring floor to its top) that
+/// make a shot worth firing. The widest window first.
+pub fn spots(
+    nav: &NavGrid,
+    compiled: &CompiledMap,
+    mech: &Mechanisms,
+    rocket: &Rocket,
+    brain: &Body,
+    floors: &[f64],
+) -> Vec<Spot> {
     let map = &compiled.map;
     let mut scratch = sight::Scratch::default();
     let reach = DVec2::splat(LOOK);
@@ -194,15 +272,14 @@ pub fn spots(nav: &NavGrid, compiled: &CompiledMap, mech: &Mechanisms, brain: &B
         // ceiling lets a body stand.
         let raised = floors[lift] > mech.lift_top[lift];
         let top = if raised { map.sectors[lift].ceiling - HEADROOM } else { mech.lift_top[lift] };
-        let bottom = mech.lift_low[lift];
         let from = nav.centre_of(cell);
-        let ways = crossings(map, from, brain.pos);
+        let ways = crossings(map, rocket, from, brain.pos);
         let mut window: Option<(f64, f64)> = None;
         let mut best: Option<(f64, f64)> = None;
-        let mut floor = bottom;
+        let mut floor = mech.lift_low[lift];
         while floor <= top {
-            let shot = Shot { compiled, lift: Some((lift, floor)) };
-            if damage(&shot, &mut scratch, from, floor + ROCKET_Z, brain, &ways) >= WORTH {
+            let shot = Shot { compiled, rocket, lift: Some((lift, floor)) };
+            if shot.damage(&mut scratch, from, floor + MISSILE_HEIGHT, brain, &ways) >= WORTH {
                 window = Some(window.map_or((floor, floor), |w| (w.0, floor)));
             } else {
                 window = None;
@@ -220,29 +297,126 @@ pub fn spots(nav: &NavGrid, compiled: &CompiledMap, mech: &Mechanisms, brain: &B
     out
 }
 
-/// The rocket launcher's weapon slot (as the fight's choice of weapon has
-/// it).
-pub const LAUNCHER_SLOT: u8 = 5;
+impl Autopilot {
+    /// On the lift, to fire at the boss brain as it rides up.
+    pub(super) fn riding(&self) -> bool {
+        self.active.as_ref().is_some_and(|a| matches!(a.goal, Goal::Brain(..)) && a.arrived > 0)
+    }
 
-/// Whether `game`'s player has the rocket launcher with a rocket for a
-/// shot, and the ticks from the trigger to the rocket leaving (its `Fire`
-/// states before the first that launches an actor: Doom's 8).
-pub fn launcher(game: &Game) -> Option<u32> {
-    let player = game.player();
-    let table = &game.actors().table;
-    player.weapons.iter().find_map(|&w| {
-        let def = table.actors[w].weapon.as_ref().filter(|d| d.slot == LAUNCHER_SLOT)?;
-        let ammo = def.ammo.is_none_or(|k| player.ammo[k.index()] >= def.ammo_use.max(1));
-        let mut state = table.actors[w].label("Fire")?;
-        let mut lead = 0u32;
-        for _ in 0..16 {
-            let s = table.state(state);
-            if s.action.as_ref().is_some_and(|a| a.args.iter().any(|g| matches!(g, Arg::Actor(_)))) {
-                return ammo.then_some(lead);
+    /// Is the lift under the boss brain goal's spot on its way up?
+    pub(super) fn lift_rising(&self, game: &Game) -> bool {
+        let Some(Goal::Brain(spot, _)) = self.active.as_ref().map(|a| a.goal.clone()) else { return false };
+        let lift = self.nav.cell_at(spot).and_then(|c| self.nav.touched(c).first().copied());
+        lift.is_some_and(|s| game.level().compiled.map.sectors[s as usize].floor > self.last.floor[s as usize])
+    }
+
+    /// With no exit line within reach, a live boss brain, and the rocket
+    /// launcher with a rocket: the lift to fire from ([`spots`]), the
+    /// widest window over every brain. The body goes to its place on it;
+    /// at rest above the heights a shot hurts from, the lift is called down
+    /// first (the body steps off it to the call), and moving with the place
+    /// out of reach, the body waits by the call.
+    pub(super) fn brain_goal(&mut self, game: &Game) -> Option<Active> {
+        let rocket = launcher(game)?;
+        let level = game.level();
+        let map = &level.compiled.map;
+        let floors: Vec<f64> = map.sectors.iter().map(|s| s.floor).collect();
+        let (spot, actor) = live(game)
+            .iter()
+            .filter_map(|b| {
+                let spot = *spots(&self.nav, &level.compiled, &self.mech, &rocket, &b.body, &floors).first()?;
+                Some((spot, b.actor))
+            })
+            .filter(|(s, actor)| !self.failed(&Goal::Brain(self.nav.centre_of(s.cell), *actor)))
+            .max_by(|a, b| (a.0.high - a.0.low).total_cmp(&(b.0.high - b.0.low)))?;
+        let goal = Goal::Brain(self.nav.centre_of(spot.cell), actor);
+        let (lift, now) = (spot.lift, game.ticks());
+        let live = live_heights(map);
+        if game.world().is_busy(lift) || live.floor[lift] <= spot.high {
+            if let Some(route) = self.route_to(game, &goal) {
+                return Some(Active::new(goal, Purpose::Exit, route, now));
             }
-            lead += s.tics.max(0) as u32;
-            state = s.next?;
+        }
+        // At rest above the heights to fire from: call it. Moving with its
+        // place out of reach: wait by its call for it to stop. Every line
+        // that lowers it will do (those sorted as calls from below wait
+        // for it to come to rest at a new top).
+        for (line, on) in self.mech.lift_lines[lift].clone() {
+            let call = match on {
+                Activation::Use => Goal::Use(line),
+                Activation::Walk => Goal::Cross(line),
+                _ => continue,
+            };
+            let up = |h: &mut Heights| (h.low[lift], h.floor[lift]) = (live.floor[lift], live.floor[lift]);
+            if let Some(route) = self.route_with(game, &call, up) {
+                self.log.push(format!("tick {now}: calling lift {lift} for a shot at the boss brain"));
+                return Some(Active::new(call, Purpose::Lift, route, now));
+            }
         }
         None
-    })
+    }
+
+    /// On the lift under `spot`: keep the place, face the boss brain with
+    /// the launcher up, and hold the trigger while a rocket, leaving
+    /// [`Rocket::lead`] ticks from now with the lift that much further up
+    /// (or still, at rest), would burst near enough to hurt it (at a lift's
+    /// 4 units a tick a window passes in a few ticks: one rocket a ride).
+    /// The ride ends when the lift is at rest and a shot from there would
+    /// not hurt.
+    pub(super) fn fire_at_brain(&mut self, game: &Game, a: &mut Active, spot: DVec2, actor: u32) -> Option<TickInput> {
+        let now = game.ticks();
+        let level = game.level();
+        let map = &level.compiled.map;
+        let target = live(game).into_iter().find(|b| b.actor == actor);
+        let lift = self.nav.cell_at(spot).and_then(|c| match self.nav.touched(c) {
+            &[s] => Some(s as usize),
+            _ => None,
+        });
+        let (Some(target), Some(lift), Some(rocket)) = (target, lift, launcher(game)) else {
+            self.next_replan = now;
+            return None;
+        };
+        let player = game.player();
+        let rise = map.sectors[lift].floor - self.last.floor[lift];
+        let top =
+            if self.mech.lift_top[lift] < map.sectors[lift].floor { f64::INFINITY } else { self.mech.lift_top[lift] };
+        let then = (player.z + rise * f64::from(rocket.lead)).min(top);
+        let blast = blast(&level.compiled, &mut self.sight, &rocket, player.pos, then + MISSILE_HEIGHT, &target.body);
+        let busy = game.world().is_busy(lift);
+        if (!busy && a.arrived > 1 && blast < WORTH) || a.arrived > RIDE_TICKS {
+            self.next_replan = now;
+            return None;
+        }
+        let to = target.body.pos - player.pos;
+        let turn = turn_to(player.angle, to.y.atan2(to.x).to_degrees());
+        let in_hand = super::slot_of(game, player.pending_weapon.or(player.ready_weapon));
+        let ready = player.pending_weapon.is_none() && super::slot_of(game, player.ready_weapon) == Some(LAUNCHER_SLOT);
+        // Never on the way down: the rocket would leave lower than reckoned.
+        let fire = ready && turn.abs() < 1.0 && rise >= 0.0 && blast >= WORTH;
+        if std::env::var_os("SIGHTLINE_AUTOPILOT_TRACE").is_some() {
+            eprintln!(
+                "brain tick {now} pos {:?} z {} then {then} blast {blast} ready {ready} turn {turn:.1} arrived {}",
+                player.pos, player.z, a.arrived
+            );
+        }
+        if fire && !self.firing {
+            self.log.push(format!("tick {now}: rocket at the boss brain from a floor at {:.0}", player.z));
+        }
+        self.firing = fire;
+        // Back to the place, sideways or backwards as need be: the body
+        // keeps facing the brain.
+        let back = spot - player.pos;
+        let keep = if back.length() > 8.0 && player.velocity.length() * 6.0 < back.length() {
+            let (forward, strafe) = super::thrust_towards(player.angle, back.y.atan2(back.x).to_degrees());
+            TickInput { forward, strafe, ..Default::default() }
+        } else {
+            self.hold(game)
+        };
+        Some(TickInput {
+            turn: turn as f32,
+            fire,
+            weapon: if in_hand == Some(LAUNCHER_SLOT) { 0 } else { LAUNCHER_SLOT },
+            ..keep
+        })
+    }
 }

@@ -278,15 +278,16 @@ fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
         exits.push(place(if secret { "secret exit".into() } else { "exit".into() }, (a + b) / 2.0, ok));
         exit_targets.push((targets, walk));
     }
-    // No exit line: the boss brain's death ends the level, if a rocket
-    // fired from a lift the player reaches hurts it.
-    if mech.exits.is_empty() {
-        let table = ActorTable::active();
+    // The boss brain's death ends the level too, if a rocket fired from a
+    // lift the player reaches hurts it (whether a launcher can be had is
+    // not asked).
+    let table = ActorTable::active();
+    if let Some(rocket) = brain::table_rocket(table) {
         for (i, thing) in map.things.iter().enumerate().filter(|(_, t)| t.in_single_player(skill)) {
             let Some(def) = table.get(&thing.kind).filter(|d| d.category == Category::BossBrain) else { continue };
             let body = brain::body(&level.compiled, def, thing.pos, i);
             let mut targets = Targets::default();
-            for spot in brain::spots(&nav, &level.compiled, &mech, &body, &c.heights.floor) {
+            for spot in brain::spots(&nav, &level.compiled, &mech, &rocket, &body, &c.heights.floor) {
                 targets.add(plan::cells_near(&nav, nav.centre_of(spot.cell), 1.0));
             }
             let ok = targets.cells().any(|x| c.reached[x as usize]);

@@ -95,11 +95,8 @@ const BARREL_BLAST: f64 = 160.0;
 const CROWD: u32 = 3;
 /// Below this health a fight is fought falling back.
 const RETREAT_HEALTH: i32 = 40;
-/// Ticks on a lift firing at the boss brain before the ride is given up
-/// (a lift goes down, waits three seconds and comes back up).
-const RIDE_TICKS: u32 = 35 * 20;
-/// A drop deeper than this is stepped off at a creep, under [`CREEP`]
-/// units a tick ...
+/// A drop deeper than this is stepped off at a creep, braking above
+/// [`CREEP`] units a tick ...
 const LONG_DROP: f64 = 128.0;
 /// ... onto a landing narrower than a walking body falling from there
 /// would cross at this many units a tick.
@@ -188,8 +185,7 @@ struct Active {
     still: u32,
     /// Times the route was found again on the way.
     reroutes: u32,
-    /// Uses pressed at the goal (rockets fired, riding to fire at the boss
-    /// brain).
+    /// Uses pressed at the goal.
     presses: u32,
     /// Ticks spent at the goal.
     arrived: u32,
@@ -288,6 +284,8 @@ pub struct Autopilot {
     /// creep (see [`Autopilot::drive_to`]): no fighting or dodging, which
     /// would throw it off at speed.
     creeping: std::cell::Cell<bool>,
+    /// The trigger was held at the boss brain last tick.
+    firing: bool,
     /// Live monsters in sight last tick (counted up to [`CROWD`]).
     in_sight: u32,
     /// Health was under [`LOW_HEALTH`] last tick.
@@ -356,6 +354,7 @@ impl Autopilot {
             in_sight: 0,
             barrel_near: false,
             creeping: std::cell::Cell::new(false),
+            firing: false,
         }
     }
 
@@ -471,17 +470,11 @@ impl Autopilot {
             input.fire = true;
             // Ask for the weapon only when another is in hand: asking again
             // would step to the next weapon in the slot.
-            let table = &game.actors().table;
-            let in_hand = player
-                .pending_weapon
-                .or(player.ready_weapon)
-                .and_then(|w| table.actors[w].weapon.as_ref())
-                .map(|w| w.slot);
+            let in_hand = slot_of(game, player.pending_weapon.or(player.ready_weapon));
             input.weapon = if in_hand == Some(weapon) { 0 } else { weapon };
             // No shot with the weapon being put away (a rocket fired as
             // the enemy closes in bursts in the bot's face).
-            let ready = player.ready_weapon.and_then(|w| table.actors[w].weapon.as_ref()).map(|w| w.slot);
-            input.fire = player.pending_weapon.is_none() && ready == Some(weapon);
+            input.fire = player.pending_weapon.is_none() && slot_of(game, player.ready_weapon) == Some(weapon);
             if input.fire && matches!(weapon, 5 | 7) {
                 // The missile leaves some ticks after the trigger (Doom's
                 // rocket launcher: 8): keep facing this way till then.
@@ -493,22 +486,7 @@ impl Autopilot {
                 input.run = true;
                 self.keep_footing(game, &mut input);
             } else if let Some(dir) = move_dir {
-                let rel = (dir - angle).to_radians();
-                let (s, c) = rel.sin_cos();
-                input.forward = if c > 0.38 {
-                    1
-                } else if c < -0.38 {
-                    -1
-                } else {
-                    0
-                };
-                input.strafe = if s > 0.38 {
-                    -1
-                } else if s < -0.38 {
-                    1
-                } else {
-                    0
-                };
+                (input.forward, input.strafe) = thrust_towards(angle, dir);
                 if back.is_some() {
                     self.keep_footing(game, &mut input);
                 }
@@ -1540,11 +1518,12 @@ impl Autopilot {
         let player = game.player();
         let d = target - player.pos;
         let turn = turn_to(player.angle, d.y.atan2(d.x).to_degrees());
-        // Heading for a narrow landing far below: off the edge at a creep.
-        // A falling body keeps its speed, and from high up even a walk
-        // carries it past (the 16-unit ledge round MAP30's lift, 512 below
-        // its top). Narrow: where a walking body would come down, the floor
-        // falls away again.
+        // Heading for a narrow landing far below: off the edge at a creep
+        // (about a unit a tick). A falling body keeps its speed, and from
+        // high up even a walk carries it past (round MAP30's lift, 512
+        // below its top, the floor at its foot is at most 72 wide, the main
+        // floor 256 below it). Narrow: where a walking body would come
+        // down, the floor falls away again.
         let sectors = &game.level().compiled.map.sectors;
         let floor_at = |p: DVec2| {
             let c = self.nav.cell_at(p)?;
@@ -1836,13 +1815,8 @@ impl Autopilot {
                 // Only bullets set off a shot line (as in Doom): no
                 // rockets, plasma or BFG.
                 let weapon = weapon_for(game, Fire::Bullets);
-                let table = &game.actors().table;
                 let player = game.player();
-                let in_hand = player
-                    .pending_weapon
-                    .or(player.ready_weapon)
-                    .and_then(|w| table.actors[w].weapon.as_ref())
-                    .map(|w| w.slot);
+                let in_hand = slot_of(game, player.pending_weapon.or(player.ready_weapon));
                 Some(TickInput {
                     turn: turn as f32,
                     fire: still && a.arrived % 8 < 4,
@@ -1927,133 +1901,6 @@ impl Autopilot {
             player.angle,
             game.world().special(level, sl).is_some()
         );
-    }
-
-    /// On the lift, to fire at the boss brain as it rides up.
-    fn riding(&self) -> bool {
-        self.active.as_ref().is_some_and(|a| matches!(a.goal, Goal::Brain(..)) && a.arrived > 0)
-    }
-
-    /// Has the lift under the boss brain goal's spot left its bottom?
-    fn lift_rising(&self, game: &Game) -> bool {
-        let Some(Goal::Brain(spot, _)) = self.active.as_ref().map(|a| a.goal.clone()) else { return false };
-        let lift = self.nav.cell_at(spot).and_then(|c| self.nav.touched(c).first().copied());
-        lift.is_some_and(|s| game.player().z > self.mech.lift_low[s as usize] + 1.0)
-    }
-
-    /// With no exit line within reach and a live boss brain, the rocket
-    /// launcher and rockets: the lift to fire from ([`brain::spots`]). The
-    /// body goes to its place on it; at rest above the heights a shot hurts
-    /// from, the lift is called down first (the body drops off it to reach
-    /// the call), and moving with the place out of reach, the body waits
-    /// by the call.
-    fn brain_goal(&mut self, game: &Game) -> Option<Active> {
-        let target = *brain::live(game).first()?;
-        brain::launcher(game)?;
-        let level = game.level();
-        let map = &level.compiled.map;
-        let floors: Vec<f64> = map.sectors.iter().map(|s| s.floor).collect();
-        let spot = *brain::spots(&self.nav, &level.compiled, &self.mech, &target.body, &floors).first()?;
-        let goal = Goal::Brain(self.nav.centre_of(spot.cell), target.actor);
-        if self.failed(&goal) {
-            return None;
-        }
-        let (lift, now) = (spot.lift, game.ticks());
-        let live = live_heights(map);
-        if game.world().is_busy(lift) || live.floor[lift] <= spot.high {
-            if let Some(route) = self.route_to(game, &goal) {
-                return Some(Active::new(goal, Purpose::Exit, route, now));
-            }
-        }
-        // At rest above the heights to fire from: call it. Moving with
-        // its place out of reach: wait by its call for it to stop.
-        {
-            // Every line that lowers it (those sorted as calls from below
-            // wait for it to come to rest at its new top).
-            for (line, on) in self.mech.lift_lines[lift].clone() {
-                let call = match on {
-                    Activation::Use => Goal::Use(line),
-                    Activation::Walk => Goal::Cross(line),
-                    _ => continue,
-                };
-                let up = |h: &mut Heights| (h.low[lift], h.floor[lift]) = (live.floor[lift], live.floor[lift]);
-                if let Some(route) = self.route_with(game, &call, up) {
-                    self.log.push(format!("tick {now}: lift {lift} is up: calling it for a shot at the boss brain"));
-                    return Some(Active::new(call, Purpose::Lift, route, now));
-                }
-            }
-        }
-        None
-    }
-
-    /// On the lift under `spot`: keep the place, face the boss brain with
-    /// the launcher up, and fire when the rocket, leaving some ticks from
-    /// now with the lift that much further up, would burst near enough to
-    /// hurt it. The ride ends when the lift is at rest.
-    fn fire_at_brain(&mut self, game: &Game, a: &mut Active, spot: DVec2, actor: u32) -> Option<TickInput> {
-        let now = game.ticks();
-        let level = game.level();
-        let map = &level.compiled.map;
-        let target = brain::live(game).into_iter().find(|b| b.actor == actor);
-        let lift = self.nav.cell_at(spot).and_then(|c| match self.nav.touched(c) {
-            &[s] => Some(s as usize),
-            _ => None,
-        });
-        let (Some(target), Some(lift), Some(lead)) = (target, lift, brain::launcher(game)) else {
-            self.next_replan = now;
-            return None;
-        };
-        if (!game.world().is_busy(lift) && a.arrived > 1) || a.arrived > RIDE_TICKS {
-            self.next_replan = now;
-            return None;
-        }
-        let player = game.player();
-        let rising = (map.sectors[lift].floor - self.last.floor[lift]).max(0.0);
-        let then = player.z + rising * f64::from(lead);
-        let to = target.body.pos - player.pos;
-        let turn = turn_to(player.angle, to.y.atan2(to.x).to_degrees());
-        let table = &game.actors().table;
-        let slot = |w: Option<usize>| w.and_then(|w| table.actors[w].weapon.as_ref()).map(|w| w.slot);
-        let in_hand = slot(player.pending_weapon.or(player.ready_weapon));
-        let ready = player.pending_weapon.is_none() && slot(player.ready_weapon) == Some(brain::LAUNCHER_SLOT);
-        let blast = brain::blast(&level.compiled, &mut self.sight, player.pos, then + brain::ROCKET_Z, &target.body);
-        let fire = ready && turn.abs() < 1.0 && blast >= brain::WORTH;
-        if std::env::var_os("SIGHTLINE_AUTOPILOT_TRACE").is_some() {
-            eprintln!(
-                "brain tick {now} pos {:?} z {} then {then} blast {blast} ready {ready} turn {turn:.1} arrived {}",
-                player.pos, player.z, a.arrived
-            );
-        }
-        // The trigger is held through the heights that hurt; one rocket
-        // leaves (the launcher takes 20 ticks a shot).
-        if fire && a.presses == 0 {
-            a.presses += 1;
-            self.log.push(format!("tick {now}: rocket at the boss brain from a floor at {:.0}", player.z));
-        }
-        // Back to the place, sideways or backwards as need be: the body
-        // keeps facing the brain.
-        let back = spot - player.pos;
-        let keep = if back.length() > 8.0 && player.velocity.length() * 6.0 < back.length() {
-            let rel = (back.y.atan2(back.x) - player.angle.to_radians()).sin_cos();
-            let step = |x: f64| {
-                if x > 0.38 {
-                    1
-                } else if x < -0.38 {
-                    -1
-                } else {
-                    0
-                }
-            };
-            TickInput { forward: step(rel.1), strafe: -step(rel.0), ..Default::default() }
-        } else {
-            self.hold(game)
-        };
-        Some(TickInput {
-            turn: turn as f32,
-            fire,
-            weapon: if in_hand == Some(brain::LAUNCHER_SLOT) { 0 } else { brain::LAUNCHER_SLOT },
-            ..keep
-        })
     }
 
     /// The enemy to shoot, if one is in sight: the angle to it and the
@@ -2260,6 +2107,27 @@ fn rocket_clear(map: &crate::map::Map, from: DVec2, z: f64, to: DVec2) -> bool {
         let (a, b) = map.line_points(l);
         [DVec2::ZERO, side, -side].iter().all(|&o| crate::play::trace::crossing(from + o, end + o, a, b).is_none())
     })
+}
+
+/// The weapon slot of weapon `w` (an actor), if any.
+fn slot_of(game: &Game, w: Option<usize>) -> Option<u8> {
+    w.and_then(|w| game.actors().table.actors[w].weapon.as_ref()).map(|w| w.slot)
+}
+
+/// The forward and strafe keys that move a body facing `facing` degrees
+/// the `way` (degrees), to the nearest of the eight directions.
+fn thrust_towards(facing: f64, way: f64) -> (i8, i8) {
+    let (s, c) = (way - facing).to_radians().sin_cos();
+    let key = |x: f64| {
+        if x > 0.38 {
+            1
+        } else if x < -0.38 {
+            -1
+        } else {
+            0
+        }
+    };
+    (key(c), -key(s))
 }
 
 /// Which weapons a shot may use.

@@ -24,7 +24,7 @@ use crate::play::sight::{self, Body, Ray, Struck};
 /// A monster's grudge lasts this many chase steps (Doom's BASETHRESHOLD).
 const GRUDGE: i32 = 100;
 /// Missiles leave a monster this far above its feet (Doom: 32).
-const MISSILE_HEIGHT: f64 = 32.0;
+pub const MISSILE_HEIGHT: f64 = 32.0;
 /// A lost soul charges at this speed (Doom's SKULLSPEED).
 const SKULL_SPEED: f64 = 20.0;
 /// The mancubus spreads its fireballs by this (Doom's FATSPREAD, 90/8 degrees).
