@@ -303,6 +303,19 @@ impl Autopilot {
         self.active.as_ref().is_some_and(|a| matches!(a.goal, Goal::Brain(..)) && a.arrived > 0)
     }
 
+    /// Is the body wholly on the lift of `goal`, a boss brain goal's spot?
+    /// Anywhere on it is arrival (a body that fights on the way may reach
+    /// the lift, not the spot, before the lift starts up).
+    pub(super) fn on_brain_lift(&self, game: &Game, goal: &Goal) -> bool {
+        let Goal::Brain(spot, _) = goal else { return false };
+        let lift = |p: DVec2| match self.nav.cell_at(p).map(|c| self.nav.touched(c)) {
+            Some(&[s]) => Some(s),
+            _ => None,
+        };
+        let here = lift(game.player().pos);
+        here.is_some() && here == lift(*spot)
+    }
+
     /// Is the lift under the boss brain goal's spot on its way up?
     pub(super) fn lift_rising(&self, game: &Game) -> bool {
         let Some(Goal::Brain(spot, _)) = self.active.as_ref().map(|a| a.goal.clone()) else { return false };

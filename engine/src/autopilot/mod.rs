@@ -1248,7 +1248,13 @@ impl Autopilot {
                 }
             }
         }
-        if self.active.is_none() || (now >= self.next_replan && !waiting) || (self.rechoose && !leaping) {
+        // A key picked up or health running low does not break off a leap
+        // or a ride at the boss brain (the launcher put away for a fight
+        // would not be up again for the shot).
+        if self.active.is_none()
+            || (now >= self.next_replan && !waiting)
+            || (self.rechoose && !leaping && !self.riding())
+        {
             self.rechoose = false;
             if now < self.settle_until && self.active.is_none() {
                 return TickInput::default();
@@ -1321,6 +1327,9 @@ impl Autopilot {
     fn step(&mut self, game: &Game, a: &mut Active) -> Option<TickInput> {
         if let Some(input) = self.leap_step(game, a) {
             return input;
+        }
+        if self.on_brain_lift(game, &a.goal) {
+            return self.arrive(game, a);
         }
         let now = game.ticks();
         let player = game.player();
