@@ -233,6 +233,18 @@ pub fn blast(
     Shot { compiled, rocket, lift: None }.damage(scratch, from, z, brain, &ways)
 }
 
+/// The highest floor lift `lift` reaches with its floor at `floor`: its
+/// top at rest, or, raised above that (something else moves its floor up,
+/// as MAP30's switch raises its lift 512), as high as its ceiling lets a
+/// body stand.
+fn lift_reach(map: &Map, mech: &Mechanisms, lift: usize, floor: f64) -> f64 {
+    if floor > mech.lift_top[lift] {
+        map.sectors[lift].ceiling - HEADROOM
+    } else {
+        mech.lift_top[lift]
+    }
+}
+
 /// A place to fire from: a cell wholly on a lift, and the lowest and
 /// highest floor heights of the lift from which a rocket fired level hurts
 /// the brain by [`WORTH`] at least.
@@ -267,11 +279,7 @@ pub fn spots(
         if mech.lift_lines[lift].is_empty() || mech.perpetual[lift] || !nav.standable(cell) {
             continue;
         }
-        // Raised above its top at rest (something else moves its floor up,
-        // as MAP30's switch raises its lift 512): it may go as high as its
-        // ceiling lets a body stand.
-        let raised = floors[lift] > mech.lift_top[lift];
-        let top = if raised { map.sectors[lift].ceiling - HEADROOM } else { mech.lift_top[lift] };
+        let top = lift_reach(map, mech, lift, floors[lift]);
         let from = nav.centre_of(cell);
         let ways = crossings(map, rocket, from, brain.pos);
         let mut window: Option<(f64, f64)> = None;
@@ -303,24 +311,28 @@ impl Autopilot {
         self.active.as_ref().is_some_and(|a| matches!(a.goal, Goal::Brain(..)) && a.arrived > 0)
     }
 
+    /// The one sector under a body at `p`, if its circle is wholly on one
+    /// (a spot's lift: [`spots`] takes only such cells).
+    fn lift_at(&self, p: DVec2) -> Option<usize> {
+        match self.nav.cell_at(p).map(|c| self.nav.touched(c)) {
+            Some(&[s]) => Some(s as usize),
+            _ => None,
+        }
+    }
+
     /// Is the body wholly on the lift of `goal`, a boss brain goal's spot?
     /// Anywhere on it is arrival (a body that fights on the way may reach
     /// the lift, not the spot, before the lift starts up).
     pub(super) fn on_brain_lift(&self, game: &Game, goal: &Goal) -> bool {
         let Goal::Brain(spot, _) = goal else { return false };
-        let lift = |p: DVec2| match self.nav.cell_at(p).map(|c| self.nav.touched(c)) {
-            Some(&[s]) => Some(s),
-            _ => None,
-        };
-        let here = lift(game.player().pos);
-        here.is_some() && here == lift(*spot)
+        let here = self.lift_at(game.player().pos);
+        here.is_some() && here == self.lift_at(*spot)
     }
 
     /// Is the lift under the boss brain goal's spot on its way up?
     pub(super) fn lift_rising(&self, game: &Game) -> bool {
-        let Some(Goal::Brain(spot, _)) = self.active.as_ref().map(|a| a.goal.clone()) else { return false };
-        let lift = self.nav.cell_at(spot).and_then(|c| self.nav.touched(c).first().copied());
-        lift.is_some_and(|s| game.level().compiled.map.sectors[s as usize].floor > self.last.floor[s as usize])
+        let Some(&Goal::Brain(spot, _)) = self.active.as_ref().map(|a| &a.goal) else { return false };
+        self.lift_at(spot).is_some_and(|s| game.level().compiled.map.sectors[s].floor > self.last.floor[s])
     }
 
     /// With no exit line within reach, a live boss brain, and the rocket
@@ -333,19 +345,18 @@ impl Autopilot {
         let rocket = launcher(game)?;
         let level = game.level();
         let map = &level.compiled.map;
-        let floors: Vec<f64> = map.sectors.iter().map(|s| s.floor).collect();
+        let live_now = live_heights(map);
         let (spot, actor) = live(game)
             .iter()
             .filter_map(|b| {
-                let spot = *spots(&self.nav, &level.compiled, &self.mech, &rocket, &b.body, &floors).first()?;
+                let spot = *spots(&self.nav, &level.compiled, &self.mech, &rocket, &b.body, &live_now.floor).first()?;
                 Some((spot, b.actor))
             })
             .filter(|(s, actor)| !self.failed(&Goal::Brain(self.nav.centre_of(s.cell), *actor)))
             .max_by(|a, b| (a.0.high - a.0.low).total_cmp(&(b.0.high - b.0.low)))?;
         let goal = Goal::Brain(self.nav.centre_of(spot.cell), actor);
         let (lift, now) = (spot.lift, game.ticks());
-        let live = live_heights(map);
-        if game.world().is_busy(lift) || live.floor[lift] <= spot.high {
+        if game.world().is_busy(lift) || live_now.floor[lift] <= spot.high {
             if let Some(route) = self.route_to(game, &goal) {
                 return Some(Active::new(goal, Purpose::Exit, route, now));
             }
@@ -360,7 +371,7 @@ impl Autopilot {
                 Activation::Walk => Goal::Cross(line),
                 _ => continue,
             };
-            let up = |h: &mut Heights| (h.low[lift], h.floor[lift]) = (live.floor[lift], live.floor[lift]);
+            let up = |h: &mut Heights| (h.low[lift], h.floor[lift]) = (live_now.floor[lift], live_now.floor[lift]);
             if let Some(route) = self.route_with(game, &call, up) {
                 self.log.push(format!("tick {now}: calling lift {lift} for a shot at the boss brain"));
                 return Some(Active::new(call, Purpose::Lift, route, now));
@@ -381,19 +392,14 @@ impl Autopilot {
         let level = game.level();
         let map = &level.compiled.map;
         let target = live(game).into_iter().find(|b| b.actor == actor);
-        let lift = self.nav.cell_at(spot).and_then(|c| match self.nav.touched(c) {
-            &[s] => Some(s as usize),
-            _ => None,
-        });
-        let (Some(target), Some(lift), Some(rocket)) = (target, lift, launcher(game)) else {
+        let (Some(target), Some(lift), Some(rocket)) = (target, self.lift_at(spot), launcher(game)) else {
             self.next_replan = now;
             return None;
         };
         let player = game.player();
-        let rise = map.sectors[lift].floor - self.last.floor[lift];
-        let top =
-            if self.mech.lift_top[lift] < map.sectors[lift].floor { f64::INFINITY } else { self.mech.lift_top[lift] };
-        let then = (player.z + rise * f64::from(rocket.lead)).min(top);
+        let floor = map.sectors[lift].floor;
+        let rise = floor - self.last.floor[lift];
+        let then = (player.z + rise * f64::from(rocket.lead)).min(lift_reach(map, &self.mech, lift, floor));
         let blast = blast(&level.compiled, &mut self.sight, &rocket, player.pos, then + MISSILE_HEIGHT, &target.body);
         let busy = game.world().is_busy(lift);
         if (!busy && a.arrived > 1 && blast < WORTH) || a.arrived > RIDE_TICKS {
