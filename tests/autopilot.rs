@@ -2,11 +2,10 @@
 //! lift down by the switch on it, a switch and its remote door, a key and
 //! its door, a teleporter, a one-way drop, a gap to jump at a run, a stair
 //! of steps narrower than its grid, a gap as wide as the body to go round, a
-//! boss brain shot at from a rising lift, a radiation suit before a long
-//! wade through nukage, health before a shorter one it would not live
-//! through) it
-//! reaches the exit through its inputs alone, and the mechanism was really
-//! used; `check` finds a map's unreachable secret and its soft lock;
+//! boss brain shot at from a rising lift, a switch pressed from the nukage
+//! below its ledge, a radiation suit before a long wade through nukage,
+//! health before a shorter one it would not live through) it reaches the
+//! exit through its inputs alone, and the mechanism was really used; `check` finds a map's unreachable secret and its soft lock;
 //! a recorded run replays to the same state; and Freedoom's E1M1 is finished.
 
 use glam::DVec2;
@@ -176,6 +175,32 @@ fn the_autopilot_passes_under_a_crusher_unhurt() {
 }
 
 #[test]
+fn the_autopilot_presses_a_switch_from_the_nukage_below_its_ledge_at_once() {
+    // The spot square in front of the switch is on a ledge 128 up; the
+    // press is made from the nukage beside it, as soon as the switch is
+    // within reach (lining up first, or waiting two seconds for it, kept
+    // the body a hurt or two longer in the pool).
+    let (a, b) = (DVec2::new(368.0, 112.0), DVec2::new(400.0, 112.0));
+    let mut in_reach: Option<u64> = None;
+    let mut opened: Option<u64> = None;
+    let play = finish("ledge_switch", |play| {
+        let (game, now) = (&play.game, play.game.ticks());
+        let p = game.player().pos;
+        let t = ((p - a).dot(b - a) / (b - a).length_squared()).clamp(0.0, 1.0);
+        if game.player().sector == 1 && p.distance(a + (b - a) * t) < sightline::play::USE_RANGE {
+            in_reach.get_or_insert(now);
+        }
+        let door = &game.level().compiled.map.sectors[4];
+        if door.ceiling > door.floor {
+            opened.get_or_insert(now);
+        }
+    });
+    let (reach, open) = (in_reach.expect("never within reach of the switch"), opened.expect("the door never opened"));
+    assert!(open < reach + 20, "in reach at tick {reach}, pressed at {open}");
+    assert!(play.game.player().health >= 30, "health {}", play.game.player().health);
+}
+
+#[test]
 fn the_autopilot_kills_the_boss_brain_from_a_rising_lift() {
     // No exit line: the brain's death ends the level. No shot from the
     // floor passes the slit; only rockets fired from the lift as it rides
@@ -235,6 +260,7 @@ fn check_finds_no_flaw_in_the_mechanism_maps() {
         "stair",
         "wedge",
         "crusher",
+        "ledge_switch",
         "brain",
         "suit",
         "heal",

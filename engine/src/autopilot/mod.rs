@@ -752,7 +752,9 @@ impl Autopilot {
     /// take with health to spare (at a walk, two ticks a cell, and a wait at
     /// its end): fetch a radiation suit first, when one can be reached for
     /// less than the route's own cost, and the body wears none; a wade it
-    /// would not live through fetches a suit or health from however far.
+    /// would not live through fetches a suit or health from however far,
+    /// as long as the fetch leaves the body alive and (for health) hurts
+    /// less than it gives.
     fn protection_first(&mut self, game: &Game, active: Active) -> Active {
         if matches!(active.purpose, Purpose::Supplies | Purpose::Safety) {
             return active;
@@ -764,10 +766,12 @@ impl Autopilot {
         // Hurts every 32 ticks, two ticks a cell: a sixteenth of the cells'
         // damage; and at the end, where it presses and waits for what it
         // set off, about four hurts more.
+        let (nav, hurts) = (&self.nav, &self.hurts);
+        let hurting = |c: &&Cell| nav.touched(**c).iter().any(|&s| hurts[s as usize]);
+        let wade = |cells: &[Cell]| cells.iter().filter(hurting).filter_map(|&c| damage(c)).sum::<u32>() / 16;
         let cells = &active.route.cells;
-        let hurting = |c: &&Cell| self.hurts_at(**c);
         let wait = cells.last().filter(hurting).and_then(|&c| damage(c)).unwrap_or(0) * 4;
-        let dose = cells.iter().filter(hurting).filter_map(|&c| damage(c)).sum::<u32>() / 16 + wait;
+        let dose = wade(cells) + wait;
         let health = game.player().health.max(0) as u32;
         if dose < SUIT_DOSE.min(health / 2) {
             return active;
@@ -783,7 +787,11 @@ impl Autopilot {
             let helps = def.pickup.as_ref().is_some_and(|p| {
                 p.give.iter().any(|g| match g {
                     crate::actors::Give::Power(crate::actors::Power::IronFeet) => true,
-                    crate::actors::Give::Health { .. } => lethal,
+                    // Only health that lifts the body clear of the dose:
+                    // medikits stop at 100, and a wade that 100 would not
+                    // live through is not made safe by fetching them (it
+                    // is waded as it is, or with a suit).
+                    &crate::actors::Give::Health { max, .. } => lethal && health < max as u32 && dose + 5 < max as u32,
                     _ => false,
                 })
             });
@@ -811,14 +819,29 @@ impl Autopilot {
         let Some(&(i, pos)) = wanted.iter().min_by(|a, b| a.1.distance(end).total_cmp(&b.1.distance(end))) else {
             return active;
         };
-        let what = &actors.table.actors[actors.list[i as usize].kind].name;
+        // The fetch is itself a wade: one the body would not live
+        // through, or (for health) one that hurts more than the health
+        // gives, is no help.
+        let fetch = wade(&route.cells);
+        let def = &actors.table.actors[actors.list[i as usize].kind];
+        let suit = def.pickup.as_ref().is_some_and(|p| {
+            p.give.iter().any(|g| matches!(g, crate::actors::Give::Power(crate::actors::Power::IronFeet)))
+        });
+        let gain = def.pickup.as_ref().map_or(0, |p| {
+            p.give
+                .iter()
+                .map(|g| match *g {
+                    crate::actors::Give::Health { amount, max } => amount.min(max - health as i32).max(0) as u32,
+                    _ => 0,
+                })
+                .sum()
+        });
+        if fetch + 5 >= health || (!suit && fetch >= gain) {
+            return active;
+        }
+        let what = &def.name;
         self.log.push(format!("tick {}: the way wades through about {dose} damage: {what} first", game.ticks()));
         Active::new(Goal::Touch(pos, i), Purpose::Supplies, route, game.ticks())
-    }
-
-    /// Does standing in `cell` hurt now?
-    fn hurts_at(&self, cell: Cell) -> bool {
-        self.nav.touched(cell).iter().any(|&s| self.hurts[s as usize])
     }
 
     /// A route that boards a lift from below while the lift is up, with no
@@ -1795,7 +1818,12 @@ impl Autopilot {
                     self.next_replan = now;
                     return None;
                 }
-                if (close && settled) || a.arrived > 60 || a.presses > 0 {
+                // Where the floor hurts, no lining up: the press is made
+                // as soon as it reaches (MAP29's switch is pressed from
+                // the lava below its ledge, and the spot in front of it
+                // is on the ledge).
+                let hurry = self.on_hurting_floor(game);
+                if (close && settled) || a.arrived > if hurry { 4 } else { 60 } || a.presses > 0 {
                     if let Some(input) = self.use_line(game, line) {
                         if input.use_line {
                             a.presses += 1;
