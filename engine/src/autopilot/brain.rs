@@ -56,7 +56,7 @@ pub fn body(compiled: &CompiledMap, def: &crate::actors::ActorDef, pos: DVec2, i
 }
 
 /// The live boss brains of `game`.
-pub fn live(game: &Game) -> Vec<Brain> {
+pub fn live(game: &Game) -> impl Iterator<Item = Brain> + '_ {
     let actors = game.actors();
     actors
         .list
@@ -70,7 +70,6 @@ pub fn live(game: &Game) -> Vec<Brain> {
                 body: Body { pos: a.pos, z: a.z, height: def.height, radius: def.radius, index: i },
             }
         })
-        .collect()
 }
 
 /// The rocket a launcher fires: its body and speed (from its actor), how
@@ -347,7 +346,6 @@ impl Autopilot {
         let map = &level.compiled.map;
         let live_now = live_heights(map);
         let (spot, actor) = live(game)
-            .iter()
             .filter_map(|b| {
                 let spot = *spots(&self.nav, &level.compiled, &self.mech, &rocket, &b.body, &live_now.floor).first()?;
                 Some((spot, b.actor))
@@ -391,7 +389,7 @@ impl Autopilot {
         let now = game.ticks();
         let level = game.level();
         let map = &level.compiled.map;
-        let target = live(game).into_iter().find(|b| b.actor == actor);
+        let target = live(game).find(|b| b.actor == actor);
         let (Some(target), Some(lift), Some(rocket)) = (target, self.lift_at(spot), launcher(game)) else {
             self.next_replan = now;
             return None;

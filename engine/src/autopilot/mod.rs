@@ -30,7 +30,7 @@ use glam::DVec2;
 /// A point on the map (glam's, re-exported for the command line).
 pub type Point = DVec2;
 
-use crate::actors::{ActorFlag, Category};
+use crate::actors::{ActorDef, ActorFlag, Category, Give, Power};
 use crate::map::special::{Activation, KeyColour};
 use crate::play::actors::Target;
 use crate::play::events::Event;
@@ -390,7 +390,7 @@ impl Autopilot {
         }
         // A suit with a few seconds left shields from all but the floors it
         // is no use on (its rare leaks are taken).
-        let suited = player.powers[crate::play::pickups::power_slot(crate::actors::Power::IronFeet)] > SUIT_MARGIN;
+        let suited = player.powers[crate::play::pickups::power_slot(Power::IronFeet)] > SUIT_MARGIN;
         // A floor can come to hurt (a line that copies a neighbour's
         // special as it lowers a floor to nukage).
         for (hurts, sector) in self.hurts.iter_mut().zip(&game.level().compiled.map.sectors) {
@@ -435,7 +435,7 @@ impl Autopilot {
         }
         // A boss brain spits monsters for as long as it lives: a fight
         // stood or fallen back from never ends, so it is fought on the way.
-        let endless = !brain::live(game).is_empty();
+        let endless = brain::live(game).next().is_some();
         let retreat = !endless
             && fight.is_some()
             && (player.health < RETREAT_HEALTH || self.in_sight >= CROWD || self.barrel_near);
@@ -783,17 +783,14 @@ impl Autopilot {
         let mut targets = Targets::default();
         let mut wanted = Vec::new();
         for (i, a) in actors.list.iter().enumerate() {
-            let def = &actors.table.actors[a.kind];
-            let helps = def.pickup.as_ref().is_some_and(|p| {
-                p.give.iter().any(|g| match g {
-                    crate::actors::Give::Power(crate::actors::Power::IronFeet) => true,
-                    // Only health that lifts the body clear of the dose:
-                    // medikits stop at 100, and a wade that 100 would not
-                    // live through is not made safe by fetching them (it
-                    // is waded as it is, or with a suit).
-                    &crate::actors::Give::Health { max, .. } => lethal && health < max as u32 && dose + 5 < max as u32,
-                    _ => false,
-                })
+            let helps = gives(&actors.table.actors[a.kind]).any(|g| match *g {
+                Give::Power(Power::IronFeet) => true,
+                // Only health that lifts the body clear of the dose:
+                // medikits stop at 100, and a wade that 100 would not live
+                // through is not made safe by fetching them (it is waded as
+                // it is, or with a suit).
+                Give::Health { max, .. } => lethal && health < max as u32 && dose + 5 < max as u32,
+                _ => false,
             });
             if helps
                 && !a.removed
@@ -824,18 +821,13 @@ impl Autopilot {
         // gives, is no help.
         let fetch = wade(&route.cells);
         let def = &actors.table.actors[actors.list[i as usize].kind];
-        let suit = def.pickup.as_ref().is_some_and(|p| {
-            p.give.iter().any(|g| matches!(g, crate::actors::Give::Power(crate::actors::Power::IronFeet)))
-        });
-        let gain = def.pickup.as_ref().map_or(0, |p| {
-            p.give
-                .iter()
-                .map(|g| match *g {
-                    crate::actors::Give::Health { amount, max } => amount.min(max - health as i32).max(0) as u32,
-                    _ => 0,
-                })
-                .sum()
-        });
+        let suit = gives(def).any(|g| matches!(g, Give::Power(Power::IronFeet)));
+        let gain: u32 = gives(def)
+            .map(|g| match *g {
+                Give::Health { amount, max } => amount.min(max - health as i32).max(0) as u32,
+                _ => 0,
+            })
+            .sum();
         if fetch + 5 >= health || (!suit && fetch >= gain) {
             return active;
         }
@@ -1206,7 +1198,7 @@ impl Autopilot {
         // Floors that hurt take health too; ammo matters only with monsters.
         // A boss brain spits monsters for as long as it lives (even with
         // none placed): health and armour are worth fetching sooner.
-        let endless = !brain::live(game).is_empty();
+        let endless = brain::live(game).next().is_some();
         let low_health = player.health < if endless { 100 } else { LOW_HEALTH };
         let monsters = game.stats().kills.1 > 0 || endless;
         let low_ammo = monsters && player.ammo[0] < 20 && player.ammo[1] < 4;
@@ -1222,10 +1214,10 @@ impl Autopilot {
             // With monsters about, a weapon it lacks or better armour than
             // it wears is worth a short detour too.
             let (useful, range) = pickup.give.iter().fold((false, 0.0f64), |(u, r), g| match g {
-                crate::actors::Give::Health { .. } if low_health && player.health < 100 => (true, r.max(1500.0)),
-                crate::actors::Give::Ammo { .. } if low_ammo => (true, r.max(1500.0)),
-                crate::actors::Give::Weapon(name) if monsters && !owned(name) => (true, r.max(768.0)),
-                crate::actors::Give::Armor { points, .. } if monsters && player.armor < *points => (true, r.max(768.0)),
+                Give::Health { .. } if low_health && player.health < 100 => (true, r.max(1500.0)),
+                Give::Ammo { .. } if low_ammo => (true, r.max(1500.0)),
+                Give::Weapon(name) if monsters && !owned(name) => (true, r.max(768.0)),
+                Give::Armor { points, .. } if monsters && player.armor < *points => (true, r.max(768.0)),
                 _ => (u, r),
             });
             let d = a.pos.distance(player.pos);
@@ -2144,6 +2136,11 @@ fn rocket_clear(map: &crate::map::Map, from: DVec2, z: f64, to: DVec2) -> bool {
         let (a, b) = map.line_points(l);
         [DVec2::ZERO, side, -side].iter().all(|&o| crate::play::trace::crossing(from + o, end + o, a, b).is_none())
     })
+}
+
+/// What picking up `def` gives (nothing when it is no pickup).
+fn gives(def: &ActorDef) -> impl Iterator<Item = &Give> {
+    def.pickup.iter().flat_map(|p| p.give.iter())
 }
 
 /// The weapon slot of weapon `w` (an actor), if any.

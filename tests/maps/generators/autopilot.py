@@ -23,6 +23,12 @@ def exit_room(m, sector, x0, y0, x1, y1):
     m.special((x1, ym - 32), (x1, ym + 32), EXIT, "the exit switch")
 
 
+def inset(m, outer, inner, r):
+    """Sector `inner` on rect `r`, cut out of sector `outer`."""
+    m.hole(outer, r)
+    m.region(inner, r)
+
+
 def door_switch(m, p, q, note):
     """A switch texture on the line p-q, and its special: it opens the
     doors tagged 2."""
@@ -127,8 +133,7 @@ room leads into it.
     pad = m.sector(0, 128, 200, "TILE", label="Teleport pad")
     end = m.sector(0, 128, tag=3, label="Exit room (tag 3), with the teleport destination")
     m.region(start, rect(0, 0, 384, 256))
-    m.hole(start, rect(256, 96, 320, 160))
-    m.region(pad, rect(256, 96, 320, 160))
+    inset(m, start, pad, rect(256, 96, 320, 160))
     exit_room(m, end, 512, 0, 768, 256)
     m.front(start, pad)
     for p, q in [((256, 96), (256, 160)), ((256, 160), (320, 160)), ((320, 160), (320, 96)), ((320, 96), (256, 96))]:
@@ -242,10 +247,8 @@ within reach across its corner (Freedoom's MAP29 has two such switches).
     end = m.sector(0, 128, label="Exit room")
     m.region(start, rect(0, 0, 256, 256))
     m.region(pool, rect(256, 0, 640, 256))
-    m.hole(pool, rect(352, 64, 416, 192))
-    m.region(ledge, rect(352, 64, 416, 192))
-    m.hole(ledge, rect(368, 112, 400, 128))
-    m.region(pillar, rect(368, 112, 400, 128))
+    inset(m, pool, ledge, rect(352, 64, 416, 192))
+    inset(m, ledge, pillar, rect(368, 112, 400, 128))
     m.front(ledge, pillar)
     door_switch(m, (368, 112), (400, 112), "the switch: opens the door; faces the ledge")
     m.region(door, rect(640, 96, 656, 160))
@@ -269,8 +272,7 @@ MAP30's way). The player starts on a rocket launcher and rockets.
     slit = m.sector(176, 208, 144, label="Slit, 176 to 208 up, in the north wall")
     chamber = m.sector(80, 208, 144, label="The boss brain's chamber, floor 80")
     m.region(room, rect(0, 0, 512, 512))
-    m.hole(room, rect(192, 128, 320, 256))
-    m.region(lift, rect(192, 128, 320, 256))
+    inset(m, room, lift, rect(192, 128, 320, 256))
     m.region(slit, rect(224, 512, 288, 528))
     m.region(chamber, rect(128, 528, 384, 768))
     m.front(room, lift)
@@ -332,8 +334,7 @@ the start room, has no way out: dropping into it is a soft lock.
     pit = m.sector(-128, 128, 120, label="Pit, floor -128: a soft lock")
     end = m.sector(0, 128, label="Exit room")
     m.region(start, rect(0, 0, 512, 256))
-    m.hole(start, rect(64, 160, 192, 224))
-    m.region(secret, rect(64, 160, 192, 224))
+    inset(m, start, secret, rect(64, 160, 192, 224))
     m.region(pit, rect(256, -256, 448, 0))
     exit_room(m, end, 512, 0, 768, 256)
     m.thing("player_start", 64, 64, 0)
