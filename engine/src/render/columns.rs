@@ -201,17 +201,7 @@ impl ColumnWriter<'_> {
                 ((wrap - v + dv - 1) / dv) as usize
             };
             let (stretch, tail) = rest.split_at_mut(until_wrap.min(rest.len()));
-            // Two rows an iteration: half the loop's own count and test.
-            let mut pairs = stretch.chunks_exact_mut(2);
-            for pair in &mut pairs {
-                pair[0] = column[(v >> FRAC) as usize];
-                pair[1] = column[((v + dv) >> FRAC) as usize];
-                v += 2 * dv;
-            }
-            for p in pairs.into_remainder() {
-                *p = column[(v >> FRAC) as usize];
-                v += dv;
-            }
+            v = stretch_texels(stretch, column, v, dv);
             if v >= wrap {
                 v -= wrap;
             }
@@ -219,6 +209,71 @@ impl ColumnWriter<'_> {
         }
         tint.apply_all(run);
         self.count(x, y0, y1);
+    }
+}
+
+/// One stretch of a wall run, texel row `v` (16.16 fixed point) first and
+/// `dv` further each row, none of them past the column's end: a load and a
+/// store a pixel. With AVX2 a wall seen no smaller than its texels (`dv` at
+/// most one texel a row: at 1080p every wall nearer than 960 units) takes
+/// eight rows at once, whose texels lie within eight of the first, as one
+/// load of those eight and a permute ([`window`]). Returns `v` past the
+/// stretch.
+#[multiversion::multiversion(targets("x86_64+avx2"))]
+fn stretch_texels(stretch: &mut [u32], column: &[u32], v: i64, dv: i64) -> i64 {
+    const FRAC: u32 = 16;
+    let (done, mut v) = multiversion::target::match_target! {
+        "x86_64+avx2" => window::eights(stretch, column, v, dv),
+        _ => (0, v),
+    };
+    // Two rows an iteration: half the loop's own count and test.
+    let mut pairs = stretch[done..].chunks_exact_mut(2);
+    for pair in &mut pairs {
+        pair[0] = column[(v >> FRAC) as usize];
+        pair[1] = column[((v + dv) >> FRAC) as usize];
+        v += 2 * dv;
+    }
+    for p in pairs.into_remainder() {
+        *p = column[(v >> FRAC) as usize];
+        v += dv;
+    }
+    v
+}
+
+#[cfg(target_arch = "x86_64")]
+mod window {
+    use std::arch::x86_64::{
+        __m256i, _mm256_add_epi32, _mm256_permutevar8x32_epi32, _mm256_set1_epi32, _mm256_setr_epi32, _mm256_srli_epi32,
+    };
+
+    /// [`super::stretch_texels`]'s rows eight at a time while `dv` is at most
+    /// one texel a row: then rows `y..y + 8` read texels `t..t + 8` at most,
+    /// `t` row `y`'s (its fraction plus seven steps stays under eight
+    /// texels), so one load of those eight and a permute by each row's
+    /// offset from `t` fetch them all. Stops eight texels short of the
+    /// column's end and leaves fewer than eight rows; returns the rows done
+    /// and `v` after them.
+    #[target_feature(enable = "avx2")]
+    pub(super) fn eights(stretch: &mut [u32], column: &[u32], mut v: i64, dv: i64) -> (usize, i64) {
+        const ONE: i64 = 1 << 16;
+        if !(0..=ONE).contains(&dv) || v < 0 {
+            return (0, v);
+        }
+        // Row k's offset from the first row, k * dv (at most 7 << 16).
+        let d = dv as i32;
+        let steps = _mm256_setr_epi32(0, d, 2 * d, 3 * d, 4 * d, 5 * d, 6 * d, 7 * d);
+        let mut done = 0;
+        for rows in stretch.chunks_exact_mut(8) {
+            let first = (v >> 16) as usize;
+            let Some(texels) = column.get(first..first + 8) else { break };
+            let texels: [u32; 8] = texels.try_into().unwrap_or_default();
+            let offsets = _mm256_srli_epi32::<16>(_mm256_add_epi32(_mm256_set1_epi32((v & (ONE - 1)) as i32), steps));
+            let pixels = _mm256_permutevar8x32_epi32(bytemuck::cast::<[u32; 8], __m256i>(texels), offsets);
+            rows.copy_from_slice(&bytemuck::cast::<__m256i, [u32; 8]>(pixels));
+            v += 8 * dv;
+            done += 8;
+        }
+        (done, v)
     }
 }
 
@@ -307,6 +362,30 @@ mod sse2 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A stretch's texels, the AVX2 eights included, are the texels of the
+    /// plain formula, for steps either side of one texel a row, every start
+    /// fraction, columns shorter and longer than eight, and stretches that
+    /// run to the column's last texel.
+    #[test]
+    fn stretch_texels_match_the_formula() {
+        const ONE: i64 = 1 << 16;
+        for h in [1usize, 3, 8, 9, 17, 64, 128] {
+            let column: Vec<u32> = (0..h as u32).map(|i| i.wrapping_mul(0x9E37_79B9) | 1).collect();
+            let wrap = (h as i64) << 16;
+            for dv in [0, 1, 4_681, ONE / 3, ONE / 2 + 7, ONE - 1, ONE, ONE + 1, 3 * ONE / 2, 5 * ONE] {
+                for v in (0..wrap).step_by(4_099).chain([wrap - 1]) {
+                    // Every row of the stretch stays in the column.
+                    let rows = if dv == 0 { 40 } else { ((wrap - v + dv - 1) / dv).min(40) as usize };
+                    let mut got = vec![0u32; rows];
+                    let end = stretch_texels(&mut got, &column, v, dv);
+                    let want: Vec<u32> = (0..rows as i64).map(|k| column[((v + k * dv) >> 16) as usize]).collect();
+                    assert_eq!(got, want, "h {h} dv {dv} v {v}");
+                    assert_eq!(end, v + rows as i64 * dv);
+                }
+            }
+        }
+    }
 
     /// The blocked copy equals the pixel-at-a-time one at every size, the
     /// blocks' leftover rows and columns included.
