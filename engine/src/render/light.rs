@@ -95,12 +95,53 @@ impl Tint {
 }
 
 /// Compiled for AVX2 and SSE4.1 as well as the baseline, picked at run time
-/// (`multiversion`): the 32-bit multiplies are one instruction per 8 pixels
-/// with AVX2, where the baseline's SSE2 emulates them with shuffles.
+/// (`multiversion`): SSE4.1 has the 32-bit multiply the baseline's SSE2
+/// emulates with shuffles, and AVX2 lights eight pixels in 16-bit lanes
+/// ([`lanes16`]), a third fewer instructions than the 32-bit form.
 #[multiversion::multiversion(targets("x86_64+avx2", "x86_64+sse4.1"))]
 fn tint_all(tint: Tint, pixels: &mut [u32]) {
-    for p in pixels {
+    let done = multiversion::target::match_target! {
+        "x86_64+avx2" => lanes16::tint_eights(tint, pixels),
+        _ => 0,
+    };
+    for p in &mut pixels[done..] {
         *p = tint.apply(*p);
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+mod lanes16 {
+    use super::Tint;
+    use std::arch::x86_64::{
+        __m256i, _mm256_add_epi32, _mm256_and_si256, _mm256_mullo_epi16, _mm256_or_si256, _mm256_set1_epi16,
+        _mm256_set1_epi32, _mm256_srli_epi16,
+    };
+
+    /// [`Tint::apply`] to eight pixels at a time in 16-bit lanes, each lane
+    /// one channel beside its neighbour: `c * scale` (at most 255 * 256)
+    /// fits a lane, so one 16-bit multiply does what the 32-bit form does in
+    /// two (each of two instructions) and the results are the same. Leaves
+    /// fewer than eight pixels; returns how many it did.
+    #[target_feature(enable = "avx2")]
+    pub(super) fn tint_eights(tint: Tint, pixels: &mut [u32]) -> usize {
+        let scale = _mm256_set1_epi16(tint.scale as i16);
+        let fog = _mm256_set1_epi32(tint.fog as i32);
+        let (low, high, alpha) = (
+            _mm256_set1_epi16(0x00ff),
+            _mm256_set1_epi16(0xff00_u16 as i16),
+            _mm256_set1_epi32(0xff00_0000_u32 as i32),
+        );
+        let done = pixels.len() / 8 * 8;
+        for eight in pixels[..done].chunks_exact_mut(8) {
+            let c = bytemuck::cast::<[u32; 8], __m256i>(eight.try_into().unwrap_or_default());
+            // Red and blue, the low byte of each lane, scaled and shifted back.
+            let rb = _mm256_srli_epi16::<8>(_mm256_mullo_epi16(_mm256_and_si256(c, low), scale));
+            // Green (and alpha, replaced below) scaled into the high byte.
+            let ga = _mm256_and_si256(_mm256_mullo_epi16(_mm256_srli_epi16::<8>(c), scale), high);
+            let lit = _mm256_or_si256(_mm256_add_epi32(_mm256_or_si256(rb, ga), fog), alpha);
+            eight.copy_from_slice(&bytemuck::cast::<__m256i, [u32; 8]>(lit));
+        }
+        done
     }
 }
 
@@ -108,6 +149,24 @@ fn tint_all(tint: Tint, pixels: &mut [u32]) {
 mod tests {
     use super::*;
     use crate::framebuffer::rgb;
+
+    /// The vectorised light (16-bit lanes with AVX2) gives every pixel what
+    /// `Tint::apply` gives it, for every scale, with fog and without, and
+    /// leaves the tail past the last eight to the scalar form alike.
+    #[test]
+    fn tint_all_matches_apply() {
+        let pixels: Vec<u32> = (0..259u32).map(|i| i.wrapping_mul(0x9E37_79B9) | 0xff00_0000).collect();
+        let fogged = Lighting { diminishing: true, fog: Some(Fog { colour: [250, 7, 128], distance: 900.0 }) };
+        let tints = (0..=256)
+            .map(|scale| Tint { scale, fog: 0 })
+            .chain((0..=255u8).flat_map(|light| [0.0, 300.0, 899.0, 5000.0].map(|depth| fogged.tint(light, depth))));
+        for tint in tints {
+            let mut lit = pixels.clone();
+            tint.apply_all(&mut lit);
+            let want: Vec<u32> = pixels.iter().map(|&p| tint.apply(p)).collect();
+            assert_eq!(lit, want, "{tint:?}");
+        }
+    }
 
     #[test]
     fn light_and_fog() {
