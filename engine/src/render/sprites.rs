@@ -198,10 +198,20 @@ impl MaskedPass<'_> {
         match paint {
             // The common case as one run without a branch per texel: a
             // sprite's transparent texels mispredicted at every edge.
-            Texels::Tinted(tint) if !translucent => out.put_opaque(x, y0, y1, |y| {
-                let t = texel(y);
-                (tint.apply(t), t >> 24 != 0)
-            }),
+            Texels::Tinted(tint) if !translucent => {
+                // The texels first, a load each, then light and select in one
+                // vectorised loop, a stack buffer's worth at a time.
+                let mut texels = [0u32; 64];
+                let mut y = y0;
+                while y < y1 {
+                    let n = ((y1 - y) as usize).min(texels.len());
+                    for (k, t) in texels[..n].iter_mut().enumerate() {
+                        *t = texel(y + k as i32);
+                    }
+                    out.tint_opaque(x, y, &texels[..n], tint);
+                    y += n as i32;
+                }
+            }
             _ => {
                 for y in y0..y1 {
                     let t = texel(y);
