@@ -283,13 +283,12 @@ mod window {
         let d = dv as i32;
         let steps = _mm256_setr_epi32(0, d, 2 * d, 3 * d, 4 * d, 5 * d, 6 * d, 7 * d);
         let mut done = 0;
-        for rows in stretch.chunks_exact_mut(8) {
+        for rows in stretch.as_chunks_mut::<8>().0 {
             let first = (v >> 16) as usize;
-            let Some(texels) = column.get(first..first + 8) else { break };
-            let texels: [u32; 8] = texels.try_into().unwrap_or_default();
+            let Some(&texels) = column.get(first..).and_then(<[u32]>::first_chunk::<8>) else { break };
             let offsets = _mm256_srli_epi32::<16>(_mm256_add_epi32(_mm256_set1_epi32((v & (ONE - 1)) as i32), steps));
             let pixels = _mm256_permutevar8x32_epi32(bytemuck::cast::<[u32; 8], __m256i>(texels), offsets);
-            rows.copy_from_slice(&bytemuck::cast::<__m256i, [u32; 8]>(pixels));
+            *rows = bytemuck::cast::<__m256i, [u32; 8]>(pixels);
             v += 8 * dv;
             done += 8;
         }

@@ -131,17 +131,17 @@ mod lanes16 {
             _mm256_set1_epi16(0xff00_u16 as i16),
             _mm256_set1_epi32(0xff00_0000_u32 as i32),
         );
-        let done = pixels.len() / 8 * 8;
-        for eight in pixels[..done].chunks_exact_mut(8) {
-            let c = bytemuck::cast::<[u32; 8], __m256i>(eight.try_into().unwrap_or_default());
+        let (eights, _) = pixels.as_chunks_mut::<8>();
+        for eight in eights.iter_mut() {
+            let c = bytemuck::cast::<[u32; 8], __m256i>(*eight);
             // Red and blue, the low byte of each lane, scaled and shifted back.
             let rb = _mm256_srli_epi16::<8>(_mm256_mullo_epi16(_mm256_and_si256(c, low), scale));
             // Green (and alpha, replaced below) scaled into the high byte.
             let ga = _mm256_and_si256(_mm256_mullo_epi16(_mm256_srli_epi16::<8>(c), scale), high);
             let lit = _mm256_or_si256(_mm256_add_epi32(_mm256_or_si256(rb, ga), fog), alpha);
-            eight.copy_from_slice(&bytemuck::cast::<__m256i, [u32; 8]>(lit));
+            *eight = bytemuck::cast::<__m256i, [u32; 8]>(lit);
         }
-        done
+        eights.len() * 8
     }
 }
 

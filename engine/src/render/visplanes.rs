@@ -340,8 +340,8 @@ mod eights {
         let (umask, vmask) = (_mm256_set1_epi32(s.umask as i32), _mm256_set1_epi32(s.vmask as i32));
         let shift = _mm_cvtsi32_si128(s.shift as i32);
         let (mut u, mut v) = (_mm256_and_si256(u, umask), _mm256_and_si256(v, vmask));
-        let done = row.len() / 8 * 8;
-        for eight in row[..done].chunks_exact_mut(8) {
+        let (eights, _) = row.as_chunks_mut::<8>();
+        for eight in eights.iter_mut() {
             let column = _mm256_sll_epi32(_mm256_srli_epi32::<{ FRAC as i32 }>(u), shift);
             let at: [u32; 8] =
                 bytemuck::cast::<__m256i, [u32; 8]>(_mm256_or_si256(column, _mm256_srli_epi32::<{ FRAC as i32 }>(v)));
@@ -351,7 +351,7 @@ mod eights {
             u = _mm256_and_si256(_mm256_add_epi32(u, du8), umask);
             v = _mm256_and_si256(_mm256_add_epi32(v, dv8), vmask);
         }
-        done
+        eights.len() * 8
     }
 }
 
