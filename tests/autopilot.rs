@@ -2,7 +2,8 @@
 //! lift down by the switch on it, a switch and its remote door, a key and
 //! its door, a teleporter, a one-way drop, a gap to jump at a run, a stair
 //! of steps narrower than its grid, a gap as wide as the body to go round, a
-//! boss brain shot at from a rising lift, a switch pressed from the nukage
+//! boss brain shot at from a rising lift, stepping stones narrower than the
+//! body, a switch pressed from the nukage
 //! below its ledge, a radiation suit before a long wade through nukage,
 //! health before a shorter one it would not live through) it reaches the
 //! exit through its inputs alone, and the mechanism was really used; `check` finds a map's unreachable secret and its soft lock;
@@ -141,6 +142,21 @@ fn the_autopilot_clears_a_gap_with_a_running_jump() {
     assert!(report.exit_reachable, "{}", report.text());
     assert!(report.soft_locks.iter().all(|s| s.to_sector == 1), "{}", report.text());
     assert!(!report.soft_locks.is_empty(), "the pit: {}", report.text());
+}
+
+#[test]
+fn the_autopilot_crosses_stepping_stones_narrower_than_the_body() {
+    // Every stone is narrower than a body and the margin a standing body
+    // keeps from an edge, so each landing is on a rim; the chain turns a
+    // corner, so no one run carries from the ledge to the exit room. The
+    // bot once walked back to a run-up's start on a stone coasting, and
+    // slid off its far side.
+    let mut lowest = f64::MAX;
+    finish("stones", |play| lowest = lowest.min(play.game.player().z));
+    assert!(lowest > -24.0, "the player fell into the pit (feet down to {lowest})");
+    let level = open_level(&map_path("tests/maps/autopilot_stones.ron"), &Default::default()).unwrap();
+    let (report, _) = check::check(level, 3);
+    assert!(report.exit_reachable, "{}", report.text());
 }
 
 #[test]
@@ -310,9 +326,10 @@ fn the_autopilot_finishes_freedoom_e1m1_without_monsters() {
 
 /// Every map of a Freedoom IWAD autoplayed without monsters on skill 3, two
 /// at a time: the maps that exit within 20 minutes of game time, and a
-/// table of how each went (printed; `--nocapture` shows it).
+/// table of how each went (printed; `--nocapture` shows it). The floors are
+/// the targets: 30 of freedoom1's 36, 26 of freedoom2's 32.
 const FREEDOOM1_FLOOR: usize = 30;
-const FREEDOOM2_FLOOR: usize = 24;
+const FREEDOOM2_FLOOR: usize = 26;
 
 fn autoplay_wad(wad: &str) -> Vec<(String, bool, String)> {
     let path = freedoom_wads::path(wad);
@@ -354,6 +371,6 @@ fn the_autopilot_finishes_most_of_freedoom_without_monsters() {
         let results = autoplay_wad(wad);
         let exited = results.iter().filter(|r| r.1).count();
         eprintln!("{wad}: {exited} of {} maps exited", results.len());
-        assert!(exited >= floor, "{wad}: only {exited} of {} maps exited (at least {floor} did before)", results.len());
+        assert!(exited >= floor, "{wad}: only {exited} of {} maps exited (the target is {floor})", results.len());
     }
 }

@@ -55,6 +55,8 @@ pub struct Leap {
     pub runup: u8,
     /// Cells from the edge to `to`.
     pub cells: u8,
+    /// It comes down on a rim (the body overhangs a drop there).
+    pub rim: bool,
 }
 
 /// The move key of a leap from `c` along direction `d`, for the set of
@@ -233,9 +235,9 @@ impl NavGrid {
             step: step_length(d),
         };
         // A run-up of `r` cells: where it stops, if it gets across to a
-        // cell on the landing's level and not on the edge of a drop (a
-        // corner that only grazes a high floor is slid off).
-        let attempt = |r: usize| {
+        // cell on the landing's level and, unless `rims`, not on the edge
+        // of a drop (a corner that only grazes a high floor is slid off).
+        let attempt = |r: usize, rims: bool| {
             let (stop, landing) = run(&line, r)?;
             let landing_floor = line.under(landing)?.0;
             let i = line.at(stop)?;
@@ -243,25 +245,31 @@ impl NavGrid {
                 let ok = i > edge
                     && (i - edge) as f64 * line.step >= landing - CELL
                     && self.standable(line.cells[i])
-                    && !self.span(line.cells[i], heights).ledge()
+                    && (rims || !self.span(line.cells[i], heights).ledge())
                     && (line.floor[i] - landing_floor).abs() <= MAX_STEP;
-                ok.then(|| Leap { to: line.cells[i], runup: r as u8, cells: (i - edge) as u8 })
+                ok.then(|| Leap { to: line.cells[i], runup: r as u8, cells: (i - edge) as u8, rim: rims })
             })
         };
         // The longest run-up first: with it failing, none works.
         let longest = edge;
-        let best = attempt(longest)?;
-        let (mut lo, mut hi) = (1, longest);
-        while lo < hi {
-            let mid = (lo + hi) / 2;
-            if attempt(mid).is_some() {
-                hi = mid;
-            } else {
-                lo = mid + 1;
+        let shortest = |rims: bool| {
+            let best = attempt(longest, rims)?;
+            let (mut lo, mut hi) = (1, longest);
+            while lo < hi {
+                let mid = (lo + hi) / 2;
+                if attempt(mid, rims).is_some() {
+                    hi = mid;
+                } else {
+                    lo = mid + 1;
+                }
             }
-        }
-        // A cell more than the least, for a start a little off.
-        attempt((lo + 1).min(longest)).or_else(|| attempt(lo)).or(Some(best))
+            // A cell more than the least, for a start a little off.
+            attempt((lo + 1).min(longest), rims).or_else(|| attempt(lo, rims)).or(Some(best))
+        };
+        // A landing clear of edges first; where there is none, one on a
+        // rim: a chain of stepping stones narrower than the body (MAP21's
+        // way to its red key) has nothing else.
+        shortest(false).or_else(|| shortest(true))
     }
 }
 
@@ -288,6 +296,8 @@ pub struct Run {
     /// The edge's floor.
     floor: f64,
     key: u32,
+    /// Down with a drop close ahead (braked at a run's thrust).
+    rim: bool,
 }
 
 impl Run {
@@ -338,6 +348,7 @@ impl Autopilot {
                 stalled: 0,
                 floor,
                 key: key(edge, d),
+                rim: false,
             });
             self.log.push(format!(
                 "tick {now}: a running jump from {:?} with {runup:.0} units of run-up",
@@ -349,10 +360,12 @@ impl Autopilot {
         a.idle = 0;
         if run.landed {
             // Brake before going on: at a run the body would coast some
-            // ten times its speed.
+            // ten times its speed. Near a drop ahead, at a run's thrust, as
+            // the model does: a walk's braking takes twice the way, off the
+            // far side of a stepping stone.
             if player.velocity.length() > 2.0 && run.ticks < 35 {
                 a.leap = Some(run);
-                return Some(Some(self.hold(game)));
+                return Some(Some(TickInput { run: run.rim, ..self.hold(game) }));
             }
             a.leap = None;
             return None;
@@ -382,6 +395,14 @@ impl Autopilot {
             }
             if !there {
                 a.leap = Some(run);
+                // Braked to a stop at the start, at a run's thrust, once
+                // within the way that takes (and a tick's travel): a body
+                // left to coast goes on some ten times its speed, off the
+                // far side of a stepping stone.
+                let v = player.velocity.length();
+                if v > 1.0 && off.length() < v * v / (2.0 * RUN_THRUST) + v {
+                    return Some(Some(TickInput { run: true, ..self.hold(game) }));
+                }
                 return Some(Some(self.drive_to(game, run.start, true)));
             }
             if player.velocity.length() > 0.3 {
@@ -409,9 +430,19 @@ impl Autopilot {
                 // Across: brake, then on along the route.
                 self.log.push(format!("tick {now}: across, at {:?}", player.pos));
                 (run.landed, run.ticks) = (true, 0);
-                a.leap = Some(run);
                 a.at = run.edge + 1;
-                return Some(Some(self.hold(game)));
+                // A landing with a drop within a run's coast ahead (a
+                // stepping stone) is braked at a run's thrust.
+                let live = super::live_heights(&game.level().compiled.map);
+                run.rim = (1..=4).any(|k| {
+                    let p = player.pos + run.dir * (f64::from(k) * CELL);
+                    self.nav.cell_at(p).is_none_or(|c| {
+                        let span = self.nav.span(c, &live);
+                        span.ledge() || span.high < player.z - MAX_STEP
+                    })
+                });
+                a.leap = Some(run);
+                return Some(Some(TickInput { run: run.rim, ..self.hold(game) }));
             }
         }
         if run.ticks > 35 * 6 || (run.ticks > 10 && player.on_ground() && player.velocity.length() < 1.0) {

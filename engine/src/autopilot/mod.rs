@@ -246,6 +246,10 @@ pub struct Autopilot {
     did_nothing: BTreeSet<LineId>,
     /// Per sector, the last tick its floor moved.
     floor_moved: Vec<u64>,
+    /// Lifts a goal search holds where they are now (see `choose`).
+    keep_up: Vec<usize>,
+    /// Per sector: the last tick the body's centre was in it.
+    stood_on: Vec<u64>,
     /// Per lift sector, calls missed (the lift came back up before the
     /// body got on).
     lift_misses: BTreeMap<usize, u32>,
@@ -330,6 +334,8 @@ impl Autopilot {
             did_nothing: BTreeSet::new(),
             retaken: BTreeMap::new(),
             floor_moved: vec![0; map.sectors.len()],
+            keep_up: Vec::new(),
+            stood_on: vec![0; map.sectors.len()],
             lift_misses: BTreeMap::new(),
             last_pos: game.player().pos,
             used_last: false,
@@ -500,6 +506,9 @@ impl Autopilot {
         }
         self.used_last = input.use_line;
         let heights = Heights::of(&game.level().compiled.map);
+        if let Some(on) = self.stood_on.get_mut(player.sector) {
+            *on = now;
+        }
         for (s, moved) in self.floor_moved.iter_mut().enumerate() {
             if heights.floor[s] != self.last.floor[s] {
                 *moved = now;
@@ -725,7 +734,14 @@ impl Autopilot {
         let level = game.level();
         let spent = self.spent(game);
         Assumed {
-            heights: plan::plan_heights(level, &self.mech, &Self::keys_held(game), &spent),
+            heights: {
+                let mut h = plan::plan_heights(level, &self.mech, &Self::keys_held(game), &spent);
+                for &s in &self.keep_up {
+                    let floor = level.compiled.map.sectors[s].floor;
+                    (h.low[s], h.floor[s]) = (floor, floor);
+                }
+                h
+            },
             blocked: self.blocked(game),
             bad: self.bad.keys().copied().collect(),
             shut: self.mech.shut_doors(&level.compiled.map),
@@ -736,11 +752,31 @@ impl Autopilot {
     /// Chooses the next goal and the route to it.
     fn choose(&mut self, game: &Game) -> Option<Active> {
         let started = std::time::Instant::now();
-        let chosen = self
-            .choose_inner(game)
-            .map(|a| self.protection_first(game, a))
-            .map(|a| self.call_lift_first(game, a))
-            .or_else(|| self.off_danger(game));
+        // A goal whose only way is by a lift that would have to be called
+        // while another called lately is coming down is passed over: the
+        // search is made again with that lift held where it is.
+        let (mut chosen, mut calling) = (None, None);
+        for _ in 0..3 {
+            let Some(a) = self.choose_inner(game).map(|a| self.protection_first(game, a)) else { break };
+            match self.call_lift_first(game, a) {
+                Ok(a) => {
+                    chosen = Some(a);
+                    break;
+                }
+                Err((lift, call)) => {
+                    self.keep_up.push(lift);
+                    calling.get_or_insert((lift, call));
+                }
+            }
+        }
+        self.keep_up.clear();
+        // With no other goal, the lift is called after all.
+        let chosen = chosen.or_else(|| {
+            let (lift, call) = calling?;
+            self.log.push(format!("tick {}: lift {lift} is up on the way: calling it first", game.ticks()));
+            Some(*call)
+        });
+        let chosen = chosen.or_else(|| self.off_danger(game));
         let t = started.elapsed().as_secs_f64();
         self.figures.plans += 1;
         self.figures.plan_seconds += t;
@@ -843,10 +879,12 @@ impl Autopilot {
     /// made in the last 20 seconds stands while the lift has not been down
     /// and back up since; a lift that came back up before the body got on
     /// was missed and is called again, [`MAX_LIFT_MISSES`] times at most,
-    /// after which the route's own unblocking takes over.
-    fn call_lift_first(&mut self, game: &Game, active: Active) -> Active {
+    /// after which the route's own unblocking takes over. `Err` (the lift,
+    /// and the way to call it): another goal should be looked for first,
+    /// another lift called lately being on its way down.
+    fn call_lift_first(&mut self, game: &Game, active: Active) -> Result<Active, (usize, Box<Active>)> {
         if active.purpose == Purpose::Lift {
-            return active;
+            return Ok(active);
         }
         let map = &game.level().compiled.map;
         let live = live_heights(map);
@@ -861,7 +899,12 @@ impl Autopilot {
                 !self.mech.lifts[s].is_empty() && live.floor[s] > from.high + MAX_STEP && !self.mech.perpetual[s]
             });
             let Some(lift) = up else { continue };
-            let lines = self.mech.lifts[lift].clone();
+            // A once-only switch used already calls nothing.
+            let lines: Vec<LineId> =
+                self.mech.lifts[lift].iter().copied().filter(|&l| !Self::used_up(game, l)).collect();
+            if lines.is_empty() {
+                continue;
+            }
             let on_the_way = lines.iter().any(|&l| {
                 let t = plan::targets_of(&self.nav, map, &Goal::Use(l));
                 cells[..i].iter().any(|&c| t.contains_cell(c))
@@ -876,11 +919,27 @@ impl Autopilot {
             let missed = called.is_some_and(|t| self.floor_moved[lift] > t && self.floor_moved[lift] + 1 < now);
             let misses = self.lift_misses.get(&lift).copied().unwrap_or(0);
             if on_the_way || called.is_some_and(|t| now < t + 35 * 20 && (!missed || misses >= MAX_LIFT_MISSES)) {
-                return active;
+                return Ok(active);
             }
             if missed {
                 *self.lift_misses.entry(lift).or_insert(0) += 1;
             }
+            // Another lift called lately, not yet stood on, is down or on
+            // its way, and the goal has no way without this one: another
+            // goal is looked for first (one the lift coming down serves).
+            // Two pads each lowered by a switch at the other's far end
+            // (MAP21's) would otherwise have the body call one, then the
+            // other, for ever.
+            let called_other = (0..self.mech.lifts.len()).any(|other| {
+                other != lift
+                    && live.floor[other] < self.mech.lift_top[other]
+                    && self.mech.lifts[other]
+                        .iter()
+                        .filter_map(|l| self.tried.get(l))
+                        .any(|&t| now < t + 35 * 20 && self.floor_moved[other] + 1 >= t && self.stood_on[other] < t)
+            });
+            let up = |h: &mut Heights| (h.low[lift], h.floor[lift]) = (live.floor[lift], live.floor[lift]);
+            let instead = called_other && self.route_with(game, &active.goal, up).is_none();
             for line in lines {
                 let goal = match line_of(map, line).3.map(|s| s.on) {
                     Some(Activation::Use) => Goal::Use(line),
@@ -896,13 +955,17 @@ impl Autopilot {
                 // the lift stands in).
                 let pressed_from = route.cells.last().map_or(&[][..], |&c| self.nav.touched(c));
                 if !pressed_from.contains(&(lift as u32)) {
+                    let calling = Active::new(goal, Purpose::Lift, route, now);
+                    if instead {
+                        return Err((lift, Box::new(calling)));
+                    }
                     self.log.push(format!("tick {now}: lift {lift} is up on the way: calling it first"));
-                    return Active::new(goal, Purpose::Lift, route, now);
+                    return Ok(calling);
                 }
             }
-            return active;
+            return Ok(active);
         }
-        active
+        Ok(active)
     }
 
     /// Does a ceiling come down on `cell`, or a crushing floor go up under
@@ -1144,6 +1207,13 @@ impl Autopilot {
                 if !keys.contains(&k) {
                     continue;
                 }
+            }
+            // A line that only shuts doors opens nothing: it is never a
+            // goal (MAP21's, round the pit outside the start, shut the
+            // start room, and the blue door in it, until the yellow key).
+            if let crate::map::special::Action::Door { kind: crate::map::special::DoorKind::Close, .. } = special.action
+            {
+                continue;
             }
             let goal = match special.on {
                 Activation::Use => Goal::Use(line),

@@ -40,6 +40,9 @@ const LIFT_DROP_COST: u32 = 200;
 /// Extra cost of a running jump (on top of its run-up, there and back,
 /// and its flight): a risk taken only when it saves a long way round.
 const LEAP_COST: u32 = 300;
+/// A leap that comes down on a rim costs this much more: the stop there is
+/// not always held, so a way with landings clear of edges wins.
+const RIM_LEAP_COST: u32 = 600;
 /// An item is picked up from a cell whose centre is this close along each
 /// axis: the body's box touches the item's (16 + 20 in Doom, boxes, not
 /// circles) even across a railing or from under a ledge; less 2 for a body
@@ -544,7 +547,8 @@ impl Search {
                 }
                 let runup = u32::from(jump.runup) * 2 + u32::from(jump.cells);
                 let step = if d < 4 { STRAIGHT } else { DIAGONAL };
-                self.relax(c, jump.to, cost + LEAP_COST + runup * step, false, jump.runup);
+                let rim = if jump.rim { RIM_LEAP_COST } else { 0 };
+                self.relax(c, jump.to, cost + LEAP_COST + rim + runup * step, false, jump.runup);
             }
         }
         None
