@@ -297,7 +297,7 @@ pub struct Run {
     floor: f64,
     key: u32,
     /// Down with a drop close ahead (braked at a run's thrust).
-    rim: bool,
+    drop_ahead: bool,
 }
 
 impl Run {
@@ -348,7 +348,7 @@ impl Autopilot {
                 stalled: 0,
                 floor,
                 key: key(edge, d),
-                rim: false,
+                drop_ahead: false,
             });
             self.log.push(format!(
                 "tick {now}: a running jump from {:?} with {runup:.0} units of run-up",
@@ -365,7 +365,7 @@ impl Autopilot {
             // far side of a stepping stone.
             if player.velocity.length() > 2.0 && run.ticks < 35 {
                 a.leap = Some(run);
-                return Some(Some(TickInput { run: run.rim, ..self.hold(game) }));
+                return Some(Some(TickInput { run: run.drop_ahead, ..self.hold(game) }));
             }
             a.leap = None;
             return None;
@@ -434,7 +434,7 @@ impl Autopilot {
                 // A landing with a drop within a run's coast ahead (a
                 // stepping stone) is braked at a run's thrust.
                 let live = super::live_heights(&game.level().compiled.map);
-                run.rim = (1..=4).any(|k| {
+                run.drop_ahead = (1..=4).any(|k| {
                     let p = player.pos + run.dir * (f64::from(k) * CELL);
                     self.nav.cell_at(p).is_none_or(|c| {
                         let span = self.nav.span(c, &live);
@@ -442,7 +442,7 @@ impl Autopilot {
                     })
                 });
                 a.leap = Some(run);
-                return Some(Some(TickInput { run: run.rim, ..self.hold(game) }));
+                return Some(Some(TickInput { run: run.drop_ahead, ..self.hold(game) }));
             }
         }
         if run.ticks > 35 * 6 || (run.ticks > 10 && player.on_ground() && player.velocity.length() < 1.0) {

@@ -31,7 +31,7 @@ use glam::DVec2;
 pub type Point = DVec2;
 
 use crate::actors::{ActorDef, ActorFlag, Category, Give, Power};
-use crate::map::special::{Activation, KeyColour};
+use crate::map::special::{Action, Activation, DoorKind, KeyColour};
 use crate::play::actors::Target;
 use crate::play::events::Event;
 use crate::play::player::{MAX_STEP, RADIUS};
@@ -938,6 +938,7 @@ impl Autopilot {
                         .filter_map(|l| self.tried.get(l))
                         .any(|&t| now < t + 35 * 20 && self.floor_moved[other] + 1 >= t && self.stood_on[other] < t)
             });
+            // The lift held where it stands (up), as it is until called.
             let up = |h: &mut Heights| (h.low[lift], h.floor[lift]) = (live.floor[lift], live.floor[lift]);
             let instead = called_other && self.route_with(game, &active.goal, up).is_none();
             for line in lines {
@@ -946,9 +947,7 @@ impl Autopilot {
                     Some(Activation::Walk) => Goal::Cross(line),
                     _ => continue,
                 };
-                // The lift stays up until called: the way to its switch
-                // cannot cross it.
-                let up = |h: &mut Heights| (h.low[lift], h.floor[lift]) = (live.floor[lift], live.floor[lift]);
+                // The way to its switch cannot cross it.
                 let Some(route) = self.route_with(game, &goal, up) else { continue };
                 // Not pressed from by the lift itself (the way there may
                 // run beside it: MAP20's switch is in a slot over the lava
@@ -1203,17 +1202,13 @@ impl Autopilot {
             if Self::targets_busy(game, line) {
                 continue;
             }
-            if let crate::map::special::Action::Door { key: Some(k), .. } = special.action {
-                if !keys.contains(&k) {
-                    continue;
-                }
-            }
-            // A line that only shuts doors opens nothing: it is never a
-            // goal (MAP21's, round the pit outside the start, shut the
-            // start room, and the blue door in it, until the yellow key).
-            if let crate::map::special::Action::Door { kind: crate::map::special::DoorKind::Close, .. } = special.action
-            {
-                continue;
+            match special.action {
+                Action::Door { key: Some(k), .. } if !keys.contains(&k) => continue,
+                // A line that only shuts doors opens nothing: it is never a
+                // goal (MAP21's, round the pit outside the start, shut the
+                // start room, and the blue door in it, until the yellow key).
+                Action::Door { kind: DoorKind::Close, .. } => continue,
+                _ => {}
             }
             let goal = match special.on {
                 Activation::Use => Goal::Use(line),
