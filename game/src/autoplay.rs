@@ -7,8 +7,8 @@ use anyhow::{Context, Result};
 use serde_json::json;
 use sightline::autopilot;
 use sightline::campaign::MapRef;
-use sightline::play::demo::Demo;
 use sightline::play::playthrough::{Phase, Playthrough};
+use sightline::play::vanilla;
 use sightline::play::{Exit, GameOptions, TICRATE};
 use sightline::render::{RenderOptions, Renderer};
 
@@ -31,7 +31,11 @@ pub fn run(args: &AutoplayArgs) -> Result<()> {
     };
     let started = std::time::Instant::now();
     let mut failed = None;
-    let (outcome, bot) = autopilot::run(&mut play, args.max_ticks, |play, tick| {
+    // A `.lmp` keeps turns to 1/256 of the circle: the game is fed them so.
+    let lmp = args.record.as_ref().is_some_and(|p| crate::replay_lmp::is_lmp_path(p));
+    let mut carry = 0.0;
+    let filter = |input| if lmp { vanilla::as_recorded(&input, &mut carry) } else { input };
+    let (outcome, bot) = autopilot::run_through(&mut play, args.max_ticks, filter, |play, tick| {
         if let Some(c) = &mut capture {
             if tick.is_multiple_of(c.every) && failed.is_none() {
                 failed = c.frame(play, tick).err();
@@ -55,9 +59,7 @@ pub fn run(args: &AutoplayArgs) -> Result<()> {
         }
     }
     if let Some(path) = &args.record {
-        let demo = Demo { inputs: outcome.inputs.clone(), ..Demo::new(map.label()) };
-        let demo = Demo { skill: options.skill, seed: options.seed, no_monsters: options.no_monsters, ..demo };
-        demo.save(path)?;
+        crate::replay_lmp::save_recording(path, &map, options, outcome.inputs.clone())?;
     }
     let stats = match &play.phase {
         Phase::Intermission { stats, .. } | Phase::Finished { stats } => *stats,

@@ -297,14 +297,25 @@ pub struct SoundArgs {
 
 #[derive(Args)]
 pub struct ReplayArgs {
-    /// The demo file to replay.
+    /// The demo to replay: one of ours (`.sldemo`), Doom's (`.lmp`, played
+    /// on --iwad) or a demo lump inside a WAD (`freedoom1.wad:DEMO1`).
     pub demo: PathBuf,
     /// Replay on this map (a path or `WAD:MAP`) instead of the one the demo names.
     #[arg(long)]
     pub map: Option<String>,
-    /// The IWAD under a PWAD given with --map.
+    /// The IWAD under a PWAD given with --map, or that a Doom demo plays on.
     #[arg(long)]
     pub iwad: Option<PathBuf>,
+    /// PWADs a Doom demo plays on, over the IWAD (Doom's -file).
+    #[arg(long, num_args = 1..)]
+    pub file: Vec<PathBuf>,
+    /// Compare every tic of a Doom demo with a reference dump (see
+    /// tests/fixtures/demo-dumps/README.md); name the first tic that differs.
+    #[arg(long)]
+    pub check_against: Option<PathBuf>,
+    /// End with the game's state as one JSON object (Doom demos).
+    #[arg(long)]
+    pub json: bool,
     /// Write a PNG of every Nth tick (tick 0, N, 2N, ... and the last) into
     /// the directory given with -o.
     #[arg(long, requires = "output", value_parser = clap::value_parser!(u64).range(1..))]

@@ -12,6 +12,7 @@ mod compile;
 mod import;
 mod play;
 mod replay;
+mod replay_lmp;
 mod report;
 mod suite;
 

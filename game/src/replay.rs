@@ -19,6 +19,9 @@ use crate::cli::ReplayArgs;
 use crate::play::hud;
 
 pub fn run(args: &ReplayArgs) -> Result<()> {
+    if crate::replay_lmp::is_vanilla(&args.demo.to_string_lossy()) {
+        return crate::replay_lmp::run(args);
+    }
     let demo = Demo::load(&args.demo)?;
     let map = match &args.map {
         Some(map) => MapRef::parse(map, args.iwad.as_deref()),

@@ -2111,6 +2111,17 @@ pub struct Outcome {
 pub fn run(
     play: &mut crate::play::playthrough::Playthrough,
     max_ticks: u64,
+    each: impl FnMut(&crate::play::playthrough::Playthrough, u64) -> bool,
+) -> Result<(Outcome, Autopilot), crate::play::playthrough::PlaythroughError> {
+    run_through(play, max_ticks, |input| input, each)
+}
+
+/// [`run`], with each of the bot's inputs passed through `filter` before
+/// the game is fed it (a `.lmp` recording rounds turns as the file will).
+pub fn run_through(
+    play: &mut crate::play::playthrough::Playthrough,
+    max_ticks: u64,
+    mut filter: impl FnMut(TickInput) -> TickInput,
     mut each: impl FnMut(&crate::play::playthrough::Playthrough, u64) -> bool,
 ) -> Result<(Outcome, Autopilot), crate::play::playthrough::PlaythroughError> {
     use crate::play::playthrough::Phase;
@@ -2118,7 +2129,7 @@ pub fn run(
     let mut outcome = Outcome::default();
     let mut stuck_since: Option<u64> = None;
     for tick in 1..=max_ticks {
-        let input = bot.tick(&play.game);
+        let input = filter(bot.tick(&play.game));
         play.tick(&input)?;
         outcome.inputs.push(input);
         if !each(play, tick) {

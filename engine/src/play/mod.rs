@@ -32,6 +32,7 @@ pub mod collision;
 pub mod demo;
 pub mod events;
 pub mod input;
+pub mod lmp;
 pub mod pickups;
 pub mod player;
 pub mod playthrough;
@@ -39,7 +40,9 @@ pub mod random;
 pub mod reload;
 pub mod save;
 pub mod sight;
+pub mod syncdump;
 pub mod trace;
+pub mod vanilla;
 pub mod weapons;
 pub mod world;
 

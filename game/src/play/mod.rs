@@ -24,8 +24,6 @@ mod session;
 mod sound;
 mod timings;
 
-use std::path::Path;
-
 use anyhow::{anyhow, bail, Context, Result};
 use sightline::campaign::MapRef;
 use sightline::play::demo::Demo;
@@ -44,6 +42,9 @@ const NO_DISPLAY_HINT: &str = "For frames without a window use `sightline captur
 
 pub fn run(args: &PlayArgs) -> Result<()> {
     let demo = match &args.demo {
+        Some(path) if crate::replay_lmp::is_vanilla(&path.to_string_lossy()) => {
+            Some(crate::replay_lmp::as_demo(&path.to_string_lossy(), args.iwad.as_deref())?)
+        }
         Some(path) => Some(Demo::load(path)?),
         None => None,
     };
@@ -63,10 +64,12 @@ pub fn run(args: &PlayArgs) -> Result<()> {
         }
     };
     let renderer = crate::replay::choose_renderer(args.renderer, play.game.level(), &play.map.label())?;
+    // A `.lmp` keeps turns to 1/256 of the circle: the game is fed them so.
+    let lmp = args.record.as_deref().is_some_and(crate::replay_lmp::is_lmp_path);
     let mut session = match demo {
         Some(demo) => Session::demo(play, demo.inputs),
-        None if args.autopilot => Session::autopilot(play, args.record.is_some()),
-        None => Session::live(play, Controls::new(args.mouse_sensitivity), args.record.is_some()),
+        None if args.autopilot => Session::autopilot(play, args.record.is_some(), lmp),
+        None => Session::live(play, Controls::new(args.mouse_sensitivity), args.record.is_some(), lmp),
     };
 
     check_display()?;
@@ -107,7 +110,7 @@ pub fn run(args: &PlayArgs) -> Result<()> {
     // A window that never opened leaves nothing worth a demo file.
     let recording = session.take_recording().filter(|inputs| error.is_none() || !inputs.is_empty());
     let saved = match (&args.record, recording) {
-        (Some(path), Some(inputs)) => save_recording(path, &map, game_options, inputs),
+        (Some(path), Some(inputs)) => crate::replay_lmp::save_recording(path, &map, game_options, inputs),
         _ => Ok(()),
     };
     // What stopped the window matters more than the demo that could not be saved.
@@ -127,25 +130,5 @@ fn check_display() -> Result<()> {
             bail!("no display to open a window on (neither DISPLAY nor WAYLAND_DISPLAY is set).\n{NO_DISPLAY_HINT}");
         }
     }
-    Ok(())
-}
-
-fn save_recording(
-    path: &Path,
-    map: &MapRef,
-    options: GameOptions,
-    inputs: Vec<sightline::play::TickInput>,
-) -> Result<()> {
-    let ticks = inputs.len();
-    // The map as given, so a demo recorded in the repository replays there.
-    let demo = Demo {
-        inputs,
-        skill: options.skill,
-        seed: options.seed,
-        no_monsters: options.no_monsters,
-        ..Demo::new(map.label())
-    };
-    demo.save(path)?;
-    println!("recorded {ticks} ticks to {}", path.display());
     Ok(())
 }

@@ -32,6 +32,9 @@ pub struct Session {
     source: Source,
     /// Every input fed to the game, when recording.
     recording: Option<Vec<TickInput>>,
+    /// Recording to a `.lmp`: inputs are rounded as the file keeps them
+    /// before the game is fed them, carrying this much turn (degrees).
+    lmp_carry: Option<f64>,
     /// The demo has run out; the game stands still on its last tick.
     finished: bool,
     /// Messages for the player since the frame loop last took them.
@@ -43,8 +46,9 @@ pub struct Session {
 }
 
 impl Session {
-    pub fn live(play: Playthrough, controls: Controls, record: bool) -> Session {
-        Session::with(play, Source::Live(controls), record)
+    /// `lmp`: the recording goes to a Doom demo (see [`Session::lmp_carry`]).
+    pub fn live(play: Playthrough, controls: Controls, record: bool, lmp: bool) -> Session {
+        Session { lmp_carry: lmp.then_some(0.0), ..Session::with(play, Source::Live(controls), record) }
     }
 
     pub fn demo(play: Playthrough, inputs: Vec<TickInput>) -> Session {
@@ -52,8 +56,8 @@ impl Session {
     }
 
     /// The autopilot plays; the window only watches.
-    pub fn autopilot(play: Playthrough, record: bool) -> Session {
-        Session::with(play, Source::Autopilot(None), record)
+    pub fn autopilot(play: Playthrough, record: bool, lmp: bool) -> Session {
+        Session { lmp_carry: lmp.then_some(0.0), ..Session::with(play, Source::Autopilot(None), record) }
     }
 
     fn with(play: Playthrough, source: Source, record: bool) -> Session {
@@ -61,6 +65,7 @@ impl Session {
             play,
             source,
             recording: record.then(Vec::new),
+            lmp_carry: None,
             finished: false,
             messages: Vec::new(),
             error: None,
@@ -104,6 +109,10 @@ impl Session {
                         return;
                     }
                 },
+            };
+            let input = match &mut self.lmp_carry {
+                Some(carry) => sightline::play::vanilla::as_recorded(&input, carry),
+                None => input,
             };
             if let Err(e) = self.play.tick(&input) {
                 self.error.get_or_insert(e.into());
