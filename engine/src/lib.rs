@@ -29,6 +29,7 @@ pub mod materials;
 pub mod play;
 pub mod render;
 pub mod screen;
+pub mod sim;
 pub mod sound;
 pub mod study;
 pub mod texture;

@@ -180,6 +180,9 @@ pub fn compare(ours: &TicState, theirs: &TicState) -> Vec<FieldDiff> {
             diffs.push(FieldDiff { field, ours: a, theirs: b });
         }
     };
+    if let (Some(a), Some(b)) = (ours.leveltime, theirs.leveltime) {
+        check("leveltime".into(), a.to_string(), b.to_string());
+    }
     if let (Some(a), Some(b)) = (ours.rnd, theirs.rnd) {
         check("rnd".into(), a.to_string(), b.to_string());
     }

@@ -2,8 +2,9 @@
 //!
 //! Record layouts (bytes, little-endian) as Doom's `r_defs.h`/`doomdata.h`:
 //! THINGS 10, LINEDEFS 14, SIDEDEFS 30, VERTEXES 4, SECTORS 26. The WAD's
-//! SEGS, SSECTORS, NODES, REJECT and BLOCKMAP are ignored: our compiler
-//! builds its own tree.
+//! SEGS, SSECTORS, NODES, REJECT and BLOCKMAP are not read here: our
+//! compiler builds its own tree for the renderer, and the simulation reads
+//! them as stored ([`Wad::map_lump`], `sim::level`).
 
 use super::{i16_at, lump_name, u16_at, Wad, WadError};
 
@@ -14,7 +15,7 @@ pub const MAP_LUMPS: [&str; 10] =
 /// A side of a line that has none (Doom's `-1` in the sidedef field).
 pub const NO_SIDE: u16 = 0xFFFF;
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct WadThing {
     pub x: i16,
     pub y: i16,
@@ -80,6 +81,22 @@ pub struct WadMap {
 }
 
 impl Wad {
+    /// The bytes of lump `lump` (one of [`MAP_LUMPS`]) of map `name`, or
+    /// `None` when the map has no such lump; an error when there is no map.
+    pub fn map_lump(&self, name: &str, lump: &str) -> Result<Option<&[u8]>, WadError> {
+        let upper = name.to_ascii_uppercase();
+        let marker = self.lumps.iter().rposition(|l| l.name == upper).ok_or_else(|| WadError::NoMap {
+            path: self.path.clone(),
+            name: name.to_string(),
+            available: self.map_names().join(" "),
+        })?;
+        let found = self.lumps[marker + 1..]
+            .iter()
+            .take_while(|l| MAP_LUMPS.contains(&l.name.as_str()))
+            .position(|l| l.name == lump);
+        Ok(found.map(|k| self.bytes(marker + 1 + k)))
+    }
+
     /// Reads map `name` (E1M4, MAP07; any case). Sidedef, vertex and sector
     /// indices are checked here, so everything after may index freely.
     pub fn map(&self, name: &str) -> Result<WadMap, WadError> {

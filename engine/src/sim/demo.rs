@@ -1,0 +1,99 @@
+//! A vanilla demo played on the simulation: the game its header starts
+//! (`G_DoPlayDemo`, `G_InitNew`), the executable chosen from the IWAD as
+//! Chocolate Doom chooses it, the IWAD's own DEHACKED applied, then every
+//! tic's commands; and the comparison with a reference dump, tic by tic.
+
+use std::sync::Arc;
+
+use super::setup::Players;
+use super::{Compat, GameMode, GameVersion, Rules, Sim, MAXPLAYERS};
+use crate::actors::ActorTable;
+use crate::play::lmp::VanillaDemo;
+use crate::play::syncdump::{compare, FieldDiff, SyncDump};
+use crate::wad::Wad;
+
+/// What the IWAD is (`D_IdentifyVersion`): Doom II's maps make it
+/// commercial, a fourth episode retail (The Ultimate Doom), a third
+/// registered.
+pub fn game_mode(wad: &Wad) -> GameMode {
+    if wad.find("MAP01").is_some() {
+        GameMode::Commercial
+    } else if wad.find("E4M1").is_some() {
+        GameMode::Retail
+    } else if wad.find("E3M1").is_some() {
+        GameMode::Registered
+    } else {
+        GameMode::Shareware
+    }
+}
+
+/// The executable Chocolate Doom plays an IWAD as (`InitGameVersion`):
+/// The Ultimate Doom for a retail IWAD, Doom 1.9 otherwise. `--gameversion`
+/// overrides it.
+pub fn game_version(mode: GameMode) -> GameVersion {
+    match mode {
+        GameMode::Retail => GameVersion::Ultimate,
+        _ => GameVersion::Doom19,
+    }
+}
+
+/// The actor table a game on `wad` plays with: `table` with the WAD's
+/// DEHACKED lumps applied, as Chocolate applies an IWAD's.
+pub fn table_for(wad: &Wad, table: &ActorTable) -> Result<Arc<ActorTable>, String> {
+    let (patched, _report) = table.with_wad_dehacked(wad).map_err(|e| e.to_string())?;
+    Ok(Arc::new(patched))
+}
+
+/// The game `demo` starts on `wad`.
+pub fn start(wad: &Wad, demo: &VanillaDemo, table: Arc<ActorTable>) -> Result<Sim, String> {
+    let h = &demo.header;
+    let mode = game_mode(wad);
+    let rules = Rules {
+        skill: h.skill,
+        version: game_version(mode),
+        mode,
+        compat: Compat::Vanilla,
+        deathmatch: h.deathmatch,
+        respawn: h.respawn,
+        fast: h.fast,
+        no_monsters: h.no_monsters,
+        netgame: h.players() > 1,
+    };
+    let players = Players { in_game: h.in_game, console: usize::from(h.console_player) };
+    let map = h.map_name(mode == GameMode::Commercial);
+    Sim::new(wad, &map, rules, players, table).map_err(|e| e.to_string())
+}
+
+/// How far a demo kept in step with its reference.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SyncReport {
+    /// Tics the demo holds.
+    pub tics: usize,
+    /// Tics in sync before the first difference (all of them when none).
+    pub in_sync: usize,
+    /// The first tic that differs (numbered from 1) and how.
+    pub first_difference: Option<(usize, Vec<FieldDiff>)>,
+}
+
+/// Plays `demo` on `sim`, comparing every tic with `dump`; stops at the
+/// first difference.
+pub fn check(sim: &mut Sim, demo: &VanillaDemo, dump: &SyncDump) -> SyncReport {
+    let tics = demo.tics();
+    let in_game: Vec<usize> = (0..MAXPLAYERS).filter(|&n| demo.header.in_game[n]).collect();
+    for t in 0..tics {
+        let mut cmds = [None; MAXPLAYERS];
+        for (k, &n) in in_game.iter().enumerate() {
+            cmds[n] = demo.tic(t).get(k).copied();
+        }
+        sim.tick(&cmds);
+        let Some(theirs) = dump.tics.get(t) else {
+            let why = FieldDiff { field: "tics".into(), ours: tics.to_string(), theirs: dump.tics.len().to_string() };
+            return SyncReport { tics, in_sync: t, first_difference: Some((t + 1, vec![why])) };
+        };
+        let diffs = compare(&sim.tic_state(), theirs);
+        if !diffs.is_empty() {
+            return SyncReport { tics, in_sync: t, first_difference: Some((t + 1, diffs)) };
+        }
+    }
+    SyncReport { tics, in_sync: tics, first_difference: None }
+}

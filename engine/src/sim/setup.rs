@@ -1,0 +1,294 @@
+//! A new game on a level (`G_InitNew`, `G_DoLoadLevel`, `P_SetupLevel`):
+//! the random indices cleared, the level read, its things spawned in the
+//! WAD's order (each spawn spending `P_Random`), the players placed, then
+//! the sector specials started.
+
+use std::sync::Arc;
+
+use super::info::{mt, Info};
+use super::level::{Level, LevelError};
+use super::mobj::{mf, ONCEILINGZ, ONFLOORZ};
+use super::{collision, monsters, specials, Player, PlayerState, Psprite, Rules, Sim, MAXPLAYERS};
+use crate::actors::ActorTable;
+use crate::fixed::{Angle, DoomRandom, Fixed, ANG45};
+use crate::play::lmp::Ticcmd;
+use crate::wad::level::WadThing;
+use crate::wad::Wad;
+
+/// The editor numbers of Doom II's monsters, which Doom 1's executables do
+/// not spawn (`P_LoadThings`): the Wolfenstein SS, the arch-vile, ...
+const DOOM2_ONLY: [u16; 10] = [68, 64, 88, 89, 69, 67, 71, 65, 66, 84];
+/// `MTF_AMBUSH`: the thing waits deaf until it sees a player.
+const MTF_AMBUSH: u16 = 8;
+/// `MTF_NOTSINGLE`: only in netgames.
+const MTF_NOTSINGLE: u16 = 16;
+/// Doom's `VIEWHEIGHT`.
+pub const VIEWHEIGHT: Fixed = Fixed(41 << 16);
+
+/// The players in a new game.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Players {
+    pub in_game: [bool; MAXPLAYERS],
+    pub console: usize,
+}
+
+impl Sim {
+    /// A new game of `rules` on map `name` of `wad`, with `table`'s actors.
+    pub fn new(
+        wad: &Wad,
+        name: &str,
+        rules: Rules,
+        players: Players,
+        table: Arc<ActorTable>,
+    ) -> Result<Sim, LevelError> {
+        let level = Level::load(wad, name)?;
+        let info = Arc::new(Info::new(table, rules.fast_monsters()));
+        let cells = (level.blockmap.width * level.blockmap.height) as usize;
+        let lines = level.lines.len();
+        let mut sim = Sim {
+            info,
+            rules,
+            mobjs: Vec::new(),
+            thinkers: Vec::new(),
+            players: Default::default(),
+            console: players.console,
+            starts: Default::default(),
+            deathmatch_starts: Vec::new(),
+            // G_InitNew clears both random indices.
+            rng: DoomRandom::new(),
+            gametic: 0,
+            leveltime: 0,
+            blocklinks: vec![Vec::new(); cells],
+            validcount: 0,
+            line_valid: vec![0; lines],
+            tm: collision::MapCheck::default(),
+            spec: specials::SpecialState::default(),
+            brain: monsters::BrainState::default(),
+            item_respawn: Vec::new(),
+            bodyque: Vec::new(),
+            total_kills: 0,
+            total_items: 0,
+            total_secrets: 0,
+            exit: None,
+            events: Vec::new(),
+            level,
+        };
+        for (n, &playing) in players.in_game.iter().enumerate() {
+            if playing {
+                sim.players[n] = Some(Player::reborn(&sim.info, [0; MAXPLAYERS], (0, 0, 0)));
+            }
+        }
+        sim.spawn_things();
+        if sim.rules.deathmatch != 0 {
+            for n in 0..MAXPLAYERS {
+                if sim.players[n].is_some() {
+                    sim.deathmatch_spawn_player(n);
+                }
+            }
+        }
+        specials::spawn_specials(&mut sim);
+        Ok(sim)
+    }
+
+    /// `P_LoadThings`: every map thing in the WAD's order. An executable
+    /// that is not Doom II stops at the first Doom II monster (vanilla's
+    /// `break`, which Chocolate Doom keeps).
+    fn spawn_things(&mut self) {
+        let things = self.level.things.clone();
+        for thing in &things {
+            if self.rules.mode != super::GameMode::Commercial && DOOM2_ONLY.contains(&thing.kind) {
+                break;
+            }
+            self.spawn_map_thing(thing);
+        }
+    }
+
+    /// `P_SpawnMapThing`.
+    pub fn spawn_map_thing(&mut self, thing: &WadThing) {
+        match thing.kind {
+            11 => {
+                // Vanilla keeps ten deathmatch starts.
+                if self.deathmatch_starts.len() < 10 {
+                    self.deathmatch_starts.push(thing.clone());
+                }
+                return;
+            }
+            0 => return,
+            1..=4 => {
+                let n = usize::from(thing.kind - 1);
+                self.starts[n] = Some(thing.clone());
+                if self.rules.deathmatch == 0 {
+                    self.spawn_player(thing);
+                }
+                return;
+            }
+            _ => {}
+        }
+        if !self.rules.netgame && thing.flags & MTF_NOTSINGLE != 0 {
+            return;
+        }
+        let bit = match self.rules.skill {
+            0 => 1,
+            Rules::NIGHTMARE => 4,
+            s => 1 << (s - 1),
+        };
+        if thing.flags & bit == 0 {
+            return;
+        }
+        // Vanilla stops with an error on an unknown number; we pass it over
+        // (the importer's report names it).
+        let Some(kind) = self.info.by_doomednum(i32::from(thing.kind)) else {
+            return;
+        };
+        let info = &self.info.things[kind];
+        if self.rules.deathmatch != 0 && info.flags & mf::NOTDMATCH != 0 {
+            return;
+        }
+        if self.rules.no_monsters && (info.mt == Some(mt::SKULL) || info.flags & mf::COUNTKILL != 0) {
+            return;
+        }
+        let z = if info.flags & mf::SPAWNCEILING != 0 { ONCEILINGZ } else { ONFLOORZ };
+        let id = self.spawn_mobj(Fixed::from_int(thing.x.into()), Fixed::from_int(thing.y.into()), z, kind);
+        self.mo_mut(id).spawnpoint = thing.clone();
+        if self.mo(id).tics > 0 {
+            let r = self.p_random();
+            let mo = self.mo_mut(id);
+            mo.tics = 1 + r % mo.tics;
+        }
+        let flags = self.mo(id).flags;
+        if flags & mf::COUNTKILL != 0 {
+            self.total_kills += 1;
+        }
+        if flags & mf::COUNTITEM != 0 {
+            self.total_items += 1;
+        }
+        let mo = self.mo_mut(id);
+        mo.angle = thing_angle(thing);
+        if thing.flags & MTF_AMBUSH != 0 {
+            mo.flags |= mf::AMBUSH;
+        }
+    }
+
+    /// `P_SpawnPlayer`: player `thing.kind - 1`'s body at its start.
+    pub fn spawn_player(&mut self, thing: &WadThing) {
+        let n = usize::from(thing.kind.saturating_sub(1));
+        let Some(player) = self.players.get(n).and_then(Option::as_ref) else {
+            return;
+        };
+        if player.playerstate == PlayerState::Reborn {
+            let kept = (player.killcount, player.itemcount, player.secretcount);
+            let frags = player.frags;
+            self.players[n] = Some(Player::reborn(&self.info, frags, kept));
+        }
+        let kind = self.kind_of(mt::PLAYER);
+        let id = self.spawn_mobj(Fixed::from_int(thing.x.into()), Fixed::from_int(thing.y.into()), ONFLOORZ, kind);
+        let health = self.players[n].as_ref().map_or(100, |p| p.health);
+        let mo = self.mo_mut(id);
+        if thing.kind > 1 {
+            mo.flags |= u32::from(thing.kind - 1) << mf::TRANSSHIFT;
+        }
+        mo.angle = thing_angle(thing);
+        mo.player = Some(n);
+        mo.health = health;
+        let deathmatch = self.rules.deathmatch != 0;
+        if let Some(p) = self.players[n].as_mut() {
+            p.mo = id;
+            p.playerstate = PlayerState::Live;
+            p.refire = 0;
+            p.message = None;
+            p.damagecount = 0;
+            p.bonuscount = 0;
+            p.extralight = 0;
+            p.fixedcolormap = 0;
+            p.viewheight = VIEWHEIGHT;
+            if deathmatch {
+                p.cards = [true; super::NUMCARDS];
+            }
+        }
+        super::weapons::setup_psprites(self, n);
+    }
+
+    /// `G_DeathMatchSpawnPlayer`: a random deathmatch start that is clear
+    /// (`G_CheckSpot`), else the player's own start.
+    pub fn deathmatch_spawn_player(&mut self, n: usize) {
+        let starts = self.deathmatch_starts.len();
+        if starts == 0 {
+            return;
+        }
+        // G_CheckSpot needs the collision code; until then the first draw
+        // is taken (20 tries in Doom, each spending one P_Random).
+        let i = self.p_random() as usize % starts;
+        let mut spot = self.deathmatch_starts[i].clone();
+        spot.kind = n as u16 + 1;
+        self.spawn_player(&spot);
+    }
+}
+
+/// A map thing's angle as Doom rounds it: down to a multiple of 45 degrees
+/// (C's division, towards zero), times `ANG45`, wrapping.
+fn thing_angle(thing: &WadThing) -> Angle {
+    Angle(ANG45.0.wrapping_mul((i32::from(thing.angle) / 45) as u32))
+}
+
+impl Player {
+    /// `G_PlayerReborn`: a fresh player who keeps its frags and tallies
+    /// (`kept`: kills, items, secrets). Fire and use start held, so nothing
+    /// fires on the first tic.
+    pub fn reborn(info: &Info, frags: [i32; MAXPLAYERS], kept: (i32, i32, i32)) -> Player {
+        let mut weaponowned = [false; super::NUMWEAPONS];
+        weaponowned[0] = true;
+        weaponowned[1] = true;
+        let _ = info;
+        Player {
+            mo: super::MobjId(0),
+            playerstate: PlayerState::Live,
+            cmd: Ticcmd::default(),
+            viewz: Fixed::ZERO,
+            viewheight: Fixed::ZERO,
+            deltaviewheight: Fixed::ZERO,
+            bob: Fixed::ZERO,
+            health: 100,
+            armorpoints: 0,
+            armortype: 0,
+            powers: [0; super::NUMPOWERS],
+            cards: [false; super::NUMCARDS],
+            backpack: false,
+            frags,
+            readyweapon: 1,
+            pendingweapon: Some(1),
+            weaponowned,
+            ammo: [50, 0, 0, 0],
+            maxammo: [200, 50, 300, 50],
+            attackdown: true,
+            usedown: true,
+            cheats: 0,
+            refire: 0,
+            killcount: kept.0,
+            itemcount: kept.1,
+            secretcount: kept.2,
+            message: None,
+            damagecount: 0,
+            bonuscount: 0,
+            attacker: None,
+            extralight: 0,
+            fixedcolormap: 0,
+            psprites: [Psprite::default(); 2],
+            didsecret: false,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn thing_angles_round_towards_zero_in_45s() {
+        let at = |angle| thing_angle(&WadThing { x: 0, y: 0, angle, kind: 1, flags: 7 });
+        assert_eq!(at(90), Angle(0x4000_0000));
+        assert_eq!(at(100), Angle(0x4000_0000));
+        assert_eq!(at(359), Angle(0xe000_0000));
+        assert_eq!(at(-44), Angle(0));
+        assert_eq!(at(-45), Angle(0xe000_0000));
+    }
+}

@@ -1,0 +1,1 @@
+//! Teleporters (`p_telept.c`): `EV_Teleport`.
