@@ -23,14 +23,21 @@
 //! | `user.rs` | `p_user.c` | the player's own thinking |
 //! | `weapons.rs` | `p_pspr.c` | weapons and their sprites |
 //! | `interaction.rs` | `p_inter.c` | pickups, damage, death |
-//! | `monsters.rs` | `p_enemy.c` | monster behaviour and attacks |
+//! | `monsters.rs` | `p_enemy.c` | monster behaviour: waking, chasing, the action dispatch |
+//! | `chase.rs` | `p_enemy.c` (`P_Move`, `P_NewChaseDir`) | walking by the eight directions |
+//! | `attacks.rs` | `p_enemy.c` (`A_*Attack`) | monster attacks |
+//! | `vile.rs` | `p_enemy.c` (`A_VileChase`, `A_Fire`) | the arch-vile's raising and fire |
+//! | `bosses.rs` | `p_enemy.c` (`A_BossDeath`, `A_Brain*`) | boss deaths and the boss brain |
 //! | `specials.rs` | `p_spec.c` | line and sector specials, animations |
 //! | `doors.rs`, `plats.rs`, `floors.rs`, `ceilings.rs`, `lights.rs`, `switches.rs`, `teleport.rs` | `p_doors.c` .. `p_telept.c` | the movers |
 //! | `demo.rs` | `g_game.c` (`G_DoPlayDemo`) | a demo's game, checked against a dump |
 //! | `state.rs` | the patch in `scripts/chocolate-dump.patch` | a tic's state for the reference dumps |
 
 pub mod actions;
+pub mod attacks;
+pub mod bosses;
 pub mod ceilings;
+pub mod chase;
 pub mod collision;
 pub mod demo;
 pub mod doors;
@@ -52,6 +59,7 @@ pub mod switches;
 pub mod teleport;
 pub mod think;
 pub mod user;
+pub mod vile;
 pub mod weapons;
 
 use std::sync::Arc;
