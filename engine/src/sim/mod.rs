@@ -18,7 +18,9 @@
 //! | `setup.rs` | `p_setup.c`, `g_game.c` | spawning a level's things and players |
 //! | `movement.rs` | `p_mobj.c` (thinker, momentum) | how bodies move |
 //! | `maputl.rs` | `p_maputl.c` | block iterators, openings, path traversal |
-//! | `collision.rs` | `p_map.c` | moves, slides, shots, use, blasts, crushers |
+//! | `collision.rs` | `p_map.c` | moves, teleport moves, crushers |
+//! | `slide.rs` | `p_map.c` (`P_SlideMove`) | the player's wall slide |
+//! | `hitscan.rs` | `p_map.c` (aim, shoot, use, blast) | traces along a line of fire |
 //! | `sight.rs` | `p_sight.c` | line of sight over the BSP |
 //! | `user.rs` | `p_user.c` | the player's own thinking |
 //! | `weapons.rs` | `p_pspr.c` | weapons and their sprites |
@@ -42,6 +44,7 @@ pub mod collision;
 pub mod demo;
 pub mod doors;
 pub mod floors;
+pub mod hitscan;
 pub mod info;
 pub mod interaction;
 pub mod level;
@@ -53,6 +56,7 @@ pub mod movement;
 pub mod plats;
 pub mod setup;
 pub mod sight;
+pub mod slide;
 pub mod specials;
 pub mod state;
 pub mod switches;
