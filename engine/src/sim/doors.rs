@@ -1,12 +1,348 @@
-//! Doors (`p_doors.c`): `T_VerticalDoor` and `EV_DoDoor`, `EV_VerticalDoor` (doors opened by use, keys checked).
+//! Doors (`p_doors.c`): the door thinker `T_VerticalDoor` (a ceiling moved
+//! through the shared `T_MovePlane`), doors started by tag (`EV_DoDoor`,
+//! `EV_DoLockedDoor`), doors opened by use on their own line
+//! (`EV_VerticalDoor`: keys, monsters, re-using a moving door), and the two
+//! timed doors sector specials start.
 
-use super::{Sim, ThinkerId};
+use super::floors::{move_plane, MoveResult, Plane};
+use super::specials::{find_lowest_ceiling_surrounding, next_free_tagged};
+use super::think::ThinkerKind;
+use super::{MobjId, Sim, ThinkerId, TICRATE};
+use crate::fixed::Fixed;
 
-/// The thinker's data.
+/// A door's speed a tic (`VDOORSPEED`) and wait at the top (`VDOORWAIT`).
+pub const VDOORSPEED: Fixed = Fixed(2 << 16);
+pub const VDOORWAIT: i32 = 150;
+
+/// `vldoor_e`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum DoorType {
+    #[default]
+    Normal,
+    Close30ThenOpen,
+    Close,
+    Open,
+    RaiseIn5Mins,
+    BlazeRaise,
+    BlazeOpen,
+    BlazeClose,
+}
+
+/// The thinker's data (`vldoor_t`). `direction`: 1 up, 0 waiting, -1
+/// down, 2 the initial wait of a 5-minute door.
 #[derive(Clone, Debug, Default, PartialEq)]
-pub struct Door {}
+pub struct Door {
+    pub kind: DoorType,
+    pub sector: usize,
+    pub topheight: Fixed,
+    pub speed: Fixed,
+    pub direction: i32,
+    pub topwait: i32,
+    pub topcountdown: i32,
+}
 
-/// Runs the thinker one tic.
+/// Runs the thinker one tic (`T_VerticalDoor`).
 pub fn think(sim: &mut Sim, id: ThinkerId) {
-    let _ = (sim, id);
+    let ThinkerKind::Door(mut door) = sim.thinker(id).kind.clone() else { return };
+    run_door(sim, id, &mut door);
+    if let ThinkerKind::Door(slot) = &mut sim.thinker_mut(id).kind {
+        *slot = door;
+    }
+}
+
+fn run_door(sim: &mut Sim, id: ThinkerId, door: &mut Door) {
+    let sec = door.sector;
+    match door.direction {
+        0 => {
+            door.topcountdown -= 1;
+            if door.topcountdown == 0 {
+                match door.kind {
+                    DoorType::BlazeRaise => {
+                        door.direction = -1;
+                        sound(sim, sec, "bdcls");
+                    }
+                    DoorType::Normal => {
+                        door.direction = -1;
+                        sound(sim, sec, "dorcls");
+                    }
+                    DoorType::Close30ThenOpen => {
+                        door.direction = 1;
+                        sound(sim, sec, "doropn");
+                    }
+                    _ => {}
+                }
+            }
+        }
+        2 => {
+            door.topcountdown -= 1;
+            if door.topcountdown == 0 && door.kind == DoorType::RaiseIn5Mins {
+                door.direction = 1;
+                door.kind = DoorType::Normal;
+                sound(sim, sec, "doropn");
+            }
+        }
+        -1 => {
+            let floor = sim.level.sectors[sec].floorheight;
+            match move_plane(sim, sec, door.speed, floor, 0, Plane::Ceiling, -1) {
+                MoveResult::PastDest => match door.kind {
+                    DoorType::BlazeRaise | DoorType::BlazeClose => {
+                        finish(sim, id, sec);
+                        sound(sim, sec, "bdcls");
+                    }
+                    DoorType::Normal | DoorType::Close => finish(sim, id, sec),
+                    DoorType::Close30ThenOpen => {
+                        door.direction = 0;
+                        door.topcountdown = TICRATE as i32 * 30;
+                    }
+                    _ => {}
+                },
+                MoveResult::Crushed => match door.kind {
+                    // Closing doors do not go back up.
+                    DoorType::BlazeClose | DoorType::Close => {}
+                    _ => {
+                        door.direction = 1;
+                        sound(sim, sec, "doropn");
+                    }
+                },
+                MoveResult::Ok => {}
+            }
+        }
+        1 => {
+            if move_plane(sim, sec, door.speed, door.topheight, 0, Plane::Ceiling, 1) == MoveResult::PastDest {
+                match door.kind {
+                    DoorType::BlazeRaise | DoorType::Normal => {
+                        door.direction = 0;
+                        door.topcountdown = door.topwait;
+                    }
+                    DoorType::Close30ThenOpen | DoorType::BlazeOpen | DoorType::Open => finish(sim, id, sec),
+                    _ => {}
+                }
+            }
+        }
+        _ => {}
+    }
+}
+
+/// The door is done: the sector is free for another mover.
+fn finish(sim: &mut Sim, id: ThinkerId, sec: usize) {
+    sim.level.sectors[sec].specialdata = None;
+    sim.remove_thinker(id);
+}
+
+fn sound(sim: &mut Sim, sector: usize, name: &str) {
+    let s = sim.info.sound(name);
+    sim.sector_sound(sector, s);
+}
+
+/// The key colours a locked line asks for, as card indices (`card_t`:
+/// blue, yellow, red cards 0-2, skulls 3-5), with the messages for a
+/// door (`PD_*K`) and for a switch-operated door (`PD_*O`).
+fn lock_of(special: i16) -> Option<(usize, &'static str, &'static str)> {
+    match special {
+        26 | 32 | 99 | 133 => {
+            Some((0, "You need a blue key to open this door", "You need a blue key to activate this object"))
+        }
+        27 | 34 | 136 | 137 => {
+            Some((1, "You need a yellow key to open this door", "You need a yellow key to activate this object"))
+        }
+        28 | 33 | 134 | 135 => {
+            Some((2, "You need a red key to open this door", "You need a red key to activate this object"))
+        }
+        _ => None,
+    }
+}
+
+/// Whether the player whose body is `thing` holds the card or skull of
+/// `colour`; if not, the message and the "oof".
+fn has_key(sim: &mut Sim, thing: MobjId, colour: usize, message: &str) -> bool {
+    let Some(n) = sim.mo(thing).player else { return false };
+    let Some(p) = sim.players[n].as_mut() else { return false };
+    if p.cards[colour] || p.cards[colour + 3] {
+        return true;
+    }
+    p.message = Some(message.to_string());
+    sim.sound_named(None, "oof");
+    false
+}
+
+/// `EV_DoLockedDoor`: a switch-operated blazing door behind a key; only a
+/// player with the key opens it.
+pub fn do_locked_door(sim: &mut Sim, line: usize, kind: DoorType, thing: MobjId) -> bool {
+    if sim.mo(thing).player.is_none() {
+        return false;
+    }
+    let special = sim.level.lines[line].special;
+    if matches!(special, 99 | 133 | 134 | 135 | 136 | 137) {
+        if let Some((colour, _, message)) = lock_of(special) {
+            if !has_key(sim, thing, colour, message) {
+                return false;
+            }
+        }
+    }
+    do_door(sim, line, kind)
+}
+
+/// `EV_DoDoor`: a door in each tagged sector without a mover; whether any
+/// started.
+pub fn do_door(sim: &mut Sim, line: usize, kind: DoorType) -> bool {
+    let mut sec = None;
+    let mut started = false;
+    while let Some(s) = next_free_tagged(sim, line, sec) {
+        sec = Some(s);
+        started = true;
+        let mut door = Door {
+            kind,
+            sector: s,
+            topheight: Fixed::ZERO,
+            speed: VDOORSPEED,
+            direction: 0,
+            topwait: VDOORWAIT,
+            topcountdown: 0,
+        };
+        let ceiling = sim.level.sectors[s].ceilingheight;
+        let top = || find_lowest_ceiling_surrounding(&sim.level, s) - Fixed::from_int(4);
+        let noise = match kind {
+            DoorType::BlazeClose => {
+                door.topheight = top();
+                door.direction = -1;
+                door.speed = VDOORSPEED * 4;
+                Some("bdcls")
+            }
+            DoorType::Close => {
+                door.topheight = top();
+                door.direction = -1;
+                Some("dorcls")
+            }
+            DoorType::Close30ThenOpen => {
+                door.topheight = ceiling;
+                door.direction = -1;
+                Some("dorcls")
+            }
+            DoorType::BlazeRaise | DoorType::BlazeOpen => {
+                door.direction = 1;
+                door.topheight = top();
+                door.speed = VDOORSPEED * 4;
+                (door.topheight != ceiling).then_some("bdopn")
+            }
+            DoorType::Normal | DoorType::Open => {
+                door.direction = 1;
+                door.topheight = top();
+                (door.topheight != ceiling).then_some("doropn")
+            }
+            DoorType::RaiseIn5Mins => None,
+        };
+        let id = sim.add_thinker(ThinkerKind::Door(door));
+        sim.level.sectors[s].specialdata = Some(id);
+        if let Some(n) = noise {
+            sound(sim, s, n);
+        }
+    }
+    started
+}
+
+/// `EV_VerticalDoor`: `thing` used the door line `line` (its back sector
+/// is the door). Keys are checked for players; monsters are turned away
+/// from locked doors. A raise door already moving goes back up if it was
+/// closing, or (for a player) starts closing.
+pub fn vertical_door(sim: &mut Sim, line: usize, thing: MobjId) {
+    let special = sim.level.lines[line].special;
+    if matches!(special, 26 | 27 | 28 | 32 | 33 | 34) {
+        if sim.mo(thing).player.is_none() {
+            return;
+        }
+        if let Some((colour, message, _)) = lock_of(special) {
+            if !has_key(sim, thing, colour, message) {
+                return;
+            }
+        }
+    }
+    // Vanilla stops with an error on a one-sided door line.
+    let Some(back) = sim.level.lines[line].sidenum[1] else { return };
+    let sec = sim.level.sides[back].sector;
+    if let Some(existing) = sim.level.sectors[sec].specialdata {
+        if matches!(special, 1 | 26 | 27 | 28 | 117) {
+            reuse_moving_door(sim, existing, thing);
+            return;
+        }
+    }
+    let noise = if matches!(special, 117 | 118) { "bdopn" } else { "doropn" };
+    sound(sim, sec, noise);
+    let (kind, speed) = match special {
+        31..=34 => (DoorType::Open, VDOORSPEED),
+        117 => (DoorType::BlazeRaise, VDOORSPEED * 4),
+        118 => (DoorType::BlazeOpen, VDOORSPEED * 4),
+        _ => (DoorType::Normal, VDOORSPEED),
+    };
+    if matches!(special, 31..=34 | 118) {
+        sim.level.lines[line].special = 0;
+    }
+    let topheight = find_lowest_ceiling_surrounding(&sim.level, sec) - Fixed::from_int(4);
+    let door = Door { kind, sector: sec, topheight, speed, direction: 1, topwait: VDOORWAIT, topcountdown: 0 };
+    let id = sim.add_thinker(ThinkerKind::Door(door));
+    sim.level.sectors[sec].specialdata = Some(id);
+}
+
+/// A raise door used while its sector already has a mover. Vanilla reads
+/// and writes `door->direction` whatever the mover is; Chocolate sends the
+/// closing write for a plat to its `wait` (the field at that offset on
+/// 32-bit machines), as here; a floor or crusher is left alone.
+fn reuse_moving_door(sim: &mut Sim, existing: ThinkerId, thing: MobjId) {
+    let is_player = sim.mo(thing).player.is_some();
+    match &mut sim.thinker_mut(existing).kind {
+        ThinkerKind::Door(door) => {
+            if door.direction == -1 {
+                door.direction = 1;
+            } else if is_player {
+                door.direction = -1;
+            }
+        }
+        ThinkerKind::Plat(plat) => {
+            // On the 64-bit build that made the reference dumps, the door's
+            // `direction` lies over the plat's `count`; Chocolate's own
+            // write goes to `wait`.
+            if plat.count == -1 {
+                plat.count = 1;
+            } else if is_player {
+                plat.wait = -1;
+            }
+        }
+        _ => {}
+    }
+}
+
+/// `P_SpawnDoorCloseIn30`: sector special 10, a door open now that closes
+/// after 30 seconds (then stays shut: its type is a normal door).
+pub fn spawn_door_close_in_30(sim: &mut Sim, sector: usize) {
+    let door = Door {
+        kind: DoorType::Normal,
+        sector,
+        topheight: Fixed::ZERO,
+        speed: VDOORSPEED,
+        direction: 0,
+        topwait: 0,
+        topcountdown: 30 * TICRATE as i32,
+    };
+    let id = sim.add_thinker(ThinkerKind::Door(door));
+    let s = &mut sim.level.sectors[sector];
+    s.specialdata = Some(id);
+    s.special = 0;
+}
+
+/// `P_SpawnDoorRaiseIn5Mins`: sector special 14, a shut door that opens
+/// after five minutes and then behaves as a normal door.
+pub fn spawn_door_raise_in_5_mins(sim: &mut Sim, sector: usize) {
+    let topheight = find_lowest_ceiling_surrounding(&sim.level, sector) - Fixed::from_int(4);
+    let door = Door {
+        kind: DoorType::RaiseIn5Mins,
+        sector,
+        topheight,
+        speed: VDOORSPEED,
+        direction: 2,
+        topwait: VDOORWAIT,
+        topcountdown: 5 * 60 * TICRATE as i32,
+    };
+    let id = sim.add_thinker(ThinkerKind::Door(door));
+    let s = &mut sim.level.sectors[sector];
+    s.specialdata = Some(id);
+    s.special = 0;
 }

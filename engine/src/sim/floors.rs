@@ -1,12 +1,428 @@
-//! Floors (`p_floor.c`): the shared mover `T_MovePlane`, `T_MoveFloor`, `EV_DoFloor`, stairs (`EV_BuildStairs`) and donuts.
+//! Floors (`p_floor.c`): the one mover every door, lift, floor and
+//! crusher goes through (`T_MovePlane`, which refits the things in the
+//! sector after each step and undoes a step that does not fit), the floor
+//! thinker `T_MoveFloor`, floors started by tag (`EV_DoFloor`), stairs
+//! (`EV_BuildStairs`) and donuts (`EV_DoDonut`).
 
-use super::{Sim, ThinkerId};
+use super::level::NameId;
+use super::specials::{
+    find_highest_floor_surrounding, find_lowest_ceiling_surrounding, find_lowest_floor_surrounding,
+    find_next_highest_floor, find_sector_from_line_tag, next_free_tagged, next_sector, texture_height,
+};
+use super::think::ThinkerKind;
+use super::{collision, level::ml, Compat, Sim, ThinkerId};
+use crate::fixed::Fixed;
 
-/// The thinker's data.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct FloorMove {}
+/// A floor's speed a tic (`FLOORSPEED`).
+pub const FLOORSPEED: Fixed = Fixed::ONE;
 
-/// Runs the thinker one tic.
+/// What a step of `T_MovePlane` came to (`result_e`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MoveResult {
+    Ok,
+    Crushed,
+    PastDest,
+}
+
+/// Which plane moves.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Plane {
+    Floor,
+    Ceiling,
+}
+
+/// `T_MovePlane`: moves the floor or ceiling of `sector` by `speed`
+/// towards `dest` (`direction` 1 up, -1 down), refitting the things in it
+/// (`P_ChangeSector`, crushing if `crush` is non-zero). `crush` is Doom's
+/// int: the stairs leave it uninitialised (Chocolate's 10), which crushes
+/// in `P_ChangeSector` but is not `true` for the "keep going" test here.
+/// A step that reaches `dest` is kept even when something no longer fits
+/// (the fitting is redone at the old height but `pastdest` returned, as
+/// vanilla does); a step short of it that does not fit is undone, except a
+/// crushing floor going up or ceiling going down, which stays. A ceiling
+/// going up never reports a crush.
+pub fn move_plane(
+    sim: &mut Sim,
+    sector: usize,
+    speed: Fixed,
+    dest: Fixed,
+    crush: i32,
+    plane: Plane,
+    direction: i32,
+) -> MoveResult {
+    let crunch = crush != 0;
+    let height = |sim: &Sim| match plane {
+        Plane::Floor => sim.level.sectors[sector].floorheight,
+        Plane::Ceiling => sim.level.sectors[sector].ceilingheight,
+    };
+    let set = |sim: &mut Sim, h: Fixed| match plane {
+        Plane::Floor => sim.level.sectors[sector].floorheight = h,
+        Plane::Ceiling => sim.level.sectors[sector].ceilingheight = h,
+    };
+    if direction != -1 && direction != 1 {
+        return MoveResult::Ok;
+    }
+    let lastpos = height(sim);
+    let past = if direction == -1 { lastpos - speed < dest } else { lastpos + speed > dest };
+    if past {
+        set(sim, dest);
+        if collision::change_sector(sim, sector, crunch) {
+            set(sim, lastpos);
+            collision::change_sector(sim, sector, crunch);
+        }
+        return MoveResult::PastDest;
+    }
+    set(sim, if direction == -1 { lastpos - speed } else { lastpos + speed });
+    let blocked = collision::change_sector(sim, sector, crunch);
+    // A ceiling going up has nothing to run into (vanilla's check is
+    // compiled out).
+    if !blocked || (plane == Plane::Ceiling && direction == 1) {
+        return MoveResult::Ok;
+    }
+    let may_crush = (plane == Plane::Floor && direction == 1) || (plane == Plane::Ceiling && direction == -1);
+    if may_crush && crush == 1 {
+        return MoveResult::Crushed;
+    }
+    set(sim, lastpos);
+    collision::change_sector(sim, sector, crunch);
+    MoveResult::Crushed
+}
+
+/// `floor_e`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum FloorType {
+    #[default]
+    LowerFloor,
+    LowerFloorToLowest,
+    TurboLower,
+    RaiseFloor,
+    RaiseFloorToNearest,
+    RaiseToTexture,
+    LowerAndChange,
+    RaiseFloor24,
+    RaiseFloor24AndChange,
+    RaiseFloorCrush,
+    RaiseFloorTurbo,
+    DonutRaise,
+    RaiseFloor512,
+}
+
+/// `stair_e`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StairType {
+    Build8,
+    Turbo16,
+}
+
+/// The thinker's data (`floormove_t`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct FloorMove {
+    pub kind: FloorType,
+    /// Doom's int (see [`move_plane`]).
+    pub crush: i32,
+    pub sector: usize,
+    pub direction: i32,
+    pub newspecial: i16,
+    pub texture: NameId,
+    pub floordestheight: Fixed,
+    pub speed: Fixed,
+}
+
+impl Default for FloorMove {
+    fn default() -> FloorMove {
+        FloorMove {
+            kind: FloorType::LowerFloor,
+            crush: 0,
+            sector: 0,
+            direction: 0,
+            newspecial: 0,
+            texture: super::level::NO_TEXTURE,
+            floordestheight: Fixed::ZERO,
+            speed: Fixed::ZERO,
+        }
+    }
+}
+
+/// Runs the thinker one tic (`T_MoveFloor`): at its destination the
+/// sector is freed, a donut's rising ring and a lower-and-change floor
+/// take their new flat and special.
 pub fn think(sim: &mut Sim, id: ThinkerId) {
-    let _ = (sim, id);
+    let ThinkerKind::Floor(floor) = sim.thinker(id).kind.clone() else { return };
+    let sec = floor.sector;
+    let res = move_plane(sim, sec, floor.speed, floor.floordestheight, floor.crush, Plane::Floor, floor.direction);
+    if sim.leveltime & 7 == 0 {
+        sound(sim, sec, "stnmov");
+    }
+    if res != MoveResult::PastDest {
+        return;
+    }
+    let changes = match floor.direction {
+        1 => floor.kind == FloorType::DonutRaise,
+        -1 => floor.kind == FloorType::LowerAndChange,
+        _ => false,
+    };
+    let s = &mut sim.level.sectors[sec];
+    s.specialdata = None;
+    if changes {
+        s.special = floor.newspecial;
+        s.floorpic = floor.texture;
+    }
+    sim.remove_thinker(id);
+    sound(sim, sec, "pstop");
+}
+
+fn sound(sim: &mut Sim, sector: usize, name: &str) {
+    let s = sim.info.sound(name);
+    sim.sector_sound(sector, s);
+}
+
+/// Starts a floor thinker on `sector` and makes it the sector's mover.
+fn start(sim: &mut Sim, floor: FloorMove) -> ThinkerId {
+    let sector = floor.sector;
+    let id = sim.add_thinker(ThinkerKind::Floor(floor));
+    sim.level.sectors[sector].specialdata = Some(id);
+    id
+}
+
+/// `EV_DoFloor`: a floor in each tagged sector without a mover; whether
+/// any started.
+pub fn do_floor(sim: &mut Sim, line: usize, kind: FloorType) -> bool {
+    let mut sec = None;
+    let mut started = false;
+    while let Some(s) = next_free_tagged(sim, line, sec) {
+        sec = Some(s);
+        started = true;
+        let floor = new_floor(sim, line, s, kind);
+        start(sim, floor);
+    }
+    started
+}
+
+/// One floor of `EV_DoFloor`'s kinds, with the sector changes some make
+/// at once (the 24-and-change floor takes the line's front flat and
+/// special now).
+fn new_floor(sim: &mut Sim, line: usize, s: usize, kind: FloorType) -> FloorMove {
+    let level = &sim.level;
+    let here = level.sectors[s].floorheight;
+    let mut f = FloorMove { kind, sector: s, direction: 1, speed: FLOORSPEED, ..FloorMove::default() };
+    match kind {
+        FloorType::LowerFloor => {
+            f.direction = -1;
+            f.floordestheight = find_highest_floor_surrounding(level, s);
+        }
+        FloorType::LowerFloorToLowest => {
+            f.direction = -1;
+            f.floordestheight = find_lowest_floor_surrounding(level, s);
+        }
+        FloorType::TurboLower => {
+            f.direction = -1;
+            f.speed = FLOORSPEED * 4;
+            f.floordestheight = find_highest_floor_surrounding(level, s);
+            // 1.2 always added the 8; later versions not when level.
+            if f.floordestheight != here {
+                f.floordestheight += Fixed::from_int(8);
+            }
+        }
+        FloorType::RaiseFloorCrush | FloorType::RaiseFloor => {
+            f.crush = i32::from(kind == FloorType::RaiseFloorCrush);
+            f.floordestheight = find_lowest_ceiling_surrounding(level, s).min(level.sectors[s].ceilingheight);
+            if kind == FloorType::RaiseFloorCrush {
+                f.floordestheight -= Fixed::from_int(8);
+            }
+        }
+        FloorType::RaiseFloorTurbo => {
+            f.speed = FLOORSPEED * 4;
+            f.floordestheight = find_next_highest_floor(level, s, here);
+        }
+        FloorType::RaiseFloorToNearest => f.floordestheight = find_next_highest_floor(level, s, here),
+        FloorType::RaiseFloor24 => f.floordestheight = here + Fixed::from_int(24),
+        FloorType::RaiseFloor512 => f.floordestheight = here + Fixed::from_int(512),
+        FloorType::RaiseFloor24AndChange => {
+            f.floordestheight = here + Fixed::from_int(24);
+            if let Some(front) = level.lines[line].frontsector {
+                let (pic, special) = (level.sectors[front].floorpic, level.sectors[front].special);
+                sim.level.sectors[s].floorpic = pic;
+                sim.level.sectors[s].special = special;
+            }
+        }
+        FloorType::RaiseToTexture => f.floordestheight = here + shortest_lower_texture(sim, s),
+        FloorType::LowerAndChange => {
+            f.direction = -1;
+            f.floordestheight = find_lowest_floor_surrounding(level, s);
+            f.texture = level.sectors[s].floorpic;
+            if let Some((pic, special)) = change_source(sim, s, f.floordestheight) {
+                f.texture = pic;
+                f.newspecial = special;
+            }
+        }
+        FloorType::DonutRaise => {}
+    }
+    f
+}
+
+/// Raise-to-texture's height: the shortest lower texture on either side
+/// of the sector's two-sided lines (`textureheight`, where a `-` reads
+/// texture 0); `INT_MAX` when there is none, as vanilla starts it.
+fn shortest_lower_texture(sim: &Sim, s: usize) -> Fixed {
+    let mut minsize = Fixed::MAX;
+    for &l in &sim.level.sectors[s].lines {
+        let line = &sim.level.lines[l];
+        if line.flags & ml::TWOSIDED == 0 {
+            continue;
+        }
+        for side in line.sidenum.into_iter().flatten() {
+            if let Some(h) = texture_height(sim, sim.level.sides[side].bottomtexture) {
+                minsize = minsize.min(h);
+            }
+        }
+    }
+    minsize
+}
+
+/// Lower-and-change's new flat and special: those of the first sector
+/// across a two-sided line whose floor is at the destination.
+fn change_source(sim: &Sim, s: usize, dest: Fixed) -> Option<(NameId, i16)> {
+    let level = &sim.level;
+    for &l in &level.sectors[s].lines {
+        let line = &level.lines[l];
+        if line.flags & ml::TWOSIDED == 0 {
+            continue;
+        }
+        let front_is_here = line.sidenum[0].is_some_and(|side| level.sides[side].sector == s);
+        let across = if front_is_here { line.sidenum[1] } else { line.sidenum[0] };
+        let Some(other) = across.map(|side| level.sides[side].sector) else { continue };
+        if level.sectors[other].floorheight == dest {
+            return Some((level.sectors[other].floorpic, level.sectors[other].special));
+        }
+    }
+    None
+}
+
+/// Chocolate's value for the crush field stairs leave uninitialised
+/// (`STAIRS_UNINITIALIZED_CRUSH_FIELD_VALUE`).
+const STAIRS_CRUSH: i32 = 10;
+
+/// `EV_BuildStairs`: from each tagged sector, a step rises by the stair
+/// size; then the sector behind its first two-sided line facing out (with
+/// the same floor flat) rises one step more, and so on. A step already
+/// moving is skipped over but still counts a step's height. The search
+/// for the next tagged sector goes on from the last step built, as
+/// vanilla's does.
+pub fn build_stairs(sim: &mut Sim, line: usize, kind: StairType) -> bool {
+    let (speed, stairsize) = match kind {
+        StairType::Build8 => (Fixed(FLOORSPEED.0 / 4), Fixed::from_int(8)),
+        StairType::Turbo16 => (FLOORSPEED * 4, Fixed::from_int(16)),
+    };
+    let mut secnum = None;
+    let mut started = false;
+    while let Some(first) = find_sector_from_line_tag(&sim.level, line, secnum) {
+        secnum = Some(first);
+        if sim.level.sectors[first].specialdata.is_some() {
+            continue;
+        }
+        started = true;
+        let mut sec = first;
+        let mut height = sim.level.sectors[sec].floorheight + stairsize;
+        let step = |sector, height| FloorMove {
+            kind: FloorType::LowerFloor,
+            crush: STAIRS_CRUSH,
+            sector,
+            direction: 1,
+            speed,
+            floordestheight: height,
+            ..FloorMove::default()
+        };
+        start(sim, step(sec, height));
+        let texture = sim.level.sectors[sec].floorpic;
+        while let Some(next) = next_step(sim, sec, texture, stairsize, &mut height) {
+            sec = next;
+            secnum = Some(next);
+            start(sim, step(sec, height));
+        }
+    }
+    started
+}
+
+/// The next stair step from `sec`: across the first two-sided line whose
+/// front is `sec` and whose back has the stairs' flat and no mover;
+/// `height` grows by a step for every candidate with the flat, moving or
+/// not.
+fn next_step(sim: &Sim, sec: usize, texture: NameId, stairsize: Fixed, height: &mut Fixed) -> Option<usize> {
+    let level = &sim.level;
+    for &l in &level.sectors[sec].lines {
+        let line = &level.lines[l];
+        if line.flags & ml::TWOSIDED == 0 || line.frontsector != Some(sec) {
+            continue;
+        }
+        let Some(back) = line.backsector else { continue };
+        if level.sectors[back].floorpic != texture {
+            continue;
+        }
+        *height += stairsize;
+        if level.sectors[back].specialdata.is_some() {
+            continue;
+        }
+        return Some(back);
+    }
+    None
+}
+
+/// `EV_DoDonut`: each tagged sector (the hole) sinks to, and the ring
+/// around it rises to, the floor of the sector beyond the ring (found on
+/// the ring's lines); both at half floor speed. A ring line with no back
+/// sector makes vanilla read address 0: Chocolate's emulation (its
+/// Windows 98 default) gives height 0 and flat 22, kept under
+/// `Compat::Vanilla` (flat numbers are not our names, so the ring keeps
+/// its flat); with the fixes on, the line is passed over.
+pub fn do_donut(sim: &mut Sim, line: usize) -> bool {
+    let mut secnum = None;
+    let mut started = false;
+    while let Some(s1) = find_sector_from_line_tag(&sim.level, line, secnum) {
+        secnum = Some(s1);
+        if sim.level.sectors[s1].specialdata.is_some() {
+            continue;
+        }
+        started = true;
+        let Some(&first_line) = sim.level.sectors[s1].lines.first() else { continue };
+        // Chocolate stops here where vanilla reads invalid memory.
+        let Some(s2) = next_sector(&sim.level, first_line, s1) else { break };
+        for i in 0..sim.level.sectors[s2].lines.len() {
+            let l = sim.level.sectors[s2].lines[i];
+            let s3 = sim.level.lines[l].backsector;
+            if s3 == Some(s1) {
+                continue;
+            }
+            let (height, pic) = match s3 {
+                Some(s3) => (sim.level.sectors[s3].floorheight, sim.level.sectors[s3].floorpic),
+                None if sim.rules.compat == Compat::Vanilla => (Fixed::ZERO, sim.level.sectors[s2].floorpic),
+                None => continue,
+            };
+            start(
+                sim,
+                FloorMove {
+                    kind: FloorType::DonutRaise,
+                    sector: s2,
+                    direction: 1,
+                    speed: Fixed(FLOORSPEED.0 / 2),
+                    texture: pic,
+                    newspecial: 0,
+                    floordestheight: height,
+                    ..FloorMove::default()
+                },
+            );
+            start(
+                sim,
+                FloorMove {
+                    kind: FloorType::LowerFloor,
+                    sector: s1,
+                    direction: -1,
+                    speed: Fixed(FLOORSPEED.0 / 2),
+                    floordestheight: height,
+                    ..FloorMove::default()
+                },
+            );
+            break;
+        }
+    }
+    started
 }
