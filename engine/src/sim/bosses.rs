@@ -5,6 +5,7 @@
 //! explosions and the level's end). Floors and doors start through their
 //! own modules; the level ends through `specials::exit_level`.
 
+use super::floors::{self, FloorType};
 use super::info::mt;
 use super::monsters::{actor_arg, fall, look_for_players};
 use super::{collision, doors, specials, GameMode, GameVersion, MobjId, Sim};
@@ -108,17 +109,17 @@ fn boss_death(sim: &mut Sim, id: MobjId) {
     }
     if commercial {
         if sim.is(id, mt::FATSO) {
-            boss_floor(sim, 666, BossFloor::LowerToLowest);
+            boss_floor(sim, 666, FloorType::LowerFloorToLowest);
             return;
         }
         if sim.is(id, mt::BABY) {
-            boss_floor(sim, 667, BossFloor::RaiseToTexture);
+            boss_floor(sim, 667, FloorType::RaiseToTexture);
             return;
         }
     } else {
         match (episode, map) {
             (1, _) | (4, 8) => {
-                boss_floor(sim, 666, BossFloor::LowerToLowest);
+                boss_floor(sim, 666, FloorType::LowerFloorToLowest);
                 return;
             }
             (4, 6) => {
@@ -133,18 +134,11 @@ fn boss_death(sim: &mut Sim, id: MobjId) {
     specials::exit_level(sim, false);
 }
 
-/// The two floor moves a boss death starts.
-#[derive(Clone, Copy, Debug)]
-enum BossFloor {
-    LowerToLowest,
-    RaiseToTexture,
-}
-
-/// `EV_DoFloor(&junk, ...)` on the sectors tagged `tag`.
-fn boss_floor(sim: &mut Sim, tag: i16, how: BossFloor) {
-    // floors.rs has no EV_DoFloor entry point yet; the call goes here
-    // when it has one (E1M8, E4M8 and MAP07 wait on it).
-    let _ = (sim, tag, how);
+/// `EV_DoFloor(&junk, how)` on the sectors tagged `tag`.
+fn boss_floor(sim: &mut Sim, tag: i16, how: FloorType) {
+    with_junk_line(sim, tag, |sim, line| {
+        floors::do_floor(sim, line, how);
+    });
 }
 
 /// `A_KeenDie`: falls; when no other of its kind lives, tag 666's doors

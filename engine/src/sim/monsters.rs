@@ -55,6 +55,10 @@ pub fn action(sim: &mut Sim, id: MobjId, name: &str, call: &ActionCall) {
                 sim.sound(Some(id), s + 1);
             }
         }
+        "A_BFGSpray" => {
+            let spray = actor_arg(sim, call, mt::EXTRABFG);
+            super::weapons::bfg_spray(sim, id, spray);
+        }
         "A_Hoof" => {
             sim.sound_named(Some(id), "hoof");
             chase_target(sim, id);
@@ -403,3 +407,6 @@ fn player_scream(sim: &mut Sim, id: MobjId) {
     let high = sim.rules.mode == super::GameMode::Commercial && sim.mo(id).health < -50;
     sim.sound_named(Some(id), if high { "pdiehi" } else { "pldeth" });
 }
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,240 @@
+//! Doom's monster behaviours worked by hand: each test sets up bodies in
+//! freedoom2's MAP01 (its level only; the monsters' own bodies are placed
+//! here) and checks what `p_enemy.c` computes, `P_Random` draws included.
+//! The draws come from Doom's table from index 0: 8, 109, 220, 222, 241,
+//! 149, 107, 75, ...
+
+use std::path::PathBuf;
+use std::sync::Arc;
+
+use crate::actors::ActorTable;
+use crate::fixed::{finecosine, Angle, DoomRandom, Fixed, ANG45, ANG90, FRACUNIT};
+use crate::sim::info::mt;
+use crate::sim::mobj::mf;
+use crate::sim::setup::Players;
+use crate::sim::{Compat, GameMode, GameVersion, MobjId, Rules, Sim};
+use crate::wad::Wad;
+
+fn u(n: i32) -> Fixed {
+    Fixed::from_int(n)
+}
+
+/// MAP01 of freedoom2 with one player and no monsters, `P_Random` at 0.
+fn sim() -> Sim {
+    let dir =
+        std::env::var_os("SIGHTLINE_DOOM_DIR").map_or_else(|| PathBuf::from("/usr/share/games/doom"), PathBuf::from);
+    let path = dir.join("freedoom2.wad");
+    let wad = Wad::open(&path).unwrap_or_else(|e| panic!("the monster tests need {}: {e}", path.display()));
+    let rules = Rules {
+        skill: 3,
+        version: GameVersion::Doom19,
+        mode: GameMode::Commercial,
+        compat: Compat::Vanilla,
+        deathmatch: 0,
+        respawn: false,
+        fast: false,
+        no_monsters: true,
+        netgame: false,
+    };
+    let players = Players { in_game: [true, false, false, false], console: 0 };
+    let mut sim = Sim::new(&wad, "MAP01", rules, players, Arc::clone(ActorTable::doom())).expect("MAP01 loads");
+    sim.rng = DoomRandom::new();
+    sim
+}
+
+fn spawn(sim: &mut Sim, mt: usize, x: i32, y: i32) -> MobjId {
+    let kind = sim.kind_of(mt);
+    sim.spawn_mobj(u(x), u(y), Fixed::ZERO, kind)
+}
+
+#[test]
+fn a_lost_soul_charges_at_twenty_units_towards_the_target_s_middle() {
+    let mut sim = sim();
+    let skull = spawn(&mut sim, mt::SKULL, 0, 0);
+    let target = spawn(&mut sim, mt::POSSESSED, 200, 0);
+    sim.mo_mut(skull).target = Some(target);
+    let before = sim.rng.p_index();
+    super::super::attacks::skull_attack(&mut sim, skull);
+    let s = sim.mo(skull);
+    assert!(s.has(mf::SKULLFLY));
+    assert_eq!(s.angle, Angle::ZERO);
+    // Doom's tables sit half a step off: finecosine[0] is 65535 and
+    // finesine[0] is 25.
+    assert_eq!((s.momx, s.momy), (Fixed(20 * 65535), Fixed(20 * 25)));
+    // 200 units at 20 a tic is 10 tics; the zombie's middle is 28 up:
+    // 28 * 65536 / 10 = 183500 (C's division truncates).
+    assert_eq!(s.momz, Fixed(183_500));
+    assert_eq!(sim.rng.p_index(), before, "no P_Random in a charge at a visible target");
+}
+
+#[test]
+fn facing_a_shadow_is_off_by_p_subrandom_shifted_21() {
+    let mut sim = sim();
+    let imp = spawn(&mut sim, mt::TROOP, 0, 0);
+    let target = spawn(&mut sim, mt::SHADOWS, 100, 100);
+    sim.mo_mut(imp).target = Some(target);
+    sim.mo_mut(imp).flags |= mf::AMBUSH;
+    sim.rng = DoomRandom::new();
+    super::face_target(&mut sim, imp);
+    // 45 degrees is tantoangle[2048], 0x1fff_ffff (one short of ANG45);
+    // then (8 - 109) << 21 = -0x0ca0_0000.
+    assert_eq!(sim.mo(imp).angle, Angle(ANG45.0 - 1 - 0x0ca0_0000));
+    assert!(!sim.mo(imp).has(mf::AMBUSH), "facing ends an ambush");
+    assert_eq!(sim.rng.p_index(), 2);
+}
+
+#[test]
+fn a_chaser_turns_45_degrees_a_tic_towards_its_direction() {
+    let mut sim = sim();
+    let imp = spawn(&mut sim, mt::TROOP, 0, 0);
+    // No target and a dead player: it looks, finds nobody, goes back to
+    // its spawn state, but turns first.
+    if let Some(p) = sim.players[0].as_mut() {
+        p.health = 0;
+    }
+    let m = sim.mo_mut(imp);
+    m.movedir = crate::sim::chase::DI_NORTH;
+    m.angle = Angle(0x0123_4567); // the turn first snaps to a multiple of 45
+    m.threshold = 5;
+    m.reactiontime = 2;
+    super::chase_target(&mut sim, imp);
+    let m = sim.mo(imp);
+    assert_eq!(m.angle, ANG45);
+    assert_eq!(m.threshold, 0, "no target: the threshold is dropped");
+    assert_eq!(m.reactiontime, 1);
+    assert_eq!(m.state, sim.info.things[m.kind].spawnstate);
+    super::chase_target(&mut sim, imp);
+    assert_eq!(sim.mo(imp).angle, ANG90);
+    super::chase_target(&mut sim, imp);
+    assert_eq!(sim.mo(imp).angle, ANG90, "there: no more turning");
+}
+
+#[test]
+fn looking_starts_from_lastlook_and_gives_up_at_the_stop() {
+    let mut sim = sim();
+    let imp = spawn(&mut sim, mt::TROOP, 0, 0);
+    // lastlook 1 with only player 0: the walk reaches player 0 as the stop
+    // (lastlook - 1) and gives up without a look; lastlook stays there.
+    sim.mo_mut(imp).lastlook = 1;
+    assert!(!super::look_for_players(&mut sim, imp, true));
+    assert_eq!(sim.mo(imp).lastlook, 0);
+    // From 0 a dead player is passed over until the third visit.
+    if let Some(p) = sim.players[0].as_mut() {
+        p.health = 0;
+    }
+    assert!(!super::look_for_players(&mut sim, imp, true));
+    assert_eq!(sim.mo(imp).lastlook, 0);
+    assert_eq!(sim.mo(imp).target, None);
+}
+
+#[test]
+fn a_homing_missile_turns_by_traceangle_and_climbs_an_eighth_on_every_fourth_tic() {
+    let mut sim = sim();
+    let tracer = spawn(&mut sim, mt::TRACER, 0, 0);
+    let dest = spawn(&mut sim, mt::POSSESSED, 0, 1000);
+    sim.mo_mut(tracer).tracer = Some(dest);
+    sim.gametic = 1;
+    let call =
+        crate::actors::ActionCall { action: crate::actors::actions::find("A_Tracer").expect("A_Tracer"), args: vec![] };
+    super::action(&mut sim, tracer, "A_Tracer", &call);
+    assert_eq!(sim.mo(tracer).angle, Angle::ZERO, "gametic 1: nothing");
+    sim.gametic = 4;
+    super::action(&mut sim, tracer, "A_Tracer", &call);
+    let m = sim.mo(tracer);
+    // Due north is 90 degrees away: one TRACEANGLE step, 16.875 degrees,
+    // fine angle 384.
+    assert_eq!(m.angle, Angle(0x0c00_0000));
+    assert_eq!(m.momx, u(10) * finecosine(384));
+    // 1000 units at 10 a tic: 100 tics; (40 units up) / 100 = 26214 is
+    // above momz 0, so it climbs by 1/8.
+    assert_eq!(m.momz, Fixed(FRACUNIT / 8));
+}
+
+#[test]
+fn noise_floods_open_lines_and_stops_at_the_second_sound_block() {
+    use crate::sim::level::ml;
+    let mut sim = sim();
+    let player = sim.players[0].as_ref().map(|p| p.mo).expect("player 0");
+    // Sectors 0-1 open, 1-2 across one sound-blocking line, 2-3 across
+    // another, 0-4 a closed door (no opening), 5 unconnected.
+    let template_sector = sim.level.sectors[0].clone();
+    let mut sectors = vec![template_sector; 6];
+    for s in &mut sectors {
+        s.floorheight = u(0);
+        s.ceilingheight = u(128);
+        s.soundtarget = None;
+        s.soundtraversed = 0;
+        s.lines.clear();
+    }
+    sectors[4].ceilingheight = u(0);
+    let template_side = sim.level.sides[0].clone();
+    let template_line = sim.level.lines[0].clone();
+    let mut sides = Vec::new();
+    let mut lines = Vec::new();
+    for (a, b, flags) in [(0, 1, 0), (1, 2, ml::SOUNDBLOCK), (2, 3, ml::SOUNDBLOCK), (0, 4, 0)] {
+        let mut line = template_line.clone();
+        line.flags = ml::TWOSIDED | flags;
+        line.frontsector = Some(a);
+        line.backsector = Some(b);
+        line.sidenum = [Some(sides.len()), Some(sides.len() + 1)];
+        for s in [a, b] {
+            let mut side = template_side.clone();
+            side.sector = s;
+            sides.push(side);
+            sectors[s].lines.push(lines.len());
+        }
+        lines.push(line);
+    }
+    sim.level.sectors = sectors;
+    sim.level.sides = sides;
+    sim.level.lines = lines;
+    let sub = sim.mo(player).subsector;
+    sim.level.subsectors[sub].sector = 0;
+    super::noise_alert(&mut sim, player, player);
+    let heard: Vec<(i32, bool)> =
+        sim.level.sectors.iter().map(|s| (s.soundtraversed, s.soundtarget == Some(player))).collect();
+    assert_eq!(heard, [(1, true), (1, true), (2, true), (0, false), (0, false), (0, false)]);
+}
+
+#[test]
+fn a_pain_elemental_spits_no_skull_when_more_than_twenty_are_about() {
+    let mut sim = sim();
+    let pain = spawn(&mut sim, mt::PAIN, 0, 0);
+    let target = spawn(&mut sim, mt::POSSESSED, 500, 0);
+    sim.mo_mut(pain).target = Some(target);
+    for n in 0..21 {
+        spawn(&mut sim, mt::SKULL, 1000 + 64 * n, 0);
+    }
+    let bodies = sim.mobjs.len();
+    let call = crate::actors::ActionCall {
+        action: crate::actors::actions::find("A_PainAttack").expect("A_PainAttack"),
+        args: vec![],
+    };
+    let index = sim.rng.p_index();
+    super::action(&mut sim, pain, "A_PainAttack", &call);
+    assert_eq!(sim.mobjs.len(), bodies);
+    assert_eq!(sim.rng.p_index(), index);
+}
+
+#[test]
+fn the_brain_s_explosion_draws_five_randoms_around_its_spawn() {
+    let mut sim = sim();
+    let brain = spawn(&mut sim, mt::BOSSBRAIN, 0, 0);
+    sim.rng = DoomRandom::new();
+    let call = crate::actors::ActionCall {
+        action: crate::actors::actions::find("A_BrainExplode").expect("A_BrainExplode"),
+        args: vec![],
+    };
+    let first = sim.mobjs.len();
+    // No explosion argument: the rocket's own spawn state stands in; the
+    // draws are the same.
+    super::action(&mut sim, brain, "A_BrainExplode", &call);
+    let boom = sim.mo(MobjId(first as u32));
+    // x: (8 - 109) * 2048; z: 128 + 220 * 2 * FRACUNIT; the spawn's
+    // lastlook takes 222; momz 241 * 512; tics less 149 & 7 = 5.
+    assert_eq!(boom.x, Fixed(-101 * 2048));
+    assert_eq!(boom.z, Fixed(128 + 440 * FRACUNIT));
+    assert_eq!(boom.momz, Fixed(241 * 512));
+    assert!(sim.is(MobjId(first as u32), mt::ROCKET));
+    assert_eq!(sim.rng.p_index(), 6);
+}
