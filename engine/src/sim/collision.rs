@@ -472,3 +472,7 @@ pub fn check_spot(sim: &mut Sim, n: usize, body: Option<MobjId>, spot: &crate::w
     };
     check_position(sim, mo, x, y)
 }
+
+#[cfg(test)]
+#[path = "collision_tests.rs"]
+mod tests;

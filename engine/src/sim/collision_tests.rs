@@ -1,0 +1,324 @@
+//! Hand-worked checks of `p_map.c`, `p_maputl.c` and `p_sight.c` on a
+//! room built in memory: 256 units square, split at x = 128 by a
+//! two-sided line into a west sector (0) and an east one (1) whose heights
+//! each test sets. The blockmap is 3x3 cells from (-8, -8), every cell
+//! listing every line (validcount keeps each to one visit); one node splits
+//! the room at x = 128.
+
+use std::path::Path;
+
+use super::*;
+use crate::actors::ActorTable;
+use crate::fixed::{Angle, Fixed};
+use crate::sim::info::mt;
+use crate::sim::level::{ml, Blockmap, Level, Line, Node, Sector, Seg, Side, SlopeType, Subsector, NO_TEXTURE};
+use crate::sim::mobj::ONFLOORZ;
+use crate::sim::setup::Players;
+use crate::sim::{sight, slide, Compat, GameMode, GameVersion, Rules, Sim};
+use crate::wad::Wad;
+
+fn u(n: i32) -> Fixed {
+    Fixed::from_int(n)
+}
+
+fn sector(floor: i32, ceiling: i32) -> Sector {
+    Sector {
+        floorheight: u(floor),
+        ceilingheight: u(ceiling),
+        floorpic: NO_TEXTURE,
+        ceilingpic: NO_TEXTURE,
+        lightlevel: 160,
+        special: 0,
+        tag: 0,
+        soundtraversed: 0,
+        soundtarget: None,
+        blockbox: [2, 0, 0, 2],
+        soundorg: (u(0), u(0)),
+        specialdata: None,
+        lines: Vec::new(),
+    }
+}
+
+fn line(v1: (i32, i32), v2: (i32, i32), front: usize, back: Option<usize>, sides: [Option<usize>; 2]) -> Line {
+    let (v1, v2) = ((u(v1.0), u(v1.1)), (u(v2.0), u(v2.1)));
+    let (dx, dy) = (v2.0 - v1.0, v2.1 - v1.1);
+    let slopetype = if dx.0 == 0 {
+        SlopeType::Vertical
+    } else if dy.0 == 0 {
+        SlopeType::Horizontal
+    } else if (dy / dx).0 > 0 {
+        SlopeType::Positive
+    } else {
+        SlopeType::Negative
+    };
+    Line {
+        v1,
+        v2,
+        dx,
+        dy,
+        flags: if back.is_some() { ml::TWOSIDED } else { ml::BLOCKING },
+        special: 0,
+        tag: 0,
+        sidenum: sides,
+        bbox: [v1.1.max(v2.1), v1.1.min(v2.1), v1.0.min(v2.0), v1.0.max(v2.0)],
+        slopetype,
+        frontsector: Some(front),
+        backsector: back,
+    }
+}
+
+/// The room, its east sector at `floor1`..`ceiling1`.
+fn room(floor1: i32, ceiling1: i32) -> Level {
+    let lines = vec![
+        line((0, 0), (0, 256), 0, None, [Some(0), None]),
+        line((0, 256), (128, 256), 0, None, [Some(1), None]),
+        line((128, 256), (256, 256), 1, None, [Some(2), None]),
+        line((256, 256), (256, 0), 1, None, [Some(3), None]),
+        line((256, 0), (128, 0), 1, None, [Some(4), None]),
+        line((128, 0), (0, 0), 0, None, [Some(5), None]),
+        // The divider goes north: its front (right) is the east sector.
+        line((128, 0), (128, 256), 1, Some(0), [Some(6), Some(7)]),
+    ];
+    let sides = [0, 0, 1, 1, 1, 0, 1, 0]
+        .iter()
+        .map(|&sector| Side {
+            textureoffset: u(0),
+            rowoffset: u(0),
+            toptexture: NO_TEXTURE,
+            bottomtexture: NO_TEXTURE,
+            midtexture: NO_TEXTURE,
+            sector,
+        })
+        .collect();
+    let seg = |l: usize, sidedef: usize, front: usize, back: Option<usize>| {
+        let ld: &Line = &lines[l];
+        Seg {
+            v1: ld.v1,
+            v2: ld.v2,
+            offset: u(0),
+            angle: Angle::ZERO,
+            sidedef,
+            linedef: l,
+            frontsector: front,
+            backsector: back,
+        }
+    };
+    let segs = vec![
+        seg(0, 0, 0, None),
+        seg(1, 1, 0, None),
+        seg(5, 5, 0, None),
+        seg(6, 7, 0, Some(1)),
+        seg(2, 2, 1, None),
+        seg(3, 3, 1, None),
+        seg(4, 4, 1, None),
+        seg(6, 6, 1, Some(0)),
+    ];
+    let mut words: Vec<i16> = vec![-8, -8, 3, 3];
+    words.extend([13; 9]);
+    words.extend([0, 0, 1, 2, 3, 4, 5, 6, -1]);
+    let mut sectors = vec![sector(0, 128), sector(floor1, ceiling1)];
+    sectors[0].lines = vec![0, 1, 5, 6];
+    sectors[1].lines = vec![2, 3, 4, 6];
+    Level {
+        name: "MAP01".into(),
+        vertices: Vec::new(),
+        sectors,
+        sides,
+        lines,
+        segs,
+        subsectors: vec![
+            Subsector { sector: 0, numlines: 4, firstline: 0 },
+            Subsector { sector: 1, numlines: 4, firstline: 4 },
+        ],
+        nodes: vec![Node {
+            x: u(128),
+            y: u(0),
+            dx: u(0),
+            dy: u(256),
+            bbox: [[u(256), u(0), u(128), u(256)], [u(256), u(0), u(0), u(128)]],
+            children: [0x8001, 0x8000],
+        }],
+        blockmap: Blockmap { orgx: u(-8), orgy: u(-8), width: 3, height: 3, words },
+        reject: Vec::new(),
+        names: vec!["-".into()],
+        things: Vec::new(),
+    }
+}
+
+/// A game on the room: Freedoom 2's MAP01 is loaded for the tables, then
+/// its level and bodies are swapped for the room's (no bodies yet).
+fn sim(floor1: i32, ceiling1: i32) -> Sim {
+    let path = Path::new("/usr/share/games/doom/freedoom2.wad");
+    let wad = Wad::open(path).expect("freedoom2.wad (apt-get install freedoom)");
+    let rules = Rules {
+        skill: 2,
+        version: GameVersion::Final,
+        mode: GameMode::Commercial,
+        compat: Compat::Vanilla,
+        deathmatch: 0,
+        respawn: false,
+        fast: false,
+        no_monsters: true,
+        netgame: false,
+    };
+    let players = Players { in_game: [false; crate::sim::MAXPLAYERS], console: 0 };
+    let mut sim = Sim::new(&wad, "MAP01", rules, players, ActorTable::doom().clone()).expect("MAP01 loads");
+    sim.level = room(floor1, ceiling1);
+    sim.blocklinks = vec![Vec::new(); 9];
+    sim.line_valid = vec![0; sim.level.lines.len()];
+    sim.mobjs.clear();
+    sim.thinkers.clear();
+    sim
+}
+
+/// A player-sized body (radius 16, height 56) that is a monster to the
+/// rules (no player record).
+fn body(sim: &mut Sim, x: i32, y: i32) -> MobjId {
+    let kind = sim.kind_of(mt::PLAYER);
+    sim.spawn_mobj(u(x), u(y), ONFLOORZ, kind)
+}
+
+#[test]
+fn a_position_takes_floor_and_ceiling_from_the_lines_it_touches() {
+    let mut sim = sim(16, 128);
+    let mo = body(&mut sim, 64, 128);
+    assert!(check_position(&mut sim, mo, u(64), u(128)));
+    assert_eq!((sim.tm.floorz, sim.tm.ceilingz, sim.tm.dropoffz), (u(0), u(128), u(0)));
+    // Straddling the divider: the step's top is the floor, the low side the drop-off.
+    assert!(check_position(&mut sim, mo, u(120), u(128)));
+    assert_eq!((sim.tm.floorz, sim.tm.ceilingz, sim.tm.dropoffz), (u(16), u(128), u(0)));
+    assert_eq!(sim.tm.opening, maputl::Opening { top: u(128), bottom: u(16), range: u(112), lowfloor: u(0) });
+    // Into the west wall (one-sided): blocked.
+    assert!(!check_position(&mut sim, mo, u(10), u(128)));
+}
+
+#[test]
+fn a_move_steps_up_24_units_and_no_more() {
+    let mut sim = sim(16, 128);
+    let mo = body(&mut sim, 64, 128);
+    assert!(try_move(&mut sim, mo, u(120), u(128)));
+    assert_eq!((sim.mo(mo).x, sim.mo(mo).floorz), (u(120), u(16)));
+    let mut sim = self::sim(32, 128);
+    let mo = body(&mut sim, 64, 128);
+    assert!(!try_move(&mut sim, mo, u(120), u(128)));
+    // It would fit between floor and ceiling, so floating could get there.
+    assert!(sim.tm.floatok);
+    assert_eq!(sim.mo(mo).x, u(64));
+    // A low ceiling: 56 units of body under 50 of opening do not fit at all.
+    let mut sim = self::sim(0, 50);
+    let mo = body(&mut sim, 64, 128);
+    assert!(!try_move(&mut sim, mo, u(120), u(128)));
+    assert!(!sim.tm.floatok);
+}
+
+#[test]
+fn a_slide_along_a_wall_stops_short_of_it_then_turns() {
+    // Running west-north-west into the west wall from (40, 128): 30 units
+    // west and 10 north a tic. The leading corner (24, 144) meets x = 0 at
+    // FixedDiv(-1572864, -1966080) = 52428 of the move (0.8). Less Doom's
+    // 0x800 fudge, 50380: the body moves FixedMul(-30u, 50380) = -1511400 and
+    // FixedMul(10u, 50380) = 503800. The rest, 65536 - 52428 = 13108, slides
+    // along the vertical wall: x move zeroed, y move FixedMul(10u, 13108) = 131080.
+    let mut sim = sim(0, 128);
+    let mo = body(&mut sim, 40, 128);
+    sim.mo_mut(mo).momx = u(-30);
+    sim.mo_mut(mo).momy = u(10);
+    slide::slide_move(&mut sim, mo);
+    let m = sim.mo(mo);
+    assert_eq!((m.x, m.y), (Fixed(u(40).0 - 1511400), Fixed(u(128).0 + 503800 + 131080)));
+    assert_eq!((m.momx, m.momy), (Fixed(0), Fixed(131080)));
+}
+
+#[test]
+fn a_closed_door_blocks_sight_and_an_open_one_does_not() {
+    let mut sim = sim(16, 128);
+    let (a, b) = (body(&mut sim, 64, 100), body(&mut sim, 192, 100));
+    assert!(sight::check_sight(&mut sim, a, b));
+    assert!(sight::check_sight(&mut sim, b, a));
+    sim.level.sectors[1].ceilingheight = u(16);
+    assert!(!sight::check_sight(&mut sim, a, b));
+    // REJECT says no before any trace: sector 0 cannot see sector 1 (bit 1).
+    sim.level.sectors[1].ceilingheight = u(128);
+    sim.level.reject = vec![0b0010];
+    assert!(!sight::check_sight(&mut sim, a, b));
+    assert!(sight::check_sight(&mut sim, b, a));
+}
+
+#[test]
+fn doom_s_divline_typo_sees_through_a_closed_door() {
+    // The trace runs along y = 128 and the door's line lies at x = 128:
+    // P_DivlineSide compares the ends' x with the trace's y, calls both
+    // "on", and the line is not crossed. Doom 1.9 does the same.
+    let mut sim = sim(16, 16);
+    let (a, b) = (body(&mut sim, 64, 128), body(&mut sim, 192, 128));
+    assert!(sight::check_sight(&mut sim, a, b));
+}
+
+#[test]
+fn aiming_picks_the_middle_of_what_the_step_leaves_visible() {
+    // Shooter's z for shots: z + 28 + 8 = 36. Facing east, the trace ends
+    // at 1024 * finecosine[0] = 1024 * 65535 east and 1024 * finesine[0] =
+    // 1024 * 25 north (Doom's tables are sampled half a step off). The
+    // target at (192, 128) is crossed at frac 8189, dist
+    // FixedMul(1024u, 8189) = 8385536.
+    let mut sim = sim(0, 128);
+    let (a, b) = (body(&mut sim, 64, 128), body(&mut sim, 192, 128));
+    // Level floors: top FixedDiv(20u, dist) = 10243, bottom
+    // FixedDiv(-36u, dist) = -18438; (10243 - 18438) / 2 = -4097 (C truncates).
+    assert_eq!(aim_line_attack(&mut sim, a, Angle::ZERO, u(1024)), Fixed(-4097));
+    assert_eq!(sim.tm.linetarget, Some(b));
+    // The target on a 16-unit step: top 18438, bottom -10243. The step's
+    // edge (frac 4096, 64 units) raises the bottom slope to
+    // FixedDiv(-20u, 64u) = -20480, which does not clip the target.
+    let mut sim = self::sim(16, 128);
+    let (a, b) = (body(&mut sim, 64, 128), body(&mut sim, 192, 128));
+    assert_eq!(aim_line_attack(&mut sim, a, Angle::ZERO, u(1024)), Fixed(4097));
+    assert_eq!(sim.tm.linetarget, Some(b));
+    assert_eq!(sim.tm.bottomslope, Fixed(-20480));
+    // Facing north, nothing: slope 0 and no target.
+    assert_eq!(aim_line_attack(&mut sim, a, crate::fixed::ANG90, u(1024)), Fixed(0));
+    assert_eq!(sim.tm.linetarget, None);
+}
+
+#[test]
+fn a_lowered_ceiling_squeezes_and_gibs() {
+    let mut sim = sim(0, 128);
+    let (alive, dead) = (body(&mut sim, 192, 100), body(&mut sim, 192, 180));
+    sim.mo_mut(dead).health = 0;
+    assert!(!change_sector(&mut sim, 1, false));
+    sim.level.sectors[1].ceilingheight = u(40);
+    // The live body no longer fits (nofit); without crunch nothing is hurt.
+    assert!(change_sector(&mut sim, 1, false));
+    assert_eq!((sim.mo(alive).z, sim.mo(alive).ceilingz), (u(0), u(40)));
+    let gib = sim.mo(dead);
+    assert_eq!((gib.radius, gib.height), (u(0), u(0)));
+    assert!(!gib.has(mf::SOLID));
+}
+
+#[test]
+fn monsters_telefrag_only_on_map30() {
+    let mut sim = sim(0, 128);
+    let (a, b) = (body(&mut sim, 64, 128), body(&mut sim, 192, 128));
+    assert!(!teleport_move(&mut sim, a, u(200), u(128)));
+    assert_eq!(sim.mo(a).x, u(64));
+    // Somewhere clear: moved, with the floor and ceiling of the spot.
+    assert!(teleport_move(&mut sim, a, u(60), u(40)));
+    assert_eq!((sim.mo(a).x, sim.mo(a).y, sim.mo(a).ceilingz), (u(60), u(40), u(128)));
+    let _ = b;
+}
+
+#[test]
+fn the_blockmap_walk_is_newest_first_and_survives_removal() {
+    let mut sim = sim(0, 128);
+    // Three bodies in cell (0, 1) (x -8..120, y 120..248).
+    let ids: Vec<MobjId> = (0..3).map(|i| body(&mut sim, 20 + 30 * i, 130)).collect();
+    let mut seen = Vec::new();
+    maputl::block_things(&mut sim, 0, 1, |sim, mo| {
+        seen.push(mo);
+        // Removing the body being visited does not end the walk.
+        sim.remove_mobj(mo);
+        true
+    });
+    assert_eq!(seen, [ids[2], ids[1], ids[0]]);
+    assert!(sim.blocklinks[3].is_empty());
+}
