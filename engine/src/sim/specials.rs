@@ -516,3 +516,7 @@ pub fn player_in_special_sector(sim: &mut Sim, player: usize) {
         _ => {}
     }
 }
+
+#[cfg(test)]
+#[path = "specials_tests.rs"]
+mod tests;
