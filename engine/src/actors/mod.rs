@@ -19,6 +19,7 @@
 //! - `load.rs`: resolving and checking a table into an [`ActorTable`].
 
 pub mod actions;
+pub mod dehacked;
 mod load;
 pub mod sounds;
 pub mod source;
