@@ -215,7 +215,7 @@ fn check_thing(sim: &mut Sim, thing: MobjId) -> bool {
     }
     let tm_flags = sim.mo(tmthing).flags;
     if tm_flags & mf::SKULLFLY != 0 {
-        let damage = (sim.p_random() % 8 + 1) * sim.info.things[sim.mo(tmthing).kind].damage;
+        let damage = (sim.p_random() % 8 + 1).wrapping_mul(sim.info.things[sim.mo(tmthing).kind].damage);
         interaction::damage_mobj(sim, thing, Some(tmthing), Some(tmthing), damage);
         let mo = sim.mo_mut(tmthing);
         mo.flags &= !mf::SKULLFLY;
@@ -267,7 +267,7 @@ fn missile_hits(sim: &mut Sim, missile: MobjId, thing: MobjId) -> bool {
     if !th.has(mf::SHOOTABLE) {
         return !th.has(mf::SOLID);
     }
-    let damage = (sim.p_random() % 8 + 1) * sim.info.things[sim.mo(missile).kind].damage;
+    let damage = (sim.p_random() % 8 + 1).wrapping_mul(sim.info.things[sim.mo(missile).kind].damage);
     let source = sim.mo(missile).target;
     interaction::damage_mobj(sim, thing, Some(missile), source, damage);
     false

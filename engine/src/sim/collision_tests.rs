@@ -322,3 +322,47 @@ fn the_blockmap_walk_is_newest_first_and_survives_removal() {
     assert_eq!(seen, [ids[2], ids[1], ids[0]]);
     assert!(sim.blocklinks[3].is_empty());
 }
+
+#[test]
+fn a_shot_at_a_wall_puffs_four_units_short_of_it() {
+    // From (64, 100) facing west, 2048 units: the trace's end is 2048 *
+    // finecosine[4096] = 2048 * -65535 east and 2048 * finesine[4096] =
+    // 2048 * -25 north. It meets the west wall at frac 2048 (1/32, 64
+    // units); less FixedDiv(4u, 2048u) = 128, 1920: the puff at x =
+    // 64u + FixedMul(-134215680, 1920) = 262204, y = 100u + FixedMul(-51200,
+    // 1920) = 6552100.
+    let mut sim = sim(0, 128);
+    let a = body(&mut sim, 64, 100);
+    let before = sim.mobjs.len();
+    line_attack(&mut sim, a, crate::fixed::ANG180, u(2048), Fixed(0), 0);
+    let puff = sim.kind_of(mt::PUFF);
+    let puffs: Vec<&crate::sim::Mobj> = sim.mobjs[before..].iter().filter(|m| m.kind == puff).collect();
+    assert_eq!(puffs.len(), 1);
+    assert_eq!((puffs[0].x, puffs[0].y), (Fixed(262204), Fixed(6552100)));
+}
+
+#[test]
+fn using_a_plain_wall_says_oof_and_an_open_line_does_not() {
+    let mut sim = sim(0, 128);
+    let mo = body(&mut sim, 40, 100);
+    let mut player = crate::sim::Player::reborn(&sim.info, [0; crate::sim::MAXPLAYERS], (0, 0, 0));
+    player.mo = mo;
+    sim.players[0] = Some(player);
+    sim.mo_mut(mo).player = Some(0);
+    // Facing west: the wall is 40 units away, within the 64 of USERANGE.
+    sim.mo_mut(mo).angle = crate::fixed::ANG180;
+    sim.events.clear();
+    use_lines(&mut sim, 0);
+    let noway = sim.info.sound("noway");
+    let oof = |sim: &Sim| {
+        sim.events.iter().any(|e| matches!(e, crate::sim::SimEvent::Sound { sound, .. } if *sound == noway))
+    };
+    assert!(oof(&sim));
+    // Facing east from (100, 100): the divider at 28 units is two-sided
+    // and open, so the trace goes on and finds nothing else in reach.
+    sim.events.clear();
+    sim.mo_mut(mo).angle = Angle::ZERO;
+    assert!(teleport_move(&mut sim, mo, u(100), u(100)));
+    use_lines(&mut sim, 0);
+    assert!(!oof(&sim));
+}
