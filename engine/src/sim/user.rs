@@ -307,3 +307,7 @@ fn count_down_powers(sim: &mut Sim, n: usize) {
         sim.mo_mut(id).flags &= !mf::SHADOW;
     }
 }
+
+#[cfg(test)]
+#[path = "player_tests.rs"]
+mod tests;
