@@ -238,3 +238,74 @@ fn the_brain_s_explosion_draws_five_randoms_around_its_spawn() {
     assert!(sim.is(MobjId(first as u32), mt::ROCKET));
     assert_eq!(sim.rng.p_index(), 6);
 }
+
+/// MAP01's first room runs from x -224 to -32 and y -256 to about -100;
+/// player 1 starts at (-192, -160).
+fn room_imp(sim: &mut Sim, x: i32, y: i32) -> MobjId {
+    let imp = spawn(sim, mt::TROOP, x, y);
+    let floor = sim.mo(imp).floorz;
+    sim.mo_mut(imp).z = floor;
+    imp
+}
+
+#[test]
+fn a_chaser_takes_the_diagonal_when_it_is_clear() {
+    let mut sim = sim();
+    let imp = room_imp(&mut sim, -180, -220);
+    let player = sim.players[0].as_ref().map(|p| p.mo).expect("player 0");
+    sim.mo_mut(imp).target = Some(player);
+    sim.mo_mut(imp).movedir = crate::sim::chase::DI_NODIR;
+    sim.rng = DoomRandom::new();
+    crate::sim::chase::new_chase_dir(&mut sim, imp);
+    let m = sim.mo(imp);
+    // The player is 12 west and 60 north: north-west, 8 units a step of
+    // 47000 (cos 45) each way; then P_Random() & 15 = 8 steps.
+    assert_eq!(m.movedir, crate::sim::chase::DI_NORTHWEST);
+    assert_eq!((m.x, m.y), (Fixed(-180 * FRACUNIT - 8 * 47000), Fixed(-220 * FRACUNIT + 8 * 47000)));
+    assert_eq!(m.movecount, 8);
+    assert_eq!(sim.rng.p_index(), 1);
+}
+
+#[test]
+fn a_chaser_against_a_wall_tries_the_longer_axis_first() {
+    let mut sim = sim();
+    // Against the west wall (x -224, radius 20): the diagonal is blocked
+    // (and clear of the player, who would block the way north).
+    let imp = room_imp(&mut sim, -203, -230);
+    let target = spawn(&mut sim, mt::POSSESSED, -250, -170);
+    sim.mo_mut(imp).target = Some(target);
+    sim.mo_mut(imp).movedir = crate::sim::chase::DI_NODIR;
+    sim.rng = DoomRandom::new();
+    crate::sim::chase::new_chase_dir(&mut sim, imp);
+    let m = sim.mo(imp);
+    // 47 west and 60 north: P_Random() = 8 is not above 200, but north is
+    // the longer way, so it comes first and is clear; the steps are 109 & 15.
+    assert_eq!(m.movedir, crate::sim::chase::DI_NORTH);
+    assert_eq!((m.x, m.y), (u(-203), u(-222)));
+    assert_eq!(m.movecount, 13);
+    assert_eq!(sim.rng.p_index(), 2);
+}
+
+#[test]
+fn the_missile_range_check_draws_against_the_distance() {
+    let mut sim = sim();
+    let imp = room_imp(&mut sim, -100, -200);
+    let player = sim.players[0].as_ref().map(|p| p.mo).expect("player 0");
+    sim.mo_mut(imp).target = Some(player);
+    sim.mo_mut(imp).reactiontime = 0;
+    sim.rng = DoomRandom::new();
+    // 92 east and 40 south: P_AproxDistance 92 + 40 - 20 = 112, less 64
+    // for an imp (it has a melee attack): 48. P_Random 8 < 48: no; then
+    // 109: yes.
+    assert!(!super::check_missile_range(&mut sim, imp));
+    assert!(super::check_missile_range(&mut sim, imp));
+    // Just hit: fight back without a draw, once.
+    sim.mo_mut(imp).flags |= mf::JUSTHIT;
+    assert!(super::check_missile_range(&mut sim, imp));
+    assert!(!sim.mo(imp).has(mf::JUSTHIT));
+    assert_eq!(sim.rng.p_index(), 2);
+    // Not yet able to react: no, without a draw.
+    sim.mo_mut(imp).reactiontime = 3;
+    assert!(!super::check_missile_range(&mut sim, imp));
+    assert_eq!(sim.rng.p_index(), 2);
+}
