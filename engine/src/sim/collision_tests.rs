@@ -366,3 +366,98 @@ fn using_a_plain_wall_says_oof_and_an_open_line_does_not() {
     use_lines(&mut sim, 0);
     assert!(!oof(&sim));
 }
+
+#[test]
+fn the_overruns_write_where_chocolate_writes() {
+    let mut sim = sim(0, 128);
+    // The 9th special line overwrites tmbbox[BOXTOP] with line 5's
+    // "address" in doom2.exe: 0x01C09C98 + 5 * 0x3E.
+    sim.tm.spechit = vec![6; 9];
+    spechit_overrun(&mut sim, 5);
+    assert_eq!(sim.tm.bbox[crate::sim::level::BOXTOP], Fixed(0x01C0_9C98 + 5 * 0x3E));
+    sim.tm.spechit = vec![6; 14];
+    sim.tm.nofit = false;
+    spechit_overrun(&mut sim, 0);
+    assert!(sim.tm.nofit);
+}
+
+mod no_panics {
+    //! Moves, traces, sight and crushing from random places of a real
+    //! map, far outside it included: nothing may panic.
+
+    use std::sync::OnceLock;
+
+    use proptest::prelude::*;
+
+    use super::*;
+
+    fn map01() -> &'static Sim {
+        static SIM: OnceLock<Sim> = OnceLock::new();
+        SIM.get_or_init(|| {
+            let wad = Wad::open(Path::new("/usr/share/games/doom/freedoom2.wad")).expect("freedoom2.wad");
+            let rules = Rules {
+                skill: 3,
+                version: GameVersion::Final,
+                mode: GameMode::Commercial,
+                compat: Compat::Vanilla,
+                deathmatch: 0,
+                respawn: false,
+                fast: false,
+                no_monsters: false,
+                netgame: false,
+            };
+            let mut in_game = [false; crate::sim::MAXPLAYERS];
+            in_game[0] = true;
+            let players = Players { in_game, console: 0 };
+            Sim::new(&wad, "MAP01", rules, players, ActorTable::doom().clone()).expect("MAP01 loads")
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(96))]
+        #[test]
+        fn anything_anywhere(
+            who in 0usize..1000,
+            other in 0usize..1000,
+            x in -40000i32..40000,
+            y in -40000i32..40000,
+            near in any::<bool>(),
+            mom in (-120i32..120, -120i32..120),
+            angle in any::<u32>(),
+            damage in 0i32..400,
+            sector in 0usize..1000,
+            crunch in any::<bool>(),
+        ) {
+            let mut sim = map01().clone();
+            let live: Vec<MobjId> = sim.live_mobjs().collect();
+            let mo = live[who % live.len()];
+            let target = live[other % live.len()];
+            // Half the time a point near the body (inside the map, mostly).
+            let (tx, ty) = if near {
+                (sim.mo(mo).x + Fixed::from_int(x % 300), sim.mo(mo).y + Fixed::from_int(y % 300))
+            } else {
+                (Fixed::from_int(x), Fixed::from_int(y))
+            };
+            if try_move(&mut sim, mo, tx, ty) {
+                prop_assert_eq!((sim.mo(mo).x, sim.mo(mo).y), (tx, ty));
+            }
+            check_position(&mut sim, target, tx, ty);
+            sim.mo_mut(mo).momx = Fixed::from_int(mom.0);
+            sim.mo_mut(mo).momy = Fixed::from_int(mom.1);
+            slide::slide_move(&mut sim, mo);
+            let slope = aim_line_attack(&mut sim, mo, Angle(angle), Fixed::from_int(2048));
+            line_attack(&mut sim, mo, Angle(angle), Fixed::from_int(2048), slope, damage);
+            sight::check_sight(&mut sim, mo, target);
+            sight::check_sight(&mut sim, target, mo);
+            radius_attack(&mut sim, target, Some(mo), damage);
+            if let Some(p) = sim.players[0].as_ref().map(|p| p.mo) {
+                sim.mo_mut(p).angle = Angle(angle);
+                use_lines(&mut sim, 0);
+            }
+            let sectors = sim.level.sectors.len();
+            sim.level.sectors[sector % sectors].ceilingheight -= Fixed::from_int(damage);
+            change_sector(&mut sim, sector % sectors, crunch);
+            teleport_move(&mut sim, mo, tx, ty);
+        }
+    }
+}

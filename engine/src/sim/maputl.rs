@@ -251,7 +251,7 @@ fn push_intercept(sim: &mut Sim, c: &mut Collect, intercept: Intercept) {
     let index = c.intercepts.len();
     c.intercepts.push(intercept);
     if sim.rules.compat == Compat::Vanilla {
-        intercepts_overrun(sim, index, &intercept);
+        intercepts_overrun(&mut sim.tm.opening, index, &intercept);
     }
 }
 
@@ -266,14 +266,13 @@ fn push_intercept(sim: &mut Sim, c: &mut Collect, intercept: Intercept) {
 /// the blockmap's header (220..244) would need traces of more than 142 and
 /// 146 intercepts, and rewriting the blockmap's origin in play is left out:
 /// those are noted, not emulated.
-fn intercepts_overrun(sim: &mut Sim, index: usize, intercept: &Intercept) {
+fn intercepts_overrun(o: &mut Opening, index: usize, intercept: &Intercept) {
     if index <= MAXINTERCEPTS_ORIGINAL {
         return;
     }
     let location = (index - MAXINTERCEPTS_ORIGINAL - 1) * 12;
     let isaline = i32::from(matches!(intercept.hit, Hit::Line(_)));
     for (at, value) in [(location, intercept.frac.0), (location + 4, isaline)] {
-        let o = &mut sim.tm.opening;
         match at {
             12..=15 => o.lowfloor = Fixed(value),
             16..=19 => o.bottom = Fixed(value),
@@ -488,5 +487,21 @@ mod tests {
         });
         assert!(!all);
         assert_eq!(seen, [Hit::Line(8)]);
+    }
+
+    #[test]
+    fn intercepts_past_the_129th_overwrite_the_opening() {
+        let mut o = Opening { top: u(1), bottom: u(2), range: u(3), lowfloor: u(4) };
+        let line = Intercept { frac: Fixed(777), hit: Hit::Line(9) };
+        // Up to index 129 (byte 0: nothing held here is written).
+        intercepts_overrun(&mut o, 128, &line);
+        intercepts_overrun(&mut o, 129, &line);
+        assert_eq!(o, Opening { top: u(1), bottom: u(2), range: u(3), lowfloor: u(4) });
+        // Index 130 writes bytes 12..24: lowfloor the frac, openbottom isaline.
+        intercepts_overrun(&mut o, 130, &line);
+        assert_eq!((o.lowfloor, o.bottom), (Fixed(777), Fixed(1)));
+        // Index 131: openrange the frac (a thing's), byte 28 is nothing.
+        intercepts_overrun(&mut o, 131, &Intercept { frac: Fixed(555), hit: Hit::Thing(MobjId(0)) });
+        assert_eq!((o.range, o.top), (Fixed(555), u(1)));
     }
 }
