@@ -107,15 +107,22 @@ pub struct Opened {
     /// The importer's repairs and report, for a map read from a WAD.
     pub repairs: Vec<String>,
     pub report: Option<Report>,
+    /// For a WAD map, its sectors' places in the converted map
+    /// ([`crate::wad::import::Converted::sector_map`]).
+    pub sector_map: Option<Vec<Option<usize>>>,
 }
 
 /// Opens `map`: a file as [`open_level`] does; a WAD map converted in
 /// memory, validated and compiled with `options`, its art read from the WAD.
 pub fn open(map: &MapRef, options: &BuildOptions) -> Result<Opened, CampaignError> {
     match map {
-        MapRef::File(path) => {
-            Ok(Opened { level: open_level(path, options)?, map: map.clone(), repairs: Vec::new(), report: None })
-        }
+        MapRef::File(path) => Ok(Opened {
+            level: open_level(path, options)?,
+            map: map.clone(),
+            repairs: Vec::new(),
+            report: None,
+            sector_map: None,
+        }),
         MapRef::Wad { wads, map: name } => {
             let wad = stack(wads)?;
             let name = match name {
@@ -141,6 +148,7 @@ pub fn open(map: &MapRef, options: &BuildOptions) -> Result<Opened, CampaignErro
                 map: MapRef::Wad { wads: wads.clone(), map: Some(name) },
                 repairs: converted.repairs,
                 report: Some(converted.report),
+                sector_map: Some(converted.sector_map),
             })
         }
     }

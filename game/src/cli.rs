@@ -316,6 +316,16 @@ pub struct ReplayArgs {
     /// End with the game's state as one JSON object (Doom demos).
     #[arg(long)]
     pub json: bool,
+    /// Run every tic of a Doom demo and render a frame per tic (none kept,
+    /// none shown); print Chocolate Doom's "timed N gametics in M
+    /// realtics" and the CPU and wall time per frame.
+    #[arg(long, conflicts_with_all = ["capture_every", "check_against"])]
+    pub timedemo: bool,
+    /// The Doom executable a Doom demo plays as: 1.9, ultimate or final.
+    /// Default: as Chocolate Doom picks it from the IWAD (freedoom1.wad
+    /// plays as The Ultimate Doom, freedoom2.wad as Doom II 1.9).
+    #[arg(long, value_parser = sightline::sim::demo::parse_game_version)]
+    pub gameversion: Option<sightline::sim::GameVersion>,
     /// Write a PNG of every Nth tick (tick 0, N, 2N, ... and the last) into
     /// the directory given with -o.
     #[arg(long, requires = "output", value_parser = clap::value_parser!(u64).range(1..))]

@@ -1,20 +1,28 @@
 //! `sightline replay` on Doom's own demos: a `.lmp` file (with `--iwad`) or
-//! a demo lump inside a WAD (`freedoom1.wad:DEMO1`). The console player's
-//! commands drive the game tic by tic; `--check-against DUMP` compares each
-//! tic with a reference dump from Chocolate Doom and stops at the first tic
-//! that differs, naming the fields; `--json` ends with the game's state.
+//! a demo lump inside a WAD (`freedoom1.wad:DEMO1`), played headless on the
+//! simulation with Doom's arithmetic (`sightline::sim`). `--check-against
+//! DUMP` compares each tic with a reference dump from Chocolate Doom and
+//! stops at the first tic that differs, naming the fields (the tool for
+//! bisecting a desync); `--json` ends with the game's state. Recording
+//! (`--record x.lmp`) and the window's `--demo` are here too.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use anyhow::{anyhow, bail, Context, Result};
 use serde_json::json;
+use sightline::actors::ActorTable;
+use sightline::bsp::BuildOptions;
 use sightline::campaign::MapRef;
+use sightline::level::write_atomic;
 use sightline::play::demo::Demo;
+use sightline::play::lmp::Ticcmd;
 use sightline::play::lmp::VanillaDemo;
-use sightline::play::playthrough::Playthrough;
-use sightline::play::syncdump::{compare, not_compared, SyncDump};
-use sightline::play::vanilla::{demo_of, input_of, open_demo, state_of};
+use sightline::play::syncdump::{compare, SyncDump};
+use sightline::play::vanilla::{demo_of, input_of, open_demo};
 use sightline::play::{GameOptions, TickInput};
+use sightline::render::{render_frame, Frame, RenderOptions};
+use sightline::sim::{self, Sim, MAXPLAYERS};
+use sightline::Framebuffer;
 
 use crate::cli::ReplayArgs;
 
@@ -77,66 +85,156 @@ fn console_inputs(demo: &VanillaDemo) -> Result<Vec<TickInput>> {
 
 pub fn run(args: &ReplayArgs) -> Result<()> {
     let spec = args.demo.to_string_lossy();
+    if args.audio.is_some() {
+        bail!("{spec}: the sound of a Doom demo is not rendered yet: the simulation with Doom's arithmetic sends no sound to the mixer");
+    }
     let source = open_demo(&spec, args.iwad.as_deref(), &args.file)?;
-    let header = &source.demo.header;
-    let inputs = console_inputs(&source.demo).map_err(|e| anyhow!("{spec}: {e}"))?;
-    let (map, options) = source.game()?;
+    let (map, _) = source.game()?;
+    let wad = source.wad()?;
+    let table = sim::demo::table_for(&wad, ActorTable::active()).map_err(|e| anyhow!("{}: {e}", wad.path))?;
+    let mut game =
+        sim::demo::start_as(&wad, &source.demo, table, args.gameversion).map_err(|e| anyhow!("{spec}: {e}"))?;
     let reference = args.check_against.as_ref().map(|p| SyncDump::load(p)).transpose()?;
-    let mut play = Playthrough::of(&map, options).with_context(|| format!("{}: cannot start the game", map.label()))?;
-    let tics = inputs.len();
-    for (t, input) in inputs.iter().enumerate() {
-        play.tick(input)?;
+    let mut frames = match (args.capture_every, args.timedemo) {
+        (None, false) => None,
+        _ => Some(Frames::open(&map, args)?),
+    };
+    let tics = source.demo.tics();
+    let started = (std::time::Instant::now(), cpu_time::ProcessTime::now());
+    if let Some(f) = &mut frames {
+        f.tic(&game, 0)?;
+    }
+    for t in 0..tics {
+        game.tick(&commands(&source.demo, t));
         if let Some(dump) = &reference {
-            let Some(theirs) = dump.tics.get(t) else {
-                bail!("{spec}: the reference has {} tics, the demo {tics}", dump.tics.len());
-            };
-            let ours = state_of(&play, theirs.gametic);
-            let diffs = compare(&ours, theirs);
+            let theirs = dump.tics.get(t).ok_or_else(|| {
+                anyhow!("{spec}: the reference ends after {} tics, the demo has {tics}", dump.tics.len())
+            })?;
+            let diffs = compare(&game.tic_state(), theirs);
             if !diffs.is_empty() {
                 let fields: Vec<String> = diffs.iter().map(|d| format!("\n  {d}")).collect();
-                bail!(
-                    "{spec}: in sync for {t} of {tics} tics; out of sync at tic {} (gametic {}):{}",
-                    t + 1,
-                    theirs.gametic,
-                    fields.concat()
-                );
+                bail!("{spec}: in sync for {t} of {tics} tics; out of sync at tic {}:{}", t + 1, fields.concat());
             }
-            if t + 1 == tics {
-                let left_out = not_compared(&ours, theirs);
-                println!("{spec}: in sync for all {tics} tics (not compared: {})", list(&left_out));
-            }
+        }
+        if let Some(f) = &mut frames {
+            f.tic(&game, t as u64 + 1)?;
+        }
+    }
+    if let Some(path) = &args.check_against {
+        println!("{spec}: in sync for all {tics} tics with {}", path.display());
+    }
+    if let Some(f) = &frames {
+        if args.timedemo {
+            // Chocolate Doom's line: gametics over realtics (1/35 s each).
+            let (wall, cpu) = (started.0.elapsed(), started.1.elapsed());
+            let realtics = (wall.as_secs_f64() * 35.0).round().max(1.0) as u64;
+            let frames = f.rendered.max(1) as f64;
+            println!(
+                "timed {tics} gametics in {realtics} realtics ({:.1} fps); {:.3} ms CPU, {:.3} ms wall per frame",
+                tics as f64 * 35.0 / realtics as f64,
+                cpu.as_secs_f64() * 1000.0 / frames,
+                wall.as_secs_f64() * 1000.0 / frames
+            );
+        }
+        if f.written > 0 {
+            println!("wrote {} frames to {}", f.written, f.dir.display());
         }
     }
     if args.json {
-        println!("{}", final_json(&play, tics));
-    } else {
-        let wad = source.wads.last().map_or_else(String::new, |w| w.display().to_string());
-        println!("{spec}: {} on {wad} skill {}, {tics} tics played", map.short_name(), header.skill + 1);
-        println!("{}", crate::replay::position_line(&play));
+        println!("{}", final_json(&game, tics));
+    } else if !args.timedemo {
+        let h = &source.demo.header;
+        println!("{spec}: {} skill {}, {tics} tics played", game.level.name, h.skill + 1);
     }
     Ok(())
 }
 
-fn list(names: &[&str]) -> String {
-    if names.is_empty() {
-        "nothing".into()
-    } else {
-        names.join(", ")
+/// Frames of the simulation: every `--capture-every` tic written as a PNG,
+/// or (`--timedemo`) every tic rendered and not kept.
+struct Frames {
+    level: sightline::level::Level,
+    scene: sim::draw::Scene,
+    options: RenderOptions,
+    frame: Frame,
+    fb: Framebuffer,
+    every: Option<u64>,
+    dir: PathBuf,
+    rendered: usize,
+    written: usize,
+}
+
+impl Frames {
+    fn open(map: &MapRef, args: &ReplayArgs) -> Result<Frames> {
+        let opened = sightline::campaign::open(map, &BuildOptions::default())?;
+        let sector_map = opened.sector_map.unwrap_or_default();
+        let renderer = crate::replay::choose_renderer(args.renderer, &opened.level, &map.label())?;
+        let dir = args.output.clone().unwrap_or_default();
+        if args.capture_every.is_some() {
+            std::fs::create_dir_all(&dir).with_context(|| format!("{}: cannot create the directory", dir.display()))?;
+        }
+        Ok(Frames {
+            level: opened.level,
+            scene: sim::draw::Scene::new(sector_map),
+            options: RenderOptions { renderer, threads: args.threads, ..Default::default() },
+            frame: Frame::new(),
+            fb: Framebuffer::new(args.size.0, args.size.1),
+            every: if args.timedemo { None } else { args.capture_every },
+            dir,
+            rendered: 0,
+            written: 0,
+        })
+    }
+
+    /// Renders the state after `tic` tics, and writes it when it is one to keep.
+    fn tic(&mut self, game: &Sim, tic: u64) -> Result<()> {
+        let keep = self.every.is_some_and(|every| tic.is_multiple_of(every));
+        if self.every.is_some() && !keep {
+            return Ok(());
+        }
+        let Some(view) = self.scene.view(game) else { return Ok(()) };
+        self.scene.draw(game, &mut self.level);
+        render_frame(&self.level, &view, &self.options, &mut self.frame, &mut self.fb);
+        self.rendered += 1;
+        if keep {
+            write_atomic(&self.dir.join(format!("tick-{tic:06}.png")), &self.fb.to_png())?;
+            self.written += 1;
+        }
+        Ok(())
     }
 }
 
-/// The game's state at the demo's end: the tics played, the player's
-/// position (map units, the angle in degrees), tallies and the level's totals.
-fn final_json(play: &Playthrough, tics: usize) -> serde_json::Value {
-    let p = play.game.player();
-    let stats = play.game.stats();
+/// Tic `t`'s commands by player number.
+fn commands(demo: &VanillaDemo, t: usize) -> [Option<Ticcmd>; MAXPLAYERS] {
+    let mut cmds = [None; MAXPLAYERS];
+    let players = (0..MAXPLAYERS).filter(|&n| demo.header.in_game[n]);
+    for (k, n) in players.enumerate() {
+        cmds[n] = demo.tic(t).get(k).copied();
+    }
+    cmds
+}
+
+/// The game's state at the demo's end: the tics played, each player's
+/// position (map units: the fixed-point values divided out; the angle in
+/// degrees), health, armour and tallies, and the level's totals.
+fn final_json(game: &Sim, tics: usize) -> serde_json::Value {
+    let players: Vec<serde_json::Value> = game
+        .players
+        .iter()
+        .enumerate()
+        .filter_map(|(n, p)| p.as_ref().map(|p| (n, p)))
+        .map(|(n, p)| {
+            let mo = game.mo(p.mo);
+            json!({
+                "player": n,
+                "x": mo.x.to_f64(), "y": mo.y.to_f64(), "z": mo.z.to_f64(), "angle": mo.angle.to_degrees(),
+                "health": p.health, "armor": p.armorpoints,
+                "kills": p.killcount, "items": p.itemcount, "secrets": p.secretcount,
+            })
+        })
+        .collect();
     json!({
         "tics": tics,
-        "players": [{
-            "x": p.pos.x, "y": p.pos.y, "z": p.z, "angle": p.angle,
-            "health": p.health, "armor": p.armor,
-            "kills": stats.kills.0, "items": stats.items.0, "secrets": stats.secrets.0,
-        }],
-        "totals": { "kills": stats.kills.1, "items": stats.items.1, "secrets": stats.secrets.1 },
+        "players": players,
+        "totals": { "kills": game.total_kills, "items": game.total_items, "secrets": game.total_secrets },
     })
 }

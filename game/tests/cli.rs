@@ -53,7 +53,23 @@ impl Scene {
         let dir = tempfile::tempdir().expect("temp dir");
         let text = two_rooms();
         let compiled = compiled_two_rooms();
-        let files: [(&str, Vec<u8>); 9] = [
+        let header = |version: u8, map: u8| vec![version, 2, 1, map, 0, 0, 0, 0, 0, 1, 0, 0, 0];
+        let with = |mut bytes: Vec<u8>, tail: &[u8]| {
+            bytes.extend(tail);
+            bytes
+        };
+        let doom2 = sightline::wad::wad_bytes(
+            b"IWAD",
+            &[("MAP01", &[][..]), ("THINGS", &[][..]), ("DEMO1", &with(header(109, 7), &[0x80])[..])],
+        );
+        let files: [(&str, Vec<u8>); 16] = [
+            ("boom.lmp", with(header(202, 1), &[0x80])),
+            ("mbf21.lmp", with(header(221, 1), &[0x80])),
+            ("cut.lmp", with(header(109, 1), &[25, 0])),
+            ("nomarker.lmp", with(header(109, 1), &[25, 0, 0, 0])),
+            ("empty.lmp", Vec::new()),
+            ("map05.lmp", with(header(109, 5), &[25, 0, 0, 0, 0x80])),
+            ("doom2.wad", doom2),
             ("map.ron", text.clone().into()),
             ("bad.ron", edit(&text, "(0.0, 256.0), (256.0", "(0.0, 256.0) (256.0").into()),
             ("invalid.ron", edit(&text, "from: 3, to: 4", "from: 99, to: 4").into()),
@@ -184,6 +200,33 @@ fn png_size(bytes: &[u8]) -> (u32, u32) {
     assert_eq!(&bytes[12..16], b"IHDR", "first chunk is IHDR");
     let be = |i: usize| u32::from_be_bytes(bytes[i..i + 4].try_into().unwrap());
     (be(16), be(20))
+}
+
+// ---------------------------------------------------------------------------
+// Doom's demos
+
+#[test]
+fn replay_refuses_bad_doom_demos() {
+    check_all_refused(&[
+        (vec!["replay", "boom.lmp", "--iwad", "doom2.wad"], &["boom.lmp", "demo version 202 (Boom 2.02)"]),
+        (vec!["replay", "mbf21.lmp", "--iwad", "doom2.wad"], &["mbf21.lmp", "221 (MBF21)"]),
+        (vec!["replay", "cut.lmp", "--iwad", "doom2.wad"], &["cut.lmp", "truncated", "tic 0 is cut short"]),
+        (vec!["replay", "nomarker.lmp", "--iwad", "doom2.wad"], &["nomarker.lmp", "no end marker (0x80)"]),
+        (vec!["replay", "empty.lmp", "--iwad", "doom2.wad"], &["empty.lmp", "the file is empty"]),
+        (vec!["replay", "map05.lmp", "--iwad", "doom2.wad"], &["map05.lmp", "MAP05", "doom2.wad", "does not have"]),
+        (vec!["replay", "map05.lmp"], &["map05.lmp", "--iwad"]),
+        (vec!["replay", "doom2.wad:DEMO9"], &["doom2.wad", "no lump DEMO9"]),
+        (vec!["replay", "doom2.wad:DEMO1"], &["DEMO1", "MAP07", "does not have"]),
+        (vec!["replay", "missing.lmp", "--iwad", "doom2.wad"], &["missing.lmp", "cannot read"]),
+    ]);
+}
+
+#[test]
+fn a_doom_demo_records_a_wad_map_only() {
+    check_all_refused(&[(
+        vec!["autoplay", "map.ron", "--max-ticks", "3", "--record", "out.lmp"],
+        &["out.lmp", "a Doom demo records a WAD's map"],
+    )]);
 }
 
 // ---------------------------------------------------------------------------

@@ -13,8 +13,6 @@ use std::path::{Path, PathBuf};
 
 use super::input::TickInput;
 use super::lmp::{buttons, DemoHeader, LmpError, Ticcmd, VanillaDemo};
-use super::playthrough::Playthrough;
-use super::syncdump::{PlayerState, TicState};
 use crate::campaign::{find_wad, wad_dirs, MapRef};
 use crate::wad::Wad;
 
@@ -165,12 +163,18 @@ pub fn open_demo(spec: &str, iwad: Option<&Path>, pwads: &[PathBuf]) -> Result<D
 }
 
 impl DemoSource {
+    /// The WADs as one, later over earlier.
+    pub fn wad(&self) -> Result<Wad, LmpError> {
+        let stacked = self.wads.iter().map(|w| Wad::open(w)).collect::<Result<Vec<_>, _>>();
+        let error = |e: crate::wad::WadError| LmpError::Unsupported { path: self.label.clone(), what: e.to_string() };
+        Ok(Wad::stack(stacked.map_err(error)?))
+    }
+
     /// The map the demo plays, checked against the WADs (`E1M4` or
     /// `MAP15`, by whether the WADs hold Doom II's maps), and its options.
     pub fn game(&self) -> Result<(MapRef, crate::play::GameOptions), LmpError> {
         let error = |what: String| LmpError::Unsupported { path: self.label.clone(), what };
-        let stacked = self.wads.iter().map(|w| Wad::open(w)).collect::<Result<Vec<_>, _>>();
-        let wad = Wad::stack(stacked.map_err(|e| error(e.to_string()))?);
+        let wad = self.wad()?;
         let commercial = wad.find("MAP01").is_some();
         let (name, options) = game_of(&self.demo.header, commercial);
         if !wad.map_names().contains(&name) {
@@ -178,29 +182,6 @@ impl DemoSource {
         }
         Ok((MapRef::Wad { wads: self.wads.clone(), map: Some(name) }, options))
     }
-}
-
-/// Our game's state after a tic, in the dumps' units, for the fields the
-/// simulation can give. Positions and momentum are rounded to 16.16 fixed
-/// point, the angle to a 32-bit binary angle; `P_Random`'s index and the
-/// mobj and sector hashes are left out until the simulation keeps Doom's
-/// own state (ARCHITECTURE.md, "Vanilla demos").
-pub fn state_of(play: &Playthrough, gametic: u32) -> TicState {
-    let p = play.game.player();
-    let fixed = |v: f64| (v * 65536.0).round() as i32;
-    let angle = ((p.angle / 360.0).rem_euclid(1.0) * 4_294_967_296.0).round() as u64 as u32;
-    let player = PlayerState {
-        x: fixed(p.pos.x),
-        y: fixed(p.pos.y),
-        z: fixed(p.z),
-        angle,
-        momx: fixed(p.velocity.x),
-        momy: fixed(p.velocity.y),
-        health: p.health,
-        armor: p.armor,
-        ammo: p.ammo,
-    };
-    TicState { gametic, players: [Some(player), None, None, None], ..TicState::default() }
 }
 
 #[cfg(test)]

@@ -44,13 +44,35 @@ pub fn table_for(wad: &Wad, table: &ActorTable) -> Result<Arc<ActorTable>, Strin
     Ok(Arc::new(patched))
 }
 
-/// The game `demo` starts on `wad`.
+/// A `--gameversion` name, as Chocolate Doom spells them: `1.9`,
+/// `ultimate`, `final` (and `final2`, which plays as `final` here).
+pub fn parse_game_version(name: &str) -> Result<GameVersion, String> {
+    match name.to_ascii_lowercase().as_str() {
+        "1.9" => Ok(GameVersion::Doom19),
+        "ultimate" => Ok(GameVersion::Ultimate),
+        "final" | "final2" => Ok(GameVersion::Final),
+        other => Err(format!("unknown game version {other:?}: 1.9, ultimate or final")),
+    }
+}
+
+/// The game `demo` starts on `wad`, as the executable Chocolate Doom
+/// picks for the IWAD.
 pub fn start(wad: &Wad, demo: &VanillaDemo, table: Arc<ActorTable>) -> Result<Sim, String> {
+    start_as(wad, demo, table, None)
+}
+
+/// [`start`] as the executable `version` (`--gameversion`), if given.
+pub fn start_as(
+    wad: &Wad,
+    demo: &VanillaDemo,
+    table: Arc<ActorTable>,
+    version: Option<GameVersion>,
+) -> Result<Sim, String> {
     let h = &demo.header;
     let mode = game_mode(wad);
     let rules = Rules {
         skill: h.skill,
-        version: game_version(mode),
+        version: version.unwrap_or(game_version(mode)),
         mode,
         compat: Compat::Vanilla,
         deathmatch: h.deathmatch,

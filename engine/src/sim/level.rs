@@ -41,7 +41,7 @@ pub mod ml {
 
 /// A texture or flat, by its index in the level's name table (equal names,
 /// equal ids). `NO_TEXTURE` is Doom's `-` (texture 0).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize, serde::Deserialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize, serde::Deserialize)]
 pub struct NameId(pub u16);
 
 pub const NO_TEXTURE: NameId = NameId(0);

@@ -46,6 +46,10 @@ pub struct Converted {
     /// What had to change for the map to validate, one line each.
     pub repairs: Vec<String>,
     pub report: Report,
+    /// The converted map's sector for each of the WAD's sectors (`None` for
+    /// a sector left out): how the Doom-arithmetic simulation, which keeps
+    /// the WAD's numbering, is drawn on the converted map.
+    pub sector_map: Vec<Option<usize>>,
 }
 
 /// What became of the map's specials and things.
@@ -431,7 +435,8 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
     move_start_off_lines(&mut source, &mut repairs);
     reassign_misplaced_lines(&mut source, &mut repairs);
     drop_dangling_specials(&mut source, &mut report);
-    Ok(Converted { source, walls, flats, sprites, repairs, report })
+    let sector_map = sector_map.iter().map(|&s| (s != usize::MAX).then_some(s)).collect();
+    Ok(Converted { source, walls, flats, sprites, repairs, report, sector_map })
 }
 
 /// Does a line draw nothing and block nothing: the same sector on both
