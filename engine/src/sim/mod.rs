@@ -33,6 +33,7 @@
 //! | `specials.rs` | `p_spec.c` | line and sector specials, animations |
 //! | `doors.rs`, `plats.rs`, `floors.rs`, `ceilings.rs`, `lights.rs`, `switches.rs`, `teleport.rs` | `p_doors.c` .. `p_telept.c` | the movers |
 //! | `demo.rs` | `g_game.c` (`G_DoPlayDemo`) | a demo's game, checked against a dump |
+//! | `draw.rs` | | the simulation drawn by the renderer |
 //! | `state.rs` | the patch in `scripts/chocolate-dump.patch` | a tic's state for the reference dumps |
 
 pub mod actions;
@@ -43,6 +44,7 @@ pub mod chase;
 pub mod collision;
 pub mod demo;
 pub mod doors;
+pub mod draw;
 pub mod floors;
 pub mod hitscan;
 pub mod info;
