@@ -285,7 +285,8 @@ pub fn vertical_door(sim: &mut Sim, line: usize, thing: MobjId) {
 /// A raise door used while its sector already has a mover. Vanilla reads
 /// and writes `door->direction` whatever the mover is; Chocolate sends the
 /// closing write for a plat to its `wait` (the field at that offset on
-/// 32-bit machines), as here; a floor or crusher is left alone.
+/// 32-bit machines), as here; a floor (whose field there is half a flat
+/// number and padding) is left alone.
 fn reuse_moving_door(sim: &mut Sim, existing: ThinkerId, thing: MobjId) {
     let is_player = sim.mo(thing).player.is_some();
     match &mut sim.thinker_mut(existing).kind {
@@ -304,6 +305,14 @@ fn reuse_moving_door(sim: &mut Sim, existing: ThinkerId, thing: MobjId) {
                 plat.count = 1;
             } else if is_player {
                 plat.wait = -1;
+            }
+        }
+        ThinkerKind::Ceiling(c) => {
+            // Likewise a crusher's `speed` lies there on 64-bit.
+            if c.speed == Fixed(-1) {
+                c.speed = Fixed(1);
+            } else if is_player {
+                c.speed = Fixed(-1);
             }
         }
         _ => {}

@@ -264,6 +264,11 @@ fn new_floor(sim: &mut Sim, line: usize, s: usize, kind: FloorType) -> FloorMove
 /// of the sector's two-sided lines (`textureheight`, where a `-` reads
 /// texture 0); `INT_MAX` when there is none, as vanilla starts it.
 fn shortest_lower_texture(sim: &Sim, s: usize) -> Fixed {
+    // Heights not loaded (see `specials::set_texture_heights`): the floor
+    // stays, rather than wrapping to INT_MAX above itself.
+    if sim.spec.texture_heights.is_empty() {
+        return Fixed::ZERO;
+    }
     let mut minsize = Fixed::MAX;
     for &l in &sim.level.sectors[s].lines {
         let line = &sim.level.lines[l];

@@ -77,8 +77,9 @@ pub struct SpecialState {
 
 /// Fills the texture heights that `EV_DoFloor`'s raise-to-texture reads,
 /// from the WAD's TEXTURE1/TEXTURE2 (the first texture of TEXTURE1 is
-/// texture 0, which a side with no lower texture reads). Without it the
-/// heights are unknown and such floors take the shortest known height.
+/// texture 0, which a side with no lower texture reads). `Sim::new` has
+/// the WAD and should call this before `spawn_specials`; until then such
+/// floors do not move. A name that repeats keeps its first height.
 pub fn set_texture_heights(sim: &mut Sim, wad: &crate::wad::Wad) {
     let mut heights = Vec::new();
     for lump in ["TEXTURE1", "TEXTURE2"] {
@@ -91,7 +92,7 @@ pub fn set_texture_heights(sim: &mut Sim, wad: &crate::wad::Wad) {
 
 /// Each texture's name and height in a TEXTURE lump (`maptexture_t`: name
 /// at 0, height at 14), in the lump's order; a malformed entry is skipped.
-fn texture_lump_heights(bytes: &[u8]) -> Vec<(String, Fixed)> {
+pub(crate) fn texture_lump_heights(bytes: &[u8]) -> Vec<(String, Fixed)> {
     let word = |at: usize| bytes.get(at..at + 4).map(|b| i32::from_le_bytes([b[0], b[1], b[2], b[3]]));
     let count = word(0).unwrap_or(0).max(0) as usize;
     (0..count)

@@ -408,3 +408,126 @@ fn lower_and_change_takes_the_flat_of_the_sector_at_its_destination() {
     assert_eq!(sim.level.sectors[1].floorheight, u(8));
     assert_eq!((sim.level.sectors[1].floorpic, sim.level.sectors[1].special), (NameId(2), 7));
 }
+
+/// A player's body at (32, 32) in sector 0, with player 0's record.
+fn player(sim: &mut Sim) -> crate::sim::MobjId {
+    let kind = sim.kind_of(crate::sim::info::mt::PLAYER);
+    let mo = sim.spawn_mobj(u(32), u(32), crate::sim::mobj::ONFLOORZ, kind);
+    let its_thinker = sim.mo(mo).thinker;
+    sim.remove_thinker(its_thinker);
+    let mut p = crate::sim::Player::reborn(&sim.info, [0; crate::sim::MAXPLAYERS], (0, 0, 0));
+    p.mo = mo;
+    sim.players[0] = Some(p);
+    sim.mo_mut(mo).player = Some(0);
+    mo
+}
+
+#[test]
+fn a_button_shows_its_other_face_and_pops_back_after_a_second() {
+    let mut sim = sim(corridor(&[(0, 128, 160), (64, 128, 160), (0, 128, 160)]));
+    sim.level.names.push("SW1BRCOM".into());
+    let off = NameId(3);
+    sim.level.sides[0].toptexture = off;
+    sim.level.lines[0].special = 62;
+    sim.level.lines[0].tag = 1;
+    sim.level.sectors[1].tag = 1;
+    let mo = player(&mut sim);
+    assert!(crate::sim::switches::use_special_line(&mut sim, mo, 0, 0));
+    let on = sim.level.sides[0].toptexture;
+    assert_eq!(sim.level.name(on), "SW2BRCOM");
+    assert_eq!(sim.level.lines[0].special, 62);
+    assert!(matches!(sim.thinkers.last().map(|t| &t.kind), Some(ThinkerKind::Plat(_))));
+    for _ in 0..34 {
+        specials::update_specials(&mut sim);
+    }
+    assert_eq!(sim.level.sides[0].toptexture, on);
+    specials::update_specials(&mut sim);
+    assert_eq!(sim.level.sides[0].toptexture, off);
+    assert_eq!(sim.spec.buttons[0].timer, 0);
+    // From the back side nothing happens.
+    assert!(!crate::sim::switches::use_special_line(&mut sim, mo, 0, 1));
+}
+
+#[test]
+fn a_secret_sector_counts_once_and_a_suit_leaks_when_p_random_is_under_5() {
+    let mut sim = sim(corridor(&[(0, 128, 160), (0, 128, 160)]));
+    let mo = player(&mut sim);
+    sim.level.sectors[0].special = 9;
+    specials::player_in_special_sector(&mut sim, 0);
+    specials::player_in_special_sector(&mut sim, 0);
+    assert_eq!(sim.player(0).map(|p| p.secretcount), Some(1));
+    assert_eq!(sim.level.sectors[0].special, 0);
+    // Super hellslime with a radiation suit: a draw every tic, bite or not.
+    sim.level.sectors[0].special = 16;
+    sim.players[0].as_mut().map(|p| p.powers[specials::PW_IRONFEET] = 100);
+    sim.leveltime = 1;
+    specials::player_in_special_sector(&mut sim, 0);
+    assert_eq!(sim.rng.p_index(), 2);
+    // The next draw is RNDTABLE[0] = 0, under 5, and leveltime 32 bites.
+    sim.rng = crate::fixed::DoomRandom::from_indices(255, 0);
+    sim.leveltime = 32;
+    specials::player_in_special_sector(&mut sim, 0);
+    assert_eq!(sim.mo(mo).health, 80);
+}
+
+#[test]
+fn a_teleport_puts_the_player_on_the_destination_with_two_fogs() {
+    let mut sim = sim(corridor(&[(0, 128, 160), (16, 128, 160)]));
+    sim.level.sectors[0].tag = 6;
+    sim.level.lines[0].tag = 6;
+    sim.level.lines[0].special = 97;
+    let kind = sim.kind_of(crate::sim::info::mt::TELEPORTMAN);
+    let dest = sim.spawn_mobj(u(20), u(40), crate::sim::mobj::ONFLOORZ, kind);
+    sim.mo_mut(dest).angle = crate::fixed::ANG90;
+    let mo = player(&mut sim);
+    sim.mo_mut(mo).momx = u(3);
+    let before = sim.mobjs.len();
+    // From the back: nothing.
+    specials::cross_special_line(&mut sim, 0, 1, mo);
+    assert_eq!(sim.mobjs.len(), before);
+    specials::cross_special_line(&mut sim, 0, 0, mo);
+    let m = sim.mo(mo);
+    assert_eq!((m.x, m.y, m.angle, m.momx, m.reactiontime), (u(20), u(40), crate::fixed::ANG90, u(0), 18));
+    assert_eq!(sim.mobjs.len(), before + 2);
+    // The second fog 20 units ahead of the destination (facing north), by
+    // Doom's table: finecosine[2048] is -25 and finesine[2048] 65535.
+    assert_eq!((crate::fixed::finecosine(2048), crate::fixed::finesine(2048)), (Fixed(-25), Fixed(65535)));
+    let fog = sim.mo(crate::sim::MobjId(before as u32 + 1));
+    assert_eq!((fog.x, fog.y), (u(20) - Fixed(500), u(40) + Fixed(20 * 65535)));
+    // WR: the line keeps its special.
+    assert_eq!(sim.level.lines[0].special, 97);
+}
+
+#[test]
+fn raise_to_texture_rises_by_the_shortest_lower_texture_around() {
+    let mut sim = sim(corridor(&[(0, 128, 160), (0, 128, 160), (0, 128, 160)]));
+    sim.level.names.extend(["TEX1".to_string(), "TEX2".to_string()]);
+    sim.spec.texture_heights = vec![("TEX1".into(), u(32)), ("TEX2".into(), u(16))];
+    sim.spec.texture0_height = u(64);
+    sim.level.sides[0].bottomtexture = NameId(3);
+    sim.level.sides[2].bottomtexture = NameId(4);
+    sim.level.sectors[1].tag = 8;
+    sim.level.lines[1].tag = 8;
+    assert!(floors::do_floor(&mut sim, 1, FloorType::RaiseToTexture));
+    let ThinkerKind::Floor(f) = &sim.thinkers[0].kind else { panic!("a floor") };
+    assert_eq!(f.floordestheight, u(16));
+}
+
+#[test]
+fn texture_heights_read_from_a_texture_lump() {
+    let mut lump = vec![];
+    lump.extend(2i32.to_le_bytes());
+    lump.extend(12i32.to_le_bytes());
+    lump.extend(34i32.to_le_bytes());
+    for (name, height) in [(*b"AASHITTY", 64i16), (*b"BIGDOOR1", 128)] {
+        lump.extend(name);
+        lump.extend([0u8; 4]);
+        lump.extend(64i16.to_le_bytes());
+        lump.extend(height.to_le_bytes());
+        lump.extend([0u8; 6]);
+    }
+    let heights = specials::texture_lump_heights(&lump);
+    assert_eq!(heights, [("AASHITTY".to_string(), u(64)), ("BIGDOOR1".to_string(), u(128))]);
+    // A truncated lump gives what it holds.
+    assert_eq!(specials::texture_lump_heights(&lump[..20]).len(), 0);
+}
