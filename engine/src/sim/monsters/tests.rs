@@ -309,3 +309,76 @@ fn the_missile_range_check_draws_against_the_distance() {
     assert!(!super::check_missile_range(&mut sim, imp));
     assert_eq!(sim.rng.p_index(), 2);
 }
+
+fn call(name: &str) -> crate::actors::ActionCall {
+    crate::actors::ActionCall { action: crate::actors::actions::find(name).expect("a registered action"), args: vec![] }
+}
+
+#[test]
+fn an_arch_vile_raises_a_corpse_touching_its_next_step() {
+    let mut sim = sim();
+    let vile = room_imp(&mut sim, -150, -200);
+    let vile_kind = sim.kind_of(mt::VILE);
+    sim.mo_mut(vile).kind = vile_kind;
+    sim.mo_mut(vile).movedir = crate::sim::chase::DI_EAST;
+    let player = sim.players[0].as_ref().map(|p| p.mo).expect("player 0");
+    sim.mo_mut(vile).target = Some(player);
+    // A zombie's corpse at rest 45 units east: the vile's step of 15
+    // lands 30 from it, within the two radii (20 + 20).
+    let corpse = room_imp(&mut sim, -105, -200);
+    let zombie = sim.kind_of(mt::POSSESSED);
+    let info = sim.info.things[zombie].clone();
+    let c = sim.mo_mut(corpse);
+    c.kind = zombie;
+    c.flags = (info.flags | mf::CORPSE | mf::DROPOFF) & !(mf::SOLID | mf::SHOOTABLE);
+    c.tics = -1;
+    c.health = 0;
+    c.height = info.height >> 2;
+    c.target = Some(vile);
+    super::action(&mut sim, vile, "A_VileChase", &call("A_VileChase"));
+    let c = sim.mo(corpse);
+    assert_eq!(c.state, info.raisestate);
+    assert_eq!((c.health, c.flags, c.height, c.target), (info.spawnhealth, info.flags, info.height, None));
+    let heal = sim.info.table.actors[vile_kind].label("Heal");
+    assert!(heal.is_some());
+    assert_eq!(sim.mo(vile).state, heal);
+    assert_eq!(sim.mo(vile).angle, Angle::ZERO, "it faced the corpse, due east");
+    assert_eq!(sim.mo(vile).target, Some(player), "and kept its target");
+}
+
+#[test]
+fn a_boss_death_ends_only_its_own_episode_s_map() {
+    let mut sim = sim();
+    sim.rules.mode = GameMode::Retail;
+    sim.rules.version = GameVersion::Ultimate;
+    sim.level.name = "E2M8".into();
+    let baron = spawn(&mut sim, mt::BRUISER, 0, 0);
+    let cyber = spawn(&mut sim, mt::CYBORG, 300, 0);
+    let other = spawn(&mut sim, mt::CYBORG, 600, 0);
+    sim.mo_mut(baron).health = 0;
+    sim.mo_mut(cyber).health = 0;
+    // The Ultimate Doom: a baron means nothing on E2M8; the cyberdemon
+    // does, once the other one is dead too.
+    super::action(&mut sim, baron, "A_BossDeath", &call("A_BossDeath"));
+    super::action(&mut sim, cyber, "A_BossDeath", &call("A_BossDeath"));
+    assert_eq!(sim.exit, None, "another cyberdemon lives");
+    sim.mo_mut(other).health = -5;
+    super::action(&mut sim, cyber, "A_BossDeath", &call("A_BossDeath"));
+    assert_eq!(sim.exit, Some(false));
+    // Doom 1.9 before it: any boss on map 8 but a baron off episode 1.
+    sim.exit = None;
+    sim.rules.version = GameVersion::Doom19;
+    super::action(&mut sim, baron, "A_BossDeath", &call("A_BossDeath"));
+    assert_eq!(sim.exit, None);
+    let spider = spawn(&mut sim, mt::SPIDER, 900, 0);
+    sim.mo_mut(spider).health = 0;
+    super::action(&mut sim, spider, "A_BossDeath", &call("A_BossDeath"));
+    assert_eq!(sim.exit, Some(false));
+    // No one alive: no victory.
+    sim.exit = None;
+    if let Some(p) = sim.players[0].as_mut() {
+        p.health = 0;
+    }
+    super::action(&mut sim, spider, "A_BossDeath", &call("A_BossDeath"));
+    assert_eq!(sim.exit, None);
+}
