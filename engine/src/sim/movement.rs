@@ -176,11 +176,15 @@ fn apply_friction(sim: &mut Sim, id: MobjId, player: Option<usize>) {
         return;
     }
     let slow = mo.momx > -STOPSPEED && mo.momx < STOPSPEED && mo.momy > -STOPSPEED && mo.momy < STOPSPEED;
-    let idle = cmd.map_or(true, |(_, c)| c.forward == 0 && c.side == 0);
+    let idle = cmd.is_none_or(|(_, c)| c.forward == 0 && c.side == 0);
     if slow && idle {
-        if player.is_some() && in_running_frames(sim, id) {
-            let standing = sim.info.things[sim.mo(id).kind].spawnstate;
-            sim.set_mobj_state(id, standing);
+        // Doom looks at the player's own body here (`player->mo`), which
+        // for a voodoo doll is not the body that moved.
+        if let Some(body) = player.and_then(|n| sim.player(n)).map(|p| p.mo) {
+            if in_running_frames(sim, body) {
+                let standing = sim.info.things[sim.mo(body).kind].spawnstate;
+                sim.set_mobj_state(body, standing);
+            }
         }
         let mo = sim.mo_mut(id);
         mo.momx = Fixed::ZERO;
