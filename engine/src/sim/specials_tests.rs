@@ -531,3 +531,14 @@ fn texture_heights_read_from_a_texture_lump() {
     // A truncated lump gives what it holds.
     assert_eq!(specials::texture_lump_heights(&lump[..20]).len(), 0);
 }
+
+#[test]
+fn the_switch_list_grows_with_the_game_mode() {
+    use crate::sim::switches::switch_list;
+    assert_eq!(switch_list(GameMode::Shareware).len(), 2 * 19);
+    assert_eq!(switch_list(GameMode::Retail).len(), 2 * 29);
+    let doom2 = switch_list(GameMode::Commercial);
+    assert_eq!(doom2.len(), 2 * 40);
+    // Off and on faces alternate, so `i ^ 1` is the other face.
+    assert_eq!((doom2[0], doom2[1], doom2[79]), ("SW1BRCOM", "SW2BRCOM", "SW2SKULL"));
+}

@@ -14,7 +14,7 @@ use super::{lights, GameMode, MobjId, Sim};
 
 /// `alphSwitchList`: each switch's off and on texture, with the first
 /// game that has it (1 shareware, 2 registered, 3 Doom II).
-const SWITCHES: [(&str, &str, u8); 41] = [
+const SWITCHES: [(&str, &str, u8); 40] = [
     ("SW1BRCOM", "SW2BRCOM", 1),
     ("SW1BRN1", "SW2BRN1", 1),
     ("SW1BRN2", "SW2BRN2", 1),
@@ -55,9 +55,6 @@ const SWITCHES: [(&str, &str, u8); 41] = [
     ("SW1TEK", "SW2TEK", 3),
     ("SW1MARB", "SW2MARB", 3),
     ("SW1SKULL", "SW2SKULL", 3),
-    // Doom's list has 40 entries; the 41st slot keeps the array's length
-    // honest for the filter below and matches no texture.
-    ("", "", 255),
 ];
 
 /// `P_InitSwitchList`: the texture names in Doom's `switchlist` order
