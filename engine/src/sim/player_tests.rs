@@ -299,3 +299,71 @@ fn ammo_found_with_none_left_brings_out_a_gun() {
     assert!(give_armor(&mut p, 2));
     assert_eq!(p.armorpoints, 200);
 }
+
+#[test]
+fn a_charging_skull_bounces_off_the_floor_only_from_the_ultimate_doom_on() {
+    for (version, momz) in [(GameVersion::Doom19, 0), (GameVersion::Ultimate, 4)] {
+        let mut sim = game();
+        sim.rules.version = version;
+        let skull = sim.kind_of(crate::sim::info::mt::SKULL);
+        let id = sim.spawn_mobj(u(-128), u(-200), crate::sim::mobj::ONFLOORZ, skull);
+        let floor = sim.mo(id).floorz;
+        let mo = sim.mo_mut(id);
+        mo.flags |= mf::SKULLFLY;
+        mo.z = floor + u(2);
+        mo.momz = u(-4);
+        crate::sim::movement::z_movement(&mut sim, id);
+        // 1.9 stops the fall and then negates a zero; Ultimate negates
+        // the fall first, and the skull climbs away.
+        assert_eq!((sim.mo(id).z, sim.mo(id).momz), (floor, u(momz)), "{version:?}");
+    }
+}
+
+#[test]
+fn a_rocket_with_nothing_to_aim_at_flies_level_and_straight() {
+    let mut sim = game();
+    let id = player_body(&sim);
+    let rocket = sim.kind_of(crate::sim::info::mt::ROCKET);
+    let before = sim.rng.p_index();
+    crate::sim::movement::spawn_player_missile(&mut sim, id, rocket);
+    // Three aims find nothing (no monsters): angle 0, slope 0. The spawn's
+    // lastlook and P_CheckMissileSpawn's tics are the two P_Randoms.
+    assert_eq!(sim.rng.p_index(), before.wrapping_add(2));
+    let th = MobjId(sim.mobjs.len() as u32 - 1);
+    let (m, p) = (sim.mo(th), sim.mo(id));
+    // Speed 20: FixedMul(20 << 16, 65535) = 1310700, FixedMul(20 << 16, 25)
+    // = 500; the spawn check moved it half a tic on.
+    assert_eq!((m.momx, m.momy, m.momz), (Fixed(1310700), Fixed(500), Fixed::ZERO));
+    assert_eq!((m.x - p.x, m.y - p.y, m.z - p.z), (Fixed(655350), Fixed(250), u(32)));
+    assert_eq!(m.target, Some(id));
+    // Exploding: stopped, no longer a missile, its 8-tic death frame less
+    // P_Random() & 3.
+    let r = i32::from(crate::fixed::RNDTABLE[usize::from(sim.rng.p_index().wrapping_add(1))]);
+    crate::sim::movement::explode_missile(&mut sim, th);
+    let m = sim.mo(th);
+    assert_eq!((m.momx, m.momy, m.momz, m.has(mf::MISSILE)), (Fixed::ZERO, Fixed::ZERO, Fixed::ZERO, false));
+    assert_eq!(m.state, sim.info.things[rocket].deathstate);
+    assert_eq!(m.tics, (8 - (r & 3)).max(1));
+}
+
+#[test]
+fn a_weapon_change_lowers_the_pistol_and_raises_the_fist() {
+    let mut sim = game();
+    for _ in 0..15 {
+        tick(&mut sim, Ticcmd::default());
+    }
+    let fist = sim.info.weapons[0].clone().expect("the fist");
+    tick(&mut sim, Ticcmd { buttons: buttons::CHANGE, ..Ticcmd::default() });
+    // A_WeaponReady saw the change: down at once, 6 units a tic.
+    assert_eq!(sim.player(0).expect("player").psprites[0].sy, u(38));
+    for _ in 0..14 {
+        tick(&mut sim, Ticcmd::default());
+    }
+    let p = sim.player(0).expect("player");
+    assert_eq!((p.readyweapon, p.psprites[0].sy), (1, u(122)));
+    tick(&mut sim, Ticcmd::default());
+    // At the bottom the fist became ready and its first A_Raise ran.
+    let p = sim.player(0).expect("player");
+    assert_eq!((p.readyweapon, p.pendingweapon, p.psprites[0].sy), (0, None, u(122)));
+    assert_eq!(p.psprites[0].state, fist.upstate);
+}
