@@ -382,3 +382,62 @@ fn a_boss_death_ends_only_its_own_episode_s_map() {
     super::action(&mut sim, spider, "A_BossDeath", &call("A_BossDeath"));
     assert_eq!(sim.exit, None);
 }
+
+#[test]
+fn the_brain_spits_cubes_at_its_spots_in_turn_every_other_time_on_easy() {
+    let mut sim = sim();
+    let brain = room_imp(&mut sim, -150, -240);
+    let brain_kind = sim.kind_of(mt::BOSSBRAIN);
+    sim.mo_mut(brain).kind = brain_kind;
+    let first = spawn(&mut sim, mt::BOSSTARGET, -150, 760);
+    let second = spawn(&mut sim, mt::BOSSTARGET, 500, 500);
+    super::action(&mut sim, brain, "A_BrainAwake", &call("A_BrainAwake"));
+    assert_eq!(sim.brain.targets, [first, second]);
+    let bodies = sim.mobjs.len();
+    super::action(&mut sim, brain, "A_BrainSpit", &call("A_BrainSpit"));
+    let cube = MobjId(bodies as u32);
+    assert!(sim.is(cube, mt::SPAWNSHOT));
+    let c = sim.mo(cube);
+    assert_eq!(c.target, Some(first));
+    // Due north (ANG90 - 1, fine angle 2047) at 10 a tic: 1000 units take
+    // 1000 * 65536 / momy tics, over the state's 3 tics a frame.
+    assert_eq!(c.momy, u(10) * crate::fixed::finesine(2047));
+    assert_eq!(c.reactiontime, (1000 * FRACUNIT / c.momy.0) / 3);
+    assert_eq!(sim.brain.target_on, 1);
+    // On the easy skills only every other call spits.
+    sim.rules.skill = 1;
+    let bodies = sim.mobjs.len();
+    super::action(&mut sim, brain, "A_BrainSpit", &call("A_BrainSpit"));
+    assert_eq!(sim.mobjs.len(), bodies, "easy turned off: no cube");
+    super::action(&mut sim, brain, "A_BrainSpit", &call("A_BrainSpit"));
+    assert!(sim.mobjs.len() > bodies);
+    assert_eq!(sim.brain.target_on, 0, "back to the first spot");
+}
+
+#[test]
+fn a_cube_at_its_spot_becomes_fire_and_a_monster_by_p_random() {
+    let mut sim = sim();
+    let spot = spawn(&mut sim, mt::BOSSTARGET, -150, -200);
+    let cube = spawn(&mut sim, mt::SPAWNSHOT, -150, -180);
+    sim.mo_mut(cube).target = Some(spot);
+    sim.mo_mut(cube).reactiontime = 2;
+    super::action(&mut sim, cube, "A_SpawnFly", &call("A_SpawnFly"));
+    assert!(!sim.mo(cube).removed, "still flying");
+    sim.rng = DoomRandom::new();
+    let bodies = sim.mobjs.len();
+    super::action(&mut sim, cube, "A_SpawnFly", &call("A_SpawnFly"));
+    assert!(sim.mo(cube).removed);
+    // The fire's spawn draws 8; then 109 picks the monster (90..120: a
+    // spectre).
+    let fire = MobjId(bodies as u32);
+    let monster = MobjId(bodies as u32 + 1);
+    assert!(sim.is(fire, mt::SPAWNFIRE));
+    assert!(sim.is(monster, mt::SHADOWS));
+    // It looked all round, saw the player and went into its see state,
+    // whose A_Chase took a first step (10 units) from the spot.
+    let player = sim.players[0].as_ref().map(|p| p.mo);
+    assert_eq!(sim.mo(monster).target, player);
+    let m = sim.mo(monster);
+    let moved = crate::fixed::approx_distance(m.x - u(-150), m.y - u(-200));
+    assert_eq!(moved, u(10));
+}
