@@ -367,3 +367,34 @@ fn a_weapon_change_lowers_the_pistol_and_raises_the_fist() {
     assert_eq!((p.readyweapon, p.pendingweapon, p.psprites[0].sy), (0, None, u(122)));
     assert_eq!(p.psprites[0].state, fist.upstate);
 }
+
+#[test]
+fn a_dead_player_sinks_and_turns_to_the_killer_five_degrees_a_tic() {
+    let mut sim = game();
+    let id = player_body(&sim);
+    let clip = clip_kind(&sim);
+    // The killer due north; no inflictor, so no push.
+    let killer = sim.spawn_mobj(u(-192), u(-64), crate::sim::mobj::ONFLOORZ, clip);
+    damage_mobj(&mut sim, id, None, Some(killer), 200);
+    assert_eq!(sim.player(0).expect("player").attacker, Some(killer));
+    // ANG5 = ANG90 / 18 = 59652323; eighteen of them fall 10 short of ANG90.
+    for k in 1..=18u32 {
+        tick(&mut sim, Ticcmd::default());
+        assert_eq!(sim.mo(id).angle.0, 59_652_323 * k, "tic {k}");
+    }
+    tick(&mut sim, Ticcmd::default());
+    let to = crate::fixed::point_to_angle2(u(-192), u(-160), u(-192), u(-64));
+    assert_eq!(sim.mo(id).angle, to);
+    // The eye sank a unit a tic for 19 tics.
+    assert_eq!(sim.player(0).expect("player").viewheight, u(41 - 19));
+    for _ in 0..20 {
+        tick(&mut sim, Ticcmd::default());
+    }
+    let p = sim.player(0).expect("player");
+    assert_eq!(p.viewheight, u(6));
+    assert_eq!(p.viewz, sim.mo(id).z + u(6));
+    assert_eq!(p.psprites[0].sy, WEAPONBOTTOM);
+    // Use asks for rebirth.
+    tick(&mut sim, Ticcmd { buttons: buttons::USE, ..Ticcmd::default() });
+    assert_eq!(sim.player(0).expect("player").playerstate, PlayerState::Reborn);
+}
