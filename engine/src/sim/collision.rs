@@ -459,18 +459,64 @@ fn change_thing(sim: &mut Sim, thing: MobjId) -> bool {
     true
 }
 
-/// `G_CheckSpot`'s test of a deathmatch or co-op start: whether player
-/// `n`'s body fits at the map thing's spot (`P_CheckPosition`). `body` is
-/// `None` at the level's first spawn, when (as in Doom) only an earlier
-/// player standing exactly there blocks the spot. The body queue and the
-/// spawn fog are the caller's (`g_game.c`).
+/// `BODYQUESIZE`: corpses kept in a netgame before the oldest goes.
+const BODYQUESIZE: usize = 32;
+
+/// `G_CheckSpot` (`g_game.c`): whether player `n` may spawn at the map
+/// thing `spot`. `body` is the player's current body, `None` at the
+/// level's first spawn, when (as in Doom) only an earlier player standing
+/// exactly there blocks the spot. Otherwise the body must fit there
+/// (`P_CheckPosition`); then it joins the body queue (the oldest of 32
+/// corpses is removed) and a teleport fog appears 20 units ahead of the
+/// spot, with Chocolate's emulation of vanilla's negative fine angles
+/// (a spot facing west or south-west reads `finetangent`).
+///
+/// `sim.bodyque` holds every body queued this level, so its length is
+/// Doom's `bodyqueslot`.
 pub fn check_spot(sim: &mut Sim, n: usize, body: Option<MobjId>, spot: &crate::wad::level::WadThing) -> bool {
     let (x, y) = (Fixed::from_int(spot.x.into()), Fixed::from_int(spot.y.into()));
     let Some(mo) = body else {
         let taken = (0..n).filter_map(|i| sim.player(i)).any(|p| sim.mo(p.mo).x == x && sim.mo(p.mo).y == y);
         return !taken;
     };
-    check_position(sim, mo, x, y)
+    if !check_position(sim, mo, x, y) {
+        return false;
+    }
+    let slot = sim.bodyque.len();
+    if slot >= BODYQUESIZE {
+        sim.remove_mobj(sim.bodyque[slot - BODYQUESIZE]);
+    }
+    sim.bodyque.push(mo);
+    let sector = sim.level.subsectors[point_in_subsector(&sim.level, x, y)].sector;
+    let floor = sim.level.sectors[sector].floorheight;
+    let (xa, ya) = spawn_fog_offset(i32::from(spot.angle));
+    let fog = sim.kind_of(mt::TFOG);
+    let fog = sim.spawn_mobj(x + Fixed(xa.wrapping_mul(20)), y + Fixed(ya.wrapping_mul(20)), floor, fog);
+    // No sound on the first frame (Doom's `viewz != 1` test).
+    if sim.player(sim.console).is_some_and(|p| p.viewz != Fixed(1)) {
+        sim.sound_named(Some(fog), "telept");
+    }
+    true
+}
+
+/// The fog's direction for a spot's angle: vanilla's `an` is
+/// `ANG45 * (angle / 45) >> ANGLETOFINESHIFT` in a signed int, negative
+/// from 180 degrees on, so its table reads fall before `finecosine` and
+/// `finesine`, into `finetangent` (Chocolate's table of the cases, after
+/// PrBoom-plus). An angle that is not a multiple of 45 from 0 to 360 is an
+/// error in Chocolate; here it gives no offset.
+fn spawn_fog_offset(angle: i32) -> (i32, i32) {
+    use crate::fixed::{finecosine, finesine, finetangent, tantoangle};
+    let an = 1024i32.wrapping_mul(angle / 45);
+    match an {
+        4096 => (finetangent(2048).0, finetangent(0).0),
+        5120 => (finetangent(3072).0, finetangent(1024).0),
+        6144 => (finesine(0).0, finetangent(2048).0),
+        7168 => (finesine(1024).0, finetangent(3072).0),
+        0 | 1024 | 2048 | 3072 => (finecosine(an as usize).0, finesine(an as usize).0),
+        8192 => (tantoangle(0).0 as i32, finesine(8192).0),
+        _ => (0, 0),
+    }
 }
 
 #[cfg(test)]

@@ -461,3 +461,31 @@ mod no_panics {
         }
     }
 }
+
+#[test]
+fn a_spawn_spot_queues_the_corpse_and_puts_fog_ahead_of_it() {
+    use crate::wad::level::WadThing;
+    let mut sim = sim(0, 128);
+    let corpse = body(&mut sim, 200, 200);
+    let fog = sim.kind_of(mt::TFOG);
+    // Facing east: 20 * finecosine[0] = 20 * 65535 east, 20 * finesine[0] = 500 north.
+    let east = WadThing { x: 64, y: 100, angle: 0, kind: 1, flags: 7 };
+    assert!(check_spot(&mut sim, 0, Some(corpse), &east));
+    let f = sim.mobjs.last().expect("the fog");
+    assert_eq!((f.kind, f.x, f.y), (fog, Fixed(u(64).0 + 1_310_700), Fixed(u(100).0 + 500)));
+    assert_eq!(sim.bodyque, [corpse]);
+    // Facing west: vanilla's an is -4096, read from finetangent: x from
+    // finetangent[2048], y from finetangent[0] = -170910304 (times 20, wrapping).
+    let west = WadThing { angle: 180, ..east };
+    assert!(check_spot(&mut sim, 0, Some(corpse), &west));
+    let f = sim.mobjs.last().expect("the fog");
+    let (xa, ya) = (crate::fixed::finetangent(2048).0, -170_910_304i32);
+    assert_eq!((f.x, f.y), (Fixed(u(64).0 + xa * 20), Fixed(u(100).0.wrapping_add(ya.wrapping_mul(20)))));
+    // A spot inside another body is refused, and nothing is queued.
+    let blocked = WadThing { x: 200, y: 200, ..east };
+    let other = body(&mut sim, 64, 40);
+    assert!(!check_spot(&mut sim, 0, Some(other), &blocked));
+    assert_eq!(sim.bodyque.len(), 2);
+    // The level's first spawn: only an earlier player exactly there blocks.
+    assert!(check_spot(&mut sim, 0, None, &blocked));
+}
