@@ -29,11 +29,9 @@ pub fn action(sim: &mut Sim, id: MobjId, name: &str, call: &ActionCall) {
         "A_CyberAttack" => missile_attack(sim, id, call, mt::ROCKET),
         "A_SkelMissile" => skel_missile(sim, id, call),
         "A_Tracer" => tracer(sim, id, call),
-        "A_SkelWhoosh" => {
-            if sim.mo(id).target.is_some() {
-                face_target(sim, id);
-                sim.sound_named(Some(id), "skeswg");
-            }
+        "A_SkelWhoosh" if sim.mo(id).target.is_some() => {
+            face_target(sim, id);
+            sim.sound_named(Some(id), "skeswg");
         }
         "A_SkelFist" => skel_fist(sim, id),
         "A_FatRaise" => {
@@ -44,12 +42,10 @@ pub fn action(sim: &mut Sim, id: MobjId, name: &str, call: &ActionCall) {
         "A_FatAttack2" => fat_attack(sim, id, call, FatSpread::Right),
         "A_FatAttack3" => fat_attack(sim, id, call, FatSpread::Both),
         "A_SkullAttack" => skull_attack(sim, id),
-        "A_PainAttack" => {
-            if sim.mo(id).target.is_some() {
-                face_target(sim, id);
-                let angle = sim.mo(id).angle;
-                pain_shoot_skull(sim, id, angle, actor_arg(sim, call, mt::SKULL));
-            }
+        "A_PainAttack" if sim.mo(id).target.is_some() => {
+            face_target(sim, id);
+            let angle = sim.mo(id).angle;
+            pain_shoot_skull(sim, id, angle, actor_arg(sim, call, mt::SKULL));
         }
         "A_PainDie" => {
             fall(sim, id);
