@@ -39,24 +39,37 @@ pub const RNDTABLE: [u8; 256] = [
 pub struct DoomRandom {
     prnd: u8,
     rnd: u8,
+    /// One entry of the game's table replaced (index, value): how a test
+    /// proves that the sync check catches a single wrong number.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    altered: Option<(u8, u8)>,
 }
 
 impl DoomRandom {
     /// Both cursors at 0, as at start-up and after [`clear`](Self::clear).
     pub const fn new() -> DoomRandom {
-        DoomRandom { prnd: 0, rnd: 0 }
+        DoomRandom { prnd: 0, rnd: 0, altered: None }
+    }
+
+    /// The same generator with `P_Random`'s entry `index` reading `value`
+    /// instead of Doom's (for tests that must see a desync where it happens).
+    pub const fn with_altered_entry(self, index: u8, value: u8) -> DoomRandom {
+        DoomRandom { altered: Some((index, value)), ..self }
     }
 
     /// A state with the given cursors, e.g. restored from a sync dump.
     pub const fn from_indices(p_index: u8, m_index: u8) -> DoomRandom {
-        DoomRandom { prnd: p_index, rnd: m_index }
+        DoomRandom { prnd: p_index, rnd: m_index, altered: None }
     }
 
     /// `P_Random`: the game's next number, 0 to 255. Returned as `i32`, as
     /// Doom's `int`, because callers shift it and subtract from it.
     pub fn p_random(&mut self) -> i32 {
         self.prnd = self.prnd.wrapping_add(1);
-        i32::from(RNDTABLE[usize::from(self.prnd)])
+        match self.altered {
+            Some((index, value)) if index == self.prnd => i32::from(value),
+            _ => i32::from(RNDTABLE[usize::from(self.prnd)]),
+        }
     }
 
     /// `M_Random`: the next number for everything outside the simulation.
@@ -81,7 +94,7 @@ impl DoomRandom {
     /// `M_ClearRandom`: both cursors back to 0, as `G_InitNew` does when a
     /// game (or a demo) starts.
     pub fn clear(&mut self) {
-        *self = DoomRandom::new();
+        *self = DoomRandom { altered: self.altered, ..DoomRandom::new() };
     }
 
     /// `prndindex`: where the game's cursor stands (the index last read).
