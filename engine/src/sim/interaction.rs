@@ -123,7 +123,7 @@ pub fn damage_mobj(sim: &mut Sim, target: MobjId, inflictor: Option<MobjId>, sou
         }
     }
     let mo = sim.mo_mut(target);
-    mo.health -= damage;
+    mo.health = mo.health.wrapping_sub(damage);
     if mo.health <= 0 {
         kill_mobj(sim, source, target);
         return;
@@ -206,12 +206,12 @@ fn damage_player(sim: &mut Sim, n: usize, target: MobjId, source: Option<MobjId>
         p.armorpoints -= saved;
         *damage -= saved;
     }
-    p.health -= *damage;
+    p.health = p.health.wrapping_sub(*damage);
     if p.health < 0 {
         p.health = 0;
     }
     p.attacker = source;
-    p.damagecount += *damage;
+    p.damagecount = p.damagecount.wrapping_add(*damage);
     if p.damagecount > 100 {
         // A telefrag does 10000.
         p.damagecount = 100;

@@ -324,9 +324,12 @@ pub fn nightmare_respawn(sim: &mut Sim, id: MobjId) {
 }
 
 /// The state `offset` states after `kind`'s spawn state (Doom's
-/// `S_PUFF3`, `S_BLOOD2` are numbered from their kind's first).
+/// `S_PUFF3`, `S_BLOOD2` are numbered from their kind's first); a table
+/// too short for it keeps the spawn state.
 fn spawn_state_plus(sim: &Sim, kind: usize, offset: u32) -> Option<StateId> {
-    sim.info.things[kind].spawnstate.map(|s| StateId(s.0 + offset))
+    let first = sim.info.things[kind].spawnstate?;
+    let later = first.0.checked_add(offset).filter(|&s| (s as usize) < sim.info.states.len());
+    Some(later.map_or(first, StateId))
 }
 
 /// Takes up to three from a new effect's first tics (at least one stays),
@@ -370,13 +373,13 @@ pub fn spawn_blood(sim: &mut Sim, x: Fixed, y: Fixed, z: Fixed, damage: i32) {
     let th = sim.spawn_mobj(x, y, z, kind);
     sim.mo_mut(th).momz = Fixed(FRACUNIT * 2);
     shorten_tics(sim, th);
-    if (9..=12).contains(&damage) {
-        let blood2 = spawn_state_plus(sim, kind, 1);
-        sim.set_mobj_state(th, blood2);
-    } else if damage < 9 {
-        let blood3 = spawn_state_plus(sim, kind, 2);
-        sim.set_mobj_state(th, blood3);
-    }
+    let offset = match damage {
+        9..=12 => 1,
+        ..=8 => 2,
+        _ => return,
+    };
+    let smaller = spawn_state_plus(sim, kind, offset);
+    sim.set_mobj_state(th, smaller);
 }
 
 /// `P_CheckMissileSpawn`: a new missile steps half a tic forward (so an

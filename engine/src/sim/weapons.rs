@@ -358,7 +358,11 @@ fn body_flash(sim: &mut Sim, n: usize) {
 
 /// The ready weapon's flash state, `offset` states on.
 fn flash_state(sim: &Sim, n: usize, offset: u32) -> Option<StateId> {
-    ready_state(sim, n, |w| w.flashstate).map(|s| StateId(s.0 + offset))
+    let first = ready_state(sim, n, |w| w.flashstate)?;
+    // Doom reads past its table for a bad offset; a table too short for it
+    // shows the first flash.
+    let later = first.0.checked_add(offset).filter(|&s| (s as usize) < sim.info.states.len());
+    Some(later.map_or(first, StateId))
 }
 
 /// `A_GunFlash`.
