@@ -320,15 +320,18 @@ fn reuse_moving_door(sim: &mut Sim, existing: ThinkerId, thing: MobjId) {
 }
 
 /// `P_SpawnDoorCloseIn30`: sector special 10, a door open now that closes
-/// after 30 seconds (then stays shut: its type is a normal door).
+/// after 30 seconds (then stays shut: its type is a normal door). Vanilla
+/// leaves `topheight` and `topwait` as the zone memory held them, which
+/// matters only if something blocks the closing door and it goes back up;
+/// here it goes back to where it started and waits a normal door's wait.
 pub fn spawn_door_close_in_30(sim: &mut Sim, sector: usize) {
     let door = Door {
         kind: DoorType::Normal,
         sector,
-        topheight: Fixed::ZERO,
+        topheight: sim.level.sectors[sector].ceilingheight,
         speed: VDOORSPEED,
         direction: 0,
-        topwait: 0,
+        topwait: VDOORWAIT,
         topcountdown: 30 * TICRATE as i32,
     };
     let id = sim.add_thinker(ThinkerKind::Door(door));
