@@ -252,6 +252,9 @@ fn doom_s_divline_typo_sees_through_a_closed_door() {
     let mut sim = sim(16, 16);
     let (a, b) = (body(&mut sim, 64, 128), body(&mut sim, 192, 128));
     assert!(sight::check_sight(&mut sim, a, b));
+    // Sightline's rules fix the typo, and the door blocks.
+    sim.rules.compat = Compat::Sightline;
+    assert!(!sight::check_sight(&mut sim, a, b));
 }
 
 #[test]

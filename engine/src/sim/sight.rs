@@ -8,19 +8,22 @@ use super::maputl;
 use super::{MobjId, Sim};
 use crate::fixed::{intercept_vector, Divline, Fixed};
 
-/// The sight trace's fixed parts (`strace`, `t2x`, `t2y`, `sightzstart`).
+/// The sight trace's fixed parts (`strace`, `t2x`, `t2y`, `sightzstart`),
+/// and whether `P_DivlineSide`'s typo is kept (vanilla rules).
 struct Trace {
     line: Divline,
     t2x: Fixed,
     t2y: Fixed,
     zstart: Fixed,
+    typo: bool,
 }
 
 /// `P_DivlineSide`: 0 front, 1 back, 2 on the line. Unlike the other side
 /// tests it drops both factors' fractions and multiplies in plain (wrapping)
 /// integers, and it says "on" for exact ties. Its horizontal case compares
-/// `x` with the line's `y` (a typo in Doom, kept: it decides sight).
-fn divline_side(x: Fixed, y: Fixed, node: &Divline) -> u8 {
+/// `x` with the line's `y` (a typo in Doom, kept under vanilla rules since
+/// it decides sight: `typo`; Sightline's rules compare `y`).
+fn divline_side(x: Fixed, y: Fixed, node: &Divline, typo: bool) -> u8 {
     if node.dx.0 == 0 {
         if x == node.x {
             return 2;
@@ -31,7 +34,7 @@ fn divline_side(x: Fixed, y: Fixed, node: &Divline) -> u8 {
         return u8::from(node.dy.0 < 0);
     }
     if node.dy.0 == 0 {
-        if x == node.y {
+        if (if typo { x } else { y }) == node.y {
             return 2;
         }
         if y <= node.y {
@@ -73,11 +76,11 @@ fn cross_subsector(sim: &mut Sim, t: &Trace, num: usize) -> bool {
         *mark = sim.validcount;
         let line = &sim.level.lines[linedef];
         let (v1, v2) = (line.v1, line.v2);
-        if divline_side(v1.0, v1.1, &t.line) == divline_side(v2.0, v2.1, &t.line) {
+        if divline_side(v1.0, v1.1, &t.line, t.typo) == divline_side(v2.0, v2.1, &t.line, t.typo) {
             continue;
         }
         let divl = Divline { x: v1.0, y: v1.1, dx: v2.0 - v1.0, dy: v2.1 - v1.1 };
-        if divline_side(t.line.x, t.line.y, &divl) == divline_side(t.t2x, t.t2y, &divl) {
+        if divline_side(t.line.x, t.line.y, &divl, t.typo) == divline_side(t.t2x, t.t2y, &divl, t.typo) {
             continue;
         }
         // No back sector: Chocolate's "impassible glass" hack line.
@@ -132,14 +135,14 @@ fn cross_bsp_node(sim: &mut Sim, t: &Trace, bspnum: i32) -> bool {
     };
     let div = Divline { x: node.x, y: node.y, dx: node.dx, dy: node.dy };
     let children = node.children;
-    let mut side = divline_side(t.line.x, t.line.y, &div);
+    let mut side = divline_side(t.line.x, t.line.y, &div, t.typo);
     if side == 2 {
         side = 0;
     }
     if !cross_bsp_node(sim, t, i32::from(children[usize::from(side)])) {
         return false;
     }
-    if side == divline_side(t.t2x, t.t2y, &div) {
+    if side == divline_side(t.t2x, t.t2y, &div, t.typo) {
         return true;
     }
     cross_bsp_node(sim, t, i32::from(children[usize::from(side ^ 1)]))
@@ -160,8 +163,13 @@ pub fn check_sight(sim: &mut Sim, looker: MobjId, target: MobjId) -> bool {
     let (t1, t2) = (sim.mo(looker), sim.mo(target));
     let zstart = t1.z + t1.height - (t1.height >> 2);
     let (top, bottom) = (t2.z + t2.height - zstart, t2.z - zstart);
-    let trace =
-        Trace { line: Divline { x: t1.x, y: t1.y, dx: t2.x - t1.x, dy: t2.y - t1.y }, t2x: t2.x, t2y: t2.y, zstart };
+    let trace = Trace {
+        line: Divline { x: t1.x, y: t1.y, dx: t2.x - t1.x, dy: t2.y - t1.y },
+        t2x: t2.x,
+        t2y: t2.y,
+        zstart,
+        typo: sim.rules.compat == super::Compat::Vanilla,
+    };
     sim.tm.topslope = top;
     sim.tm.bottomslope = bottom;
     let head = sim.level.nodes.len() as i32 - 1;
@@ -180,22 +188,25 @@ mod tests {
     fn divline_side_has_an_on_answer_and_doom_s_typo() {
         // A partition going north through x = 64: east is the front.
         let north = Divline { x: u(64), y: u(0), dx: u(0), dy: u(128) };
-        assert_eq!(divline_side(u(100), u(5), &north), 0);
-        assert_eq!(divline_side(u(10), u(5), &north), 1);
-        assert_eq!(divline_side(u(64), u(500), &north), 2);
+        assert_eq!(divline_side(u(100), u(5), &north, true), 0);
+        assert_eq!(divline_side(u(10), u(5), &north, true), 1);
+        assert_eq!(divline_side(u(64), u(500), &north, true), 2);
         // A partition going east along y = 32: the south is the front...
         let east = Divline { x: u(0), y: u(32), dx: u(128), dy: u(0) };
-        assert_eq!(divline_side(u(5), u(0), &east), 0);
-        assert_eq!(divline_side(u(5), u(40), &east), 1);
+        assert_eq!(divline_side(u(5), u(0), &east, true), 0);
+        assert_eq!(divline_side(u(5), u(40), &east, true), 1);
         // ...but a point whose x equals the line's y is "on" (Doom compares x).
-        assert_eq!(divline_side(u(32), u(0), &east), 2);
-        assert_eq!(divline_side(u(5), u(32), &east), 0);
+        assert_eq!(divline_side(u(32), u(0), &east, true), 2);
+        assert_eq!(divline_side(u(5), u(32), &east, true), 0);
+        // Sightline's rules compare y: a point on the line is "on".
+        assert_eq!(divline_side(u(32), u(0), &east, false), 0);
+        assert_eq!(divline_side(u(5), u(32), &east, false), 2);
         // Diagonal: whole units only; (1,1) on the line y = x ties.
         let diag = Divline { x: u(0), y: u(0), dx: u(10), dy: u(10) };
-        assert_eq!(divline_side(u(3), u(3), &diag), 2);
-        assert_eq!(divline_side(u(3), u(1), &diag), 0);
-        assert_eq!(divline_side(u(1), u(3), &diag), 1);
+        assert_eq!(divline_side(u(3), u(3), &diag, true), 2);
+        assert_eq!(divline_side(u(3), u(1), &diag, true), 0);
+        assert_eq!(divline_side(u(1), u(3), &diag, true), 1);
         // Fractions are dropped: 3.9 and 3 are both 3, so it is "on".
-        assert_eq!(divline_side(Fixed(3 * 65536 + 60000), u(3), &diag), 2);
+        assert_eq!(divline_side(Fixed(3 * 65536 + 60000), u(3), &diag, true), 2);
     }
 }
