@@ -1,73 +1,79 @@
 #!/usr/bin/env python3
-"""Sightline against Chocolate Doom on Freedoom's E1M4, in one run.
+"""Sightline against Chocolate Doom, whole game against whole game, on
+Freedoom's eight vanilla demos (freedoom1.wad and freedoom2.wad, DEMO1-4),
+in one run.
 
-Chocolate Doom: `chocolate-doom -iwad freedoom1.wad -timedemo demo1 -noblit
--nosound -nomusic` with SDL_VIDEODRIVER=dummy (demo1 plays E1M4; -noblit
-skips copying the frame to the screen). Its fps is frames (game tics, one
-frame each) over wall-clock time, so its ms/frame includes the game logic.
+Chocolate Doom: `chocolate-doom -iwad WAD -timedemo DEMOn -noblit -nosound
+-nomusic` with SDL_VIDEODRIVER=dummy, in a scratch HOME and working
+directory (-noblit skips copying the frame to the screen; it still runs
+every tic and renders a frame per tic). Its own fps is frames over
+wall-clock time and includes the screen melt at each level's start, which
+runs at 35 tics a second in 1 ms sleeps (d_main.c's wipe loop, about 1.1 s
+a level), so the figure compared is its CPU time per frame: the CPU time
+(getrusage of the child) of the run less that of a run of the demo's first
+tic alone (a cut of the demo: its header, its first tic and the 0x80 end;
+start-up and level load), over the tics between.
 
-That wall-clock figure is mostly not rendering: the timed stretch includes
-the screen melt at the level's start, which runs at 35 tics a second in
-1 ms sleeps (d_main.c's wipe loop), about 1.1 s of the 1.3 s a run takes. So
-the script also gives Chocolate's CPU time per frame: the CPU time of the
-run less that of a run of the demo's first tic alone (start-up and level
-load), over the tics between.
+Sightline: `sightline replay WAD:DEMOn --timedemo --size 320x200 --threads
+1`, which runs every tic of the simulation and renders a frame per tic in
+32-bit colour with textures, sprites, sky and distance light. The figure
+compared is the CPU ms per frame it prints (its timed loop alone); its
+child's CPU time, less that of a run of the same one-tic cut, over the tics
+between, is given beside it as a like-for-like check of Chocolate's
+measure.
 
-Sightline: `sightline bench tour e1m4.ron --size WxH --threads N --json`, the
-median of render_frame over a fixed tour (every thing's position, eight
-angles each) of the imported map, in 32-bit colour with textures, sprites,
-sky and distance light.
+Each round plays, demo by demo, Chocolate then Sightline (each its full run
+and its one-tic run). Per demo the table gives the tics, the medians of the
+rounds' figures and the ratio of those medians; the total row is each
+program's CPU time over its frames summed over the eight demos, and its
+ratio is the median of the rounds' total ratios (every round's is listed).
+Takes about a minute a round.
 
-The two are run alternately, ROUNDS times, and the medians of the rounds are
-reported. Needs: apt-get install chocolate-doom freedoom.
+--tour keeps the older comparison instead: Chocolate's timedemo of
+freedoom1.wad's DEMO1 (E1M4) against `sightline bench tour` of the imported
+E1M4 (render_frame alone, no game logic) at 320x200, one and two threads.
 
-Usage: scripts/chocolate-compare.py [--rounds N] [--out FILE]
+Needs: apt-get install chocolate-doom freedoom.
+SIGHTLINE_BIN=PATH uses that binary instead of building one.
+
+Usage: scripts/chocolate-compare.py [--rounds N] [--out FILE] [--tour]
 """
 
 import argparse
 import os
 import re
-import resource
-import subprocess
+import statistics
 import sys
 from pathlib import Path
 
-from e1m4 import WAD, one_tic_demo, prepared, report, rounds_table, sightline_tour
+from e1m4 import (WAD, demo_set, load_line, one_tic_demo, prepared, report, rounds_table,
+                  sightline_timedemo, sightline_tour, timed_run)
 
 CHOCOLATE = "/usr/games/chocolate-doom"
 
 
-def chocolate_run(home, demo):
-    """Plays `demo` (a lump name or a file) timed; returns its reported ms per
-    frame, its tics and the CPU seconds the run took."""
+def chocolate_run(home, wad, demo):
+    """Plays `demo` (a lump name or a file) of `wad` timed; returns its
+    reported ms per frame, its tics and the CPU seconds the run took."""
     env = dict(os.environ, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy", HOME=str(home))
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    out = subprocess.run(
-        [CHOCOLATE, "-iwad", str(WAD), "-timedemo", str(demo), "-noblit", "-nosound", "-nomusic"],
-        env=env, capture_output=True, text=True, cwd=home,
-    )
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    text = out.stdout + out.stderr
+    text, cpu = timed_run([CHOCOLATE, "-iwad", str(wad), "-timedemo", str(demo), "-noblit", "-nosound", "-nomusic"],
+                          env=env, cwd=home)
     m = re.search(r"timed (\d+) gametics in (\d+) realtics \(([\d.inf]+) fps\)", text)
     if not m:
-        sys.exit(f"chocolate-doom printed no timing:\n{text}")
+        sys.exit(f"chocolate-doom -iwad {wad} -timedemo {demo} printed no timing:\n{text}")
     return 1000.0 / float(m.group(3)), int(m.group(1)), cpu
 
 
 def chocolate_ms(home, short):
     """Chocolate's timedemo ms per frame, its tics, and its CPU ms per frame
     (the full run's CPU time less the one-tic run's, over the other tics)."""
-    ms, tics, cpu = chocolate_run(home, "demo1")
-    _, _, fixed = chocolate_run(home, short)
+    ms, tics, cpu = chocolate_run(home, WAD, "demo1")
+    _, _, fixed = chocolate_run(home, WAD, short)
     return ms, tics, (cpu - fixed) * 1000.0 / max(tics - 1, 1)
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--rounds", type=int, default=5)
-    parser.add_argument("--out", type=Path)
-    args = parser.parse_args()
+def tour(args):
+    """The older comparison: Chocolate's timedemo of E1M4 against Sightline's E1M4 tour."""
     with prepared(CHOCOLATE, "chocolate-doom") as (binary, tmp, ron, demo):
         short = tmp / "short.lmp"
         one_tic_demo(demo, short)
@@ -97,6 +103,94 @@ def main():
                  f"against its timedemo figure (goal: at least 4x), "
                  f"{med['chocolate cpu'] / med['320x200 t1']:.2f}x against its CPU time per frame.")
     report(lines, args.out)
+
+
+def demos(args):
+    """Whole game against whole game on the eight demos."""
+    with demo_set([CHOCOLATE], "chocolate-doom") as (binary, tmp, demos):
+        # Per demo, per round: Chocolate's CPU s less its one-tic run's and
+        # its reported ms/frame; Sightline's printed CPU ms/frame and its CPU
+        # s less its one-tic run's.
+        runs = {d.name: [] for d in demos}
+        tics, loads = {}, []
+        for r in range(args.rounds):
+            loads.append(os.getloadavg()[0])
+            print(f"round {r + 1}, load {loads[-1]:.2f}", file=sys.stderr)
+            for d in demos:
+                choc_ms, choc_tics, choc_cpu = chocolate_run(tmp, d.wad, d.lump)
+                _, _, choc_fixed = chocolate_run(tmp, d.wad, d.short)
+                sl_tics, sl_cpu_ms, _, sl_cpu = sightline_timedemo(binary, d, "320x200", 1)
+                _, _, _, sl_fixed = sightline_timedemo(binary, d, "320x200", 1, short=True)
+                if choc_tics != sl_tics:
+                    print(f"  {d.name}: Chocolate played {choc_tics} tics, Sightline {sl_tics}", file=sys.stderr)
+                tics[d.name] = (choc_tics, sl_tics)
+                run = {
+                    "choc cpu s": choc_cpu - choc_fixed,
+                    "choc ms": choc_ms,
+                    "sl ms": sl_cpu_ms,
+                    "sl cpu s": sl_cpu - sl_fixed,
+                }
+                runs[d.name].append(run)
+                print(f"  {d.name} ({d.map}, {choc_tics} tics): Chocolate {run['choc cpu s'] * 1000 / (choc_tics - 1):.3f}"
+                      f" ms CPU, Sightline {sl_cpu_ms:.3f} printed / {run['sl cpu s'] * 1000 / (sl_tics - 1):.3f}"
+                      " rusage ms CPU per frame", file=sys.stderr)
+
+    def per_frame(d, k, r):
+        """Round r's ms per frame of demo d: for a CPU-second figure, over
+        the tics less the one-tic run's."""
+        x = runs[d.name][r][k]
+        if k.endswith(" s"):
+            return x * 1000.0 / (tics[d.name][0 if k.startswith("choc") else 1] - 1)
+        return x
+
+    lines = [
+        "| demo | map | tics | Chocolate CPU ms/frame | Sightline CPU ms/frame (printed) | Chocolate / Sightline "
+        "| Sightline CPU ms/frame (rusage) | Chocolate / Sightline (rusage) | Chocolate timedemo ms/frame as it reports (wall, melt included) |",
+        "|---|---|---|---|---|---|---|---|---|",
+    ]
+    n = args.rounds
+    for d in demos:
+        med = {k: statistics.median(per_frame(d, k, r) for r in range(n))
+               for k in ("choc cpu s", "sl ms", "sl cpu s", "choc ms")}
+        t = tics[d.name]
+        lines.append(f"| {d.name} | {d.map} | {t[0] if t[0] == t[1] else f'{t[0]} (Sightline {t[1]})'} "
+                     f"| {med['choc cpu s']:.3f} | {med['sl ms']:.3f} | **{med['choc cpu s'] / med['sl ms']:.2f}x** "
+                     f"| {med['sl cpu s']:.3f} | {med['choc cpu s'] / med['sl cpu s']:.2f}x | {med['choc ms']:.3f} |")
+    # Each round's totals: CPU over frames summed over the demos (a run's
+    # frames less one where its one-tic run was subtracted).
+    totals = []
+    for r in range(n):
+        choc = sum(runs[d.name][r]["choc cpu s"] for d in demos) * 1000 / sum(tics[d.name][0] - 1 for d in demos)
+        sl = sum(runs[d.name][r]["sl ms"] * tics[d.name][1] for d in demos) / sum(tics[d.name][1] for d in demos)
+        slr = sum(runs[d.name][r]["sl cpu s"] for d in demos) * 1000 / sum(tics[d.name][1] - 1 for d in demos)
+        totals.append((choc, sl, slr))
+    med = [statistics.median(t[i] for t in totals) for i in range(3)]
+    ratios = [t[0] / t[1] for t in totals]
+    ratios_r = [t[0] / t[2] for t in totals]
+    all_tics = sum(tics[d.name][0] for d in demos)
+    lines.append(f"| all eight | | {all_tics} | {med[0]:.3f} | {med[1]:.3f} | **{statistics.median(ratios):.2f}x** "
+                 f"| {med[2]:.3f} | {statistics.median(ratios_r):.2f}x | |")
+    lines.append("")
+    lines.append(f"Chocolate Doom 320x200 8-bit -noblit against Sightline 320x200 32-bit, one thread, "
+                 f"CPU per frame of the whole game (tics and rendering). Figures are medians of {n} round(s); "
+                 "the ratio in bold is Chocolate's CPU per frame over Sightline's printed one (its timed loop); "
+                 "the rusage columns time Sightline as Chocolate is timed (the process less a one-tic run). "
+                 "The total ratio is the median of the rounds' total ratios: "
+                 + ", ".join(f"{x:.2f}x" for x in ratios) + " (rusage: " + ", ".join(f"{x:.2f}x" for x in ratios_r) + ").")
+    lines.append("")
+    lines.append(load_line(loads))
+    report(lines, args.out)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[1])
+    parser.add_argument("--rounds", type=int, default=3)
+    parser.add_argument("--out", type=Path)
+    parser.add_argument("--tour", action="store_true", help="the older E1M4 tour comparison instead")
+    args = parser.parse_args()
+    if args.rounds < 1:
+        sys.exit("--rounds must be at least 1")
+    (tour if args.tour else demos)(args)
 
 
 if __name__ == "__main__":
