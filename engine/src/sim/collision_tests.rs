@@ -492,3 +492,46 @@ fn a_spawn_spot_queues_the_corpse_and_puts_fog_ahead_of_it() {
     // The level's first spawn: only an earlier player exactly there blocks.
     assert!(check_spot(&mut sim, 0, None, &blocked));
 }
+
+#[test]
+fn a_charging_lost_soul_hits_for_1d8_times_3_and_stops() {
+    let mut sim = sim(0, 128);
+    let victim = body(&mut sim, 100, 100);
+    let skull_kind = sim.kind_of(mt::SKULL);
+    let skull = sim.spawn_mobj(u(40), u(100), u(20), skull_kind);
+    sim.mo_mut(skull).flags |= mf::SKULLFLY;
+    sim.mo_mut(skull).momx = u(20);
+    // The next P_Random is the table's entry after the index.
+    let next = crate::fixed::RNDTABLE[usize::from(sim.rng.p_index().wrapping_add(1))];
+    let damage = (i32::from(next) % 8 + 1) * 3;
+    // 10 units short of the victim: the boxes (16 + 16) overlap.
+    assert!(!check_position(&mut sim, skull, u(90), u(100)));
+    assert_eq!(sim.mo(victim).health, 100 - damage);
+    let s = sim.mo(skull);
+    assert!(!s.has(mf::SKULLFLY));
+    assert_eq!((s.momx, s.momy, s.momz), (u(0), u(0), u(0)));
+    assert_eq!(s.state, sim.info.things[skull_kind].spawnstate);
+}
+
+#[test]
+fn an_imp_s_fireball_spares_imps_but_burns_others() {
+    let mut sim = sim(0, 128);
+    let imp_kind = sim.kind_of(mt::TROOP);
+    let (imp, other_imp) =
+        (sim.spawn_mobj(u(20), u(60), ONFLOORZ, imp_kind), sim.spawn_mobj(u(100), u(100), ONFLOORZ, imp_kind));
+    let shot_kind = sim.kind_of(mt::TROOPSHOT);
+    let shot = sim.spawn_mobj(u(70), u(100), u(20), shot_kind);
+    sim.mo_mut(shot).target = Some(imp);
+    let (index, health) = (sim.rng.p_index(), sim.mo(other_imp).health);
+    // Same species: the shot stops (explodes) without a draw or damage.
+    assert!(!check_position(&mut sim, shot, u(90), u(100)));
+    assert_eq!((sim.rng.p_index(), sim.mo(other_imp).health), (index, health));
+    // A body of another kind: 1d8 times the fireball's 3.
+    let victim = body(&mut sim, 100, 200);
+    let next = crate::fixed::RNDTABLE[usize::from(sim.rng.p_index().wrapping_add(1))];
+    assert!(!check_position(&mut sim, shot, u(90), u(200)));
+    assert_eq!(sim.mo(victim).health, 100 - (i32::from(next) % 8 + 1) * 3);
+    // Over its head: untouched.
+    sim.mo_mut(shot).z = u(60);
+    assert!(check_position(&mut sim, shot, u(90), u(200)));
+}
