@@ -8,6 +8,7 @@
 use super::level::{Line, SlopeType, BOXBOTTOM, BOXLEFT, BOXRIGHT, BOXTOP, MAPBLOCKSHIFT};
 use super::{Compat, MobjId, Sim};
 use crate::fixed::{intercept_vector, point_on_divline_side, point_on_line_side, Divline, Fixed, Side, FRACUNIT};
+use crate::wad::level::WadThing;
 
 /// `MAPBLOCKSIZE`: a blockmap cell's side in fixed point.
 pub const MAPBLOCKSIZE: i32 = 128 * FRACUNIT;
@@ -251,7 +252,7 @@ fn push_intercept(sim: &mut Sim, c: &mut Collect, intercept: Intercept) {
     let index = c.intercepts.len();
     c.intercepts.push(intercept);
     if sim.rules.compat == Compat::Vanilla {
-        intercepts_overrun(&mut sim.tm.opening, index, &intercept);
+        intercepts_overrun(&mut sim.tm.opening, &mut sim.starts, index, &intercept);
     }
 }
 
@@ -260,13 +261,13 @@ fn push_intercept(sim: &mut Sim, c: &mut Collect, intercept: Intercept) {
 /// Chocolate Doom (after PrBoom-plus) emulates the writes from its 130th
 /// entry on (`InterceptsOverrun`: 12 bytes an entry, `frac`, `isaline`,
 /// then the pointer). Of the targets, those held here are `P_LineOpening`'s
-/// four values (bytes 12..28). The pointer values are heap addresses even
-/// in Chocolate, so not reproducible; `bulletslope` (byte 160, the 142nd
-/// entry's `isaline`) belongs to the weapons; `playerstarts` (176..216) and
-/// the blockmap's header (220..244) would need traces of more than 142 and
-/// 146 intercepts, and rewriting the blockmap's origin in play is left out:
-/// those are noted, not emulated.
-fn intercepts_overrun(o: &mut Opening, index: usize, intercept: &Intercept) {
+/// four values (bytes 12..28) and `playerstarts` (bytes 176..216, as
+/// 16-bit halves: a netgame's rebirth reads them). Not emulated: the
+/// pointer values (heap addresses even in Chocolate, so not reproducible),
+/// `bulletslope` (byte 160, the 142nd entry's `isaline`: the weapons keep
+/// it as a local), and the blockmap's header (bytes 220..244: rewriting
+/// the blockmap's size and origin in play would need the links rebuilt).
+fn intercepts_overrun(o: &mut Opening, starts: &mut [Option<WadThing>], index: usize, intercept: &Intercept) {
     if index <= MAXINTERCEPTS_ORIGINAL {
         return;
     }
@@ -278,8 +279,29 @@ fn intercepts_overrun(o: &mut Opening, index: usize, intercept: &Intercept) {
             16..=19 => o.bottom = Fixed(value),
             20..=23 => o.top = Fixed(value),
             24..=27 => o.range = Fixed(value),
+            176..=215 => {
+                let short = (at - 176) / 2;
+                set_start_short(starts, short, value as u16);
+                set_start_short(starts, short + 1, (value >> 16) as u16);
+            }
             _ => {}
         }
+    }
+}
+
+/// Writes 16-bit word `short` of `playerstarts` (five words a start: x, y,
+/// angle, type, options). A start the level did not have stays absent
+/// (Chocolate keeps whether a start was found apart from the words).
+fn set_start_short(starts: &mut [Option<WadThing>], short: usize, value: u16) {
+    let Some(Some(start)) = starts.get_mut(short / 5) else {
+        return;
+    };
+    match short % 5 {
+        0 => start.x = value as i16,
+        1 => start.y = value as i16,
+        2 => start.angle = value as i16,
+        3 => start.kind = value,
+        _ => start.flags = value,
     }
 }
 
@@ -494,14 +516,23 @@ mod tests {
         let mut o = Opening { top: u(1), bottom: u(2), range: u(3), lowfloor: u(4) };
         let line = Intercept { frac: Fixed(777), hit: Hit::Line(9) };
         // Up to index 129 (byte 0: nothing held here is written).
-        intercepts_overrun(&mut o, 128, &line);
-        intercepts_overrun(&mut o, 129, &line);
+        intercepts_overrun(&mut o, &mut [], 128, &line);
+        intercepts_overrun(&mut o, &mut [], 129, &line);
         assert_eq!(o, Opening { top: u(1), bottom: u(2), range: u(3), lowfloor: u(4) });
         // Index 130 writes bytes 12..24: lowfloor the frac, openbottom isaline.
-        intercepts_overrun(&mut o, 130, &line);
+        intercepts_overrun(&mut o, &mut [], 130, &line);
         assert_eq!((o.lowfloor, o.bottom), (Fixed(777), Fixed(1)));
         // Index 131: openrange the frac (a thing's), byte 28 is nothing.
-        intercepts_overrun(&mut o, 131, &Intercept { frac: Fixed(555), hit: Hit::Thing(MobjId(0)) });
+        intercepts_overrun(&mut o, &mut [], 131, &Intercept { frac: Fixed(555), hit: Hit::Thing(MobjId(0)) });
         assert_eq!((o.range, o.top), (Fixed(555), u(1)));
+        // Index 144 writes bytes 180..188: start 0's angle and type get the
+        // frac's halves, its options and start 1's x isaline's (absent
+        // start 1: nothing).
+        let start = WadThing { x: 10, y: 20, angle: 90, kind: 1, flags: 7 };
+        let mut starts = [Some(start.clone()), None, None, None];
+        let far = Intercept { frac: Fixed(0x0003_8000), hit: Hit::Line(0) };
+        intercepts_overrun(&mut o, &mut starts, 144, &far);
+        assert_eq!(starts[0], Some(WadThing { angle: -0x8000, kind: 3, flags: 1, ..start }));
+        assert_eq!(starts[1], None);
     }
 }
