@@ -441,3 +441,80 @@ fn a_cube_at_its_spot_becomes_fire_and_a_monster_by_p_random() {
     let moved = crate::fixed::approx_distance(m.x - u(-150), m.y - u(-200));
     assert_eq!(moved, u(10));
 }
+
+#[test]
+fn a_mancubus_spreads_its_fireballs_by_fatspread() {
+    use crate::fixed::finesine;
+    let mut sim = sim();
+    let fatso = room_imp(&mut sim, -150, -200);
+    let fatso_kind = sim.kind_of(mt::FATSO);
+    sim.mo_mut(fatso).kind = fatso_kind;
+    let target = spawn(&mut sim, mt::POSSESSED, -50, -200);
+    sim.mo_mut(fatso).target = Some(target);
+    let spread = 0x0800_0000u32; // FATSPREAD, ANG90 / 8
+    for (name, body, first, second) in [
+        ("A_FatAttack1", spread, 0, spread),
+        ("A_FatAttack2", spread.wrapping_neg(), 0, (2 * spread).wrapping_neg()),
+        ("A_FatAttack3", 0, (spread / 2).wrapping_neg(), spread / 2),
+    ] {
+        let bodies = sim.mobjs.len() as u32;
+        super::action(&mut sim, fatso, name, &call(name));
+        // Each missile aims at the target itself (due east, angle 0); the
+        // second, or both in the third attack, are turned after.
+        assert_eq!(sim.mo(fatso).angle, Angle(body), "{name}: the body");
+        for (n, angle) in [(0, first), (1, second)] {
+            let m = sim.mo(MobjId(bodies + n));
+            assert!(sim.is(MobjId(bodies + n), mt::FATSHOT));
+            assert_eq!(m.angle, Angle(angle), "{name}: missile {n}");
+            let fine = Angle(angle).fine_index();
+            assert_eq!((m.momx, m.momy), (u(20) * finecosine(fine), u(20) * finesine(fine)), "{name}: missile {n}");
+        }
+    }
+}
+
+#[test]
+fn a_dying_pain_elemental_spits_three_skulls_one_through_a_wall() {
+    let mut sim = sim();
+    let pain = room_imp(&mut sim, -150, -200);
+    let pain_kind = sim.kind_of(mt::PAIN);
+    sim.mo_mut(pain).kind = pain_kind;
+    let player = sim.players[0].as_ref().map(|p| p.mo).expect("player 0");
+    sim.mo_mut(pain).target = Some(player);
+    let bodies = sim.mobjs.len() as u32;
+    super::action(&mut sim, pain, "A_PainDie", &call("A_PainDie"));
+    assert!(!sim.mo(pain).has(mf::SOLID), "A_Fall first");
+    let skulls: Vec<MobjId> = (bodies..sim.mobjs.len() as u32).map(MobjId).filter(|&m| sim.is(m, mt::SKULL)).collect();
+    assert_eq!(skulls.len(), 3);
+    // 4 + 1.5 * (31 + 16) = 74.5 units out. North lands in the room and
+    // flies at the player. West (x -224.5) straddles the wall at x -224
+    // and is killed at once. South (y -274.5) is wholly past the wall at
+    // y -256, touching no line, so P_TryMove lets it be: Doom's lost souls
+    // spat through walls.
+    let north = sim.mo(skulls[0]);
+    assert_eq!(north.target, Some(player));
+    assert!(north.has(mf::SKULLFLY));
+    assert!(north.health > 0);
+    assert!(sim.mo(skulls[1]).health <= 0, "the skull in the west wall dies");
+    let south = sim.mo(skulls[2]);
+    assert!(south.health > 0 && south.y < u(-256), "the skull past the south wall lives");
+}
+
+#[test]
+fn a_pain_elemental_s_skull_starts_74_and_a_half_units_out() {
+    let mut sim = sim();
+    let pain = room_imp(&mut sim, -150, -200);
+    let pain_kind = sim.kind_of(mt::PAIN);
+    sim.mo_mut(pain).kind = pain_kind;
+    let target = spawn(&mut sim, mt::POSSESSED, -20, -200);
+    sim.mo_mut(pain).target = Some(target);
+    let bodies = sim.mobjs.len() as u32;
+    super::action(&mut sim, pain, "A_PainAttack", &call("A_PainAttack"));
+    let skull = MobjId(bodies);
+    assert!(sim.is(skull, mt::SKULL));
+    // prestep 4882432 times finecosine[0] = 65535 and finesine[0] = 25.
+    let s = sim.mo(skull);
+    assert_eq!((s.x, s.y), (u(-150) + Fixed(4_882_357), u(-200) + Fixed(1862)));
+    assert_eq!(s.z, sim.mo(pain).z + u(8));
+    assert_eq!(s.target, Some(target));
+    assert!(s.has(mf::SKULLFLY));
+}
