@@ -518,3 +518,33 @@ fn a_pain_elemental_s_skull_starts_74_and_a_half_units_out() {
     assert_eq!(s.target, Some(target));
     assert!(s.has(mf::SKULLFLY));
 }
+
+#[test]
+fn an_arch_vile_s_fire_stands_in_front_of_the_target_then_blasts_it_up() {
+    let mut sim = sim();
+    let vile = room_imp(&mut sim, -150, -200);
+    let vile_kind = sim.kind_of(mt::VILE);
+    sim.mo_mut(vile).kind = vile_kind;
+    let player = sim.players[0].as_ref().map(|p| p.mo).expect("player 0");
+    sim.mo_mut(vile).target = Some(player);
+    let bodies = sim.mobjs.len() as u32;
+    super::action(&mut sim, vile, "A_VileTarget", &call("A_VileTarget"));
+    let fire = MobjId(bodies);
+    assert!(sim.is(fire, mt::FIRE));
+    assert_eq!(sim.mo(vile).tracer, Some(fire));
+    assert_eq!((sim.mo(fire).target, sim.mo(fire).tracer), (Some(vile), Some(player)));
+    // 24 units in front of the player (facing east): 24 * 65535 and
+    // 24 * 25 in 16.16.
+    let (px, py, pz) = (sim.mo(player).x, sim.mo(player).y, sim.mo(player).z);
+    let f = sim.mo(fire);
+    assert_eq!((f.x, f.y, f.z), (px + Fixed(1_572_840), py + Fixed(600), pz));
+    super::action(&mut sim, vile, "A_VileAttack", &call("A_VileAttack"));
+    // Blasted up by 1000 / mass (the player's 100): 10 units a tic.
+    assert_eq!(sim.mo(player).momz, u(10));
+    // The fire moved between them, 24 units short of the player, and
+    // exploded: 20 from the attack and more from the blast.
+    let an = sim.mo(vile).angle;
+    let f = sim.mo(fire);
+    assert_eq!((f.x, f.y), (px - u(24) * an.cos(), py - u(24) * an.sin()));
+    assert!(sim.players[0].as_ref().is_some_and(|p| p.health < 80));
+}
