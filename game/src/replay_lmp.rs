@@ -18,7 +18,7 @@ use sightline::play::demo::Demo;
 use sightline::play::lmp::Ticcmd;
 use sightline::play::lmp::VanillaDemo;
 use sightline::play::syncdump::{compare, SyncDump};
-use sightline::play::vanilla::{demo_of, input_of, open_demo};
+use sightline::play::vanilla::{demo_of, open_demo};
 use sightline::play::{GameOptions, TickInput};
 use sightline::render::{render_frame, Frame, RenderOptions};
 use sightline::sim::{self, Sim, MAXPLAYERS};
@@ -64,23 +64,38 @@ pub fn save_recording(path: &Path, map: &MapRef, options: GameOptions, inputs: V
     Ok(())
 }
 
-/// A Doom demo as our own form (its map, options and the console player's
-/// inputs), for the window to play.
-pub fn as_demo(spec: &str, iwad: Option<&Path>) -> Result<Demo> {
-    let source = open_demo(spec, iwad, &[])?;
-    let (map, options) = source.game()?;
-    let inputs = console_inputs(&source.demo).map_err(|e| anyhow!("{spec}: {e}"))?;
-    Ok(Demo { inputs, skill: options.skill, seed: 0, no_monsters: options.no_monsters, ..Demo::new(map.label()) })
+/// A Doom demo played on the simulation with Doom's arithmetic, for the
+/// window: the game, the demo, where the next tic is, and how the game is
+/// drawn on the converted map the window renders.
+pub struct VanillaRun {
+    pub game: Sim,
+    pub demo: VanillaDemo,
+    pub next: usize,
+    pub scene: sim::draw::Scene,
 }
 
-/// The commands of the player whose view the demo shows, as our inputs;
-/// an error for a demo of several players.
-fn console_inputs(demo: &VanillaDemo) -> Result<Vec<TickInput>> {
-    let players = demo.header.players();
-    if players > 1 {
-        bail!("a {players}-player demo: the simulation has one player so far (ARCHITECTURE.md, \"Vanilla demos\")");
+impl VanillaRun {
+    /// Opens `spec` on `iwad`; the map to show is returned beside it.
+    pub fn open(spec: &str, iwad: Option<&Path>) -> Result<(MapRef, VanillaRun)> {
+        let source = open_demo(spec, iwad, &[])?;
+        let (map, _) = source.game()?;
+        let wad = source.wad()?;
+        let table = sim::demo::table_for(&wad, ActorTable::active()).map_err(|e| anyhow!("{}: {e}", wad.path))?;
+        let game = sim::demo::start(&wad, &source.demo, table).map_err(|e| anyhow!("{spec}: {e}"))?;
+        let opened = sightline::campaign::open(&map, &BuildOptions::default())?;
+        let scene = sim::draw::Scene::new(opened.sector_map.unwrap_or_default());
+        Ok((map, VanillaRun { game, demo: source.demo, next: 0, scene }))
     }
-    Ok((0..demo.tics()).map(|t| input_of(&demo.tic(t)[0])).collect())
+
+    /// Runs the next tic, if the demo has one.
+    pub fn tick(&mut self) -> bool {
+        if self.next >= self.demo.tics() {
+            return false;
+        }
+        self.game.tick(&commands(&self.demo, self.next));
+        self.next += 1;
+        true
+    }
 }
 
 pub fn run(args: &ReplayArgs) -> Result<()> {

@@ -509,6 +509,12 @@ impl Game {
         &self.level
     }
 
+    /// The level to draw into, for a game shown from elsewhere (a Doom demo
+    /// played on `sim`, drawn by `sim::draw`).
+    pub fn level_mut(&mut self) -> &mut Level {
+        &mut self.level
+    }
+
     /// The eye, interpolated between the start (`alpha` 0) and the end
     /// (`alpha` 1) of the last tick; `alpha` is clamped to `[0, 1]`.
     pub fn view(&self, alpha: f64) -> View {

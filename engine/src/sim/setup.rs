@@ -86,6 +86,7 @@ impl Sim {
                 }
             }
         }
+        specials::set_texture_heights(&mut sim, wad);
         specials::spawn_specials(&mut sim);
         Ok(sim)
     }

@@ -41,14 +41,22 @@ const NO_DISPLAY_HINT: &str = "For frames without a window use `sightline captur
      (or `sightline replay DEMO --capture-every N -o DIR`).";
 
 pub fn run(args: &PlayArgs) -> Result<()> {
-    let demo = match &args.demo {
+    let vanilla = match &args.demo {
         Some(path) if crate::replay_lmp::is_vanilla(&path.to_string_lossy()) => {
-            Some(crate::replay_lmp::as_demo(&path.to_string_lossy(), args.iwad.as_deref())?)
+            Some(crate::replay_lmp::VanillaRun::open(&path.to_string_lossy(), args.iwad.as_deref())?)
         }
+        _ => None,
+    };
+    let demo = match &args.demo {
+        Some(_) if vanilla.is_some() => None,
         Some(path) => Some(Demo::load(path)?),
         None => None,
     };
     let map = match (&args.map, &demo, &args.demo) {
+        (_, _, _) if vanilla.is_some() => vanilla
+            .as_ref()
+            .map(|(map, _)| map.clone())
+            .unwrap_or_else(|| MapRef::File(crate::capture::default_map_path())),
         (Some(map), _, _) => MapRef::parse(map, args.iwad.as_deref()),
         (None, Some(demo), Some(demo_path)) => crate::replay::demo_map(&demo.map, demo_path),
         _ => MapRef::File(crate::capture::default_map_path()),
@@ -66,10 +74,11 @@ pub fn run(args: &PlayArgs) -> Result<()> {
     let renderer = crate::replay::choose_renderer(args.renderer, play.game.level(), &play.map.label())?;
     // A `.lmp` keeps turns to 1/256 of the circle: the game is fed them so.
     let lmp = args.record.as_deref().is_some_and(crate::replay_lmp::is_lmp_path);
-    let mut session = match demo {
-        Some(demo) => Session::demo(play, demo.inputs),
-        None if args.autopilot => Session::autopilot(play, args.record.is_some(), lmp),
-        None => Session::live(play, Controls::new(args.mouse_sensitivity), args.record.is_some(), lmp),
+    let mut session = match (demo, vanilla) {
+        (_, Some((_, run))) => Session::vanilla(play, run),
+        (Some(demo), None) => Session::demo(play, demo.inputs),
+        (None, None) if args.autopilot => Session::autopilot(play, args.record.is_some(), lmp),
+        (None, None) => Session::live(play, Controls::new(args.mouse_sensitivity), args.record.is_some(), lmp),
     };
 
     check_display()?;

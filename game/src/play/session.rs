@@ -15,6 +15,7 @@ use sightline::View;
 
 use super::input::Controls;
 use crate::replay::position_line;
+use crate::replay_lmp::VanillaRun;
 
 enum Source {
     Live(Controls),
@@ -25,6 +26,10 @@ enum Source {
     },
     /// The autopilot, made afresh for each level (`None` between levels).
     Autopilot(Option<Box<Autopilot>>),
+    /// A Doom demo on the simulation with Doom's arithmetic, drawn into the
+    /// playthrough's level (which then only shows it), with the views at the
+    /// start and end of the last tic.
+    Vanilla(Box<VanillaRun>, View, View),
 }
 
 pub struct Session {
@@ -49,6 +54,14 @@ impl Session {
     /// `lmp`: the recording goes to a Doom demo (see [`Session::lmp_carry`]).
     pub fn live(play: Playthrough, controls: Controls, record: bool, lmp: bool) -> Session {
         Session { lmp_carry: lmp.then_some(0.0), ..Session::with(play, Source::Live(controls), record) }
+    }
+
+    /// A Doom demo on the simulation with Doom's arithmetic; `play` is a
+    /// playthrough of the demo's map, whose level shows it.
+    pub fn vanilla(mut play: Playthrough, run: VanillaRun) -> Session {
+        let view = run.scene.view(&run.game).unwrap_or_else(|| play.game.view(1.0));
+        run.scene.draw(&run.game, play.game.level_mut());
+        Session::with(play, Source::Vanilla(Box::new(run), view, view), false)
     }
 
     pub fn demo(play: Playthrough, inputs: Vec<TickInput>) -> Session {
@@ -83,7 +96,7 @@ impl Session {
     pub fn controls(&mut self) -> Option<&mut Controls> {
         match &mut self.source {
             Source::Live(controls) => Some(controls),
-            Source::Demo { .. } | Source::Autopilot(_) => None,
+            Source::Demo { .. } | Source::Autopilot(_) | Source::Vanilla(..) => None,
         }
     }
 
@@ -92,8 +105,25 @@ impl Session {
     /// game stops advancing. A next map that cannot be loaded stops the
     /// session with its error.
     pub fn run(&mut self, ticks: u32) {
+        if let Source::Vanilla(run, before, after) = &mut self.source {
+            for _ in 0..ticks {
+                if !run.tick() {
+                    if !self.finished {
+                        self.finished = true;
+                        println!("demo finished after {} tics", run.next);
+                    }
+                    return;
+                }
+                run.scene.draw(&run.game, self.play.game.level_mut());
+                show_status(&run.game, self.play.game.player_mut());
+                *before = *after;
+                *after = run.scene.view(&run.game).unwrap_or(*after);
+            }
+            return;
+        }
         for _ in 0..ticks {
             let input = match &mut self.source {
+                Source::Vanilla(..) => return,
                 Source::Live(controls) => controls.tick_input(),
                 Source::Autopilot(bot) => autopilot_input(bot, &self.play),
                 Source::Demo { inputs, next } => match inputs.get(*next) {
@@ -135,6 +165,15 @@ impl Session {
     /// The view `alpha` of the way from the previous tick to the last; once a
     /// demo has finished, or in an intermission, exactly the last tick.
     pub fn view(&self, alpha: f64) -> View {
+        if let Source::Vanilla(_, before, after) = &self.source {
+            let a = if self.finished || alpha.is_nan() { 1.0 } else { alpha.clamp(0.0, 1.0) };
+            let turned = (after.angle - before.angle + 540.0).rem_euclid(360.0) - 180.0;
+            return View::new(
+                before.pos + (after.pos - before.pos) * a,
+                before.z + (after.z - before.z) * a,
+                (before.angle + turned * a).rem_euclid(360.0),
+            );
+        }
         let still = self.finished || self.play.phase != Phase::Playing;
         self.play.game.view(if still { 1.0 } else { alpha })
     }
@@ -195,4 +234,14 @@ fn autopilot_input(bot: &mut Option<Box<Autopilot>>, play: &Playthrough) -> Tick
         *bot = None;
     }
     bot.get_or_insert_with(|| Box::new(Autopilot::new(game))).tick(game)
+}
+
+/// The status bar's figures from the simulation's console player (the
+/// playthrough's own player only stands in for it on screen).
+fn show_status(game: &sightline::sim::Sim, shown: &mut sightline::play::player::Player) {
+    let Some(p) = game.player(game.console) else { return };
+    shown.health = p.health;
+    shown.armor = p.armorpoints;
+    shown.ammo = p.ammo;
+    shown.max_ammo = p.maxammo;
 }
