@@ -13,6 +13,7 @@
 //! | --- | --- | --- |
 //! | `mod.rs` | `p_tick.c`, `g_game.c` | the world, a tic's order |
 //! | `level.rs` | `p_setup.c` | the WAD's lumps as stored |
+//! | `from_map.rs` | a node builder's output, `p_setup.c` | a compiled RON map as a level |
 //! | `info.rs` | `info.c` | the actor table in Doom's units |
 //! | `mobj.rs` | `p_mobj.c` (spawn, remove, states, links) | bodies |
 //! | `setup.rs` | `p_setup.c`, `g_game.c` | spawning a level's things and players |
@@ -46,6 +47,7 @@ pub mod demo;
 pub mod doors;
 pub mod draw;
 pub mod floors;
+pub mod from_map;
 pub mod hitscan;
 pub mod info;
 pub mod interaction;
