@@ -33,6 +33,10 @@ pub struct MapCheck {
     pub floatok: bool,
     /// What the last aim or shot hit (`linetarget`).
     pub linetarget: Option<MobjId>,
+    /// The last aim's or shot's reach (`attackrange`): a puff spawned at
+    /// melee range shows only its last frames, and `A_Tracer`'s puff reads
+    /// whatever the last shot left here, as in Doom.
+    pub attackrange: Fixed,
     /// `P_LineOpening`'s last answer (`opentop`, `openbottom`, ...).
     pub opening: Opening,
     /// The slopes a sight check or an aim is bounded by (`topslope`,

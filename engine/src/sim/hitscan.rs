@@ -46,6 +46,7 @@ fn trace_end(sim: &Sim, from: MobjId, angle: Angle, distance: Fixed) -> (Fixed, 
 /// `angle` within `distance`, or 0; sets `sim.tm.linetarget`.
 pub fn aim_line_attack(sim: &mut Sim, shooter: MobjId, angle: Angle, distance: Fixed) -> Fixed {
     let (x2, y2) = trace_end(sim, shooter, angle, distance);
+    sim.tm.attackrange = distance;
     let mut shot = Shot::new(sim, shooter, distance, Fixed::ZERO, 0);
     sim.tm.topslope = Fixed(AIM_SLOPE);
     sim.tm.bottomslope = Fixed(-AIM_SLOPE);
@@ -121,6 +122,7 @@ fn aim_through_line(sim: &mut Sim, shot: &Shot, line: usize, frac: Fixed) -> boo
 /// trace (puffs and blood still appear, as in Doom).
 pub fn line_attack(sim: &mut Sim, shooter: MobjId, angle: Angle, distance: Fixed, slope: Fixed, damage: i32) {
     let (x2, y2) = trace_end(sim, shooter, angle, distance);
+    sim.tm.attackrange = distance;
     let shot = Shot::new(sim, shooter, distance, slope, damage);
     let sky = sim.level.name_id("F_SKY1");
     let (x1, y1) = (sim.mo(shooter).x, sim.mo(shooter).y);

@@ -344,11 +344,11 @@ fn shorten_tics(sim: &mut Sim, id: MobjId) {
 }
 
 /// `P_SpawnPuff`: a bullet puff at `x`, `y`, `z` (height jittered),
-/// rising. `P_LineAttack` should call [`spawn_puff_ranged`] with its range
-/// (`attackrange`), which this signature lacks: here the shot is taken to
-/// be no melee hit.
+/// rising; at melee range (the last aim's or shot's `attackrange`) only its
+/// last frames.
 pub fn spawn_puff(sim: &mut Sim, x: Fixed, y: Fixed, z: Fixed) {
-    spawn_puff_ranged(sim, x, y, z, Fixed(32 * 64 * FRACUNIT));
+    let range = sim.tm.attackrange;
+    spawn_puff_ranged(sim, x, y, z, range);
 }
 
 /// `P_SpawnPuff` with the shot's range (`attackrange`): a melee hit

@@ -209,19 +209,35 @@ impl Sim {
         super::weapons::setup_psprites(self, n);
     }
 
-    /// `G_DeathMatchSpawnPlayer`: a random deathmatch start that is clear
-    /// (`G_CheckSpot`), else the player's own start.
+    /// `G_DeathMatchSpawnPlayer`: up to 20 random deathmatch starts (a
+    /// `P_Random` each) until one is clear (`G_CheckSpot`, which also
+    /// queues the old body and spawns the fog), else the player's own start.
+    /// Vanilla refuses a map with fewer than four deathmatch starts; here
+    /// any number plays. At a level's start the player has no old body.
     pub fn deathmatch_spawn_player(&mut self, n: usize) {
-        let starts = self.deathmatch_starts.len();
-        if starts == 0 {
-            return;
+        self.deathmatch_respawn_player(n, None);
+    }
+
+    /// [`Self::deathmatch_spawn_player`] for a player whose old body is
+    /// `body` (a respawn: the body is queued as a corpse).
+    pub fn deathmatch_respawn_player(&mut self, n: usize, body: Option<super::MobjId>) {
+        let selections = self.deathmatch_starts.len();
+        if selections > 0 {
+            for _ in 0..20 {
+                let i = self.p_random() as usize % selections;
+                let spot = self.deathmatch_starts[i].clone();
+                if collision::check_spot(self, n, body, &spot) {
+                    // Doom writes the player's number into the start itself.
+                    self.deathmatch_starts[i].kind = n as u16 + 1;
+                    let spot = self.deathmatch_starts[i].clone();
+                    self.spawn_player(&spot);
+                    return;
+                }
+            }
         }
-        // G_CheckSpot needs the collision code; until then the first draw
-        // is taken (20 tries in Doom, each spending one P_Random).
-        let i = self.p_random() as usize % starts;
-        let mut spot = self.deathmatch_starts[i].clone();
-        spot.kind = n as u16 + 1;
-        self.spawn_player(&spot);
+        if let Some(start) = self.starts[n].clone() {
+            self.spawn_player(&start);
+        }
     }
 }
 
