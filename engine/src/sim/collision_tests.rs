@@ -5,7 +5,6 @@
 //! listing every line (validcount keeps each to one visit); one node splits
 //! the room at x = 128.
 
-use std::path::Path;
 
 use super::*;
 use crate::actors::ActorTable;
@@ -15,7 +14,6 @@ use crate::sim::level::{ml, Blockmap, Level, Line, Node, Sector, Seg, Side, Slop
 use crate::sim::mobj::ONFLOORZ;
 use crate::sim::setup::Players;
 use crate::sim::{sight, slide, Compat, GameMode, GameVersion, Rules, Sim};
-use crate::wad::Wad;
 
 fn u(n: i32) -> Fixed {
     Fixed::from_int(n)
@@ -148,8 +146,7 @@ fn room(floor1: i32, ceiling1: i32) -> Level {
 /// A game on the room: Freedoom 2's MAP01 is loaded for the tables, then
 /// its level and bodies are swapped for the room's (no bodies yet).
 fn sim(floor1: i32, ceiling1: i32) -> Sim {
-    let path = Path::new("/usr/share/games/doom/freedoom2.wad");
-    let wad = Wad::open(path).expect("freedoom2.wad (apt-get install freedoom)");
+    let wad = crate::sim::test_wad("freedoom2.wad");
     let rules = Rules {
         skill: 2,
         version: GameVersion::Final,
@@ -179,6 +176,7 @@ fn body(sim: &mut Sim, x: i32, y: i32) -> MobjId {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_position_takes_floor_and_ceiling_from_the_lines_it_touches() {
     let mut sim = sim(16, 128);
     let mo = body(&mut sim, 64, 128);
@@ -193,6 +191,7 @@ fn a_position_takes_floor_and_ceiling_from_the_lines_it_touches() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_move_steps_up_24_units_and_no_more() {
     let mut sim = sim(16, 128);
     let mo = body(&mut sim, 64, 128);
@@ -212,6 +211,7 @@ fn a_move_steps_up_24_units_and_no_more() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_slide_along_a_wall_stops_short_of_it_then_turns() {
     // Running west-north-west into the west wall from (40, 128): 30 units
     // west and 10 north a tic. The leading corner (24, 144) meets x = 0 at
@@ -230,6 +230,7 @@ fn a_slide_along_a_wall_stops_short_of_it_then_turns() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_closed_door_blocks_sight_and_an_open_one_does_not() {
     let mut sim = sim(16, 128);
     let (a, b) = (body(&mut sim, 64, 100), body(&mut sim, 192, 100));
@@ -245,6 +246,7 @@ fn a_closed_door_blocks_sight_and_an_open_one_does_not() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn doom_s_divline_typo_sees_through_a_closed_door() {
     // The trace runs along y = 128 and the door's line lies at x = 128:
     // P_DivlineSide compares the ends' x with the trace's y, calls both
@@ -258,6 +260,7 @@ fn doom_s_divline_typo_sees_through_a_closed_door() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn aiming_picks_the_middle_of_what_the_step_leaves_visible() {
     // Shooter's z for shots: z + 28 + 8 = 36. Facing east, the trace ends
     // at 1024 * finecosine[0] = 1024 * 65535 east and 1024 * finesine[0] =
@@ -284,6 +287,7 @@ fn aiming_picks_the_middle_of_what_the_step_leaves_visible() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_lowered_ceiling_squeezes_and_gibs() {
     let mut sim = sim(0, 128);
     let (alive, dead) = (body(&mut sim, 192, 100), body(&mut sim, 192, 180));
@@ -299,6 +303,7 @@ fn a_lowered_ceiling_squeezes_and_gibs() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn monsters_telefrag_only_on_map30() {
     let mut sim = sim(0, 128);
     let (a, b) = (body(&mut sim, 64, 128), body(&mut sim, 192, 128));
@@ -311,6 +316,7 @@ fn monsters_telefrag_only_on_map30() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn the_blockmap_walk_is_newest_first_and_survives_removal() {
     let mut sim = sim(0, 128);
     // Three bodies in cell (0, 1) (x -8..120, y 120..248).
@@ -327,6 +333,7 @@ fn the_blockmap_walk_is_newest_first_and_survives_removal() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_shot_at_a_wall_puffs_four_units_short_of_it() {
     // From (64, 100) facing west, 2048 units: the trace's end is 2048 *
     // finecosine[4096] = 2048 * -65535 east and 2048 * finesine[4096] =
@@ -345,6 +352,7 @@ fn a_shot_at_a_wall_puffs_four_units_short_of_it() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn using_a_plain_wall_says_oof_and_an_open_line_does_not() {
     let mut sim = sim(0, 128);
     let mo = body(&mut sim, 40, 100);
@@ -371,6 +379,7 @@ fn using_a_plain_wall_says_oof_and_an_open_line_does_not() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn the_overruns_write_where_chocolate_writes() {
     let mut sim = sim(0, 128);
     // The 9th special line overwrites tmbbox[BOXTOP] with line 5's
@@ -397,7 +406,7 @@ mod no_panics {
     fn map01() -> &'static Sim {
         static SIM: OnceLock<Sim> = OnceLock::new();
         SIM.get_or_init(|| {
-            let wad = Wad::open(Path::new("/usr/share/games/doom/freedoom2.wad")).expect("freedoom2.wad");
+            let wad = crate::sim::test_wad("freedoom2.wad");
             let rules = Rules {
                 skill: 3,
                 version: GameVersion::Final,
@@ -419,6 +428,7 @@ mod no_panics {
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(96))]
         #[test]
+        #[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
         fn anything_anywhere(
             who in 0usize..1000,
             other in 0usize..1000,
@@ -466,6 +476,7 @@ mod no_panics {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_spawn_spot_queues_the_corpse_and_puts_fog_ahead_of_it() {
     use crate::wad::level::WadThing;
     let mut sim = sim(0, 128);
@@ -494,6 +505,7 @@ fn a_spawn_spot_queues_the_corpse_and_puts_fog_ahead_of_it() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_charging_lost_soul_hits_for_1d8_times_3_and_stops() {
     let mut sim = sim(0, 128);
     let victim = body(&mut sim, 100, 100);
@@ -514,6 +526,7 @@ fn a_charging_lost_soul_hits_for_1d8_times_3_and_stops() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn an_imp_s_fireball_spares_imps_but_burns_others() {
     let mut sim = sim(0, 128);
     let imp_kind = sim.kind_of(mt::TROOP);

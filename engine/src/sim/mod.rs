@@ -340,3 +340,14 @@ impl Sim {
         self.gametic += 1;
     }
 }
+
+/// Where a Freedoom IWAD is for the unit tests (`SIGHTLINE_DOOM_DIR`, else
+/// Debian's directory); tests that need one are ignored without it
+/// (`engine/build.rs`).
+#[cfg(test)]
+pub(crate) fn test_wad(name: &str) -> crate::wad::Wad {
+    let dir = std::env::var_os("SIGHTLINE_DOOM_DIR")
+        .map_or_else(|| std::path::PathBuf::from("/usr/share/games/doom"), std::path::PathBuf::from);
+    let path = dir.join(name);
+    crate::wad::Wad::open(&path).unwrap_or_else(|e| panic!("{} (apt-get install freedoom): {e}", path.display()))
+}

@@ -8,7 +8,6 @@
 //! table's value, not 65536) = 102398 a tic, friction keeps
 //! `FixedMul(m, 0xe800)`, gravity adds one unit a tic after a first two.
 
-use std::path::Path;
 
 use crate::actors::ActorTable;
 use crate::fixed::Fixed;
@@ -19,11 +18,10 @@ use crate::sim::movement::{mobj_thinker, FRICTION, STOPSPEED};
 use crate::sim::setup::{Players, VIEWHEIGHT};
 use crate::sim::weapons::{WEAPONBOTTOM, WEAPONTOP};
 use crate::sim::{mobj::mf, Compat, GameMode, GameVersion, MobjId, PlayerState, Rules, Sim, MAXPLAYERS};
-use crate::wad::Wad;
 
 fn game() -> Sim {
     let wad =
-        Wad::open(Path::new("/usr/share/games/doom/freedoom2.wad")).expect("freedoom2.wad (apt-get install freedoom)");
+        crate::sim::test_wad("freedoom2.wad");
     let rules = Rules {
         skill: 2,
         version: GameVersion::Doom19,
@@ -66,6 +64,7 @@ fn u(n: i32) -> Fixed {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn running_east_builds_momentum_less_friction() {
     let mut sim = game();
     let id = player_body(&sim);
@@ -83,6 +82,7 @@ fn running_east_builds_momentum_less_friction() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_player_coasts_until_below_stopspeed_then_stands() {
     let mut sim = game();
     let id = player_body(&sim);
@@ -107,6 +107,7 @@ fn a_player_coasts_until_below_stopspeed_then_stands() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn the_view_bobs_by_the_speed_and_leveltime() {
     let mut sim = game();
     let id = player_body(&sim);
@@ -120,6 +121,7 @@ fn the_view_bobs_by_the_speed_and_leveltime() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn the_pistol_comes_up_six_units_a_tic_then_is_ready() {
     let mut sim = game();
     let pistol = sim.info.weapons[1].clone().expect("the pistol");
@@ -140,6 +142,7 @@ fn the_pistol_comes_up_six_units_a_tic_then_is_ready() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn the_pistol_fires_on_its_second_attack_frame() {
     let mut sim = game();
     let id = player_body(&sim);
@@ -167,6 +170,7 @@ fn the_pistol_fires_on_its_second_attack_frame() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_weapon_change_is_made_pending_for_the_sprite_to_carry_out() {
     let mut sim = game();
     // BT_CHANGE with weapon 0 (the fist).
@@ -179,6 +183,7 @@ fn a_weapon_change_is_made_pending_for_the_sprite_to_carry_out() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_body_in_the_air_falls_by_gravity_and_lands() {
     let mut sim = game();
     let clip = clip_kind(&sim);
@@ -195,6 +200,7 @@ fn a_body_in_the_air_falls_by_gravity_and_lands() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_sliding_item_loses_friction_each_tic_until_it_stops() {
     let mut sim = game();
     let clip = clip_kind(&sim);
@@ -212,6 +218,7 @@ fn a_sliding_item_loses_friction_each_tic_until_it_stops() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn green_armor_takes_a_third_of_the_damage() {
     let mut sim = game();
     let id = player_body(&sim);
@@ -228,6 +235,7 @@ fn green_armor_takes_a_third_of_the_damage() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_hit_pushes_the_body_away_from_what_hit_it() {
     let mut sim = game();
     let id = player_body(&sim);
@@ -240,6 +248,7 @@ fn a_hit_pushes_the_body_away_from_what_hit_it() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_killing_blow_lays_the_player_down() {
     let mut sim = game();
     let id = player_body(&sim);
@@ -259,6 +268,7 @@ fn a_killing_blow_lays_the_player_down() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_clip_gives_ten_bullets_and_a_dropped_one_five() {
     let mut sim = game();
     let id = player_body(&sim);
@@ -277,6 +287,7 @@ fn a_clip_gives_ten_bullets_and_a_dropped_one_five() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn ammo_found_with_none_left_brings_out_a_gun() {
     let sim = game();
     let mut p = sim.player(0).expect("player").clone();
@@ -301,6 +312,7 @@ fn ammo_found_with_none_left_brings_out_a_gun() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_charging_skull_bounces_off_the_floor_only_from_the_ultimate_doom_on() {
     for (version, momz) in [(GameVersion::Doom19, 0), (GameVersion::Ultimate, 4)] {
         let mut sim = game();
@@ -320,6 +332,7 @@ fn a_charging_skull_bounces_off_the_floor_only_from_the_ultimate_doom_on() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_rocket_with_nothing_to_aim_at_flies_level_and_straight() {
     let mut sim = game();
     let id = player_body(&sim);
@@ -347,6 +360,7 @@ fn a_rocket_with_nothing_to_aim_at_flies_level_and_straight() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_weapon_change_lowers_the_pistol_and_raises_the_fist() {
     let mut sim = game();
     for _ in 0..15 {
@@ -369,6 +383,7 @@ fn a_weapon_change_lowers_the_pistol_and_raises_the_fist() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_dead_player_sinks_and_turns_to_the_killer_five_degrees_a_tic() {
     let mut sim = game();
     let id = player_body(&sim);

@@ -4,7 +4,6 @@
 //! the specials read only the sectors' line lists). One blockmap cell with
 //! no lines, one subsector; no bodies, so `P_ChangeSector` finds nothing.
 
-use std::path::Path;
 
 use crate::actors::ActorTable;
 use crate::fixed::{Fixed, RNDTABLE};
@@ -17,7 +16,6 @@ use crate::sim::setup::Players;
 use crate::sim::specials::{self, find_next_highest_floor};
 use crate::sim::think::{run_thinkers, Status, ThinkerKind};
 use crate::sim::{lights, Compat, GameMode, GameVersion, Rules, Sim};
-use crate::wad::Wad;
 
 fn u(n: i32) -> Fixed {
     Fixed::from_int(n)
@@ -95,8 +93,7 @@ fn corridor(sectors: &[(i32, i32, i16)]) -> Level {
 /// A game whose tables come from Freedoom 2's MAP01, on `level`, with no
 /// bodies or thinkers and `P_Random` at its start.
 fn sim(level: Level) -> Sim {
-    let path = Path::new("/usr/share/games/doom/freedoom2.wad");
-    let wad = Wad::open(path).expect("freedoom2.wad (apt-get install freedoom)");
+    let wad = crate::sim::test_wad("freedoom2.wad");
     let rules = Rules {
         skill: 2,
         version: GameVersion::Doom19,
@@ -132,6 +129,7 @@ fn r(i: usize) -> i32 {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_broken_light_draws_its_waits_from_p_random() {
     // Sector 0 at 200 next to a 100: flashes between the two.
     let mut sim = sim(corridor(&[(0, 128, 200), (0, 128, 100)]));
@@ -155,6 +153,7 @@ fn a_broken_light_draws_its_waits_from_p_random() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_fire_flicker_drops_by_a_random_16s_every_fourth_tic() {
     let mut sim = sim(corridor(&[(0, 128, 192), (0, 128, 96)]));
     lights::spawn_fire_flicker(&mut sim, 0);
@@ -169,6 +168,7 @@ fn a_fire_flicker_drops_by_a_random_16s_every_fourth_tic() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_glow_turns_one_step_past_the_darkest_neighbour() {
     let mut sim = sim(corridor(&[(0, 128, 160), (0, 128, 100)]));
     lights::spawn_glowing_light(&mut sim, 0);
@@ -183,6 +183,7 @@ fn a_glow_turns_one_step_past_the_darkest_neighbour() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn strobes_in_sector_order_draw_one_p_random_each_unless_in_sync() {
     let mut sim = sim(corridor(&[(0, 128, 200), (0, 128, 100), (0, 128, 200)]));
     sim.level.sectors[0].special = 2;
@@ -202,6 +203,7 @@ fn strobes_in_sector_order_draw_one_p_random_each_unless_in_sync() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_used_door_opens_waits_150_tics_and_closes() {
     // Sector 1 is the shut door behind line 0, between rooms 128 high.
     let mut sim = sim(corridor(&[(0, 128, 160), (0, 0, 160), (0, 128, 160)]));
@@ -235,6 +237,7 @@ fn a_used_door_opens_waits_150_tics_and_closes() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_lift_goes_down_waits_three_seconds_and_comes_back() {
     let mut sim = sim(corridor(&[(0, 128, 160), (64, 128, 160), (16, 128, 160)]));
     sim.level.sectors[1].tag = 5;
@@ -253,6 +256,7 @@ fn a_lift_goes_down_waits_three_seconds_and_comes_back() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_perpetual_lift_starts_by_p_random_and_stops_in_stasis() {
     let mut sim = sim(corridor(&[(0, 128, 160), (32, 128, 160), (64, 128, 160)]));
     sim.level.sectors[1].tag = 3;
@@ -274,6 +278,7 @@ fn a_perpetual_lift_starts_by_p_random_and_stops_in_stasis() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn stairs_rise_eight_a_step_along_the_same_flat() {
     let mut sim = sim(corridor(&[(0, 256, 160), (0, 256, 160), (0, 256, 160), (0, 256, 160)]));
     for s in 0..3 {
@@ -301,6 +306,7 @@ fn stairs_rise_eight_a_step_along_the_same_flat() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_crusher_stops_on_command_restarts_and_turns_up_8_above_the_floor() {
     let mut sim = sim(corridor(&[(0, 128, 160), (0, 72, 160)]));
     sim.level.sectors[1].tag = 9;
@@ -323,6 +329,7 @@ fn a_crusher_stops_on_command_restarts_and_turns_up_8_above_the_floor() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_floor_lowers_to_the_highest_neighbour_and_a_w1_line_is_used_up() {
     let mut sim = sim(corridor(&[(0, 128, 160), (40, 128, 160), (24, 128, 160)]));
     sim.level.sectors[1].tag = 2;
@@ -344,6 +351,7 @@ fn a_floor_lowers_to_the_highest_neighbour_and_a_w1_line_is_used_up() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn next_highest_floor_keeps_chocolates_overflow_emulation() {
     // Sector 0 (floor 0) has 23 neighbours across 23 lines: 21 at 100, a
     // 22nd at 200 (which, in vanilla's overrun, becomes the bar later ones
@@ -383,6 +391,7 @@ fn next_highest_floor_keeps_chocolates_overflow_emulation() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_close_in_30_door_from_a_sector_special_closes_after_30_seconds() {
     let mut sim = sim(corridor(&[(0, 128, 160), (0, 64, 160)]));
     sim.level.sectors[1].special = 10;
@@ -397,6 +406,7 @@ fn a_close_in_30_door_from_a_sector_special_closes_after_30_seconds() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn lower_and_change_takes_the_flat_of_the_sector_at_its_destination() {
     let mut sim = sim(corridor(&[(8, 128, 160), (64, 128, 160), (32, 128, 160)]));
     sim.level.sectors[0].floorpic = NameId(2);
@@ -423,6 +433,7 @@ fn player(sim: &mut Sim) -> crate::sim::MobjId {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_button_shows_its_other_face_and_pops_back_after_a_second() {
     let mut sim = sim(corridor(&[(0, 128, 160), (64, 128, 160), (0, 128, 160)]));
     sim.level.names.push("SW1BRCOM".into());
@@ -449,6 +460,7 @@ fn a_button_shows_its_other_face_and_pops_back_after_a_second() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_secret_sector_counts_once_and_a_suit_leaks_when_p_random_is_under_5() {
     let mut sim = sim(corridor(&[(0, 128, 160), (0, 128, 160)]));
     let mo = player(&mut sim);
@@ -471,6 +483,7 @@ fn a_secret_sector_counts_once_and_a_suit_leaks_when_p_random_is_under_5() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_teleport_puts_the_player_on_the_destination_with_two_fogs() {
     let mut sim = sim(corridor(&[(0, 128, 160), (16, 128, 160)]));
     sim.level.sectors[0].tag = 6;
@@ -499,6 +512,7 @@ fn a_teleport_puts_the_player_on_the_destination_with_two_fogs() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn raise_to_texture_rises_by_the_shortest_lower_texture_around() {
     let mut sim = sim(corridor(&[(0, 128, 160), (0, 128, 160), (0, 128, 160)]));
     sim.level.names.extend(["TEX1".to_string(), "TEX2".to_string()]);
@@ -514,6 +528,7 @@ fn raise_to_texture_rises_by_the_shortest_lower_texture_around() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn texture_heights_read_from_a_texture_lump() {
     let mut lump = vec![];
     lump.extend(2i32.to_le_bytes());
@@ -533,6 +548,7 @@ fn texture_heights_read_from_a_texture_lump() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn the_switch_list_grows_with_the_game_mode() {
     use crate::sim::switches::switch_list;
     assert_eq!(switch_list(GameMode::Shareware).len(), 2 * 19);

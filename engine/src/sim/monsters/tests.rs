@@ -4,7 +4,6 @@
 //! The draws come from Doom's table from index 0: 8, 109, 220, 222, 241,
 //! 149, 107, 75, ...
 
-use std::path::PathBuf;
 use std::sync::Arc;
 
 use crate::actors::ActorTable;
@@ -13,7 +12,6 @@ use crate::sim::info::mt;
 use crate::sim::mobj::mf;
 use crate::sim::setup::Players;
 use crate::sim::{Compat, GameMode, GameVersion, MobjId, Rules, Sim};
-use crate::wad::Wad;
 
 fn u(n: i32) -> Fixed {
     Fixed::from_int(n)
@@ -21,10 +19,7 @@ fn u(n: i32) -> Fixed {
 
 /// MAP01 of freedoom2 with one player and no monsters, `P_Random` at 0.
 fn sim() -> Sim {
-    let dir =
-        std::env::var_os("SIGHTLINE_DOOM_DIR").map_or_else(|| PathBuf::from("/usr/share/games/doom"), PathBuf::from);
-    let path = dir.join("freedoom2.wad");
-    let wad = Wad::open(&path).unwrap_or_else(|e| panic!("the monster tests need {}: {e}", path.display()));
+    let wad = crate::sim::test_wad("freedoom2.wad");
     let rules = Rules {
         skill: 3,
         version: GameVersion::Doom19,
@@ -48,6 +43,7 @@ fn spawn(sim: &mut Sim, mt: usize, x: i32, y: i32) -> MobjId {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_lost_soul_charges_at_twenty_units_towards_the_target_s_middle() {
     let mut sim = sim();
     let skull = spawn(&mut sim, mt::SKULL, 0, 0);
@@ -68,6 +64,7 @@ fn a_lost_soul_charges_at_twenty_units_towards_the_target_s_middle() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn facing_a_shadow_is_off_by_p_subrandom_shifted_21() {
     let mut sim = sim();
     let imp = spawn(&mut sim, mt::TROOP, 0, 0);
@@ -84,6 +81,7 @@ fn facing_a_shadow_is_off_by_p_subrandom_shifted_21() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_chaser_turns_45_degrees_a_tic_towards_its_direction() {
     let mut sim = sim();
     let imp = spawn(&mut sim, mt::TROOP, 0, 0);
@@ -110,6 +108,7 @@ fn a_chaser_turns_45_degrees_a_tic_towards_its_direction() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn looking_starts_from_lastlook_and_gives_up_at_the_stop() {
     let mut sim = sim();
     let imp = spawn(&mut sim, mt::TROOP, 0, 0);
@@ -128,6 +127,7 @@ fn looking_starts_from_lastlook_and_gives_up_at_the_stop() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_homing_missile_turns_by_traceangle_and_climbs_an_eighth_on_every_fourth_tic() {
     let mut sim = sim();
     let tracer = spawn(&mut sim, mt::TRACER, 0, 0);
@@ -151,6 +151,7 @@ fn a_homing_missile_turns_by_traceangle_and_climbs_an_eighth_on_every_fourth_tic
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn noise_floods_open_lines_and_stops_at_the_second_sound_block() {
     use crate::sim::level::ml;
     let mut sim = sim();
@@ -197,6 +198,7 @@ fn noise_floods_open_lines_and_stops_at_the_second_sound_block() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_pain_elemental_spits_no_skull_when_more_than_twenty_are_about() {
     let mut sim = sim();
     let pain = spawn(&mut sim, mt::PAIN, 0, 0);
@@ -217,6 +219,7 @@ fn a_pain_elemental_spits_no_skull_when_more_than_twenty_are_about() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn the_brain_s_explosion_draws_five_randoms_around_its_spawn() {
     let mut sim = sim();
     let brain = spawn(&mut sim, mt::BOSSBRAIN, 0, 0);
@@ -249,6 +252,7 @@ fn room_imp(sim: &mut Sim, x: i32, y: i32) -> MobjId {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_chaser_takes_the_diagonal_when_it_is_clear() {
     let mut sim = sim();
     let imp = room_imp(&mut sim, -180, -220);
@@ -267,6 +271,7 @@ fn a_chaser_takes_the_diagonal_when_it_is_clear() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_chaser_against_a_wall_tries_the_longer_axis_first() {
     let mut sim = sim();
     // Against the west wall (x -224, radius 20): the diagonal is blocked
@@ -287,6 +292,7 @@ fn a_chaser_against_a_wall_tries_the_longer_axis_first() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn the_missile_range_check_draws_against_the_distance() {
     let mut sim = sim();
     let imp = room_imp(&mut sim, -100, -200);
@@ -315,6 +321,7 @@ fn call(name: &str) -> crate::actors::ActionCall {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn an_arch_vile_raises_a_corpse_touching_its_next_step() {
     let mut sim = sim();
     let vile = room_imp(&mut sim, -150, -200);
@@ -347,6 +354,7 @@ fn an_arch_vile_raises_a_corpse_touching_its_next_step() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_boss_death_ends_only_its_own_episode_s_map() {
     let mut sim = sim();
     sim.rules.mode = GameMode::Retail;
@@ -384,6 +392,7 @@ fn a_boss_death_ends_only_its_own_episode_s_map() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn the_brain_spits_cubes_at_its_spots_in_turn_every_other_time_on_easy() {
     let mut sim = sim();
     let brain = room_imp(&mut sim, -150, -240);
@@ -415,6 +424,7 @@ fn the_brain_spits_cubes_at_its_spots_in_turn_every_other_time_on_easy() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_cube_at_its_spot_becomes_fire_and_a_monster_by_p_random() {
     let mut sim = sim();
     let spot = spawn(&mut sim, mt::BOSSTARGET, -150, -200);
@@ -443,6 +453,7 @@ fn a_cube_at_its_spot_becomes_fire_and_a_monster_by_p_random() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_mancubus_spreads_its_fireballs_by_fatspread() {
     use crate::fixed::finesine;
     let mut sim = sim();
@@ -473,6 +484,7 @@ fn a_mancubus_spreads_its_fireballs_by_fatspread() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_dying_pain_elemental_spits_three_skulls_one_through_a_wall() {
     let mut sim = sim();
     let pain = room_imp(&mut sim, -150, -200);
@@ -500,6 +512,7 @@ fn a_dying_pain_elemental_spits_three_skulls_one_through_a_wall() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_pain_elemental_s_skull_starts_74_and_a_half_units_out() {
     let mut sim = sim();
     let pain = room_imp(&mut sim, -150, -200);
@@ -520,6 +533,7 @@ fn a_pain_elemental_s_skull_starts_74_and_a_half_units_out() {
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn an_arch_vile_s_fire_stands_in_front_of_the_target_then_blasts_it_up() {
     let mut sim = sim();
     let vile = room_imp(&mut sim, -150, -200);

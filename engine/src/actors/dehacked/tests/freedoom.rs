@@ -1,31 +1,15 @@
 //! Freedoom's own patches: both IWADs (Debian's `freedoom` package) carry a
-//! DEHACKED lump. Where the WADs are missing this test says so and passes,
-//! unless SIGHTLINE_REQUIRE_FREEDOOM is set (CI sets it), when it fails:
-//! the convention of `tests/freedoom_wads.rs`, whose build script cannot
-//! reach a unit test of the engine.
-
-use std::path::PathBuf;
+//! DEHACKED lump. Where the WADs are missing this test is ignored with the
+//! reason (`engine/build.rs`), and CI, which requires them, fails instead.
 
 use super::*;
-use crate::wad::Wad;
 
-/// The IWAD, or `None` (with the reason printed) where it is missing and
-/// not required.
-fn wad(name: &str) -> Option<Wad> {
-    let dir =
-        std::env::var_os("SIGHTLINE_DOOM_DIR").map_or_else(|| PathBuf::from("/usr/share/games/doom"), PathBuf::from);
-    let path = dir.join(name);
-    if !path.is_file() {
-        let required = std::env::var_os("SIGHTLINE_REQUIRE_FREEDOOM").is_some_and(|v| !v.is_empty() && v != "0");
-        let how = "apt-get install freedoom, or set SIGHTLINE_DOOM_DIR";
-        assert!(!required, "missing fixture {} ({how}); SIGHTLINE_REQUIRE_FREEDOOM is set", path.display());
-        eprintln!("skipped: {} is missing ({how}; SIGHTLINE_REQUIRE_FREEDOOM=1 fails instead)", path.display());
-        return None;
-    }
-    Some(Wad::open(&path).unwrap_or_else(|e| panic!("{e}")))
+fn wad(name: &str) -> Option<crate::wad::Wad> {
+    Some(crate::sim::test_wad(name))
 }
 
 #[test]
+#[cfg_attr(freedoom_missing, ignore = "needs Freedoom's IWADs: apt-get install freedoom")]
 fn freedoom_s_dehacked_lumps_apply() {
     for name in ["freedoom1.wad", "freedoom2.wad"] {
         let Some(wad) = wad(name) else { continue };
