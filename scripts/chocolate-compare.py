@@ -27,7 +27,7 @@ and its one-tic run). Per demo the table gives the tics, the medians of the
 rounds' figures and the ratio of those medians; the total row is each
 program's CPU time over its frames summed over the eight demos, and its
 ratio is the median of the rounds' total ratios (every round's is listed).
-Takes about a minute a round.
+Takes about 85 s a round (Chocolate sleeps through a melt in each of its 16 runs).
 
 --tour keeps the older comparison instead: Chocolate's timedemo of
 freedoom1.wad's DEMO1 (E1M4) against `sightline bench tour` of the imported

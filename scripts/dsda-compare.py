@@ -35,7 +35,7 @@ Each round plays, demo by demo, dsda-doom then Sightline. Per demo the
 table gives the tics, the medians of the rounds' figures and the ratio of
 those medians; the total row is each program's wall time over its frames
 summed over the eight demos, and its ratio is the median of the rounds'
-total ratios (every round's is listed). Takes about three minutes a round
+total ratios (every round's is listed). Takes about three and a half minutes a round
 at 1920x1080.
 
 --tour keeps the older comparison instead: dsda-doom's timedemo of
