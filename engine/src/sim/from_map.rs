@@ -32,16 +32,15 @@ use std::sync::Arc;
 
 use glam::DVec2;
 
-use super::info::Info;
 use super::level::{
     add_to_box, clear_box, ml, Blockmap, Level, Line, NameId, Node, Sector, Seg, Side, SlopeType, Subsector, BOXBOTTOM,
     BOXLEFT, BOXRIGHT, BOXTOP, MAPBLOCKSHIFT, MAXRADIUS, NF_SUBSECTOR, NO_TEXTURE,
 };
 use super::setup::Players;
-use super::{collision, monsters, specials, GameMode, Player, Rules, Sim, MAXPLAYERS};
+use super::{Rules, Sim};
 use crate::actors::ActorTable;
 use crate::bsp::{Child, CompiledMap, LineSide};
-use crate::fixed::{Angle, DoomRandom, Fixed, FRACBITS, FRACUNIT};
+use crate::fixed::{Angle, Fixed, FRACBITS, FRACUNIT};
 use crate::geom::Aabb;
 use crate::map::source::LineSpecialSource;
 use crate::map::special::Scroll;
@@ -70,9 +69,6 @@ const MTF_AMBUSH: u16 = 8;
 const MTF_NOTSINGLE: u16 = 16;
 const MTF_NOTDM: u16 = 32;
 const MTF_NOTCOOP: u16 = 64;
-/// The editor numbers of Doom II's monsters, where vanilla's `P_LoadThings`
-/// stops in a game that is not Doom II (as `setup.rs`).
-const DOOM2_ONLY: [u16; 10] = [68, 64, 88, 89, 69, 67, 71, 65, 66, 84];
 
 #[derive(Debug, thiserror::Error)]
 pub enum FromMapError {
@@ -813,62 +809,10 @@ fn group_lines(level: &mut Level) {
     }
 }
 
-/// A new game on `level`, as `Sim::new` (`setup.rs`) starts one after
-/// `Level::load`: the same fields, the things in the level's order, the
-/// players, the sector specials. Kept apart from `setup.rs` only until
-/// the two share one constructor that takes a loaded level.
+/// A game on a RON map's level ([`Sim::on_level`]; a RON map has no WAD
+/// texture heights, so raise-to-texture floors stay put).
 pub fn sim_on_map(level: Level, rules: Rules, players: Players, table: Arc<ActorTable>) -> Sim {
-    let info = Arc::new(Info::new(table, rules.fast_monsters()));
-    let cells = (level.blockmap.width * level.blockmap.height) as usize;
-    let lines = level.lines.len();
-    let mut sim = Sim {
-        info,
-        rules,
-        mobjs: Vec::new(),
-        thinkers: Vec::new(),
-        players: Default::default(),
-        console: players.console,
-        starts: Default::default(),
-        deathmatch_starts: Vec::new(),
-        rng: DoomRandom::new(),
-        gametic: 0,
-        leveltime: 0,
-        blocklinks: vec![Vec::new(); cells],
-        validcount: 0,
-        line_valid: vec![0; lines],
-        tm: collision::MapCheck::default(),
-        spec: specials::SpecialState::default(),
-        brain: monsters::BrainState::default(),
-        item_respawn: Vec::new(),
-        bodyque: Vec::new(),
-        total_kills: 0,
-        total_items: 0,
-        total_secrets: 0,
-        exit: None,
-        events: Vec::new(),
-        level,
-    };
-    for (n, &playing) in players.in_game.iter().enumerate() {
-        if playing {
-            sim.players[n] = Some(Player::reborn(&sim.info, [0; MAXPLAYERS], (0, 0, 0)));
-        }
-    }
-    let things = sim.level.things.clone();
-    for thing in &things {
-        if sim.rules.mode != GameMode::Commercial && DOOM2_ONLY.contains(&thing.kind) {
-            break;
-        }
-        sim.spawn_map_thing(thing);
-    }
-    if sim.rules.deathmatch != 0 {
-        for n in 0..MAXPLAYERS {
-            if sim.players[n].is_some() {
-                sim.deathmatch_spawn_player(n);
-            }
-        }
-    }
-    specials::spawn_specials(&mut sim);
-    sim
+    Sim::on_level(level, rules, players, table, |_| {})
 }
 
 /// A point in 16.16 from map units, for the tests and tools that compare

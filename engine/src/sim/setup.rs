@@ -42,6 +42,20 @@ impl Sim {
         table: Arc<ActorTable>,
     ) -> Result<Sim, LevelError> {
         let level = Level::load(wad, name)?;
+        Ok(Sim::on_level(level, rules, players, table, |sim| specials::set_texture_heights(sim, wad)))
+    }
+
+    /// A new game on a loaded `level` (a WAD's, or a RON map's through
+    /// `from_map`): the players made, the things spawned, then the sector
+    /// specials started. `before_specials` runs just before them (the WAD's
+    /// texture heights are read there).
+    pub fn on_level(
+        level: Level,
+        rules: Rules,
+        players: Players,
+        table: Arc<ActorTable>,
+        before_specials: impl FnOnce(&mut Sim),
+    ) -> Sim {
         let info = Arc::new(Info::new(table, rules.fast_monsters()));
         let cells = (level.blockmap.width * level.blockmap.height) as usize;
         let lines = level.lines.len();
@@ -86,9 +100,9 @@ impl Sim {
                 }
             }
         }
-        specials::set_texture_heights(&mut sim, wad);
+        before_specials(&mut sim);
         specials::spawn_specials(&mut sim);
-        Ok(sim)
+        sim
     }
 
     /// `P_LoadThings`: every map thing in the WAD's order. An executable
