@@ -14,7 +14,7 @@ use crate::level::open_compiled;
 use crate::map::parse_map;
 use crate::play::lmp::Ticcmd;
 use crate::sim::mobj::point_in_subsector;
-use crate::sim::{Compat, GameVersion};
+use crate::sim::{Compat, GameMode, GameVersion, MAXPLAYERS};
 
 fn maps_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../maps")
