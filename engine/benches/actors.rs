@@ -17,6 +17,9 @@
 //! - **freedoom**: E1M1 and the largest map of the two IWADs (MAP12 of
 //!   freedoom2.wad by lines), skill 4, the player standing at the start,
 //!   too tough to die: no monsters, dormant, and all awake.
+//! - **before and after** (each map above): the f64 game (`Game`) against
+//!   the simulation with Doom's arithmetic (`sim::Sim`, the horde through
+//!   `sim::from_map`), dormant and awake, interleaved within each round.
 //!
 //! Run: `cargo bench -p sightline-engine --bench actors` (both), or with
 //! `-- horde` or `-- freedoom` for one; `--test` for one short round.
@@ -37,6 +40,7 @@ use sightline::level::Level;
 use sightline::map::load::parse_map;
 use sightline::materials::Materials;
 use sightline::play::{Game, GameOptions, TickInput};
+use sightline::sim::{self, from_map, Compat, GameMode, Rules, Sim};
 
 /// Ticks timed per round.
 const WINDOW: usize = 105;
@@ -58,12 +62,31 @@ fn main() {
         };
         study(
             "a hall of 10,000 zombiemen, the player in a room off it behind a shut door",
-            horde(false),
+            &horde(false),
             &SETUPS,
             rounds,
         );
         let fighting = [Setup::NoMonsters, Setup::Awake];
-        study("the same hall with the player in it, 64 units east of the horde", horde(true), &fighting, rounds);
+        study("the same hall with the player in it, 64 units east of the horde", &horde(true), &fighting, rounds);
+        for inside in [false, true] {
+            let map = parse_map(&horde_ron(inside), "horde").unwrap_or_else(|e| panic!("{e}"));
+            let compiled = build(&map, &BuildOptions::default()).unwrap_or_else(|e| panic!("horde: {e}"));
+            let doom = from_map::level_from_map(&compiled, ActorTable::active()).unwrap_or_else(|e| panic!("{e}"));
+            let place = if inside { "the player in the hall" } else { "the player behind the shut door" };
+            versus(
+                &format!("the horde hall, {place}"),
+                &|| Level::with_builtin_textures(compiled.clone()).unwrap_or_else(|e| panic!("{e}")),
+                || {
+                    sim::from_map::sim_on_map(
+                        doom.clone(),
+                        sim_rules(GameMode::Commercial),
+                        solo(),
+                        ActorTable::active().clone(),
+                    )
+                },
+                rounds,
+            );
+        }
     }
     if wanted.wants("freedoom") {
         for (file, name) in [("freedoom1.wad", "E1M1"), ("freedoom2.wad", "MAP12")] {
@@ -78,7 +101,13 @@ fn main() {
                     Materials::resolve_in(&compiled.map, &library, &label).unwrap_or_else(|e| panic!("{e}"));
                 Level::new(compiled.clone(), materials)
             };
-            study(&format!("{file}:{name}"), level, &SETUPS, rounds);
+            study(&format!("{file}:{name}"), &level, &SETUPS, rounds);
+            let doom_wad = sightline::wad::Wad::open(&path).unwrap_or_else(|e| panic!("{e}"));
+            let mode = sim::demo::game_mode(&doom_wad);
+            let table = sim::demo::table_for(&doom_wad, ActorTable::active()).unwrap_or_else(|e| panic!("{e}"));
+            let make =
+                || Sim::new(&doom_wad, name, sim_rules(mode), solo(), table.clone()).unwrap_or_else(|e| panic!("{e}"));
+            versus(&format!("{file}:{name}"), &level, make, rounds);
         }
     }
 }
@@ -114,7 +143,7 @@ fn game(mut level: Level, setup: Setup) -> Game {
 
 /// Times the three setups on `level`, `rounds` times each in rotating
 /// order, and prints a markdown table.
-fn study(what: &str, level: impl Fn() -> Level, setups: &[Setup], rounds: usize) {
+fn study(what: &str, level: &impl Fn() -> Level, setups: &[Setup], rounds: usize) {
     let mut medians: Vec<Vec<f64>> = vec![Vec::new(); setups.len()];
     let mut census = vec![(0usize, 0usize, 0usize); setups.len()];
     let still = TickInput::default();
@@ -250,4 +279,91 @@ fn horde_ron(inside: bool) -> String {
     }
     text.push_str("    ],\n)\n");
     text
+}
+
+/// Doom's rules at skill 4 (Doom's number 3), as a demo of `mode` plays.
+fn sim_rules(mode: GameMode) -> Rules {
+    Rules {
+        skill: 3,
+        version: sim::demo::game_version(mode),
+        mode,
+        compat: Compat::Vanilla,
+        deathmatch: 0,
+        respawn: false,
+        fast: false,
+        no_monsters: false,
+        netgame: false,
+    }
+}
+
+fn solo() -> sim::setup::Players {
+    sim::setup::Players { in_game: [true, false, false, false], console: 0 }
+}
+
+/// `sim` with every monster after the player, as `Game::wake_monsters`
+/// wakes the f64 game's (each takes the player as its target and enters
+/// its See state, as A_Look does on sight), and the player in god mode.
+fn wake(sim: &mut Sim) {
+    let Some(player) = sim.player(0).map(|p| p.mo) else { return };
+    if let Some(p) = sim.players[0].as_mut() {
+        p.cheats |= 2; // CF_GODMODE
+    }
+    let monsters: Vec<_> = sim.live_mobjs().filter(|&id| sim.mo(id).has(sim::mobj::mf::COUNTKILL)).collect();
+    for id in monsters {
+        sim.mo_mut(id).target = Some(player);
+        let see = sim.info.things[sim.mo(id).kind].seestate;
+        sim.set_mobj_state(id, see);
+    }
+}
+
+/// The same map's ticks in the f64 game (`Game`, today's) and in the
+/// simulation with Doom's arithmetic (`Sim`), monsters dormant and awake,
+/// interleaved within each round; the median of the per-round medians.
+fn versus(what: &str, level: &impl Fn() -> Level, make: impl Fn() -> Sim, rounds: usize) {
+    let names = ["f64 game, dormant", "f64 game, awake", "Doom arithmetic, dormant", "Doom arithmetic, awake"];
+    let mut medians: Vec<Vec<f64>> = vec![Vec::new(); names.len()];
+    let still = TickInput::default();
+    let idle = [Some(sightline::play::lmp::Ticcmd::default()), None, None, None];
+    for round in 0..rounds {
+        for k in 0..names.len() {
+            let which = (k + round) % names.len();
+            let mut times = Vec::with_capacity(WINDOW);
+            if which < 2 {
+                let mut g = game(level(), if which == 0 { Setup::Dormant } else { Setup::Awake });
+                for _ in 0..SETTLE {
+                    g.tick(&still);
+                }
+                for _ in 0..WINDOW {
+                    let start = Instant::now();
+                    g.tick(&still);
+                    times.push(start.elapsed().as_secs_f64() * 1e6);
+                }
+            } else {
+                let mut s = make();
+                if which == 3 {
+                    wake(&mut s);
+                }
+                for _ in 0..SETTLE {
+                    s.tick(&idle);
+                }
+                for _ in 0..WINDOW {
+                    let start = Instant::now();
+                    s.tick(&idle);
+                    times.push(start.elapsed().as_secs_f64() * 1e6);
+                }
+            }
+            medians[which].push(median(&mut times));
+        }
+    }
+    let m: Vec<f64> = medians.iter_mut().map(|v| median(v)).collect();
+    println!(
+        "\n## {what}, before and after: skill 4, {rounds} rounds of {WINDOW} ticks, median of the per-round medians\n"
+    );
+    println!("| game | µs per tick | per-round medians |");
+    println!("|---|---:|---|");
+    for (k, name) in names.iter().enumerate() {
+        let (lo, hi) = extent(&medians[k]);
+        println!("| {name} | {:.1} | {lo:.1}..{hi:.1} |", m[k]);
+    }
+    println!("\nDoom arithmetic / f64: dormant {:.2}x, awake {:.2}x", m[2] / m[0], m[3] / m[1]);
 }
