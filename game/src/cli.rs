@@ -243,9 +243,14 @@ pub struct PlayArgs {
     #[arg(long, conflicts_with = "demo")]
     pub record: Option<PathBuf>,
     /// Play this demo's inputs instead of the keyboard and mouse; the view
-    /// stays on its last tick when it ends.
+    /// stays on its last tick when it ends. A Doom demo (`FILE.lmp` with
+    /// --iwad, or `WAD:DEMOn`) plays on the simulation with Doom's arithmetic.
     #[arg(long)]
     pub demo: Option<PathBuf>,
+    /// DeHackEd or BEX patches a Doom demo plays with (Doom's -deh),
+    /// applied in order after the IWAD's own DEHACKED lump.
+    #[arg(long, value_name = "FILE", requires = "demo")]
+    pub deh: Vec<PathBuf>,
     /// Let the autopilot play (watch it find its way to the exit); it
     /// goes on into the next map after each intermission.
     #[arg(long, conflicts_with_all = ["demo", "load"])]
@@ -309,6 +314,10 @@ pub struct ReplayArgs {
     /// PWADs a Doom demo plays on, over the IWAD (Doom's -file).
     #[arg(long, num_args = 1..)]
     pub file: Vec<PathBuf>,
+    /// DeHackEd or BEX patches a Doom demo plays with (Doom's -deh),
+    /// applied in order after the IWAD's own DEHACKED lump.
+    #[arg(long, value_name = "FILE")]
+    pub deh: Vec<PathBuf>,
     /// Compare every tic of a Doom demo with a reference dump (see
     /// tests/fixtures/demo-dumps/README.md); name the first tic that differs.
     #[arg(long)]

@@ -76,11 +76,11 @@ pub struct VanillaRun {
 
 impl VanillaRun {
     /// Opens `spec` on `iwad`; the map to show is returned beside it.
-    pub fn open(spec: &str, iwad: Option<&Path>) -> Result<(MapRef, VanillaRun)> {
+    pub fn open(spec: &str, iwad: Option<&Path>, deh: &[PathBuf]) -> Result<(MapRef, VanillaRun)> {
         let source = open_demo(spec, iwad, &[])?;
         let (map, _) = source.game()?;
         let wad = source.wad()?;
-        let table = sim::demo::table_for(&wad, ActorTable::active()).map_err(|e| anyhow!("{}: {e}", wad.path))?;
+        let table = sim::demo::table_with_patches(&wad, ActorTable::active(), deh).map_err(|e| anyhow!("{e}"))?;
         let game = sim::demo::start(&wad, &source.demo, table).map_err(|e| anyhow!("{spec}: {e}"))?;
         let opened = sightline::campaign::open(&map, &BuildOptions::default())?;
         let scene = sim::draw::Scene::new(opened.sector_map.unwrap_or_default());
@@ -106,7 +106,7 @@ pub fn run(args: &ReplayArgs) -> Result<()> {
     let source = open_demo(&spec, args.iwad.as_deref(), &args.file)?;
     let (map, _) = source.game()?;
     let wad = source.wad()?;
-    let table = sim::demo::table_for(&wad, ActorTable::active()).map_err(|e| anyhow!("{}: {e}", wad.path))?;
+    let table = sim::demo::table_with_patches(&wad, ActorTable::active(), &args.deh).map_err(|e| anyhow!("{e}"))?;
     let mut game =
         sim::demo::start_as(&wad, &source.demo, table, args.gameversion).map_err(|e| anyhow!("{spec}: {e}"))?;
     let reference = args.check_against.as_ref().map(|p| SyncDump::load(p)).transpose()?;

@@ -3,7 +3,10 @@
 //! Chocolate Doom chooses it, the IWAD's own DEHACKED applied, then every
 //! tic's commands; and the comparison with a reference dump, tic by tic.
 
+use std::path::PathBuf;
 use std::sync::Arc;
+
+use crate::actors::dehacked::Dehacked;
 
 use super::setup::Players;
 use super::{Compat, GameMode, GameVersion, Rules, Sim, MAXPLAYERS};
@@ -40,8 +43,30 @@ pub fn game_version(mode: GameMode) -> GameVersion {
 /// The actor table a game on `wad` plays with: `table` with the WAD's
 /// DEHACKED lumps applied, as Chocolate applies an IWAD's.
 pub fn table_for(wad: &Wad, table: &ActorTable) -> Result<Arc<ActorTable>, String> {
-    let (patched, _report) = table.with_wad_dehacked(wad).map_err(|e| e.to_string())?;
-    Ok(Arc::new(patched))
+    table_with_patches(wad, table, &[])
+}
+
+/// [`table_for`], then the DeHackEd or BEX files `patches` (a PWAD's
+/// `-deh`), in order, after the WAD's own lumps as Chocolate applies them;
+/// warnings are printed to standard error. An error names the file and line.
+pub fn table_with_patches(wad: &Wad, table: &ActorTable, patches: &[PathBuf]) -> Result<Arc<ActorTable>, String> {
+    let mut patched = Dehacked::new(table.clone());
+    patched.load_wad(wad).map_err(|e| e.to_string())?;
+    for path in patches {
+        let label = path.display().to_string();
+        let bytes = std::fs::read(path).map_err(|e| format!("{label}: cannot read: {e}"))?;
+        patched.load(&bytes, &label).map_err(|e| e.to_string())?;
+    }
+    let (table, report) = patched.finish();
+    // The IWAD's own warnings are Chocolate's business; a user's patch's
+    // are the user's.
+    let labels: Vec<String> = patches.iter().map(|p| p.display().to_string()).collect();
+    for warning in report.warnings.iter().map(ToString::to_string) {
+        if labels.iter().any(|l| warning.starts_with(l.as_str())) {
+            eprintln!("sightline: {warning}");
+        }
+    }
+    Ok(Arc::new(table))
 }
 
 /// A `--gameversion` name, as Chocolate Doom spells them: `1.9`,

@@ -43,7 +43,7 @@ const NO_DISPLAY_HINT: &str = "For frames without a window use `sightline captur
 pub fn run(args: &PlayArgs) -> Result<()> {
     let vanilla = match &args.demo {
         Some(path) if crate::replay_lmp::is_vanilla(&path.to_string_lossy()) => {
-            Some(crate::replay_lmp::VanillaRun::open(&path.to_string_lossy(), args.iwad.as_deref())?)
+            Some(crate::replay_lmp::VanillaRun::open(&path.to_string_lossy(), args.iwad.as_deref(), &args.deh)?)
         }
         _ => None,
     };
