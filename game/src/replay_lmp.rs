@@ -41,7 +41,6 @@ pub fn is_lmp_path(path: &Path) -> bool {
 /// Writes a recorded game: a Doom demo to a `.lmp` path (a WAD map's, its
 /// inputs already rounded as the file keeps them), else one of ours.
 pub fn save_recording(path: &Path, map: &MapRef, options: GameOptions, inputs: Vec<TickInput>) -> Result<()> {
-    let ticks = inputs.len();
     if is_lmp_path(path) {
         let name = match map {
             MapRef::Wad { map: Some(name), .. } => name.clone(),
@@ -60,7 +59,6 @@ pub fn save_recording(path: &Path, map: &MapRef, options: GameOptions, inputs: V
         };
         demo.save(path)?;
     }
-    println!("recorded {ticks} ticks to {}", path.display());
     Ok(())
 }
 

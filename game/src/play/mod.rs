@@ -119,7 +119,11 @@ pub fn run(args: &PlayArgs) -> Result<()> {
     // A window that never opened leaves nothing worth a demo file.
     let recording = session.take_recording().filter(|inputs| error.is_none() || !inputs.is_empty());
     let saved = match (&args.record, recording) {
-        (Some(path), Some(inputs)) => crate::replay_lmp::save_recording(path, &map, game_options, inputs),
+        (Some(path), Some(inputs)) => {
+            let ticks = inputs.len();
+            crate::replay_lmp::save_recording(path, &map, game_options, inputs)
+                .map(|()| println!("recorded {ticks} ticks to {}", path.display()))
+        }
         _ => Ok(()),
     };
     // What stopped the window matters more than the demo that could not be saved.
