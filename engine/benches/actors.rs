@@ -40,7 +40,7 @@ use sightline::level::Level;
 use sightline::map::load::parse_map;
 use sightline::materials::Materials;
 use sightline::play::{Game, GameOptions, TickInput};
-use sightline::sim::{self, from_map, Compat, GameMode, Rules, Sim};
+use sightline::sim::{self, from_map, GameMode, Rules, Sim};
 
 /// Ticks timed per round.
 const WINDOW: usize = 105;
@@ -283,17 +283,7 @@ fn horde_ron(inside: bool) -> String {
 
 /// Doom's rules at skill 4 (Doom's number 3), as a demo of `mode` plays.
 fn sim_rules(mode: GameMode) -> Rules {
-    Rules {
-        skill: 3,
-        version: sim::demo::game_version(mode),
-        mode,
-        compat: Compat::Vanilla,
-        deathmatch: 0,
-        respawn: false,
-        fast: false,
-        no_monsters: false,
-        netgame: false,
-    }
+    Rules::single(3, sim::demo::game_version(mode), mode)
 }
 
 fn solo() -> sim::setup::Players {

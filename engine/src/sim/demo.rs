@@ -9,7 +9,7 @@ use std::sync::Arc;
 use crate::actors::dehacked::Dehacked;
 
 use super::setup::Players;
-use super::{Compat, GameMode, GameVersion, Rules, Sim, MAXPLAYERS};
+use super::{GameMode, GameVersion, Rules, Sim, MAXPLAYERS};
 use crate::actors::ActorTable;
 use crate::play::lmp::VanillaDemo;
 use crate::play::syncdump::{compare, FieldDiff, SyncDump};
@@ -96,15 +96,12 @@ pub fn start_as(
     let h = &demo.header;
     let mode = game_mode(wad);
     let rules = Rules {
-        skill: h.skill,
-        version: version.unwrap_or(game_version(mode)),
-        mode,
-        compat: Compat::Vanilla,
         deathmatch: h.deathmatch,
         respawn: h.respawn,
         fast: h.fast,
         no_monsters: h.no_monsters,
         netgame: h.players() > 1,
+        ..Rules::single(h.skill, version.unwrap_or(game_version(mode)), mode)
     };
     let players = Players { in_game: h.in_game, console: usize::from(h.console_player) };
     let map = h.map_name(mode == GameMode::Commercial);

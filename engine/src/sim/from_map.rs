@@ -33,8 +33,8 @@ use std::sync::Arc;
 use glam::DVec2;
 
 use super::level::{
-    add_to_box, clear_box, ml, Blockmap, Level, Line, NameId, Node, Sector, Seg, Side, SlopeType, Subsector, BOXBOTTOM,
-    BOXLEFT, BOXRIGHT, BOXTOP, MAPBLOCKSHIFT, MAXRADIUS, NF_SUBSECTOR, NO_TEXTURE,
+    ml, Blockmap, Level, Line, NameId, Node, Sector, Seg, Side, SlopeType, Subsector, BOXBOTTOM, BOXLEFT, BOXRIGHT,
+    BOXTOP, MAPBLOCKSHIFT, NF_SUBSECTOR, NO_TEXTURE,
 };
 use super::setup::Players;
 use super::{Rules, Sim};
@@ -146,7 +146,12 @@ pub fn level_and_report(compiled: &CompiledMap, table: &ActorTable) -> Result<Fr
         names: c.names,
         things,
     };
-    group_lines(&mut level);
+    // Every line here has a front side (the map's lines always do).
+    level.group_lines().map_err(|what| FromMapError::Unsupported {
+        map: level.name.clone(),
+        element: "lines".into(),
+        what,
+    })?;
     // Nothing rejected: every sight check is traced (correct, only slower).
     level.reject = vec![0; (level.sectors.len() * level.sectors.len()).div_ceil(8)];
     Ok(FromMap { level, report: c.report })
@@ -775,38 +780,6 @@ fn cells_touched(line: &Line, org: (i64, i64), width: i64, height: i64) -> Vec<(
         }
     }
     out
-}
-
-/// `P_GroupLines` (as `Level::load` runs it): each subsector's sector,
-/// each sector's lines, block box and sound origin.
-fn group_lines(level: &mut Level) {
-    for ss in &mut level.subsectors {
-        ss.sector = level.sides[level.segs[ss.firstline].sidedef].sector;
-    }
-    for (i, line) in level.lines.iter().enumerate() {
-        // Every line here has a front side (the map's lines always do).
-        let Some(front) = line.frontsector else { continue };
-        level.sectors[front].lines.push(i);
-        if let Some(back) = line.backsector.filter(|&b| b != front) {
-            level.sectors[back].lines.push(i);
-        }
-    }
-    let bm = &level.blockmap;
-    for sector in &mut level.sectors {
-        let mut bbox = clear_box();
-        for &l in &sector.lines {
-            let line = &level.lines[l];
-            add_to_box(&mut bbox, line.v1);
-            add_to_box(&mut bbox, line.v2);
-        }
-        sector.soundorg =
-            (Fixed((bbox[BOXRIGHT] + bbox[BOXLEFT]).0 / 2), Fixed((bbox[BOXTOP] + bbox[BOXBOTTOM]).0 / 2));
-        let block = |v: Fixed, org: Fixed| (v - org).0 >> MAPBLOCKSHIFT;
-        sector.blockbox[BOXTOP] = block(bbox[BOXTOP] + MAXRADIUS, bm.orgy).min(bm.height - 1);
-        sector.blockbox[BOXBOTTOM] = block(bbox[BOXBOTTOM] - MAXRADIUS, bm.orgy).max(0);
-        sector.blockbox[BOXRIGHT] = block(bbox[BOXRIGHT] + MAXRADIUS, bm.orgx).min(bm.width - 1);
-        sector.blockbox[BOXLEFT] = block(bbox[BOXLEFT] - MAXRADIUS, bm.orgx).max(0);
-    }
 }
 
 /// A game on a RON map's level ([`Sim::on_level`]; a RON map has no WAD

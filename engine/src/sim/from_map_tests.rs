@@ -14,7 +14,7 @@ use crate::level::open_compiled;
 use crate::map::parse_map;
 use crate::play::lmp::Ticcmd;
 use crate::sim::mobj::point_in_subsector;
-use crate::sim::{Compat, GameMode, GameVersion, MAXPLAYERS};
+use crate::sim::{GameMode, GameVersion, MAXPLAYERS};
 
 fn maps_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../maps")
@@ -363,17 +363,7 @@ fn outpost_s_specials_take_doom_s_numbers() {
 fn walk(path: &str, tics: usize) {
     let compiled = open_compiled(&maps_dir().join(path), &BuildOptions::default()).expect(path);
     let level = convert(path, &compiled).level;
-    let rules = Rules {
-        skill: 2,
-        version: GameVersion::Doom19,
-        mode: GameMode::Commercial,
-        compat: Compat::Vanilla,
-        deathmatch: 0,
-        respawn: false,
-        fast: false,
-        no_monsters: false,
-        netgame: false,
-    };
+    let rules = Rules::single(2, GameVersion::Doom19, GameMode::Commercial);
     let mut in_game = [false; MAXPLAYERS];
     in_game[0] = true;
     let mut sim = sim_on_map(level, rules, Players { in_game, console: 0 }, ActorTable::doom().clone());

@@ -268,7 +268,7 @@ impl Level {
 
     /// `P_GroupLines`: each subsector's sector, each sector's lines, block
     /// box and sound origin. Returns `totallines` (REJECT's padding uses it).
-    fn group_lines(&mut self) -> Result<usize, String> {
+    pub(crate) fn group_lines(&mut self) -> Result<usize, String> {
         for ss in &mut self.subsectors {
             ss.sector = self.sides[self.segs[ss.firstline].sidedef].sector;
         }

@@ -144,6 +144,23 @@ pub struct Rules {
 impl Rules {
     pub const NIGHTMARE: u8 = 4;
 
+    /// A single-player game at Doom's `skill` (0-4) as executable `version`
+    /// on an IWAD of `mode`, keeping vanilla's bugs, with no command-line
+    /// options (a demo's header or a test changes the rest).
+    pub fn single(skill: u8, version: GameVersion, mode: GameMode) -> Rules {
+        Rules {
+            skill,
+            version,
+            mode,
+            compat: Compat::Vanilla,
+            deathmatch: 0,
+            respawn: false,
+            fast: false,
+            no_monsters: false,
+            netgame: false,
+        }
+    }
+
     /// Monsters come back (Nightmare or `-respawn`).
     pub fn respawn_monsters(&self) -> bool {
         self.skill == Rules::NIGHTMARE || self.respawn

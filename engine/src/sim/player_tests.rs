@@ -8,7 +8,6 @@
 //! table's value, not 65536) = 102398 a tic, friction keeps
 //! `FixedMul(m, 0xe800)`, gravity adds one unit a tic after a first two.
 
-
 use crate::actors::ActorTable;
 use crate::fixed::Fixed;
 use crate::play::lmp::{buttons, Ticcmd};
@@ -17,22 +16,11 @@ use crate::sim::interaction::{damage_mobj, touch_special_thing};
 use crate::sim::movement::{mobj_thinker, FRICTION, STOPSPEED};
 use crate::sim::setup::{Players, VIEWHEIGHT};
 use crate::sim::weapons::{WEAPONBOTTOM, WEAPONTOP};
-use crate::sim::{mobj::mf, Compat, GameMode, GameVersion, MobjId, PlayerState, Rules, Sim, MAXPLAYERS};
+use crate::sim::{mobj::mf, GameMode, GameVersion, MobjId, PlayerState, Rules, Sim, MAXPLAYERS};
 
 fn game() -> Sim {
-    let wad =
-        crate::sim::test_wad("freedoom2.wad");
-    let rules = Rules {
-        skill: 2,
-        version: GameVersion::Doom19,
-        mode: GameMode::Commercial,
-        compat: Compat::Vanilla,
-        deathmatch: 0,
-        respawn: false,
-        fast: false,
-        no_monsters: true,
-        netgame: false,
-    };
+    let wad = crate::sim::test_wad("freedoom2.wad");
+    let rules = Rules { no_monsters: true, ..Rules::single(2, GameVersion::Doom19, GameMode::Commercial) };
     let mut in_game = [false; MAXPLAYERS];
     in_game[0] = true;
     let players = Players { in_game, console: 0 };

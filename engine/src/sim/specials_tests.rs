@@ -4,7 +4,6 @@
 //! the specials read only the sectors' line lists). One blockmap cell with
 //! no lines, one subsector; no bodies, so `P_ChangeSector` finds nothing.
 
-
 use crate::actors::ActorTable;
 use crate::fixed::{Fixed, RNDTABLE};
 use crate::sim::ceilings::{self, CeilingType};
@@ -15,7 +14,7 @@ use crate::sim::plats::{self, PlatStatus, PlatType};
 use crate::sim::setup::Players;
 use crate::sim::specials::{self, find_next_highest_floor};
 use crate::sim::think::{run_thinkers, Status, ThinkerKind};
-use crate::sim::{lights, Compat, GameMode, GameVersion, Rules, Sim};
+use crate::sim::{lights, GameMode, GameVersion, Rules, Sim};
 
 fn u(n: i32) -> Fixed {
     Fixed::from_int(n)
@@ -94,17 +93,7 @@ fn corridor(sectors: &[(i32, i32, i16)]) -> Level {
 /// bodies or thinkers and `P_Random` at its start.
 fn sim(level: Level) -> Sim {
     let wad = crate::sim::test_wad("freedoom2.wad");
-    let rules = Rules {
-        skill: 2,
-        version: GameVersion::Doom19,
-        mode: GameMode::Commercial,
-        compat: Compat::Vanilla,
-        deathmatch: 0,
-        respawn: false,
-        fast: false,
-        no_monsters: true,
-        netgame: false,
-    };
+    let rules = Rules { no_monsters: true, ..Rules::single(2, GameVersion::Doom19, GameMode::Commercial) };
     let players = Players { in_game: [false; crate::sim::MAXPLAYERS], console: 0 };
     let mut sim = Sim::new(&wad, "MAP01", rules, players, ActorTable::doom().clone()).expect("MAP01 loads");
     sim.level = level;

@@ -11,7 +11,7 @@ use crate::fixed::{finecosine, Angle, DoomRandom, Fixed, ANG45, ANG90, FRACUNIT}
 use crate::sim::info::mt;
 use crate::sim::mobj::mf;
 use crate::sim::setup::Players;
-use crate::sim::{Compat, GameMode, GameVersion, MobjId, Rules, Sim};
+use crate::sim::{GameMode, GameVersion, MobjId, Rules, Sim};
 
 fn u(n: i32) -> Fixed {
     Fixed::from_int(n)
@@ -20,17 +20,7 @@ fn u(n: i32) -> Fixed {
 /// MAP01 of freedoom2 with one player and no monsters, `P_Random` at 0.
 fn sim() -> Sim {
     let wad = crate::sim::test_wad("freedoom2.wad");
-    let rules = Rules {
-        skill: 3,
-        version: GameVersion::Doom19,
-        mode: GameMode::Commercial,
-        compat: Compat::Vanilla,
-        deathmatch: 0,
-        respawn: false,
-        fast: false,
-        no_monsters: true,
-        netgame: false,
-    };
+    let rules = Rules { no_monsters: true, ..Rules::single(3, GameVersion::Doom19, GameMode::Commercial) };
     let players = Players { in_game: [true, false, false, false], console: 0 };
     let mut sim = Sim::new(&wad, "MAP01", rules, players, Arc::clone(ActorTable::doom())).expect("MAP01 loads");
     sim.rng = DoomRandom::new();
