@@ -150,3 +150,51 @@ fn random_commands_on_every_map_never_panic() {
         }
     }
 }
+
+/// A vanilla demo may carry four players: each is a body of its own,
+/// driven by its own commands, in co-op and in deathmatch (at the
+/// deathmatch starts, with every key).
+#[test]
+#[cfg_attr(freedoom_missing, ignore = "Freedoom's IWADs are missing: apt-get install freedoom")]
+fn four_players_each_move_by_their_own_commands() {
+    use sightline::play::lmp::{DemoHeader, Ticcmd};
+    let wad = Wad::open(&freedoom_wads::path("freedoom2.wad")).expect("the IWAD opens");
+    let table = demo::table_for(&wad, ActorTable::doom()).expect("DEHACKED applies");
+    for deathmatch in [0, 2] {
+        let mut header = DemoHeader::single(2, 1, 1);
+        header.in_game = [true; 4];
+        header.deathmatch = deathmatch;
+        let mut demo = VanillaDemo::new(header);
+        // Player k runs forward and turns its own way.
+        for _ in 0..70 {
+            for k in 0..4i16 {
+                demo.commands.push(Ticcmd { forward: 50, side: 0, turn: (k - 2) * 256, buttons: 0 });
+            }
+        }
+        let bytes = demo.to_bytes();
+        let demo = VanillaDemo::from_bytes(&bytes, "four.lmp").expect("reads back");
+        assert_eq!(demo.tics(), 70);
+        let mut sim = demo::start(&wad, &demo, table.clone()).expect("starts");
+        let start: Vec<_> = sim.players.iter().map(|p| p.as_ref().map(|p| (sim.mo(p.mo).x, sim.mo(p.mo).y))).collect();
+        let bodies: Vec<_> = sim.players.iter().flatten().map(|p| p.mo).collect();
+        assert_eq!(bodies.len(), 4, "deathmatch {deathmatch}: four bodies");
+        for t in 0..demo.tics() {
+            let mut cmds = [None; 4];
+            for (k, cmd) in demo.tic(t).iter().enumerate() {
+                cmds[k] = Some(*cmd);
+            }
+            sim.tick(&cmds);
+        }
+        for (k, p) in sim.players.iter().enumerate() {
+            let p = p.as_ref().expect("in the game");
+            let now = (sim.mo(p.mo).x, sim.mo(p.mo).y);
+            assert_ne!(Some(now), start[k], "deathmatch {deathmatch}: player {k} did not move");
+            assert_eq!(sim.mo(p.mo).player, Some(k));
+            if deathmatch != 0 {
+                assert!(p.cards.iter().all(|&c| c), "deathmatch gives every key");
+            }
+        }
+        let angles: std::collections::HashSet<u32> = bodies.iter().map(|&b| sim.mo(b).angle.0).collect();
+        assert!(angles.len() > 1, "each turned by its own command");
+    }
+}
