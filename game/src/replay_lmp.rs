@@ -115,7 +115,7 @@ pub fn run(args: &ReplayArgs) -> Result<()> {
     let tics = source.demo.tics();
     let started = (std::time::Instant::now(), cpu_time::ProcessTime::now());
     if let Some(f) = &mut frames {
-        f.tic(&game, 0)?;
+        f.tic(&game, 0, tics == 0)?;
     }
     for t in 0..tics {
         game.tick(&commands(&source.demo, t));
@@ -130,7 +130,7 @@ pub fn run(args: &ReplayArgs) -> Result<()> {
             }
         }
         if let Some(f) = &mut frames {
-            f.tic(&game, t as u64 + 1)?;
+            f.tic(&game, t as u64 + 1, t + 1 == tics)?;
         }
     }
     if let Some(path) = &args.check_against {
@@ -162,7 +162,8 @@ pub fn run(args: &ReplayArgs) -> Result<()> {
     Ok(())
 }
 
-/// Frames of the simulation: every `--capture-every` tic written as a PNG,
+/// Frames of the simulation: every `--capture-every`th tic and the last
+/// written as PNGs,
 /// or (`--timedemo`) every tic rendered and not kept.
 struct Frames {
     level: sightline::level::Level,
@@ -198,9 +199,10 @@ impl Frames {
         })
     }
 
-    /// Renders the state after `tic` tics, and writes it when it is one to keep.
-    fn tic(&mut self, game: &Sim, tic: u64) -> Result<()> {
-        let keep = self.every.is_some_and(|every| tic.is_multiple_of(every));
+    /// Renders the state after `tic` tics, and writes it when it is one to
+    /// keep (every `--capture-every`th, and the `last`).
+    fn tic(&mut self, game: &Sim, tic: u64, last: bool) -> Result<()> {
+        let keep = self.every.is_some_and(|every| tic.is_multiple_of(every) || last);
         if self.every.is_some() && !keep {
             return Ok(());
         }
