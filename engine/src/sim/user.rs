@@ -6,6 +6,7 @@
 
 use super::mobj::mf;
 use super::setup::VIEWHEIGHT;
+use super::weapons::wp;
 use super::{collision, specials, weapons, GameMode, PlayerState, Sim};
 use crate::fixed::{
     finesine, point_to_angle2, Angle, Fixed, ANG180, ANG90, ANGLETOFINESHIFT, FINEANGLES, FINEMASK, FRACUNIT,
@@ -35,14 +36,6 @@ const MAXBOB: Fixed = Fixed(0x10_0000);
 const INVERSECOLORMAP: i32 = 32;
 /// `ANG5`, the dead player's turn a tic towards the killer.
 const ANG5: Angle = Angle(ANG90.0 / 18);
-
-/// Doom's weapon numbers that the change rules name.
-const WP_FIST: usize = 0;
-const WP_SHOTGUN: usize = 2;
-const WP_PLASMA: usize = 5;
-const WP_BFG: usize = 6;
-const WP_CHAINSAW: usize = 7;
-const WP_SUPERSHOTGUN: usize = 8;
 
 /// `P_Thrust`: pushes player `n`'s body by `move_` along `angle`.
 pub fn thrust(sim: &mut Sim, n: usize, angle: Angle, move_: Fixed) {
@@ -242,22 +235,22 @@ fn change_weapon(sim: &mut Sim, n: usize) {
         return;
     }
     let mut newweapon = usize::from((p.cmd.buttons & buttons::WEAPON_MASK) >> buttons::WEAPON_SHIFT);
-    if newweapon == WP_FIST
-        && p.weaponowned[WP_CHAINSAW]
-        && !(p.readyweapon == WP_CHAINSAW && p.powers[pw::STRENGTH] != 0)
+    if newweapon == wp::FIST
+        && p.weaponowned[wp::CHAINSAW]
+        && !(p.readyweapon == wp::CHAINSAW && p.powers[pw::STRENGTH] != 0)
     {
-        newweapon = WP_CHAINSAW;
+        newweapon = wp::CHAINSAW;
     }
     if mode == GameMode::Commercial
-        && newweapon == WP_SHOTGUN
-        && p.weaponowned[WP_SUPERSHOTGUN]
-        && p.readyweapon != WP_SUPERSHOTGUN
+        && newweapon == wp::SHOTGUN
+        && p.weaponowned[wp::SUPERSHOTGUN]
+        && p.readyweapon != wp::SUPERSHOTGUN
     {
-        newweapon = WP_SUPERSHOTGUN;
+        newweapon = wp::SUPERSHOTGUN;
     }
     if p.weaponowned.get(newweapon).copied().unwrap_or(false)
         && newweapon != p.readyweapon
-        && ((newweapon != WP_PLASMA && newweapon != WP_BFG) || mode != GameMode::Shareware)
+        && ((newweapon != wp::PLASMA && newweapon != wp::BFG) || mode != GameMode::Shareware)
     {
         p.pendingweapon = Some(newweapon);
     }
