@@ -9,32 +9,5 @@
 mod freedoom_wads;
 
 fn main() {
-    println!("cargo::rustc-check-cfg=cfg(freedoom_missing)");
-    // Any rerun-if-changed replaces cargo's default of watching the whole
-    // package, so the script and its module are named too.
-    println!("cargo::rerun-if-changed=build.rs");
-    println!("cargo::rerun-if-changed=freedoom_wads.rs");
-    println!("cargo::rerun-if-env-changed={}", freedoom_wads::DIR_VAR);
-    println!("cargo::rerun-if-env-changed={}", freedoom_wads::REQUIRE_VAR);
-    for path in freedoom_wads::watched() {
-        println!("cargo::rerun-if-changed={}", path.display());
-    }
-
-    let missing = freedoom_wads::missing();
-    if missing.is_empty() {
-        return;
-    }
-    let list: Vec<String> = missing.iter().map(|p| p.display().to_string()).collect();
-    let list = list.join(", ");
-    if freedoom_wads::required() {
-        eprintln!(
-            "error: {} is set, so the Freedoom tests must run, and their WADs are missing: {list}\n\
-             To get them: {}.",
-            freedoom_wads::REQUIRE_VAR,
-            freedoom_wads::HOW_TO_GET
-        );
-        std::process::exit(1);
-    }
-    println!("cargo::rustc-cfg=freedoom_missing");
-    println!("cargo::warning=missing {list}: the Freedoom tests are ignored ({})", freedoom_wads::HOW_TO_GET);
+    freedoom_wads::build_script("freedoom_wads.rs", "the Freedoom tests");
 }

@@ -5,10 +5,6 @@
 //! sector must agree after every one of the 22,637 tics. A run prints how
 //! far each got and, on a desync, the first tic and the fields that differ.
 
-#[path = "freedoom_wads.rs"]
-#[allow(dead_code)]
-mod freedoom_wads;
-
 use std::path::Path;
 
 use sightline::actors::ActorTable;
@@ -16,6 +12,7 @@ use sightline::play::lmp::VanillaDemo;
 use sightline::play::syncdump::SyncDump;
 use sightline::sim::demo;
 use sightline::wad::Wad;
+use sightline_tests::freedoom_wads;
 
 /// (IWAD, lump, the tics it holds).
 const DEMOS: [(&str, &str, usize); 8] = [

@@ -70,3 +70,37 @@ fn nearest_existing_ancestor(path: &Path) -> PathBuf {
         _ => PathBuf::from("."),
     }
 }
+
+/// A build script's whole work (`tests/build.rs`, `engine/build.rs`): with
+/// both IWADs found, nothing; without them `cfg(freedoom_missing)`, under
+/// which the Freedoom tests are ignored with the reason, or, when
+/// [`REQUIRE_VAR`] asks for them, a failed build naming the missing files.
+/// `this_file` is this module's path from the calling package, and
+/// `which` names its tests in the warning.
+pub fn build_script(this_file: &str, which: &str) {
+    println!("cargo::rustc-check-cfg=cfg(freedoom_missing)");
+    // Any rerun-if-changed replaces cargo's default of watching the whole
+    // package, so the script and this module are named too.
+    println!("cargo::rerun-if-changed=build.rs");
+    println!("cargo::rerun-if-changed={this_file}");
+    println!("cargo::rerun-if-env-changed={DIR_VAR}");
+    println!("cargo::rerun-if-env-changed={REQUIRE_VAR}");
+    for path in watched() {
+        println!("cargo::rerun-if-changed={}", path.display());
+    }
+    let missing = missing();
+    if missing.is_empty() {
+        return;
+    }
+    let list: Vec<String> = missing.iter().map(|p| p.display().to_string()).collect();
+    let list = list.join(", ");
+    if required() {
+        eprintln!(
+            "error: {REQUIRE_VAR} is set, so the Freedoom tests must run, and their WADs are missing: {list}\n\
+             To get them: {HOW_TO_GET}."
+        );
+        std::process::exit(1);
+    }
+    println!("cargo::rustc-cfg=freedoom_missing");
+    println!("cargo::warning=missing {list}: {which} are ignored ({HOW_TO_GET})");
+}

@@ -9,7 +9,7 @@ use super::*;
 use crate::actors::ActorTable;
 use crate::fixed::{Angle, Fixed};
 use crate::sim::info::mt;
-use crate::sim::level::{ml, Blockmap, Level, Line, Node, Sector, Seg, Side, SlopeType, Subsector, NO_TEXTURE};
+use crate::sim::level::{ml, Blockmap, Level, Line, Node, Sector, Seg, Side, Subsector, NO_TEXTURE};
 use crate::sim::mobj::ONFLOORZ;
 use crate::sim::setup::Players;
 use crate::sim::{sight, slide, Compat, GameMode, GameVersion, Rules, Sim};
@@ -37,31 +37,9 @@ fn sector(floor: i32, ceiling: i32) -> Sector {
 }
 
 fn line(v1: (i32, i32), v2: (i32, i32), front: usize, back: Option<usize>, sides: [Option<usize>; 2]) -> Line {
-    let (v1, v2) = ((u(v1.0), u(v1.1)), (u(v2.0), u(v2.1)));
-    let (dx, dy) = (v2.0 - v1.0, v2.1 - v1.1);
-    let slopetype = if dx.0 == 0 {
-        SlopeType::Vertical
-    } else if dy.0 == 0 {
-        SlopeType::Horizontal
-    } else if (dy / dx).0 > 0 {
-        SlopeType::Positive
-    } else {
-        SlopeType::Negative
-    };
-    Line {
-        v1,
-        v2,
-        dx,
-        dy,
-        flags: if back.is_some() { ml::TWOSIDED } else { ml::BLOCKING },
-        special: 0,
-        tag: 0,
-        sidenum: sides,
-        bbox: [v1.1.max(v2.1), v1.1.min(v2.1), v1.0.min(v2.0), v1.0.max(v2.0)],
-        slopetype,
-        frontsector: Some(front),
-        backsector: back,
-    }
+    let ends = ((u(v1.0), u(v1.1)), (u(v2.0), u(v2.1)));
+    let flags = if back.is_some() { ml::TWOSIDED } else { ml::BLOCKING };
+    Line::new(ends, flags, 0, 0, sides, [Some(front), back])
 }
 
 /// The room, its east sector at `floor1`..`ceiling1`.

@@ -33,8 +33,8 @@ use std::sync::Arc;
 use glam::DVec2;
 
 use super::level::{
-    ml, Blockmap, Level, Line, NameId, Node, Sector, Seg, Side, SlopeType, Subsector, BOXBOTTOM, BOXLEFT, BOXRIGHT,
-    BOXTOP, MAPBLOCKSHIFT, NF_SUBSECTOR, NO_TEXTURE,
+    ml, Blockmap, Level, Line, NameId, Node, Sector, Seg, Side, Subsector, BOXBOTTOM, BOXLEFT, BOXRIGHT, BOXTOP,
+    MAPBLOCKSHIFT, NF_SUBSECTOR, NO_TEXTURE,
 };
 use super::setup::Players;
 use super::{Rules, Sim};
@@ -330,7 +330,9 @@ impl<'a> Convert<'a> {
             };
             special = self.scroll_number(&element, special, l.front.scroll, l.back.as_ref().map(|b| b.scroll));
             let (v1, v2) = (vertices[l.from], vertices[l.to]);
-            lines.push(doom_line(v1, v2, flags, special, tag, [Some(front), back], &sides));
+            let sidenum = [Some(front), back];
+            let sectors = sidenum.map(|s| s.map(|s| sides[s].sector));
+            lines.push(Line::new((v1, v2), flags, special, tag, sidenum, sectors));
         }
         for (k, t) in map.trigger_lines.iter().enumerate() {
             let element = format!("trigger line {k}");
@@ -355,7 +357,8 @@ impl<'a> Convert<'a> {
             let sidenum = [Some(sides.len() - 2), Some(sides.len() - 1)];
             let special = self.line_number(&element, &t.special);
             let (v1, v2) = (vertices[t.from], vertices[t.to]);
-            lines.push(doom_line(v1, v2, ml::TWOSIDED, special, t.special.tag as i16, sidenum, &sides));
+            let sectors = sidenum.map(|s| s.map(|s| sides[s].sector));
+            lines.push(Line::new((v1, v2), ml::TWOSIDED, special, t.special.tag as i16, sidenum, sectors));
         }
         Ok((sides, lines))
     }
@@ -595,45 +598,6 @@ fn seg_angle(v1: (Fixed, Fixed), v2: (Fixed, Fixed)) -> Angle {
     let turns = dy.atan2(dx) / std::f64::consts::TAU;
     let sixteen = (turns.rem_euclid(1.0) * 65536.0).round() as u32 & 0xffff;
     Angle(sixteen << FRACBITS)
-}
-
-/// A line as `P_LoadLineDefs` makes it: deltas, box, slope type, sectors.
-fn doom_line(
-    v1: (Fixed, Fixed),
-    v2: (Fixed, Fixed),
-    flags: u16,
-    special: i16,
-    tag: i16,
-    sidenum: [Option<usize>; 2],
-    sides: &[Side],
-) -> Line {
-    let (dx, dy) = (v2.0 - v1.0, v2.1 - v1.1);
-    let slopetype = if dx.0 == 0 {
-        SlopeType::Vertical
-    } else if dy.0 == 0 {
-        SlopeType::Horizontal
-    } else if dy.fixed_div(dx).0 > 0 {
-        SlopeType::Positive
-    } else {
-        SlopeType::Negative
-    };
-    let (left, right) = if v1.0 < v2.0 { (v1.0, v2.0) } else { (v2.0, v1.0) };
-    let (bottom, top) = if v1.1 < v2.1 { (v1.1, v2.1) } else { (v2.1, v1.1) };
-    let sector_of = |s: Option<usize>| s.map(|s| sides[s].sector);
-    Line {
-        v1,
-        v2,
-        dx,
-        dy,
-        flags,
-        special,
-        tag,
-        sidenum,
-        bbox: [top, bottom, left, right],
-        slopetype,
-        frontsector: sector_of(sidenum[0]),
-        backsector: sector_of(sidenum[1]),
-    }
 }
 
 /// Doom's sector type for a typed special: the vanilla type that

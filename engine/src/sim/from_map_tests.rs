@@ -236,16 +236,8 @@ fn the_blockmap_lists_each_line_in_every_cell_it_touches() {
 
 /// A line from `a` to `b` in whole units, with nothing else set.
 fn bare_line(a: (i32, i32), b: (i32, i32)) -> Line {
-    let side = Side {
-        textureoffset: Fixed::ZERO,
-        rowoffset: Fixed::ZERO,
-        toptexture: NO_TEXTURE,
-        bottomtexture: NO_TEXTURE,
-        midtexture: NO_TEXTURE,
-        sector: 0,
-    };
     let f = |(x, y): (i32, i32)| (Fixed::from_int(x), Fixed::from_int(y));
-    doom_line(f(a), f(b), 0, 0, 0, [Some(0), None], &[side])
+    Line::new((f(a), f(b)), 0, 0, 0, [Some(0), None], [Some(0), None])
 }
 
 #[test]

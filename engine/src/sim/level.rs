@@ -106,6 +106,47 @@ pub struct Line {
     pub backsector: Option<usize>,
 }
 
+impl Line {
+    /// A line as `P_LoadLineDefs` makes it from its ends: the deltas, the
+    /// bounding box and the slope type, with `sectors` its front and back
+    /// sectors (those of its sides).
+    pub fn new(
+        (v1, v2): ((Fixed, Fixed), (Fixed, Fixed)),
+        flags: u16,
+        special: i16,
+        tag: i16,
+        sidenum: [Option<usize>; 2],
+        sectors: [Option<usize>; 2],
+    ) -> Line {
+        let (dx, dy) = (v2.0 - v1.0, v2.1 - v1.1);
+        let slopetype = if dx.0 == 0 {
+            SlopeType::Vertical
+        } else if dy.0 == 0 {
+            SlopeType::Horizontal
+        } else if dy.fixed_div(dx).0 > 0 {
+            SlopeType::Positive
+        } else {
+            SlopeType::Negative
+        };
+        let (left, right) = if v1.0 < v2.0 { (v1.0, v2.0) } else { (v2.0, v1.0) };
+        let (bottom, top) = if v1.1 < v2.1 { (v1.1, v2.1) } else { (v2.1, v1.1) };
+        Line {
+            v1,
+            v2,
+            dx,
+            dy,
+            flags,
+            special,
+            tag,
+            sidenum,
+            bbox: [top, bottom, left, right],
+            slopetype,
+            frontsector: sectors[0],
+            backsector: sectors[1],
+        }
+    }
+}
+
 #[derive(Clone, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct Seg {
     pub v1: (Fixed, Fixed),
@@ -386,35 +427,10 @@ fn from_records(map: &WadMap) -> Level {
         .lines
         .iter()
         .map(|l| {
-            let (v1, v2) = (vertices[usize::from(l.v1)], vertices[usize::from(l.v2)]);
-            let (dx, dy) = (v2.0 - v1.0, v2.1 - v1.1);
-            let slopetype = if dx.0 == 0 {
-                SlopeType::Vertical
-            } else if dy.0 == 0 {
-                SlopeType::Horizontal
-            } else if dy.fixed_div(dx).0 > 0 {
-                SlopeType::Positive
-            } else {
-                SlopeType::Negative
-            };
-            let (left, right) = if v1.0 < v2.0 { (v1.0, v2.0) } else { (v2.0, v1.0) };
-            let (bottom, top) = if v1.1 < v2.1 { (v1.1, v2.1) } else { (v2.1, v1.1) };
+            let ends = (vertices[usize::from(l.v1)], vertices[usize::from(l.v2)]);
             let sidenum = [l.right.map(usize::from), l.left.map(usize::from)];
-            let sector_of = |s: Option<usize>| s.map(|s| sides[s].sector);
-            Line {
-                v1,
-                v2,
-                dx,
-                dy,
-                flags: l.flags,
-                special: l.special as i16,
-                tag: l.tag as i16,
-                sidenum,
-                bbox: [top, bottom, left, right],
-                slopetype,
-                frontsector: sector_of(sidenum[0]),
-                backsector: sector_of(sidenum[1]),
-            }
+            let sectors = sidenum.map(|s| s.map(|s| sides[s].sector));
+            Line::new(ends, l.flags, l.special as i16, l.tag as i16, sidenum, sectors)
         })
         .collect();
     Level {

@@ -419,43 +419,13 @@ fn traverse_intercepts<T>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sim::level::clear_box;
 
     fn u(n: i32) -> Fixed {
         Fixed::from_int(n)
     }
 
     fn line(v1: (i32, i32), v2: (i32, i32)) -> Line {
-        let (v1, v2) = ((u(v1.0), u(v1.1)), (u(v2.0), u(v2.1)));
-        let (dx, dy) = (v2.0 - v1.0, v2.1 - v1.1);
-        let slopetype = if dx.0 == 0 {
-            SlopeType::Vertical
-        } else if dy.0 == 0 {
-            SlopeType::Horizontal
-        } else if (dy / dx).0 > 0 {
-            SlopeType::Positive
-        } else {
-            SlopeType::Negative
-        };
-        let mut bbox = clear_box();
-        bbox[BOXTOP] = v1.1.max(v2.1);
-        bbox[BOXBOTTOM] = v1.1.min(v2.1);
-        bbox[BOXLEFT] = v1.0.min(v2.0);
-        bbox[BOXRIGHT] = v1.0.max(v2.0);
-        Line {
-            v1,
-            v2,
-            dx,
-            dy,
-            flags: 0,
-            special: 0,
-            tag: 0,
-            sidenum: [Some(0), None],
-            bbox,
-            slopetype,
-            frontsector: Some(0),
-            backsector: None,
-        }
+        Line::new(((u(v1.0), u(v1.1)), (u(v2.0), u(v2.1))), 0, 0, 0, [Some(0), None], [Some(0), None])
     }
 
     fn bbox(x: i32, y: i32, r: i32) -> [Fixed; 4] {
