@@ -224,9 +224,11 @@ fn the_autopilot_kills_the_boss_brain_from_a_rising_lift() {
     let mut fired_from = Vec::new();
     let mut rockets = 0;
     let play = finish("brain", |play| {
-        let table = &play.game.actors().table;
+        let table = &play.game.float().expect("the f64 game").actors().table;
         let now = play
             .game
+            .float()
+            .expect("the f64 game")
             .actors()
             .list
             .iter()
@@ -239,7 +241,14 @@ fn the_autopilot_kills_the_boss_brain_from_a_rising_lift() {
     });
     assert!(fired_from.len() >= 3, "rockets fired from floors {fired_from:?}");
     assert!(fired_from.iter().all(|&z| z > 144.0 && z <= 168.0), "rockets fired from floors {fired_from:?}");
-    let brain = play.game.actors().list.iter().find(|a| play.game.actors().table.actors[a.kind].name == "boss_brain");
+    let brain = play
+        .game
+        .float()
+        .expect("the f64 game")
+        .actors()
+        .list
+        .iter()
+        .find(|a| play.game.float().expect("the f64 game").actors().table.actors[a.kind].name == "boss_brain");
     assert!(brain.is_some_and(|b| b.health <= 0), "the brain lives");
 }
 
@@ -301,7 +310,7 @@ fn check_says_a_key_behind_its_own_door_is() {
 #[test]
 fn a_recorded_autopilot_run_with_monsters_replays_to_the_same_state() {
     let map = MapRef::File(map_path("maps/outpost.ron"));
-    let options = GameOptions { skill: 2, seed: 5, no_monsters: false };
+    let options = GameOptions { skill: 2, seed: 5, no_monsters: false, sim: false };
     let mut play = Playthrough::of(&map, options).unwrap();
     let (outcome, _) = autopilot::run(&mut play, 35 * 40, |_, _| true).unwrap();
     assert!(play.game.stats().kills.0 > 0 || outcome.exit.is_some(), "no fight in 40 s: {outcome:?}");

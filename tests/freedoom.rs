@@ -451,7 +451,11 @@ fn freedoom1_plays_from_the_wad_through_exits_and_intermissions() {
             .map(|k| (a + b) / 2.0 + normal * k)
             .find(|&p| map.sector_strictly_containing(p) == Some(line.front.sector))
             .unwrap_or_else(|| panic!("no room in front of line {i}"));
-        play.game.teleport(pos, (-normal).y.atan2((-normal).x).to_degrees()).unwrap();
+        play.game
+            .float_mut()
+            .expect("the f64 game")
+            .teleport(pos, (-normal).y.atan2((-normal).x).to_degrees())
+            .unwrap();
         play.tick(&press).unwrap();
         let Phase::Intermission { exit: ended, next: Some(ref to), ref stats, .. } = play.phase else {
             panic!("{}: using line {i} did not end the level: {:?}", play.map.short_name(), play.phase)
@@ -545,7 +549,7 @@ fn e1m1_monsters_are_drawn_from_every_side() {
         let (s, c) = from.to_radians().sin_cos();
         let eye = pos + DVec2::new(c, s) * 96.0;
         seen.push(drawn.texture_seen_from(eye));
-        let Ok(()) = play.game.teleport(eye, from + 180.0) else { continue };
+        let Ok(()) = play.game.float_mut().expect("the f64 game").teleport(eye, from + 180.0) else { continue };
         let view = play.game.view(1.0);
         let level = play.game.level();
         assert_agree(level, &view, (160, 100), &format!("E1M1 zombieman from side {}", k + 1));
@@ -574,14 +578,16 @@ fn frames_full_of_actors_agree_with_the_reference() {
         let options = GameOptions { skill: 4, ..GameOptions::default() };
         let mut play = Playthrough::of(&MapRef::parse(&map, None), options).unwrap_or_else(|e| panic!("{e}"));
         play.game.player_mut().health = 1_000_000;
-        play.game.wake_monsters();
+        play.game.float_mut().expect("the f64 game").wake_monsters();
         for _ in 0..70 {
             play.tick(&TickInput::default()).unwrap();
         }
-        let table = play.game.actors().table.clone();
+        let table = play.game.float().expect("the f64 game").actors().table.clone();
         let mut targets = Vec::new();
         let mut monsters = 0;
-        for a in play.game.actors().list.iter().filter(|a| !a.removed && a.views.is_some()) {
+        for a in
+            play.game.float().expect("the f64 game").actors().list.iter().filter(|a| !a.removed && a.views.is_some())
+        {
             let def = &table.actors[a.kind];
             if def.has(ActorFlag::SpawnCeiling) {
                 targets.push((a.key, 2));
@@ -597,7 +603,7 @@ fn frames_full_of_actors_agree_with_the_reference() {
                 let from = drawn.angle + 360.0 / sides as f64 * k as f64;
                 let (s, c) = from.to_radians().sin_cos();
                 let eye = drawn.pos + DVec2::new(c, s) * 128.0;
-                if play.game.teleport(eye, from + 180.0).is_err() {
+                if play.game.float_mut().expect("the f64 game").teleport(eye, from + 180.0).is_err() {
                     continue;
                 }
                 let view = play.game.view(1.0);
@@ -636,7 +642,7 @@ fn e1m1_can_be_fought_through_to_its_exit_on_skill_3() {
     let wad = wad_path("freedoom1.wad");
     let map = MapRef::parse(&format!("{}:E1M1", wad.display()), None);
     let mut play = Playthrough::of(&map, GameOptions::default()).unwrap_or_else(|e| panic!("{e}"));
-    let table = play.game.actors().table.clone();
+    let table = play.game.float().expect("the f64 game").actors().table.clone();
     let idle = TickInput::default();
     let total = play.game.stats().kills.1;
     assert!(total > 0, "E1M1 has monsters on skill 3");
@@ -652,6 +658,8 @@ fn e1m1_can_be_fought_through_to_its_exit_on_skill_3() {
     // The health the map holds (what a person would pick up).
     let supply: i32 = play
         .game
+        .float()
+        .expect("the f64 game")
         .actors()
         .list
         .iter()
@@ -665,29 +673,36 @@ fn e1m1_can_be_fought_through_to_its_exit_on_skill_3() {
         .sum();
     // The shotgun and the armour first, where they lie.
     for want in ["shotgun", "green_armor"] {
-        let item = play.game.actors().list.iter().find(|a| !a.removed && table.actors[a.kind].name == want);
+        let item = play
+            .game
+            .float()
+            .expect("the f64 game")
+            .actors()
+            .list
+            .iter()
+            .find(|a| !a.removed && table.actors[a.kind].name == want);
         if let Some(pos) = item.map(|a| a.pos) {
-            play.game.teleport(pos, 0.0).unwrap();
+            play.game.float_mut().expect("the f64 game").teleport(pos, 0.0).unwrap();
             play.tick(&idle).unwrap();
         }
     }
     for round in 0..3 {
         // Nearest first, from where the fighter stands.
         let here = play.game.player().pos;
-        let mut targets: Vec<usize> = (0..play.game.actors().list.len())
+        let mut targets: Vec<usize> = (0..play.game.float().expect("the f64 game").actors().list.len())
             .filter(|&i| {
-                let a = &play.game.actors().list[i];
+                let a = &play.game.float().expect("the f64 game").actors().list[i];
                 !a.removed && a.health > 0 && table.actors[a.kind].has(ActorFlag::CountKill)
             })
             .collect();
         targets.sort_by(|&i, &j| {
-            let d = |k: usize| play.game.actors().list[k].pos.distance(here);
+            let d = |k: usize| play.game.float().expect("the f64 game").actors().list[k].pos.distance(here);
             d(i).total_cmp(&d(j))
         });
         for i in targets {
             // Between fights, healed to 100: a person takes cover and the
             // map's health; the fighter stands in the open and does neither.
-            healed += heal(&mut play.game, 100);
+            healed += heal(play.game.float_mut().expect("the f64 game"), 100);
             // Low on ammunition: the nearest box or clip that lies about.
             let ammo = play.game.player().ammo;
             if ammo[1] < 4 && ammo[0] < 20 {
@@ -695,13 +710,17 @@ fn e1m1_can_be_fought_through_to_its_exit_on_skill_3() {
                 let kinds = ["box_of_shells", "shotgun_shells", "box_of_bullets", "clip"];
                 let item = play
                     .game
+                    .float()
+                    .expect("the f64 game")
                     .actors()
                     .list
                     .iter()
                     .filter(|a| !a.removed && kinds.contains(&table.actors[a.kind].name.as_str()))
                     .map(|a| a.pos)
                     .min_by(|p, q| p.distance(here).total_cmp(&q.distance(here)));
-                if let Some(pos) = item.filter(|&p| play.game.teleport(p, 0.0).is_ok()) {
+                if let Some(pos) =
+                    item.filter(|&p| play.game.float_mut().expect("the f64 game").teleport(p, 0.0).is_ok())
+                {
                     let _ = pos;
                     play.tick(&idle).unwrap();
                 }
@@ -710,18 +729,18 @@ fn e1m1_can_be_fought_through_to_its_exit_on_skill_3() {
             let began = play.game.ticks();
             'spots: for distance in [320.0, 224.0, 128.0] {
                 for k in 0..16 {
-                    let a = &play.game.actors().list[i];
+                    let a = &play.game.float().expect("the f64 game").actors().list[i];
                     if a.health <= 0 || play.game.ticks() > began + 700 {
                         break 'spots;
                     }
                     let from = 22.5 * k as f64;
                     let (s, c) = from.to_radians().sin_cos();
                     let eye = a.pos + DVec2::new(c, s) * distance;
-                    if play.game.teleport(eye, from + 180.0).is_err() {
+                    if play.game.float_mut().expect("the f64 game").teleport(eye, from + 180.0).is_err() {
                         continue;
                     }
                     // Only where it can see the monster.
-                    let (me, it) = (play.game.player(), &play.game.actors().list[i]);
+                    let (me, it) = (play.game.player(), &play.game.float().expect("the f64 game").actors().list[i]);
                     let looker = Body { pos: me.pos, z: me.z, height: 56.0, radius: 16.0, index: usize::MAX };
                     let def = &table.actors[it.kind];
                     let target = Body { pos: it.pos, z: it.z, height: def.height, radius: def.radius, index: i };
@@ -729,7 +748,7 @@ fn e1m1_can_be_fought_through_to_its_exit_on_skill_3() {
                         continue;
                     }
                     for _ in 0..35 * 3 {
-                        let a = &play.game.actors().list[i];
+                        let a = &play.game.float().expect("the f64 game").actors().list[i];
                         if a.health <= 0 {
                             break 'spots;
                         }
@@ -744,12 +763,12 @@ fn e1m1_can_be_fought_through_to_its_exit_on_skill_3() {
                         let input = TickInput { fire: true, turn: turn as f32, weapon, forward, strafe, ..idle };
                         play.tick(&input).unwrap();
                         if play.game.player().health < 30 {
-                            healed += heal(&mut play.game, 100);
+                            healed += heal(play.game.float_mut().expect("the f64 game"), 100);
                         }
                         assert!(
                             !play.game.player().dead(),
                             "round {round}: the fighter died facing actor {i} ({}), kills {:?}, tick {}",
-                            table.actors[play.game.actors().list[i].kind].name,
+                            table.actors[play.game.float().expect("the f64 game").actors().list[i].kind].name,
                             play.game.stats().kills,
                             play.game.ticks()
                         );
@@ -761,6 +780,8 @@ fn e1m1_can_be_fought_through_to_its_exit_on_skill_3() {
     let kills = play.game.stats().kills;
     let left: Vec<String> = play
         .game
+        .float()
+        .expect("the f64 game")
         .actors()
         .list
         .iter()
@@ -780,7 +801,11 @@ fn e1m1_can_be_fought_through_to_its_exit_on_skill_3() {
     let d = (b - a).normalize();
     let normal = DVec2::new(d.y, -d.x);
     let angle = (-normal).y.atan2((-normal).x).to_degrees();
-    play.game.teleport((a + b) / 2.0 + normal * 20.0, angle).unwrap_or_else(|e| panic!("line {i}: {e}"));
+    play.game
+        .float_mut()
+        .expect("the f64 game")
+        .teleport((a + b) / 2.0 + normal * 20.0, angle)
+        .unwrap_or_else(|e| panic!("line {i}: {e}"));
     play.tick(&TickInput { use_line: true, ..idle }).unwrap();
     assert_eq!(play.game.exit(), Some(sightline::play::Exit::Normal), "the exit switch did not end the level");
     eprintln!(

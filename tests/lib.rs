@@ -1,5 +1,6 @@
 //! Shared support for the workspace tests: the shipped maps, Freedoom's
-//! WADs, rendering a pose through both renderers, and comparing frames.
+//! WADs, Chocolate Doom as a demo's referee, rendering a pose through both
+//! renderers, and comparing frames.
 
 use std::path::{Path, PathBuf};
 
@@ -11,6 +12,7 @@ use sightline::play::TickInput;
 use sightline::render::{render_frame, Frame, RenderOptions, Renderer, Shade, View};
 use sightline::Framebuffer;
 
+pub mod chocolate;
 pub mod freedoom_wads;
 
 /// The repository root.
@@ -281,7 +283,7 @@ pub fn saves_continue_exactly(
     ahead: usize,
 ) -> SaveCheck {
     use sightline::play::actors::Target;
-    use sightline::play::playthrough::{Phase, Playthrough};
+    use sightline::play::playthrough::{Phase, Played, Playthrough};
     let mut check = SaveCheck::default();
     let mut followers: Vec<(usize, Playthrough, usize)> = Vec::new();
     for (i, input) in inputs.iter().enumerate() {
@@ -292,10 +294,30 @@ pub fn saves_continue_exactly(
             assert!(loaded.game.state_bytes() == play.game.state_bytes(), "tick {i}: the loaded game differs at once");
             check.saves += 1;
             check.largest = check.largest.max(bytes.len());
-            let actors = &play.game.actors().list;
-            let chasing = |a: &&sightline::play::actors::Actor| !a.removed && a.health > 0 && a.target != Target::None;
-            check.fighting += usize::from(actors.iter().filter(chasing).count() > 0);
-            check.machinery += usize::from(!play.game.world().thinkers.is_empty());
+            let (fighting, machinery) = match &play.game {
+                Played::Float(game) => {
+                    let chasing =
+                        |a: &sightline::play::actors::Actor| !a.removed && a.health > 0 && a.target != Target::None;
+                    (game.actors().list.iter().any(chasing), !game.world().thinkers.is_empty())
+                }
+                Played::Sim(game) => {
+                    let sim = &game.sim;
+                    let chasing = |id: sightline::sim::MobjId| {
+                        let m = sim.mo(id);
+                        m.player.is_none() && m.health > 0 && m.target.is_some()
+                    };
+                    let moving = |t: &sightline::sim::Thinker| {
+                        t.status == sightline::sim::think::Status::Active
+                            && !matches!(
+                                t.kind,
+                                sightline::sim::ThinkerKind::Mobj(_) | sightline::sim::ThinkerKind::Light(_)
+                            )
+                    };
+                    (sim.live_mobjs().any(chasing), sim.thinkers.iter().any(moving))
+                }
+            };
+            check.fighting += usize::from(fighting);
+            check.machinery += usize::from(machinery);
             followers.push((i, loaded, ahead));
         }
         play.tick(input).unwrap_or_else(|e| panic!("tick {i}: {e}"));

@@ -124,7 +124,7 @@ fn machinery_is_played_through_from_start_to_exit() {
     d.walk_to(DVec2::new(860.0, 192.0), 200);
     let before = d.play.game.level().materials.sides.clone();
     d.use_facing(0.0);
-    assert!(d.play.game.world().is_busy(door1), "the switch did not start door 1");
+    assert!(d.play.game.float().expect("the f64 game").world().is_busy(door1), "the switch did not start door 1");
     assert_ne!(d.play.game.level().materials.sides, before, "the switch texture did not flip");
     d.wait(80);
     assert!(d.play.game.level().map.sectors[door1].ceiling > 200.0, "door 1 did not open");
@@ -135,7 +135,7 @@ fn machinery_is_played_through_from_start_to_exit() {
     d.walk_to(DVec2::new(610.0, 592.0), 200);
     d.use_facing(180.0);
     assert!(d.messages.iter().any(|m| m == "You need a blue key to open this door"), "{:?}", d.messages);
-    assert!(!d.play.game.world().is_busy(door2));
+    assert!(!d.play.game.float().expect("the f64 game").world().is_busy(door2));
 
     // The key on the pedestal in the slime (which hurts).
     d.walk_to(DVec2::new(736.0, 500.0), 200);
@@ -153,7 +153,10 @@ fn machinery_is_played_through_from_start_to_exit() {
     // Now the blue door opens.
     d.walk_to(DVec2::new(610.0, 592.0), 200);
     d.use_facing(180.0);
-    assert!(d.play.game.world().is_busy(door2), "the blue door did not open with the key");
+    assert!(
+        d.play.game.float().expect("the f64 game").world().is_busy(door2),
+        "the blue door did not open with the key"
+    );
     d.wait(70);
 
     // Through it, onto the teleporter pad: to F, facing north, still.
@@ -266,7 +269,7 @@ fn a_dead_player_restarts_the_map_with_use() {
     let map = MapRef::File(map_path("machinery.ron"));
     let mut play = Playthrough::of(&map, GameOptions::default()).unwrap();
     let start = play.game.player().pos;
-    play.game.teleport(DVec2::new(736.0, 548.0), 0.0).unwrap();
+    play.game.float_mut().expect("the f64 game").teleport(DVec2::new(736.0, 548.0), 0.0).unwrap();
     play.game.player_mut().health = 5;
     for _ in 0..40 {
         play.tick(&TickInput::default()).unwrap();

@@ -80,7 +80,7 @@ impl Driver {
 
     /// The nearest live monster the player can see, within 1,500 units.
     fn enemy(&mut self) -> Option<usize> {
-        let game = &self.play.game;
+        let game = self.play.game.float().expect("the f64 game");
         let table = &game.actors().table;
         let me = game.player();
         let looker = Body { pos: me.pos, z: me.z, height: 56.0, radius: 16.0, index: usize::MAX };
@@ -106,11 +106,13 @@ impl Driver {
     /// when facing it, backing off from what comes close.
     fn fight(&mut self) {
         while let Some(i) = self.enemy() {
-            let to = self.play.game.actors().list[i].pos - self.pos();
+            let to = self.play.game.float().expect("the f64 game").actors().list[i].pos - self.pos();
             let turn = self.turn_towards(to.y.atan2(to.x).to_degrees());
             let p = self.play.game.player();
-            let shotgun =
-                p.ammo[1] > 0 && p.weapons.iter().any(|&w| self.play.game.actors().table.actors[w].name == "shotgun");
+            let shotgun = p.ammo[1] > 0
+                && p.weapons
+                    .iter()
+                    .any(|&w| self.play.game.float().expect("the f64 game").actors().table.actors[w].name == "shotgun");
             let weapon = if shotgun { 3 } else { 2 };
             let forward = if to.length() < 96.0 { -1 } else { 0 };
             self.fighting += 1;

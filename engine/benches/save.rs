@@ -76,7 +76,7 @@ fn main() {
         println!(
             "| {} | {} | {size} | {:.2} | {:.2} | {:.1} | {:.1} |",
             play.map.short_name(),
-            play.game.actors().list.len(),
+            play.game.float().expect("the f64 game").actors().list.len(),
             median(&mut make),
             median(&mut write),
             median(&mut load),

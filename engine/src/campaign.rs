@@ -107,9 +107,9 @@ pub struct Opened {
     /// The importer's repairs and report, for a map read from a WAD.
     pub repairs: Vec<String>,
     pub report: Option<Report>,
-    /// For a WAD map, its sectors' places in the converted map
-    /// ([`crate::wad::import::Converted::sector_map`]).
-    pub sector_map: Option<Vec<Option<usize>>>,
+    /// For a WAD map, where its sectors and linedefs went in the converted
+    /// map.
+    pub links: Option<crate::wad::import::Links>,
 }
 
 /// Opens `map`: a file as [`open_level`] does; a WAD map converted in
@@ -121,7 +121,7 @@ pub fn open(map: &MapRef, options: &BuildOptions) -> Result<Opened, CampaignErro
             map: map.clone(),
             repairs: Vec::new(),
             report: None,
-            sector_map: None,
+            links: None,
         }),
         MapRef::Wad { wads, map: name } => {
             let wad = stack(wads)?;
@@ -148,7 +148,7 @@ pub fn open(map: &MapRef, options: &BuildOptions) -> Result<Opened, CampaignErro
                 map: MapRef::Wad { wads: wads.clone(), map: Some(name) },
                 repairs: converted.repairs,
                 report: Some(converted.report),
-                sector_map: Some(converted.sector_map),
+                links: Some(converted.links),
             })
         }
     }

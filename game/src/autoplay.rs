@@ -5,19 +5,64 @@
 
 use anyhow::{Context, Result};
 use serde_json::json;
-use sightline::autopilot;
-use sightline::campaign::MapRef;
+use sightline::autopilot::observe::Observe;
+use sightline::autopilot::{self, Point};
+use sightline::bsp::BuildOptions;
+use sightline::campaign::{open, MapRef};
 use sightline::play::playthrough::{Phase, Playthrough};
 use sightline::play::vanilla;
-use sightline::play::{Exit, GameOptions, TICRATE};
+use sightline::play::{Exit, GameOptions, Stats, TickInput, TICRATE};
 use sightline::render::{RenderOptions, Renderer};
+use sightline::sim::game::SimGame;
 
 use crate::cli::AutoplayArgs;
 use crate::replay::Capture;
 
+/// How a run ended, whichever game it was played on.
+struct Run {
+    outcome: autopilot::Outcome,
+    bot: autopilot::Autopilot,
+    stats: Stats,
+    health: i32,
+    pos: Point,
+    /// Frames written, and where.
+    captured: Option<(usize, std::path::PathBuf)>,
+}
+
 pub fn run(args: &AutoplayArgs) -> Result<()> {
     let map = MapRef::parse(&args.map, args.iwad.as_deref());
-    let options = GameOptions { skill: args.skill, seed: args.seed, no_monsters: args.no_monsters };
+    let options = GameOptions { skill: args.skill, seed: args.seed, no_monsters: args.no_monsters, sim: false };
+    let started = std::time::Instant::now();
+    let run = if args.sim { on_sim(args, &map, options)? } else { on_float(args, &map, options)? };
+    let seconds = started.elapsed().as_secs_f64();
+    report(args, &map, run, seconds);
+    Ok(())
+}
+
+/// The autopilot on the simulation with Doom's arithmetic, one level.
+fn on_sim(args: &AutoplayArgs, map: &MapRef, options: GameOptions) -> Result<Run> {
+    let opened =
+        open(map, &BuildOptions::default()).with_context(|| format!("{}: cannot open the map", map.label()))?;
+    let map = opened.map.clone();
+    let mut game = SimGame::new(opened, options)?;
+    let (outcome, bot) = autopilot::run_sim(&mut game, args.max_ticks, |_, _| true);
+    if let Some(path) = &args.record {
+        // Doom completes a level at the start of the tic after the exit:
+        // one more (idle) tic takes a demo's player to the intermission.
+        let mut inputs = outcome.inputs.clone();
+        if outcome.exit.is_some() {
+            inputs.push(TickInput::default());
+        }
+        crate::replay_lmp::save_recording(path, &map, options, inputs)?;
+    }
+    let player = Observe::player(&game);
+    let (health, pos) = (player.health, player.pos);
+    Ok(Run { outcome, bot, stats: Observe::stats(&game), health, pos, captured: None })
+}
+
+/// The autopilot on the float game, through a playthrough.
+fn on_float(args: &AutoplayArgs, map: &MapRef, options: GameOptions) -> Result<Run> {
+    let map = map.clone();
     let mut play = Playthrough::of(&map, options).with_context(|| format!("{}: cannot start the game", map.label()))?;
     let mut capture = match (args.capture_every, &args.output) {
         (Some(every), Some(dir)) => {
@@ -29,7 +74,6 @@ pub fn run(args: &AutoplayArgs) -> Result<()> {
         }
         _ => None,
     };
-    let started = std::time::Instant::now();
     let mut failed = None;
     // A `.lmp` keeps turns to 1/256 of the circle: the game is fed them so.
     let lmp = args.record.as_ref().is_some_and(|p| crate::replay_lmp::is_lmp_path(p));
@@ -46,12 +90,6 @@ pub fn run(args: &AutoplayArgs) -> Result<()> {
     if let Some(e) = failed {
         return Err(e);
     }
-    let seconds = started.elapsed().as_secs_f64();
-    if std::env::var_os("SIGHTLINE_AUTOPILOT_LOG").is_some() {
-        for line in &bot.log {
-            eprintln!("{line}");
-        }
-    }
     let ticks = outcome.inputs.len() as u64;
     if let Some(c) = &mut capture {
         if !ticks.is_multiple_of(c.every) {
@@ -66,6 +104,18 @@ pub fn run(args: &AutoplayArgs) -> Result<()> {
         Phase::Playing => play.game.stats(),
     };
     let player = play.game.player();
+    let captured = capture.map(|c| (c.written, c.dir.clone()));
+    Ok(Run { outcome, bot, stats, health: player.health, pos: player.pos, captured })
+}
+
+fn report(args: &AutoplayArgs, map: &MapRef, run: Run, seconds: f64) {
+    let Run { outcome, bot, stats, health, pos, captured } = run;
+    if std::env::var_os("SIGHTLINE_AUTOPILOT_LOG").is_some() {
+        for line in &bot.log {
+            eprintln!("{line}");
+        }
+    }
+    let ticks = outcome.inputs.len() as u64;
     let figures = bot.figures();
     let reason = match (&outcome.exit, outcome.died, &outcome.stuck) {
         (Some(_), _, _) => None,
@@ -79,6 +129,7 @@ pub fn run(args: &AutoplayArgs) -> Result<()> {
             "map": map.label(),
             "skill": args.skill,
             "monsters": !args.no_monsters,
+            "game": if args.sim { "sim" } else { "float" },
             "exited": outcome.exit.is_some(),
             "exit": outcome.exit.map(|e| if e == Exit::Secret { "secret" } else { "normal" }),
             "ticks": ticks,
@@ -86,9 +137,10 @@ pub fn run(args: &AutoplayArgs) -> Result<()> {
             "kills": pair(stats.kills),
             "items": pair(stats.items),
             "secrets": pair(stats.secrets),
-            "health": player.health,
+            "level_tics": stats.ticks,
+            "health": health,
             "why_not": reason,
-            "position": [player.pos.x, player.pos.y],
+            "position": [pos.x, pos.y],
             "planning": {
                 "grid_ms": figures.grid_seconds * 1e3,
                 "plans": figures.plans,
@@ -98,35 +150,30 @@ pub fn run(args: &AutoplayArgs) -> Result<()> {
             "wall_seconds": seconds,
         });
         println!("{value}");
-    } else {
-        let (k, i, s) = (stats.kills, stats.items, stats.secrets);
-        match outcome.exit {
-            Some(e) => println!(
-                "{}: exited ({}) after {ticks} ticks ({:.0} s of game time)",
-                map.label(),
-                if e == Exit::Secret { "secret exit" } else { "normal exit" },
-                ticks as f64 / f64::from(TICRATE)
-            ),
-            None => println!(
-                "{}: did not exit: {} (at {:.0}, {:.0})",
-                map.label(),
-                reason.unwrap_or_default(),
-                player.pos.x,
-                player.pos.y
-            ),
-        }
-        println!("kills {}/{}, items {}/{}, secrets {}/{}, health {}", k.0, k.1, i.0, i.1, s.0, s.1, player.health);
-        println!(
-            "planning: grid {:.0} ms, {} plans, {:.0} ms in all, worst {:.0} ms; {:.1} s of wall time",
-            figures.grid_seconds * 1e3,
-            figures.plans,
-            figures.plan_seconds * 1e3,
-            figures.worst_plan_seconds * 1e3,
-            seconds
-        );
-        if let Some(c) = &capture {
-            println!("wrote {} frames to {}", c.written, c.dir.display());
+        return;
+    }
+    let (k, i, s) = (stats.kills, stats.items, stats.secrets);
+    match outcome.exit {
+        Some(e) => println!(
+            "{}: exited ({}) after {ticks} ticks ({:.0} s of game time)",
+            map.label(),
+            if e == Exit::Secret { "secret exit" } else { "normal exit" },
+            ticks as f64 / f64::from(TICRATE)
+        ),
+        None => {
+            println!("{}: did not exit: {} (at {:.0}, {:.0})", map.label(), reason.unwrap_or_default(), pos.x, pos.y)
         }
     }
-    Ok(())
+    println!("kills {}/{}, items {}/{}, secrets {}/{}, health {health}", k.0, k.1, i.0, i.1, s.0, s.1);
+    println!(
+        "planning: grid {:.0} ms, {} plans, {:.0} ms in all, worst {:.0} ms; {:.1} s of wall time",
+        figures.grid_seconds * 1e3,
+        figures.plans,
+        figures.plan_seconds * 1e3,
+        figures.worst_plan_seconds * 1e3,
+        seconds
+    );
+    if let Some((written, dir)) = captured {
+        println!("wrote {written} frames to {}", dir.display());
+    }
 }

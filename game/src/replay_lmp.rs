@@ -55,6 +55,7 @@ pub fn save_recording(path: &Path, map: &MapRef, options: GameOptions, inputs: V
             skill: options.skill,
             seed: options.seed,
             no_monsters: options.no_monsters,
+            sim: options.sim,
             ..Demo::new(map.label())
         };
         demo.save(path)?;
@@ -81,7 +82,7 @@ impl VanillaRun {
         let table = sim::demo::table_with_patches(&wad, ActorTable::active(), deh).map_err(|e| anyhow!("{e}"))?;
         let game = sim::demo::start(&wad, &source.demo, table).map_err(|e| anyhow!("{spec}: {e}"))?;
         let opened = sightline::campaign::open(&map, &BuildOptions::default())?;
-        let scene = sim::draw::Scene::new(opened.sector_map.unwrap_or_default());
+        let scene = sim::draw::Scene::new(opened.links.unwrap_or_default());
         Ok((map, VanillaRun { game, demo: source.demo, next: 0, scene }))
     }
 
@@ -180,7 +181,7 @@ struct Frames {
 impl Frames {
     fn open(map: &MapRef, args: &ReplayArgs) -> Result<Frames> {
         let opened = sightline::campaign::open(map, &BuildOptions::default())?;
-        let sector_map = opened.sector_map.unwrap_or_default();
+        let links = opened.links.unwrap_or_default();
         let renderer = crate::replay::choose_renderer(args.renderer, &opened.level, &map.label())?;
         let dir = args.output.clone().unwrap_or_default();
         if args.capture_every.is_some() {
@@ -188,7 +189,7 @@ impl Frames {
         }
         Ok(Frames {
             level: opened.level,
-            scene: sim::draw::Scene::new(sector_map),
+            scene: sim::draw::Scene::new(links),
             options: RenderOptions { renderer, threads: args.threads, ..Default::default() },
             frame: Frame::new(),
             fb: Framebuffer::new(args.size.0, args.size.1),

@@ -12,12 +12,13 @@
 
 use glam::DVec2;
 
+use super::Observe;
 use crate::actors::{ActorTable, Arg, Category};
 use crate::map::special::Activation;
 use crate::map::Map;
 use crate::play::actors::attacks::MISSILE_HEIGHT;
 use crate::play::sight::{self, Body};
-use crate::play::{Game, TickInput};
+use crate::play::TickInput;
 use crate::CompiledMap;
 
 use super::nav::{Cell, Heights, NavGrid};
@@ -56,20 +57,20 @@ pub fn body(compiled: &CompiledMap, def: &crate::actors::ActorDef, pos: DVec2, i
 }
 
 /// The live boss brains of `game`.
-pub fn live(game: &Game) -> impl Iterator<Item = Brain> + '_ {
-    let actors = game.actors();
-    actors
-        .list
+pub fn live(game: &dyn Observe) -> Vec<Brain> {
+    let table = game.table();
+    game.seen()
         .iter()
         .enumerate()
-        .filter(|(_, a)| !a.removed && a.health > 0 && actors.table.actors[a.kind].category == Category::BossBrain)
+        .filter(|(_, a)| !a.removed && a.health > 0 && table.actors[a.kind].category == Category::BossBrain)
         .map(|(i, a)| {
-            let def = &actors.table.actors[a.kind];
+            let def = &table.actors[a.kind];
             Brain {
                 actor: i as u32,
                 body: Body { pos: a.pos, z: a.z, height: def.height, radius: def.radius, index: i },
             }
         })
+        .collect()
 }
 
 /// The rocket a launcher fires: its body and speed (from its actor), how
@@ -86,9 +87,9 @@ pub struct Rocket {
 
 /// The rocket launcher, if `game`'s player has it with a rocket for a
 /// shot: the rocket it fires.
-pub fn launcher(game: &Game) -> Option<Rocket> {
+pub fn launcher(game: &dyn Observe) -> Option<Rocket> {
     let player = game.player();
-    let table = &game.actors().table;
+    let table = game.table();
     player.weapons.iter().find_map(|&w| {
         let def = table.actors[w].weapon.as_ref().filter(|d| d.slot == LAUNCHER_SLOT)?;
         let ammo = def.ammo.is_none_or(|k| player.ammo[k.index()] >= def.ammo_use.max(1));
@@ -322,14 +323,14 @@ impl Autopilot {
     /// Is the body wholly on the lift of `goal`, a boss brain goal's spot?
     /// Anywhere on it is arrival (a body that fights on the way may reach
     /// the lift, not the spot, before the lift starts up).
-    pub(super) fn on_brain_lift(&self, game: &Game, goal: &Goal) -> bool {
+    pub(super) fn on_brain_lift(&self, game: &dyn Observe, goal: &Goal) -> bool {
         let Goal::Brain(spot, _) = goal else { return false };
         let here = self.lift_at(game.player().pos);
         here.is_some() && here == self.lift_at(*spot)
     }
 
     /// Is the lift under the boss brain goal's spot on its way up?
-    pub(super) fn lift_rising(&self, game: &Game) -> bool {
+    pub(super) fn lift_rising(&self, game: &dyn Observe) -> bool {
         let Some(&Goal::Brain(spot, _)) = self.active.as_ref().map(|a| &a.goal) else { return false };
         self.lift_at(spot).is_some_and(|s| game.level().compiled.map.sectors[s].floor > self.last.floor[s])
     }
@@ -340,12 +341,13 @@ impl Autopilot {
     /// at rest above the heights a shot hurts from, the lift is called down
     /// first (the body steps off it to the call), and moving with the place
     /// out of reach, the body waits by the call.
-    pub(super) fn brain_goal(&mut self, game: &Game) -> Option<Active> {
+    pub(super) fn brain_goal(&mut self, game: &dyn Observe) -> Option<Active> {
         let rocket = launcher(game)?;
         let level = game.level();
         let map = &level.compiled.map;
         let live_now = live_heights(map);
         let (spot, actor) = live(game)
+            .into_iter()
             .filter_map(|b| {
                 let spot = *spots(&self.nav, &level.compiled, &self.mech, &rocket, &b.body, &live_now.floor).first()?;
                 Some((spot, b.actor))
@@ -354,7 +356,7 @@ impl Autopilot {
             .max_by(|a, b| (a.0.high - a.0.low).total_cmp(&(b.0.high - b.0.low)))?;
         let goal = Goal::Brain(self.nav.centre_of(spot.cell), actor);
         let (lift, now) = (spot.lift, game.ticks());
-        if game.world().is_busy(lift) || live_now.floor[lift] <= spot.high {
+        if game.is_busy(lift) || live_now.floor[lift] <= spot.high {
             if let Some(route) = self.route_to(game, &goal) {
                 return Some(Active::new(goal, Purpose::Exit, route, now));
             }
@@ -385,11 +387,17 @@ impl Autopilot {
     /// 4 units a tick a window passes in a few ticks: one rocket a ride).
     /// The ride ends when the lift is at rest and a shot from there would
     /// not hurt.
-    pub(super) fn fire_at_brain(&mut self, game: &Game, a: &mut Active, spot: DVec2, actor: u32) -> Option<TickInput> {
+    pub(super) fn fire_at_brain(
+        &mut self,
+        game: &dyn Observe,
+        a: &mut Active,
+        spot: DVec2,
+        actor: u32,
+    ) -> Option<TickInput> {
         let now = game.ticks();
         let level = game.level();
         let map = &level.compiled.map;
-        let target = live(game).find(|b| b.actor == actor);
+        let target = live(game).into_iter().find(|b| b.actor == actor);
         let (Some(target), Some(lift), Some(rocket)) = (target, self.lift_at(spot), launcher(game)) else {
             self.next_replan = now;
             return None;
@@ -399,7 +407,7 @@ impl Autopilot {
         let rise = floor - self.last.floor[lift];
         let then = (player.z + rise * f64::from(rocket.lead)).min(lift_reach(map, &self.mech, lift, floor));
         let blast = blast(&level.compiled, &mut self.sight, &rocket, player.pos, then + MISSILE_HEIGHT, &target.body);
-        let busy = game.world().is_busy(lift);
+        let busy = game.is_busy(lift);
         if (!busy && a.arrived > 1 && blast < WORTH) || a.arrived > RIDE_TICKS {
             self.next_replan = now;
             return None;

@@ -21,9 +21,10 @@ use glam::DVec2;
 
 use super::nav::{Cell, Heights, LineId, NavGrid, CELL, DIRS};
 use super::plan::Route;
+use super::Observe;
 use super::{turn_to, Active, Autopilot};
 use crate::play::player::{FRICTION, HEIGHT, MAX_STEP, RUN_THRUST};
-use crate::play::{Game, TickInput};
+use crate::play::TickInput;
 
 /// The longest run-up a leap may take, in cells (448 units straight:
 /// a body from a standstill is within 2% of its top speed by then).
@@ -322,7 +323,7 @@ impl Autopilot {
     /// One tick of a leap on the route: `None` when the next move is not
     /// a leap (or the body is not at its edge yet), else the input, or
     /// `Some(None)` when the leap failed or was abandoned (plan again).
-    pub(super) fn leap_step(&mut self, game: &Game, a: &mut Active) -> Option<Option<TickInput>> {
+    pub(super) fn leap_step(&mut self, game: &dyn Observe, a: &mut Active) -> Option<Option<TickInput>> {
         let player = game.player();
         let now = game.ticks();
         if a.leap.is_none() {

@@ -21,6 +21,7 @@ pub mod brain;
 pub mod check;
 pub mod leap;
 pub mod nav;
+pub mod observe;
 pub mod plan;
 
 use std::collections::{BTreeMap, BTreeSet};
@@ -32,12 +33,12 @@ pub type Point = DVec2;
 
 use crate::actors::{ActorDef, ActorFlag, Category, Give, Power};
 use crate::map::special::{Action, Activation, DoorKind, KeyColour};
-use crate::play::actors::Target;
 use crate::play::events::Event;
 use crate::play::player::{MAX_STEP, RADIUS};
 use crate::play::sight::{self, Body};
-use crate::play::{Game, TickInput};
+use crate::play::TickInput;
 use nav::{Cell, Heights, LineId, NavGrid, Span, CELL, DIRS};
+use observe::Observe;
 use plan::{line_of, Goal, Mechanisms, Purpose, Route, Search, Targets};
 
 /// Ticks between full replans while a route is followed.
@@ -143,7 +144,7 @@ struct Assumed {
 impl Assumed {
     /// The cell the player's body is taken to be in, by these heights,
     /// beside rather than on a cell a solid thing stands on.
-    fn start(&self, nav: &NavGrid, game: &Game) -> Option<Cell> {
+    fn start(&self, nav: &NavGrid, game: &dyn Observe) -> Option<Cell> {
         let player = game.player();
         nav.start_cell(player.pos, player.z, &self.heights, |c| self.blocked.contains(&c))
     }
@@ -306,7 +307,7 @@ pub struct Autopilot {
 }
 
 impl Autopilot {
-    pub fn new(game: &Game) -> Autopilot {
+    pub fn new(game: &dyn Observe) -> Autopilot {
         let level = game.level();
         let started = std::time::Instant::now();
         let nav = NavGrid::new(&level.compiled);
@@ -384,7 +385,7 @@ impl Autopilot {
     }
 
     /// This tick's input.
-    pub fn tick(&mut self, game: &Game) -> TickInput {
+    pub fn tick(&mut self, game: &dyn Observe) -> TickInput {
         let now = game.ticks();
         let player = game.player();
         if player.dead() || game.exit().is_some() {
@@ -402,7 +403,7 @@ impl Autopilot {
         for (hurts, sector) in self.hurts.iter_mut().zip(&game.level().compiled.map.sectors) {
             *hurts = sector.special.damage.is_some_and(|d| !suited || d.suit == crate::map::special::Suit::Useless);
         }
-        self.mech.settle_lifts(game.level(), |s| game.world().is_busy(s));
+        self.mech.settle_lifts(game.level(), |s| game.is_busy(s));
         self.bad.retain(|_, until| *until > now);
         if player.keys.len() != self.keys {
             self.keys = player.keys.len();
@@ -441,7 +442,7 @@ impl Autopilot {
         }
         // A boss brain spits monsters for as long as it lives: a fight
         // stood or fallen back from never ends, so it is fought on the way.
-        let endless = brain::live(game).next().is_some();
+        let endless = !brain::live(game).is_empty();
         let retreat = !endless
             && fight.is_some()
             && (player.health < RETREAT_HEALTH || self.in_sight >= CROWD || self.barrel_near);
@@ -534,7 +535,7 @@ impl Autopilot {
     /// a ledge it could not climb back (a pit is a soft lock), nor onto a
     /// floor that hurts from one that does not. A strafe that would is
     /// turned the other way, or dropped.
-    fn keep_footing(&self, game: &Game, input: &mut TickInput) {
+    fn keep_footing(&self, game: &dyn Observe, input: &mut TickInput) {
         let player = game.player();
         let map = &game.level().compiled.map;
         let live = live_heights(map);
@@ -569,16 +570,16 @@ impl Autopilot {
     /// flight, to the side the body is already on (where it keeps its
     /// footing; else the other). Imps' and cacodemons' fireballs, barons'
     /// and arachnotrons' plasma fly slowly enough to be stepped out of.
-    fn dodge(&self, game: &Game, input: &mut TickInput) {
+    fn dodge(&self, game: &dyn Observe, input: &mut TickInput) {
         let player = game.player();
-        let actors = game.actors();
+        let (seen, table) = (game.seen(), game.table());
         let mut threat: Option<(f64, DVec2)> = None;
-        for m in &actors.list {
-            let def = &actors.table.actors[m.kind];
-            if m.removed || m.source == Target::Player || !m.flags.has(ActorFlag::Missile) {
+        for m in seen.iter() {
+            let def = &table.actors[m.kind];
+            if m.removed || m.by_player || !m.missile {
                 continue;
             }
-            let v = m.vel.truncate();
+            let v = m.vel;
             let rel = player.pos - m.pos;
             if v.length_squared() < 1.0 || rel.length() > DODGE_RANGE || v.dot(rel) <= 0.0 {
                 continue;
@@ -615,7 +616,7 @@ impl Autopilot {
     }
 
     /// Marks the walk lines the body crossed since last tick as tried.
-    fn note_crossings(&mut self, game: &Game) {
+    fn note_crossings(&mut self, game: &dyn Observe) {
         let map = &game.level().compiled.map;
         let (p, q) = (self.last_pos, game.player().pos);
         if p == q {
@@ -639,7 +640,7 @@ impl Autopilot {
 
     /// The body was teleported by a line its route did not take (it
     /// drifted or coasted over it): logged.
-    fn note_teleport(&mut self, game: &Game) {
+    fn note_teleport(&mut self, game: &dyn Observe) {
         let map = &game.level().compiled.map;
         let planned = self.active.as_ref().is_some_and(|a| {
             a.route.teleport[a.at.saturating_sub(2)..(a.at + 6).min(a.route.cells.len())].iter().any(|&t| t)
@@ -661,7 +662,7 @@ impl Autopilot {
     }
 
     /// Lines that are used up: set off once and not repeatable.
-    fn spent(&self, game: &Game) -> BTreeSet<LineId> {
+    fn spent(&self, game: &dyn Observe) -> BTreeSet<LineId> {
         let map = &game.level().compiled.map;
         // A once-only walk line crossed while its sectors were busy did
         // nothing and stays live (the level says which).
@@ -674,18 +675,18 @@ impl Autopilot {
     }
 
     /// Has the level used `id`'s special up (a once-only line set off)?
-    fn used_up(game: &Game, id: LineId) -> bool {
+    fn used_up(game: &dyn Observe, id: LineId) -> bool {
         let (line, _, _, special) = line_of(&game.level().compiled.map, id);
-        special.is_some() && game.world().special(game.level(), line).is_none()
+        special.is_some() && game.special(line).is_none()
     }
 
     /// Cells solid things stand on (not monsters: they move).
-    fn blocked(&self, game: &Game) -> BTreeSet<Cell> {
-        let actors = game.actors();
+    fn blocked(&self, game: &dyn Observe) -> BTreeSet<Cell> {
+        let (seen, table) = (game.seen(), game.table());
         let mut cells = BTreeSet::new();
-        for a in &actors.list {
-            let def = &actors.table.actors[a.kind];
-            if a.removed || !a.flags.has(ActorFlag::Solid) || def.has(ActorFlag::CountKill) {
+        for a in seen.iter() {
+            let def = &table.actors[a.kind];
+            if a.removed || !a.solid || def.has(ActorFlag::CountKill) {
                 continue;
             }
             let reach = def.radius + nav::CLEAR;
@@ -725,12 +726,12 @@ impl Autopilot {
         *self.failures.entry(goal.key()).or_insert(0) += 1;
     }
 
-    fn keys_held(game: &Game) -> Vec<KeyColour> {
+    fn keys_held(game: &dyn Observe) -> Vec<KeyColour> {
         game.player().keys.iter().map(|k| k.colour).collect()
     }
 
     /// What a search assumes of the level now (see [`Assumed`]).
-    fn assume(&self, game: &Game) -> Assumed {
+    fn assume(&self, game: &dyn Observe) -> Assumed {
         let level = game.level();
         let spent = self.spent(game);
         Assumed {
@@ -750,7 +751,7 @@ impl Autopilot {
     }
 
     /// Chooses the next goal and the route to it.
-    fn choose(&mut self, game: &Game) -> Option<Active> {
+    fn choose(&mut self, game: &dyn Observe) -> Option<Active> {
         let started = std::time::Instant::now();
         // A goal whose only way is by a lift that would have to be called
         // while another called lately is coming down is passed over: the
@@ -791,7 +792,7 @@ impl Autopilot {
     /// would not live through fetches a suit or health from however far,
     /// as long as the fetch leaves the body alive and (for health) hurts
     /// less than it gives.
-    fn protection_first(&mut self, game: &Game, active: Active) -> Active {
+    fn protection_first(&mut self, game: &dyn Observe, active: Active) -> Active {
         if matches!(active.purpose, Purpose::Supplies | Purpose::Safety) {
             return active;
         }
@@ -815,11 +816,11 @@ impl Autopilot {
         // A wade it would not live through: health will do as well, from
         // however far.
         let lethal = dose + 5 >= health;
-        let actors = game.actors();
+        let (seen, table) = (game.seen(), game.table());
         let mut targets = Targets::default();
         let mut wanted = Vec::new();
-        for (i, a) in actors.list.iter().enumerate() {
-            let helps = gives(&actors.table.actors[a.kind]).any(|g| match *g {
+        for (i, a) in seen.iter().enumerate() {
+            let helps = gives(&table.actors[a.kind]).any(|g| match *g {
                 Give::Power(Power::IronFeet) => true,
                 // Only health that lifts the body clear of the dose:
                 // medikits stop at 100, and a wade that 100 would not live
@@ -856,7 +857,7 @@ impl Autopilot {
         // through, or (for health) one that hurts more than the health
         // gives, is no help.
         let fetch = wade(&route.cells);
-        let def = &actors.table.actors[actors.list[i as usize].kind];
+        let def = &table.actors[seen[i as usize].kind];
         let suit = gives(def).any(|g| matches!(g, Give::Power(Power::IronFeet)));
         let gain: u32 = gives(def)
             .map(|g| match *g {
@@ -882,7 +883,7 @@ impl Autopilot {
     /// after which the route's own unblocking takes over. `Err` (the lift,
     /// and the way to call it): another goal should be looked for first,
     /// another lift called lately being on its way down.
-    fn call_lift_first(&mut self, game: &Game, active: Active) -> Result<Active, (usize, Box<Active>)> {
+    fn call_lift_first(&mut self, game: &dyn Observe, active: Active) -> Result<Active, (usize, Box<Active>)> {
         if active.purpose == Purpose::Lift {
             return Ok(active);
         }
@@ -980,14 +981,14 @@ impl Autopilot {
     }
 
     /// Is the body's sector one whose floor hurts?
-    fn on_hurting_floor(&self, game: &Game) -> bool {
+    fn on_hurting_floor(&self, game: &dyn Observe) -> bool {
         self.hurts.get(game.player().sector).copied().unwrap_or(false)
     }
 
     /// With nothing to do while standing where the floor hurts or a crusher
     /// closes: the way to the nearest floor that does not hurt, out from
     /// under every crusher.
-    fn off_danger(&mut self, game: &Game) -> Option<Active> {
+    fn off_danger(&mut self, game: &dyn Observe) -> Option<Active> {
         let player = game.player();
         let live = live_heights(&game.level().compiled.map);
         let crushed = self.nav.cell_at(player.pos).is_some_and(|c| self.crushing(&live, c));
@@ -1008,7 +1009,7 @@ impl Autopilot {
         Some(Active::new(Goal::Touch(self.nav.centre_of(safe), u32::MAX), Purpose::Safety, route, game.ticks()))
     }
 
-    fn choose_inner(&mut self, game: &Game) -> Option<Active> {
+    fn choose_inner(&mut self, game: &dyn Observe) -> Option<Active> {
         let level = game.level();
         let map = &level.compiled.map;
         let keys = Self::keys_held(game);
@@ -1063,8 +1064,8 @@ impl Autopilot {
         // Keys not yet held.
         let mut targets = Targets::default();
         let mut wanted = Vec::new();
-        for (i, a) in game.actors().list.iter().enumerate() {
-            let def = &game.actors().table.actors[a.kind];
+        for (i, a) in game.seen().iter().enumerate() {
+            let def = &game.table().actors[a.kind];
             let Some(colour) = def.key() else { continue };
             if a.removed
                 || keys.contains(&colour)
@@ -1089,10 +1090,10 @@ impl Autopilot {
         // With nothing untried left, a repeatable line tried before (a
         // door's switch seen from inside the closet it shut) is taken
         // again, when it is foretold to open something.
-        let mut candidates = self.trigger_candidates(game, &spent, &keys, false);
+        let mut candidates = self.trigger_candidates(game, spent, &keys, false);
         let confined = candidates.is_empty();
         if confined {
-            candidates = self.trigger_candidates(game, &spent, &keys, true);
+            candidates = self.trigger_candidates(game, spent, &keys, true);
         }
         candidates.sort_by_key(|c| (c.0, c.1));
         if std::env::var_os("SIGHTLINE_AUTOPILOT_TRACE").is_some() {
@@ -1171,7 +1172,7 @@ impl Autopilot {
     /// line whose sectors are moving now is worth anything until they stop.
     fn trigger_candidates(
         &self,
-        game: &Game,
+        game: &dyn Observe,
         spent: &BTreeSet<LineId>,
         keys: &[KeyColour],
         confined: bool,
@@ -1232,11 +1233,11 @@ impl Autopilot {
     }
 
     /// Is any sector `line`'s special moves busy now?
-    fn targets_busy(game: &Game, line: LineId) -> bool {
+    fn targets_busy(game: &dyn Observe, line: LineId) -> bool {
         let level = game.level();
         let (sl, _, _, special) = line_of(&level.compiled.map, line);
         special.is_some_and(|sp| {
-            crate::play::world::specials::target_sectors(level, sl, sp).into_iter().any(|s| game.world().is_busy(s))
+            crate::play::world::specials::target_sectors(level, sl, sp).into_iter().any(|s| game.is_busy(s))
         })
     }
 
@@ -1257,21 +1258,20 @@ impl Autopilot {
     }
 
     /// Health or ammunition to fetch, when monsters are about and it is short.
-    fn supplies(&self, game: &Game) -> Option<(Goal, Targets)> {
+    fn supplies(&self, game: &dyn Observe) -> Option<(Goal, Targets)> {
         let player = game.player();
-        let actors = game.actors();
+        let (seen, table) = (game.seen(), game.table());
         // Floors that hurt take health too; ammo matters only with monsters.
         // A boss brain spits monsters for as long as it lives (even with
         // none placed): health and armour are worth fetching sooner.
-        let endless = brain::live(game).next().is_some();
+        let endless = !brain::live(game).is_empty();
         let low_health = player.health < if endless { 100 } else { LOW_HEALTH };
         let monsters = game.stats().kills.1 > 0 || endless;
         let low_ammo = monsters && player.ammo[0] < 20 && player.ammo[1] < 4;
-        let table = &actors.table;
         let owned = |name: &str| player.weapons.iter().any(|&w| table.actors[w].name == name);
         let mut best: Option<(f64, u32, DVec2)> = None;
-        for (i, a) in actors.list.iter().enumerate() {
-            let def = &actors.table.actors[a.kind];
+        for (i, a) in seen.iter().enumerate() {
+            let def = &table.actors[a.kind];
             if a.removed || !def.has(ActorFlag::Special) || self.unreachable.contains(&(i as u32)) {
                 continue;
             }
@@ -1296,7 +1296,7 @@ impl Autopilot {
 
     /// Follows the route: the input that moves along it, opens what is in
     /// the way and does what the goal asks at its end.
-    fn follow(&mut self, game: &Game) -> TickInput {
+    fn follow(&mut self, game: &dyn Observe) -> TickInput {
         let now = game.ticks();
         let pos = game.player().pos;
         // Waiting for a door, on a running jump or riding a lift to fire at
@@ -1404,7 +1404,7 @@ impl Autopilot {
 
     /// One tick along `active`; `None` when it is finished or abandoned
     /// (then a new goal is chosen next tick).
-    fn step(&mut self, game: &Game, a: &mut Active) -> Option<TickInput> {
+    fn step(&mut self, game: &dyn Observe, a: &mut Active) -> Option<TickInput> {
         if let Some(input) = self.leap_step(game, a) {
             return input;
         }
@@ -1568,7 +1568,7 @@ impl Autopilot {
     /// drop or a teleport line the route does not take? At a run it slides
     /// about ten times its speed: a bend beside a pit must be taken at a
     /// walk.
-    fn coasting_off(&self, game: &Game, a: &Active, live: &Heights) -> bool {
+    fn coasting_off(&self, game: &dyn Observe, a: &Active, live: &Heights) -> bool {
         let player = game.player();
         let slide = player.velocity * 10.0;
         let ahead = a.at..(a.at + 16).min(a.route.cells.len());
@@ -1603,7 +1603,7 @@ impl Autopilot {
     }
 
     /// The input that heads for `target`.
-    fn drive_to(&self, game: &Game, target: DVec2, gently: bool) -> TickInput {
+    fn drive_to(&self, game: &dyn Observe, target: DVec2, gently: bool) -> TickInput {
         let player = game.player();
         let d = target - player.pos;
         let turn = turn_to(player.angle, d.y.atan2(d.x).to_degrees());
@@ -1639,7 +1639,13 @@ impl Autopilot {
     /// The next move, to cell `next` whose span is `to` as the level
     /// stands, is blocked: open the door, call the lift, or wait for what
     /// is moving.
-    fn unblock(&mut self, game: &Game, a: &mut Active, (next, to): (Cell, Span), live: &Heights) -> Option<TickInput> {
+    fn unblock(
+        &mut self,
+        game: &dyn Observe,
+        a: &mut Active,
+        (next, to): (Cell, Span),
+        live: &Heights,
+    ) -> Option<TickInput> {
         let level = game.level();
         let map = &level.compiled.map;
         let player = game.player();
@@ -1697,7 +1703,7 @@ impl Autopilot {
             let on = (player.z - live.floor[s]).abs() < 1.0
                 && self.nav.touched(a.route.cells[a.at]).contains(&(s as u32))
                 && !(self.mech.lifts[s].is_empty() && self.mech.lift_down[s].is_empty());
-            if on && way_up && game.world().is_busy(s) {
+            if on && way_up && game.is_busy(s) {
                 // Riding it: it comes back up by itself.
                 return Some(self.hold(game));
             }
@@ -1741,12 +1747,12 @@ impl Autopilot {
     }
 
     /// A route to `goal` from here, with the heights a plan assumes.
-    fn route_to(&mut self, game: &Game, goal: &Goal) -> Option<Route> {
+    fn route_to(&mut self, game: &dyn Observe, goal: &Goal) -> Option<Route> {
         self.route_with(game, goal, |_| {})
     }
 
     /// [`Self::route_to`] with the assumed heights changed by `adjust`.
-    fn route_with(&mut self, game: &Game, goal: &Goal, adjust: impl FnOnce(&mut Heights)) -> Option<Route> {
+    fn route_with(&mut self, game: &dyn Observe, goal: &Goal, adjust: impl FnOnce(&mut Heights)) -> Option<Route> {
         let level = game.level();
         let map = &level.compiled.map;
         let mut assumed = self.assume(game);
@@ -1758,7 +1764,7 @@ impl Autopilot {
     }
 
     /// Stand still (braking).
-    fn hold(&self, game: &Game) -> TickInput {
+    fn hold(&self, game: &dyn Observe) -> TickInput {
         let v = game.player().velocity;
         if v.length() > 2.0 {
             // Thrust against the motion.
@@ -1789,7 +1795,7 @@ impl Autopilot {
 
     /// Faces `line` and presses use, if the body is in front of it and
     /// within reach; `None` when it is not.
-    fn use_line(&self, game: &Game, line: LineId) -> Option<TickInput> {
+    fn use_line(&self, game: &dyn Observe, line: LineId) -> Option<TickInput> {
         let map = &game.level().compiled.map;
         let (_, a, b, special) = line_of(map, line);
         if special.is_none_or(|s| s.on != Activation::Use) {
@@ -1813,13 +1819,13 @@ impl Autopilot {
     /// Would a press from `from` aimed at `to` reach `line`? Doom's use
     /// stops at the first line with a live use special (another switch in
     /// front swallows the press) or at a wall with no opening.
-    fn press_reaches(game: &Game, line: LineId, from: DVec2, to: DVec2) -> bool {
+    fn press_reaches(game: &dyn Observe, line: LineId, from: DVec2, to: DVec2) -> bool {
         let wanted = line_of(&game.level().compiled.map, line).0;
-        game.use_stop(&mut Default::default(), from, to).is_none_or(|c| c.line == wanted)
+        game.use_stop(from, to).is_none_or(|l| l == wanted)
     }
 
     /// At the route's end: do what the goal asks.
-    fn arrive(&mut self, game: &Game, a: &mut Active) -> Option<TickInput> {
+    fn arrive(&mut self, game: &dyn Observe, a: &mut Active) -> Option<TickInput> {
         let now = game.ticks();
         a.arrived += 1;
         match a.goal.clone() {
@@ -1959,7 +1965,7 @@ impl Autopilot {
                 Some(self.drive_to(game, pos, true))
             }
             Goal::Touch(pos, actor) => {
-                let gone = game.actors().list.get(actor as usize).is_none_or(|x| x.removed);
+                let gone = game.seen().get(actor as usize).is_none_or(|x| x.removed);
                 if gone || a.arrived > 70 {
                     if !gone {
                         // Out of reach from here (behind a wall, too high):
@@ -1977,7 +1983,7 @@ impl Autopilot {
 
     /// With `SIGHTLINE_AUTOPILOT_TRACE` set: a press of `line`, where from,
     /// whether the line is still live and which of its sectors are busy.
-    fn trace_press(game: &Game, line: LineId) {
+    fn trace_press(game: &dyn Observe, line: LineId) {
         if std::env::var_os("SIGHTLINE_AUTOPILOT_TRACE").is_none() {
             return;
         }
@@ -1987,27 +1993,26 @@ impl Autopilot {
             .map(|sp| crate::play::world::specials::target_sectors(level, sl, sp))
             .unwrap_or_default()
             .into_iter()
-            .map(|s| (s, game.world().is_busy(s)))
+            .map(|s| (s, game.is_busy(s)))
             .collect();
         eprintln!(
             "press line {line} from {:?} facing {:.1}, live {}, targets busy {busy:?}",
             player.pos,
             player.angle,
-            game.world().special(level, sl).is_some()
+            game.special(sl).is_some()
         );
     }
 
     /// The enemy to shoot, if one is in sight: the angle to it and the
     /// weapon number to hold.
-    fn fight(&mut self, game: &Game) -> Option<(f64, u8, f64)> {
+    fn fight(&mut self, game: &dyn Observe) -> Option<(f64, u8, f64)> {
         let player = game.player();
-        let actors = game.actors();
-        let table = &actors.table;
+        let (seen, table) = (game.seen(), game.table());
         let compiled = &game.level().compiled;
         let looker = Body { pos: player.pos, z: player.z, height: 56.0, radius: 16.0, index: usize::MAX };
         let mut best: Option<(f64, usize)> = None;
         self.in_sight = 0;
-        for (i, a) in actors.list.iter().enumerate() {
+        for (i, a) in seen.iter().enumerate() {
             let def = &table.actors[a.kind];
             if a.removed
                 || a.health <= 0
@@ -2032,7 +2037,7 @@ impl Autopilot {
             self.barrel_near = false;
             return None;
         };
-        let target = actors.list[i].pos;
+        let target = seen[i].pos;
         let to = target - player.pos;
         // Barrels close by in a fight: any shot, the bot's or an enemy's,
         // can set one off, so fall back away from them; one on the line of
@@ -2040,7 +2045,7 @@ impl Autopilot {
         // hold fire.
         let mut in_the_way = false;
         self.barrel_near = false;
-        for b in &actors.list {
+        for b in seen.iter() {
             if b.removed || b.health <= 0 || table.actors[b.kind].name != "barrel" {
                 continue;
             }
@@ -2056,13 +2061,13 @@ impl Autopilot {
         }
         // Nothing else that stops a rocket (a monster stepping in, a barrel)
         // near its flight while its blast would still reach the bot.
-        let crowded = actors.list.iter().enumerate().any(|(j, b)| {
+        let crowded = seen.iter().enumerate().any(|(j, b)| {
             let def = &table.actors[b.kind];
             let p = b.pos - player.pos;
             j != i
                 && !b.removed
                 && b.health > 0
-                && b.flags.has(ActorFlag::Shootable)
+                && b.shootable
                 && p.length() < ROCKET_SAFE + 64.0
                 && p.dot(to) > 0.0
                 && plan::nearest_on(b.pos, player.pos, target).distance(b.pos) < def.radius + 16.0
@@ -2076,7 +2081,7 @@ impl Autopilot {
         // With only a fist (or chainsaw), an enemy out of its reach is no
         // fight: swinging at it, or falling back from it, only gives it
         // time to shoot; go on (for ammo, say) instead.
-        if weapon == 1 && d > MELEE_REACH + table.actors[actors.list[i].kind].radius {
+        if weapon == 1 && d > MELEE_REACH + table.actors[seen[i].kind].radius {
             return None;
         }
         Some((to.y.atan2(to.x).to_degrees(), weapon, d))
@@ -2143,18 +2148,64 @@ pub fn run_through(
             outcome.died = true;
             break;
         }
-        match bot.status() {
+        if bot.gave_up(tick, &mut stuck_since, &mut outcome) {
+            break;
+        }
+    }
+    Ok((outcome, bot))
+}
+
+/// Plays `game`, a level of the simulation with Doom's arithmetic, with a
+/// new autopilot until it exits, the player dies, the bot has been stuck a
+/// minute, `max_ticks` have run, or `each` (called after every tick with
+/// the tick number) says stop. The game keeps the commands it was fed
+/// ([`crate::sim::game::SimGame::commands`]): a vanilla demo of the run.
+pub fn run_sim(
+    game: &mut crate::sim::game::SimGame,
+    max_ticks: u64,
+    mut each: impl FnMut(&crate::sim::game::SimGame, u64) -> bool,
+) -> (Outcome, Autopilot) {
+    let mut bot = Autopilot::new(game);
+    let mut outcome = Outcome::default();
+    let mut stuck_since: Option<u64> = None;
+    for tick in 1..=max_ticks {
+        let input = bot.tick(game);
+        game.tick(&input);
+        outcome.inputs.push(input);
+        if !each(game, tick) {
+            break;
+        }
+        if let Some(exit) = game.exit() {
+            outcome.exit = Some(exit);
+            break;
+        }
+        if Observe::player(game).dead() {
+            outcome.died = true;
+            break;
+        }
+        if bot.gave_up(tick, &mut stuck_since, &mut outcome) {
+            break;
+        }
+    }
+    (outcome, bot)
+}
+
+impl Autopilot {
+    /// Whether the bot has been stuck longer than [`GIVE_UP_STUCK`] at
+    /// `tick` (then `outcome` says where and why).
+    fn gave_up(&self, tick: u64, stuck_since: &mut Option<u64>, outcome: &mut Outcome) -> bool {
+        match self.status() {
             Status::Stuck { at, why } => {
                 let since = *stuck_since.get_or_insert(tick);
                 if tick - since > GIVE_UP_STUCK {
                     outcome.stuck = Some((*at, why.clone()));
-                    break;
+                    return true;
                 }
             }
-            Status::Playing => stuck_since = None,
+            Status::Playing => *stuck_since = None,
         }
+        false
     }
-    Ok((outcome, bot))
 }
 
 /// Below this much room a descending ceiling is one to keep out from under:
@@ -2220,8 +2271,8 @@ fn gives(def: &ActorDef) -> impl Iterator<Item = &Give> {
 }
 
 /// The weapon slot of weapon `w` (an actor), if any.
-fn slot_of(game: &Game, w: Option<usize>) -> Option<u8> {
-    w.and_then(|w| game.actors().table.actors[w].weapon.as_ref()).map(|w| w.slot)
+fn slot_of(game: &dyn Observe, w: Option<usize>) -> Option<u8> {
+    w.and_then(|w| game.table().actors[w].weapon.as_ref()).map(|w| w.slot)
 }
 
 /// The forward and strafe keys that move a body facing `facing` degrees
@@ -2252,9 +2303,9 @@ enum Fire {
 
 /// The weapon slot to fight with: the best owned with ammo that `fire`
 /// allows.
-fn weapon_for(game: &Game, fire: Fire) -> u8 {
+fn weapon_for(game: &dyn Observe, fire: Fire) -> u8 {
     let player = game.player();
-    let table = &game.actors().table;
+    let table = game.table();
     let mut best = (0, 1u8);
     for &w in &player.weapons {
         let Some(def) = table.actors[w].weapon.as_ref() else { continue };

@@ -40,6 +40,7 @@ pub mod random;
 pub mod reload;
 pub mod save;
 pub mod sight;
+pub mod statdump;
 pub mod syncdump;
 pub mod trace;
 pub mod vanilla;
@@ -99,11 +100,15 @@ pub struct GameOptions {
     /// as a kill, nor lost souls).
     #[serde(default)]
     pub no_monsters: bool,
+    /// Played on the simulation with Doom's arithmetic ([`crate::sim`]),
+    /// not this module's f64 game.
+    #[serde(default)]
+    pub sim: bool,
 }
 
 impl Default for GameOptions {
     fn default() -> GameOptions {
-        GameOptions { skill: DEFAULT_SKILL, seed: 0, no_monsters: false }
+        GameOptions { skill: DEFAULT_SKILL, seed: 0, no_monsters: false, sim: false }
     }
 }
 

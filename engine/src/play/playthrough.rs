@@ -5,12 +5,22 @@
 //! [`TickInput`]s as a [`Game`] (the intermission's presses included), so a
 //! demo recorded across several maps replays exactly, headless too.
 
-use crate::bsp::BuildOptions;
-use crate::campaign::{open, Campaign, CampaignError, MapRef};
-use crate::level::Level;
+use std::borrow::Cow;
 
-use super::world::Exit;
-use super::{Game, GameOptions, PlayError, Stats, TickInput};
+use glam::DVec2;
+
+use crate::actors::ActorTable;
+use crate::autopilot::observe::{Observe, Seen};
+use crate::bsp::BuildOptions;
+use crate::campaign::{open, Campaign, CampaignError, MapRef, Opened};
+use crate::level::Level;
+use crate::map::LineSpecial;
+use crate::render::View;
+use crate::sim::game::{SimGame, SimGameError};
+
+use super::events::Event;
+use super::world::{Exit, SpecialLine};
+use super::{Game, GameOptions, PlayError, Player, Stats, TickInput};
 
 /// Ticks an intermission shows before a press can end it (1 s, so a key
 /// still held from the exit switch does not skip it).
@@ -41,6 +51,189 @@ pub enum PlaythroughError {
     Open(#[from] CampaignError),
     #[error("{map}: {error}")]
     Start { map: String, error: PlayError },
+    #[error(transparent)]
+    Sim(#[from] SimGameError),
+}
+
+/// The game a level is played on: the f64 game, or the simulation with
+/// Doom's arithmetic ([`GameOptions::sim`]). Both answer what the window,
+/// the sound and the autopilot ask ([`Observe`], [`Played::view`],
+/// [`Played::tick`]).
+pub enum Played {
+    Float(Box<Game>),
+    Sim(Box<SimGame>),
+}
+
+impl Played {
+    pub fn tick(&mut self, input: &TickInput) {
+        match self {
+            Played::Float(g) => g.tick(input),
+            Played::Sim(g) => g.tick(input),
+        }
+    }
+
+    /// The eye between the last tick's start (`alpha` 0) and end (1).
+    pub fn view(&self, alpha: f64) -> View {
+        match self {
+            Played::Float(g) => g.view(alpha),
+            Played::Sim(g) => g.view(alpha),
+        }
+    }
+
+    pub fn level(&self) -> &Level {
+        Observe::level(self)
+    }
+
+    /// The level to draw into (a Doom demo played elsewhere is drawn here).
+    pub fn level_mut(&mut self) -> &mut Level {
+        match self {
+            Played::Float(g) => g.level_mut(),
+            Played::Sim(g) => g.level_mut(),
+        }
+    }
+
+    pub fn player(&self) -> &Player {
+        Observe::player(self)
+    }
+
+    /// The player, to change by hand (tests, tools, what a screen shows).
+    /// On the simulation this is what it shows only: the next tick reads
+    /// the player afresh.
+    pub fn player_mut(&mut self) -> &mut Player {
+        match self {
+            Played::Float(g) => g.player_mut(),
+            Played::Sim(g) => g.player_mut(),
+        }
+    }
+
+    pub fn ticks(&self) -> u64 {
+        Observe::ticks(self)
+    }
+
+    pub fn stats(&self) -> Stats {
+        Observe::stats(self)
+    }
+
+    pub fn events(&self) -> &[Event] {
+        Observe::events(self)
+    }
+
+    pub fn exit(&self) -> Option<Exit> {
+        Observe::exit(self)
+    }
+
+    pub fn options(&self) -> GameOptions {
+        match self {
+            Played::Float(g) => g.options(),
+            Played::Sim(g) => g.options(),
+        }
+    }
+
+    /// The game's whole state as bytes: equal bytes, equal games (what a
+    /// save holds after its header).
+    pub fn state_bytes(&self) -> Vec<u8> {
+        match self {
+            Played::Float(g) => g.state_bytes(),
+            Played::Sim(g) => g.state_bytes(),
+        }
+    }
+
+    /// The f64 game, when that is what plays (tests and tools that reach
+    /// into its machinery).
+    pub fn float(&self) -> Option<&Game> {
+        match self {
+            Played::Float(g) => Some(g),
+            Played::Sim(_) => None,
+        }
+    }
+
+    pub fn float_mut(&mut self) -> Option<&mut Game> {
+        match self {
+            Played::Float(g) => Some(g),
+            Played::Sim(_) => None,
+        }
+    }
+
+    /// The simulation with Doom's arithmetic, when that is what plays.
+    pub fn sim(&self) -> Option<&SimGame> {
+        match self {
+            Played::Float(_) => None,
+            Played::Sim(g) => Some(g),
+        }
+    }
+
+    pub fn sim_mut(&mut self) -> Option<&mut SimGame> {
+        match self {
+            Played::Float(_) => None,
+            Played::Sim(g) => Some(g),
+        }
+    }
+
+    /// Puts the player at `pos` facing `angle`, standing still (a map
+    /// reloaded under a map maker keeps their pose); `false` when it does
+    /// not fit there. The simulation starts its player at the map's start.
+    fn place_player(&mut self, pos: DVec2, angle: f64) -> bool {
+        match self {
+            Played::Float(g) => g.place_player(pos, angle),
+            Played::Sim(_) => false,
+        }
+    }
+}
+
+impl Played {
+    /// The game behind, read as the autopilot reads a game.
+    fn inner(&self) -> &dyn Observe {
+        match self {
+            Played::Float(g) => &**g,
+            Played::Sim(g) => &**g,
+        }
+    }
+}
+
+impl Observe for Played {
+    fn level(&self) -> &Level {
+        self.inner().level()
+    }
+
+    fn ticks(&self) -> u64 {
+        self.inner().ticks()
+    }
+
+    fn player(&self) -> &Player {
+        self.inner().player()
+    }
+
+    fn seen(&self) -> Cow<'_, [Seen]> {
+        self.inner().seen()
+    }
+
+    fn table(&self) -> &ActorTable {
+        self.inner().table()
+    }
+
+    fn exit(&self) -> Option<Exit> {
+        self.inner().exit()
+    }
+
+    fn events(&self) -> &[Event] {
+        self.inner().events()
+    }
+
+    fn stats(&self) -> Stats {
+        self.inner().stats()
+    }
+
+    fn is_busy(&self, sector: usize) -> bool {
+        self.inner().is_busy(sector)
+    }
+
+    fn special(&self, line: SpecialLine) -> Option<LineSpecial> {
+        self.inner().special(line)
+    }
+
+    fn use_stop(&self, from: DVec2, to: DVec2) -> Option<SpecialLine> {
+        self.inner().use_stop(from, to)
+    }
 }
 
 /// A playthrough in progress.
@@ -48,7 +241,7 @@ pub struct Playthrough {
     pub campaign: Campaign,
     /// The map being played (or just finished).
     pub map: MapRef,
-    pub game: Game,
+    pub game: Played,
     pub phase: Phase,
     /// Ticks run since the playthrough began, over every map and intermission.
     pub ticks: u64,
@@ -64,8 +257,8 @@ impl Playthrough {
         let build = BuildOptions::default();
         let map = map.unwrap_or_else(|| campaign.first());
         let opened = open(&map, &build)?;
-        let map = opened.map;
-        let game = start(opened.level, &map, options)?;
+        let map = opened.map.clone();
+        let game = start(opened, options)?;
         Ok(Playthrough { campaign, map, game, phase: Phase::Playing, ticks: 0, options, build, held: false })
     }
 
@@ -90,8 +283,8 @@ impl Playthrough {
     }
 
     /// A playthrough of `campaign` resumed on `map` with `game` (a loaded save).
-    pub(super) fn resume(campaign: Campaign, map: MapRef, game: Game, ticks: u64, held: bool) -> Playthrough {
-        let options = game.options;
+    pub(super) fn resume(campaign: Campaign, map: MapRef, game: Played, ticks: u64, held: bool) -> Playthrough {
+        let options = game.options();
         let build = BuildOptions::default();
         Playthrough { campaign, map, game, phase: Phase::Playing, ticks, options, build, held }
     }
@@ -134,11 +327,18 @@ impl Playthrough {
     /// Loads `map` and plays it; the player keeps its health (not its keys,
     /// as in Doom).
     fn enter(&mut self, map: MapRef) -> Result<(), PlaythroughError> {
-        let health = self.game.player().health;
         let opened = open(&map, &self.build)?;
-        let mut game = start(opened.level, &opened.map, self.options)?;
-        game.player_mut().health = health.max(1);
-        self.map = opened.map;
+        let map = opened.map.clone();
+        let game = match &self.game {
+            Played::Sim(from) => Played::Sim(Box::new(SimGame::next_level(opened, self.options, from)?)),
+            Played::Float(from) => {
+                let health = from.player().health;
+                let mut game = start(opened, self.options)?;
+                game.player_mut().health = health.max(1);
+                game
+            }
+        };
+        self.map = map;
         self.game = game;
         self.phase = Phase::Playing;
         Ok(())
@@ -150,7 +350,7 @@ impl Playthrough {
     /// error the playthrough is untouched.
     pub fn reload(&mut self) -> Result<bool, PlaythroughError> {
         let opened = open(&self.map, &self.build)?;
-        let mut game = start(opened.level, &opened.map, self.options)?;
+        let mut game = start(opened, self.options)?;
         let p = self.game.player();
         let kept = game.place_player(p.pos, p.angle);
         self.game = game;
@@ -162,12 +362,18 @@ impl Playthrough {
     fn restart(&mut self) -> Result<(), PlaythroughError> {
         let map = self.map.clone();
         let opened = open(&map, &self.build)?;
-        self.game = start(opened.level, &opened.map, self.options)?;
+        self.game = start(opened, self.options)?;
         self.phase = Phase::Playing;
         Ok(())
     }
 }
 
-fn start(level: Level, map: &MapRef, options: GameOptions) -> Result<Game, PlaythroughError> {
-    Game::with_options(level, options).map_err(|error| PlaythroughError::Start { map: map.label(), error })
+/// A new game on `opened`, on the game `options` choose.
+fn start(opened: Opened, options: GameOptions) -> Result<Played, PlaythroughError> {
+    if options.sim {
+        return Ok(Played::Sim(Box::new(SimGame::new(opened, options)?)));
+    }
+    let map = opened.map.label();
+    let game = Game::with_options(opened.level, options).map_err(|error| PlaythroughError::Start { map, error })?;
+    Ok(Played::Float(Box::new(game)))
 }

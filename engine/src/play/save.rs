@@ -21,6 +21,13 @@
 //! | 20-27 | length of the rest in bytes (little-endian u64) |
 //! | rest | [`SaveInfo`], then the game's state, each in CBOR |
 //!
+//! The game's state is the f64 game's ([`Game::state_bytes`]), or, when the
+//! level is played on the simulation with Doom's arithmetic
+//! ([`GameOptions::sim`]), the simulation's own saved state
+//! ([`crate::sim::save`], bit-exact, checked against the map and the actor
+//! table by its own fingerprints). Version 2 brought the simulation; a
+//! version 1 save is refused with that message.
+//!
 //! CBOR (RFC 8949, by `ciborium`) is self-describing: fields go by name, so
 //! the map types' defaulted fields (left out when they hold their default,
 //! as in a RON map) read back, and a field that is missing or of the wrong
@@ -44,15 +51,17 @@ use crate::materials::{SectorTextures, SideTextures};
 use crate::texture::TextureId;
 
 use super::actors::Actors;
-use super::playthrough::{Phase, Playthrough, PlaythroughError};
+use super::playthrough::{Phase, Played, Playthrough, PlaythroughError};
 use super::random::GameRng;
 use super::world::{Exit, World};
 use super::{Game, GameOptions, Player, Pose};
+use crate::sim::game::SimGame;
 
 pub const MAGIC: &[u8] = b"SIGHTLINE-SAVE\n";
 /// Bumped whenever the saved state's meaning changes (a field renamed, or
-/// the same field meaning something else).
-pub const VERSION: u8 = 1;
+/// the same field meaning something else). 2: the level's game may be the
+/// simulation with Doom's arithmetic.
+pub const VERSION: u8 = 2;
 /// The header: magic, version, checksum, length.
 const HEADER: usize = 15 + 1 + 4 + 8;
 
@@ -294,18 +303,22 @@ impl Playthrough {
         if self.phase != Phase::Playing {
             return Err("the level is over (saves are made while playing)");
         }
+        let (map_fingerprint, table_fingerprint, state) = match &self.game {
+            Played::Float(game) => (game.fingerprint, table_fingerprint(&game.actors.table), game.state_bytes()),
+            Played::Sim(game) => (game.fingerprint(), 0, game.state_bytes()),
+        };
         let info = SaveInfo {
             map: absolute_map(&self.map),
             campaign: absolute_campaign(&self.campaign),
             options: self.options(),
             playthrough_ticks: self.ticks,
-            level_ticks: self.game.ticks,
+            level_ticks: self.game.ticks(),
             held: self.held(),
-            map_fingerprint: self.game.fingerprint,
-            table_fingerprint: table_fingerprint(&self.game.actors.table),
+            map_fingerprint,
+            table_fingerprint,
         };
         let mut body = encode(&info);
-        body.extend(self.game.state_bytes());
+        body.extend(state);
         let mut bytes = MAGIC.to_vec();
         bytes.push(VERSION);
         bytes.extend(crc32fast::hash(&body).to_le_bytes());
@@ -350,16 +363,29 @@ impl Playthrough {
         if map_fingerprint(&opened.level) != info.map_fingerprint {
             return Err(SaveError::MapChanged { path: path(), map: info.map.label() });
         }
-        let table = ActorTable::active().clone();
-        if table_fingerprint(&table) != info.table_fingerprint {
-            return Err(SaveError::TableChanged { path: path() });
+        let corrupt = |what: String| SaveError::Corrupt { path: path(), what };
+        let game = if info.options.sim {
+            // The simulation's state checks its own actor table and map.
+            let map = opened.map.clone();
+            let mut game = SimGame::new(opened, info.options).map_err(|e| corrupt(e.to_string()))?;
+            game.restore(state, label).map_err(|e| corrupt(e.to_string()))?;
+            (Played::Sim(Box::new(game)), map)
+        } else {
+            let table = ActorTable::active().clone();
+            if table_fingerprint(&table) != info.table_fingerprint {
+                return Err(SaveError::TableChanged { path: path() });
+            }
+            let game = Game::from_state(opened.level, table, state).map_err(corrupt)?;
+            if game.options != info.options {
+                return Err(corrupt("the header and the game's state disagree".into()));
+            }
+            (Played::Float(Box::new(game)), opened.map)
+        };
+        let (game, map) = game;
+        if game.ticks() != info.level_ticks {
+            return Err(corrupt("the header and the game's state disagree".into()));
         }
-        let game =
-            Game::from_state(opened.level, table, state).map_err(|what| SaveError::Corrupt { path: path(), what })?;
-        if game.options != info.options || game.ticks != info.level_ticks {
-            return Err(SaveError::Corrupt { path: path(), what: "the header and the game's state disagree".into() });
-        }
-        Ok(Playthrough::resume(info.campaign, opened.map, game, info.playthrough_ticks, info.held))
+        Ok(Playthrough::resume(info.campaign, map, game, info.playthrough_ticks, info.held))
     }
 }
 

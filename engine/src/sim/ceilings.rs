@@ -14,7 +14,7 @@ use crate::fixed::Fixed;
 pub const CEILSPEED: Fixed = Fixed::ONE;
 
 /// `ceiling_e`.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum CeilingType {
     #[default]
     LowerToFloor,
@@ -27,7 +27,7 @@ pub enum CeilingType {
 
 /// The thinker's data (`ceiling_t`). `direction` 1 up, -1 down, 0 in
 /// stasis.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Ceiling {
     pub kind: CeilingType,
     pub sector: usize,

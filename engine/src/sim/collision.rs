@@ -15,7 +15,7 @@ use crate::fixed::{Fixed, FRACUNIT};
 pub use super::hitscan::{aim_line_attack, line_attack, radius_attack, use_lines};
 
 /// `p_map.c`'s globals: what the last position check, move or trace found.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct MapCheck {
     pub thing: Option<MobjId>,
     pub flags: u32,

@@ -15,7 +15,7 @@ pub const VDOORSPEED: Fixed = Fixed(2 << 16);
 pub const VDOORWAIT: i32 = 150;
 
 /// `vldoor_e`.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum DoorType {
     #[default]
     Normal,
@@ -30,7 +30,7 @@ pub enum DoorType {
 
 /// The thinker's data (`vldoor_t`). `direction`: 1 up, 0 waiting, -1
 /// down, 2 the initial wait of a 5-minute door.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Door {
     pub kind: DoorType,
     pub sector: usize,

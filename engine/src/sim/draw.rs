@@ -1,38 +1,79 @@
-//! The simulation drawn by the renderer: its sectors' heights and light
-//! and its bodies written into the converted map the renderer draws (a WAD
-//! map opened through `campaign::open`, whose sectors the importer
-//! renumbered: [`crate::campaign::Opened::sector_map`] says where each of
-//! the WAD's went), and the console player's view. Positions are the
+//! The simulation drawn by the renderer: its sectors' heights, light and
+//! flats, its switches' textures and its bodies written into the converted
+//! map the renderer draws (a WAD map opened through `campaign::open`, whose
+//! sectors and lines the importer renumbered, merged or left out:
+//! [`Links`] says where each of the WAD's went; a RON map's numbering is
+//! the simulation's own), and the console player's view. Positions are the
 //! fixed-point values divided out, so the frame shows exactly the state
 //! the simulation holds.
 
 use glam::DVec2;
 
+use super::level::NameId;
 use super::Sim;
 use crate::level::{DrawnThing, Level};
 use crate::materials::Materials;
 use crate::render::View;
+use crate::texture::{TextureId, TextureKind};
+use crate::wad::import::Links;
 
-/// How the simulation's numbering maps onto a converted map.
+/// How the simulation's numbering maps onto a converted map, and the
+/// textures last written (only changes are looked up again).
 #[derive(Clone, Debug)]
 pub struct Scene {
-    /// The converted map's sector for each of the WAD's sectors.
-    sectors: Vec<Option<usize>>,
+    links: Links,
+    /// Per converted line, its front side's texture names as last drawn.
+    sides: Vec<[NameId; 3]>,
+    /// Per WAD sector, its flats as last drawn.
+    flats: Vec<[NameId; 2]>,
 }
 
 impl Scene {
-    pub fn new(sector_map: Vec<Option<usize>>) -> Scene {
-        Scene { sectors: sector_map }
+    /// A scene on a converted WAD map.
+    pub fn new(links: Links) -> Scene {
+        Scene { links, sides: Vec::new(), flats: Vec::new() }
+    }
+
+    /// A scene on a map the simulation numbers as the renderer does (a RON
+    /// map through `from_map`): sectors and lines are their own, and its
+    /// trigger lines follow its lines.
+    pub fn identity(map: &crate::map::Map) -> Scene {
+        let lines = map.lines.len();
+        Scene::new(Links {
+            sectors: (0..map.sectors.len()).map(Some).collect(),
+            lines: (0..lines).map(|l| vec![l]).collect(),
+            triggers: (lines..lines + map.trigger_lines.len()).collect(),
+        })
     }
 
     /// The converted map's sector of the WAD's sector `s`.
     pub fn sector(&self, s: usize) -> Option<usize> {
-        self.sectors.get(s).copied().flatten()
+        self.links.sectors.get(s).copied().flatten()
     }
 
-    /// Writes the simulation's sector heights and light and its bodies
-    /// (all but the viewing player's own) into `level`.
-    pub fn draw(&self, sim: &Sim, level: &mut Level) {
+    /// The WAD's linedef behind the converted map's line `line` (the first,
+    /// when several were merged into it).
+    pub fn linedef(&self, line: usize) -> Option<usize> {
+        self.links.lines.get(line).and_then(|d| d.first()).copied()
+    }
+
+    /// The WAD's linedef behind trigger line `t`.
+    pub fn trigger_linedef(&self, t: usize) -> Option<usize> {
+        self.links.triggers.get(t).copied()
+    }
+
+    /// The converted map's line (or trigger line, `Err`) a WAD linedef became.
+    pub fn line_of_linedef(&self, linedef: usize) -> Option<Result<usize, usize>> {
+        if let Some(l) = self.links.lines.iter().position(|d| d.contains(&linedef)) {
+            return Some(Ok(l));
+        }
+        self.links.triggers.iter().position(|&d| d == linedef).map(Err)
+    }
+
+    /// Writes the simulation's sector heights, light and flats, the
+    /// switches' textures and its bodies (all but the viewing player's own)
+    /// into `level`.
+    pub fn draw(&mut self, sim: &Sim, level: &mut Level) {
         for (i, s) in sim.level.sectors.iter().enumerate() {
             let Some(j) = self.sector(i) else { continue };
             let Some(out) = level.compiled.map.sectors.get_mut(j) else { continue };
@@ -40,6 +81,7 @@ impl Scene {
             out.ceiling = s.ceilingheight.to_f64();
             out.light = s.lightlevel.clamp(0, 255) as u8;
         }
+        self.draw_textures(sim, level);
         let viewer = sim.player(sim.console).map(|p| p.mo);
         let table = &sim.info.table;
         let things = sim.live_mobjs().filter(|&id| Some(id) != viewer).filter_map(|id| {
@@ -61,6 +103,59 @@ impl Scene {
         });
         level.things = things.collect();
         level.time = u64::from(sim.leveltime);
+    }
+
+    /// The textures play changed (switches flipped, floors changed by a
+    /// lift or a donut) written where they show; a name the renderer never
+    /// loaded is left as it was. The first call only remembers.
+    fn draw_textures(&mut self, sim: &Sim, level: &mut Level) {
+        let front = |l: usize| {
+            let s = sim.level.lines.get(l)?.sidenum[0]?;
+            let s = sim.level.sides.get(s)?;
+            Some([s.toptexture, s.midtexture, s.bottomtexture])
+        };
+        let first = self.sides.is_empty() && self.flats.is_empty();
+        let sides: Vec<[NameId; 3]> =
+            (0..self.links.lines.len()).map(|l| self.linedef(l).and_then(front).unwrap_or_default()).collect();
+        let flats: Vec<[NameId; 2]> = sim.level.sectors.iter().map(|s| [s.floorpic, s.ceilingpic]).collect();
+        if first {
+            (self.sides, self.flats) = (sides, flats);
+            return;
+        }
+        let find = |id: NameId, kind| level.materials.textures.find(sim.level.name(id), kind);
+        let mut side_changes: Vec<(usize, usize, Option<TextureId>)> = Vec::new();
+        for (l, (now, was)) in sides.iter().zip(&self.sides).enumerate() {
+            for part in (0..3).filter(|&p| now[p] != was[p]) {
+                if let Some(id) = find(now[part], TextureKind::Wall) {
+                    side_changes.push((l, part, Some(id)));
+                }
+            }
+        }
+        let mut flat_changes: Vec<(usize, usize, TextureId)> = Vec::new();
+        for (s, (now, was)) in flats.iter().zip(&self.flats).enumerate() {
+            let Some(j) = self.sector(s) else { continue };
+            for part in (0..2).filter(|&p| now[p] != was[p]) {
+                if let Some(id) = find(now[part], TextureKind::Flat) {
+                    flat_changes.push((j, part, id));
+                }
+            }
+        }
+        for (l, part, id) in side_changes {
+            let Some(side) = level.materials.sides.get_mut(l) else { continue };
+            let slot = [&mut side[0].upper, &mut side[0].middle, &mut side[0].lower];
+            if let Some(slot) = slot.into_iter().nth(part) {
+                *slot = id;
+            }
+        }
+        for (j, part, id) in flat_changes {
+            let Some(sector) = level.materials.sectors.get_mut(j) else { continue };
+            if part == 0 {
+                sector.floor = Some(id);
+            } else {
+                sector.ceiling = Some(id);
+            }
+        }
+        (self.sides, self.flats) = (sides, flats);
     }
 
     /// The console player's eye (`viewz`, or the body's height plus the

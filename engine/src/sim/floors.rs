@@ -89,7 +89,7 @@ pub fn move_plane(
 }
 
 /// `floor_e`.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum FloorType {
     #[default]
     LowerFloor,
@@ -115,7 +115,7 @@ pub enum StairType {
 }
 
 /// The thinker's data (`floormove_t`).
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct FloorMove {
     pub kind: FloorType,
     /// Doom's int (see [`move_plane`]).

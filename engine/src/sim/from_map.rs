@@ -408,15 +408,12 @@ impl<'a> Convert<'a> {
             let element = format!("thing {i}");
             // A kind the table does not know is a decoration the renderer
             // draws by name (`statue`, `column`): nothing the game runs.
-            let Some(def) = table.get(&t.kind) else {
+            let Some(index) = table.index(&t.kind) else {
                 self.note(&element, format!("`{}` is not an actor of the table; left out", t.kind));
                 continue;
             };
-            let Some(kind) = def.doomednum else {
-                self.note(
-                    &element,
-                    format!("actor `{}` has no editor number, so a Doom map cannot hold it; left out", t.kind),
-                );
+            let Some(kind) = super::info::editor_number(&table.actors[index], index) else {
+                self.note(&element, format!("actor `{}` has no editor number and none is free; left out", t.kind));
                 continue;
             };
             let x = self.thing_coord(t.pos.x, &element)?;

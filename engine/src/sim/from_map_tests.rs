@@ -348,8 +348,15 @@ fn outpost_s_specials_take_doom_s_numbers() {
     assert!(report.iter().any(|n| n.element == format!("line {lift}") && n.what.contains("62")), "{report:?}");
     let types: Vec<i16> = level.sectors.iter().map(|s| s.special).collect();
     assert_eq!((types[4], types[9], types[13]), (7, 17, 9), "slime, flicker, secret");
-    // The roster's monsters have no editor numbers: left out, and said so.
-    assert!(report.iter().any(|n| n.what.contains("`sentry`")), "{report:?}");
+    // The roster's monsters have no Doom editor numbers: they are stored
+    // under numbers from the top of the 16-bit range, and spawn.
+    assert!(!report.iter().any(|n| n.what.contains("`sentry`")), "{report:?}");
+    let table = ActorTable::doom();
+    let sentry = table.index("sentry").expect("the roster's sentry");
+    let number = crate::sim::info::editor_number(&table.actors[sentry], sentry).expect("a number");
+    assert!(number > 32767, "{number}");
+    let sentries = compiled.map.things.iter().filter(|t| t.kind == "sentry").count();
+    assert!(sentries > 0 && level.things.iter().filter(|t| t.kind == number).count() == sentries);
 }
 
 fn walk(path: &str, tics: usize) {

@@ -112,7 +112,7 @@ impl Info {
             })
             .collect();
         let mt_of = |name: &str| doom.things.iter().position(|t| t.actor == name);
-        let things = table.actors.iter().map(|a| mobj_info(a, fast, mt_of(&a.name))).collect();
+        let things = table.actors.iter().enumerate().map(|(i, a)| mobj_info(a, i, fast, mt_of(&a.name))).collect();
         let by_mt = doom.things.iter().map(|t| table.index(&t.actor)).collect();
         let weapons = doom
             .weapons
@@ -154,6 +154,15 @@ impl Info {
     }
 }
 
+/// The editor number a map thing of actor `kind` (`def`) is stored under:
+/// Doom's, or, for an actor Doom's editors never numbered (Sightline's
+/// roster: a RON map's sentries and stalkers), one counted down from the
+/// top of the 16-bit range, where no Doom map's things are (vanilla's
+/// `mapthing_t` type is a signed short: these read as negative).
+pub fn editor_number(def: &ActorDef, kind: usize) -> Option<u16> {
+    def.doomednum.or_else(|| u16::try_from(65535usize.checked_sub(kind)?).ok().filter(|&n| n > 32767))
+}
+
 /// Doom's `MF_` bits of a table actor's flags.
 fn mf_bits(def: &ActorDef) -> u32 {
     let mut bits = 0;
@@ -169,13 +178,13 @@ fn mf_bits(def: &ActorDef) -> u32 {
     bits
 }
 
-fn mobj_info(def: &ActorDef, fast: bool, mt: Option<usize>) -> MobjInfo {
+fn mobj_info(def: &ActorDef, kind: usize, fast: bool, mt: Option<usize>) -> MobjInfo {
     let fixed = |v: f64| Fixed((v * f64::from(FRACUNIT)).round() as i32);
     let speed = def.speed(fast);
     let sound = |s: Option<usize>| s.map_or(0, |i| i + 1);
     MobjInfo {
         name: def.name.clone(),
-        doomednum: def.doomednum.map_or(-1, i32::from),
+        doomednum: editor_number(def, kind).map_or(-1, i32::from),
         spawnhealth: def.health,
         reactiontime: def.reaction_time,
         painchance: def.pain_chance,

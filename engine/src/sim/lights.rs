@@ -18,7 +18,7 @@ pub const SLOWDARK: i32 = 35;
 
 /// Which of Doom's four light thinkers (`fireflicker_t`, `lightflash_t`,
 /// `strobe_t`, `glow_t`), with the fields each keeps.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub enum LightKind {
     FireFlicker,
     /// Broken light: `maxtime` and `mintime` mask the random waits.
@@ -37,7 +37,7 @@ pub enum LightKind {
 }
 
 /// The thinker's data: the sector it lights and its two levels.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Light {
     pub sector: usize,
     pub kind: LightKind,

@@ -26,7 +26,7 @@ pub const PT_EARLYOUT: u32 = 4;
 const MAXINTERCEPTS_ORIGINAL: usize = 128;
 
 /// `P_LineOpening`'s globals: the window through a two-sided line.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct Opening {
     pub top: Fixed,
     pub bottom: Fixed,

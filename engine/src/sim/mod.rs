@@ -34,8 +34,10 @@
 //! | `specials.rs` | `p_spec.c` | line and sector specials, animations |
 //! | `doors.rs`, `plats.rs`, `floors.rs`, `ceilings.rs`, `lights.rs`, `switches.rs`, `teleport.rs` | `p_doors.c` .. `p_telept.c` | the movers |
 //! | `demo.rs` | `g_game.c` (`G_DoPlayDemo`) | a demo's game, checked against a dump |
+//! | `game.rs` | `g_game.c` (`G_InitNew`, `G_Ticker`) | a game for a person or the autopilot: input in, the game read out |
 //! | `draw.rs` | | the simulation drawn by the renderer |
 //! | `state.rs` | the patch in `scripts/chocolate-dump.patch` | a tic's state for the reference dumps |
+//! | `save.rs` | `p_saveg.c`, `g_game.c` (`G_DoSaveGame`) | saved games that continue bit for bit |
 
 pub mod actions;
 pub mod attacks;
@@ -48,6 +50,7 @@ pub mod doors;
 pub mod draw;
 pub mod floors;
 pub mod from_map;
+pub mod game;
 pub mod hitscan;
 pub mod info;
 pub mod interaction;
@@ -58,6 +61,7 @@ pub mod mobj;
 pub mod monsters;
 pub mod movement;
 pub mod plats;
+pub mod save;
 pub mod setup;
 pub mod sight;
 pub mod slide;
@@ -250,6 +254,9 @@ pub enum SimEvent {
     Sound { origin: Option<MobjId>, sector: Option<usize>, sound: usize },
     /// The level ended (normal or secret exit).
     Exit { secret: bool },
+    /// A player used line `line` (a linedef): whether it set something
+    /// going (a switch that flips), or did nothing.
+    Special { line: usize, started: bool },
 }
 
 /// The whole game world.

@@ -19,7 +19,7 @@ pub const MELEERANGE: Fixed = Fixed(64 * FRACUNIT);
 pub const MISSILERANGE: Fixed = Fixed(32 * 64 * FRACUNIT);
 
 /// The boss brain's state (`braintargets`, `braintargeton`, `easy`).
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct BrainState {
     pub targets: Vec<MobjId>,
     pub target_on: usize,

@@ -17,7 +17,7 @@ pub const PLATWAIT: i32 = 3;
 
 /// `plat_e`, in Doom's order (a perpetual lift's start is `P_Random() & 1`
 /// of it: up or down).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum PlatStatus {
     #[default]
     Up,
@@ -27,7 +27,7 @@ pub enum PlatStatus {
 }
 
 /// `plattype_e`.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum PlatType {
     PerpetualRaise,
     #[default]
@@ -38,7 +38,7 @@ pub enum PlatType {
 }
 
 /// The thinker's data (`plat_t`).
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Plat {
     pub sector: usize,
     pub speed: Fixed,

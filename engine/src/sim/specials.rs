@@ -31,7 +31,7 @@ pub const PW_IRONFEET: usize = 3;
 pub const CF_GODMODE: i32 = 2;
 
 /// Which texture of a switch's front side changed (`bwhere_e`).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum ButtonWhere {
     #[default]
     Top,
@@ -41,7 +41,7 @@ pub enum ButtonWhere {
 
 /// A pressed button waiting to pop back (`button_t`); free when `timer`
 /// is 0.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct Button {
     pub line: usize,
     pub place: ButtonWhere,
@@ -61,7 +61,7 @@ impl Default for Button {
 /// `p_spec.c`'s globals: active plats and ceilings (the thinkers of each,
 /// as Doom's fixed arrays with their empty slots), pressed buttons and the
 /// scrolling lines.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct SpecialState {
     pub activeplats: [Option<ThinkerId>; MAXPLATS],
     pub activeceilings: [Option<ThinkerId>; MAXCEILINGS],

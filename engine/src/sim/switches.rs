@@ -10,7 +10,7 @@ use super::floors::{self, FloorType, StairType};
 use super::level::{ml, Level, NameId};
 use super::plats::{self, PlatType};
 use super::specials::{exit_level, Button, ButtonWhere, BUTTONTIME, MAXBUTTONS};
-use super::{lights, GameMode, MobjId, Sim};
+use super::{lights, GameMode, MobjId, Sim, SimEvent};
 
 /// `alphSwitchList`: each switch's off and on texture, with the first
 /// game that has it (1 shareware, 2 registered, 3 Doom II).
@@ -136,6 +136,7 @@ pub fn start_button(sim: &mut Sim, line: usize, place: ButtonWhere, texture: Nam
 /// Monsters open only plain and locked manual doors, never secret ones.
 pub fn use_special_line(sim: &mut Sim, thing: MobjId, line: usize, side: usize) -> bool {
     let Some(l) = sim.level.lines.get(line) else { return false };
+    let by_player = sim.mo(thing).player.is_some();
     let special = l.special;
     // Only 124 (a sliding door that was never finished) is usable from
     // the back, and it does nothing.
@@ -147,31 +148,44 @@ pub fn use_special_line(sim: &mut Sim, thing: MobjId, line: usize, side: usize) 
             return false;
         }
     }
-    match special {
-        1 | 26 | 27 | 28 | 31 | 32 | 33 | 34 | 117 | 118 => doors::vertical_door(sim, line, thing),
+    let started = match special {
+        1 | 26 | 27 | 28 | 31 | 32 | 33 | 34 | 117 | 118 => {
+            doors::vertical_door(sim, line, thing);
+            true
+        }
         11 => {
             change_switch_texture(sim, line, false);
             exit_level(sim, false);
+            true
         }
         51 => {
             change_switch_texture(sim, line, false);
             exit_level(sim, true);
+            true
         }
         138 => {
             lights::light_turn_on(sim, line, 255);
             change_switch_texture(sim, line, true);
+            true
         }
         139 => {
             lights::light_turn_on(sim, line, 35);
             change_switch_texture(sim, line, true);
+            true
         }
-        _ => {
-            if let Some((acted, use_again)) = switch_action(sim, line, special, thing) {
+        _ => match switch_action(sim, line, special, thing) {
+            Some((acted, use_again)) => {
                 if acted {
                     change_switch_texture(sim, line, use_again);
                 }
+                acted
             }
-        }
+            None => false,
+        },
+    };
+    // For the outside only (the autopilot hears whether its press worked).
+    if by_player {
+        sim.events.push(SimEvent::Special { line, started });
     }
     true
 }

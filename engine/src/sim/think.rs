@@ -9,7 +9,7 @@
 use super::{ceilings, doors, floors, lights, movement, plats, MobjId, Sim, ThinkerId};
 
 /// What a thinker is, with its data.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub enum ThinkerKind {
     Mobj(MobjId),
     Door(doors::Door),
@@ -20,7 +20,7 @@ pub enum ThinkerKind {
 }
 
 /// Whether a thinker runs.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum Status {
     Active,
     /// In the list, not run (Doom's NULL function: a plat or crusher in
@@ -30,7 +30,7 @@ pub enum Status {
     Removed,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Thinker {
     pub kind: ThinkerKind,
     pub status: Status,

@@ -33,6 +33,7 @@ use std::sync::Arc;
 
 use glam::DVec2;
 
+use crate::autopilot::observe::Observe;
 use crate::campaign::MapRef;
 use crate::play::events::{Event, Origin};
 use crate::play::playthrough::{Phase, Playthrough};
@@ -176,9 +177,9 @@ impl Sounds {
             cues.starts.push(Start { voice, key, pos });
         }
         self.sounding.retain(|&(_, since)| tick.saturating_sub(since) <= FOLLOW_TICKS && since <= tick);
-        let actors = &game.actors().list;
+        let seen = Observe::seen(game);
         for &(a, _) in &self.sounding {
-            if let Some(actor) = actors.get(a as usize).filter(|actor| !actor.removed) {
+            if let Some(actor) = seen.get(a as usize).filter(|actor| !actor.removed) {
                 cues.moved.push((Key::Actor(a), actor.pos));
             }
         }

@@ -46,10 +46,22 @@ pub struct Converted {
     /// What had to change for the map to validate, one line each.
     pub repairs: Vec<String>,
     pub report: Report,
+    pub links: Links,
+}
+
+/// How the WAD's numbering maps onto the converted map's: the simulation
+/// with Doom's arithmetic keeps the WAD's, and is drawn on (and steered
+/// through) the converted map.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Links {
     /// The converted map's sector for each of the WAD's sectors (`None` for
-    /// a sector left out): how the Doom-arithmetic simulation, which keeps
-    /// the WAD's numbering, is drawn on the converted map.
-    pub sector_map: Vec<Option<usize>>,
+    /// a sector left out).
+    pub sectors: Vec<Option<usize>>,
+    /// The WAD's linedefs behind each of the converted map's lines (several
+    /// when lines with the same ends were merged).
+    pub lines: Vec<Vec<usize>>,
+    /// The WAD's linedef behind each trigger line.
+    pub triggers: Vec<usize>,
 }
 
 /// What became of the map's specials and things.
@@ -329,6 +341,7 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
     // a special, else gone.
     let mut lines = Vec::new();
     let mut line_of_linedef: Vec<Option<usize>> = vec![None; map.lines.len()];
+    let mut line_linedefs: Vec<Vec<usize>> = Vec::new();
     let mut invisible = 0;
     for b in built {
         if is_invisible(&b.line) {
@@ -345,6 +358,7 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
             line_of_linedef[d] = Some(lines.len());
         }
         lines.push(b.line);
+        line_linedefs.push(b.linedefs);
     }
     if invisible > 0 {
         repairs.push(format!(
@@ -420,7 +434,7 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
         }
         walls.insert(sky.clone());
     }
-    let trigger_lines = trigger_lines.into_iter().map(|(t, _)| t).collect();
+    let (trigger_lines, mut trigger_linedefs): (Vec<_>, Vec<_>) = trigger_lines.into_iter().unzip();
     let mut source = MapSource {
         version: 2,
         name: map.name.clone(),
@@ -434,9 +448,10 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
     };
     move_start_off_lines(&mut source, &mut repairs);
     reassign_misplaced_lines(&mut source, &mut repairs);
-    drop_dangling_specials(&mut source, &mut report);
+    drop_dangling_specials(&mut source, &mut trigger_linedefs, &mut report);
     let sector_map = sector_map.iter().map(|&s| (s != usize::MAX).then_some(s)).collect();
-    Ok(Converted { source, walls, flats, sprites, repairs, report, sector_map })
+    let links = Links { sectors: sector_map, lines: line_linedefs, triggers: trigger_linedefs };
+    Ok(Converted { source, walls, flats, sprites, repairs, report, links })
 }
 
 /// Does a line draw nothing and block nothing: the same sector on both
@@ -619,7 +634,9 @@ fn move_start_off_lines(source: &mut MapSource, repairs: &mut Vec<String>) {
 /// teleporter with no destination, a manual special on a one-sided line)
 /// are dropped, and a lock whose key no thing gives is taken off: Doom
 /// would do nothing, or crash, or never open. Each is listed.
-fn drop_dangling_specials(source: &mut MapSource, report: &mut Report) {
+/// `trigger_linedefs` (each trigger line's linedef) loses what the trigger
+/// lines lose.
+fn drop_dangling_specials(source: &mut MapSource, trigger_linedefs: &mut Vec<usize>, report: &mut Report) {
     for _ in 0..2 {
         let Err(problems) = validate(source) else { return };
         let mut changed = false;
@@ -655,7 +672,10 @@ fn drop_dangling_specials(source: &mut MapSource, report: &mut Report) {
                 l.special = None;
             }
         }
-        source.trigger_lines.retain(|t| !is_marked(&t.special));
+        let kept: Vec<bool> = source.trigger_lines.iter().map(|t| !is_marked(&t.special)).collect();
+        let (mut a, mut b) = (kept.iter(), kept.iter());
+        source.trigger_lines.retain(|_| a.next() == Some(&true));
+        trigger_linedefs.retain(|_| b.next() == Some(&true));
         if !changed {
             return;
         }

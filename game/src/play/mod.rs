@@ -63,7 +63,12 @@ pub fn run(args: &PlayArgs) -> Result<()> {
     };
     let game_options = match &demo {
         Some(demo) => demo.options(),
-        None => GameOptions { skill: args.skill, seed: args.seed, no_monsters: args.no_monsters },
+        None => {
+            // A WAD's maps play on the simulation with Doom's arithmetic (a
+            // Doom demo shown in the window only borrows the level to draw).
+            let sim = args.sim || (matches!(map, MapRef::Wad { .. }) && vanilla.is_none());
+            GameOptions { skill: args.skill, seed: args.seed, no_monsters: args.no_monsters, sim }
+        }
     };
     let play = match &args.load {
         Some(save) => Playthrough::load(save)?,

@@ -58,7 +58,7 @@ impl Session {
 
     /// A Doom demo on the simulation with Doom's arithmetic; `play` is a
     /// playthrough of the demo's map, whose level shows it.
-    pub fn vanilla(mut play: Playthrough, run: VanillaRun) -> Session {
+    pub fn vanilla(mut play: Playthrough, mut run: VanillaRun) -> Session {
         let view = run.scene.view(&run.game).unwrap_or_else(|| play.game.view(1.0));
         run.scene.draw(&run.game, play.game.level_mut());
         Session::with(play, Source::Vanilla(Box::new(run), view, view), false)

@@ -1,0 +1,482 @@
+//! A game for a person or the autopilot on the simulation with Doom's
+//! arithmetic (`g_game.c`'s part: a new game on a map, a tic from the
+//! player's input, the level's end): [`SimGame`] holds the [`Sim`], the
+//! converted map the renderer draws (written each tic by [`Scene`]), and
+//! what the outside reads of the game in map units and degrees (the
+//! player, the things, sounds and messages, the tallies), all the
+//! fixed-point values divided out.
+//!
+//! Input arrives as the keyboard's [`TickInput`] and is turned into Doom's
+//! command (`ticcmd_t`) as a 1.9 demo keeps it (turns to 1/256 of the
+//! circle, the rest carried to the next tic), and every command is kept:
+//! [`SimGame::commands`] is the game as a vanilla demo, which Chocolate
+//! Doom plays to the same end.
+
+use std::borrow::Cow;
+
+use glam::DVec2;
+
+use super::draw::Scene;
+use super::setup::Players;
+use super::{demo, from_map, Compat, MobjId, PlayerState, Rules, Sim, SimEvent};
+use crate::actors::{sounds, ActorTable, KeyForm};
+use crate::autopilot::observe::{Observe, Seen};
+use crate::campaign::{MapRef, Opened};
+use crate::level::Level;
+use crate::map::special::KeyColour;
+use crate::map::LineSpecial;
+use crate::play::events::{Event, Origin};
+use crate::play::lmp::Ticcmd;
+use crate::play::player::{Key, PSprite};
+use crate::play::world::{Exit, SpecialLine};
+use crate::play::{vanilla, GameOptions, Player, Stats, TickInput};
+use crate::render::View;
+
+use super::mobj::mf;
+
+#[derive(Debug, thiserror::Error)]
+pub enum SimGameError {
+    #[error("{map}: {what}")]
+    Start { map: String, what: String },
+}
+
+/// A game on one level of the simulation with Doom's arithmetic.
+pub struct SimGame {
+    pub sim: Sim,
+    level: Level,
+    scene: Scene,
+    options: GameOptions,
+    /// What the outside reads, refreshed after every tic.
+    player: Player,
+    seen: Vec<Seen>,
+    /// Per sector of the converted map: a mover is at work there.
+    busy: Vec<bool>,
+    events: Vec<Event>,
+    /// The eye at the start and the end of the last tic.
+    before: View,
+    after: View,
+    commands: Vec<Ticcmd>,
+    /// The part of a turn a command could not carry yet (degrees).
+    carry: f64,
+    /// The converted map's fingerprint as opened, before play (a save
+    /// names the map by it: `play::save::map_fingerprint`).
+    fingerprint: u32,
+}
+
+impl SimGame {
+    /// A new game on `opened` (a WAD's map, or a RON map through
+    /// [`from_map`]) with `options`. A WAD map plays by the rules of the
+    /// executable Chocolate Doom picks for its IWAD, with the IWAD's
+    /// DEHACKED applied and vanilla's bugs kept (its commands then replay
+    /// in Chocolate Doom); a RON map plays with Sightline's fixes.
+    pub fn new(opened: Opened, options: GameOptions) -> Result<SimGame, SimGameError> {
+        let label = opened.map.label();
+        let error = |what: String| SimGameError::Start { map: label.clone(), what };
+        let fingerprint = crate::play::save::map_fingerprint(&opened.level);
+        if !(1..=5).contains(&options.skill) {
+            return Err(error(format!("skill {} is not 1 to 5", options.skill)));
+        }
+        let skill = options.skill - 1;
+        let players = Players { in_game: [true, false, false, false], console: 0 };
+        let (sim, scene) = match (&opened.map, opened.links) {
+            (MapRef::Wad { wads, map: Some(name) }, Some(links)) => {
+                let wad = crate::campaign::stack(wads).map_err(|e| error(e.to_string()))?;
+                let table = demo::table_for(&wad, ActorTable::active()).map_err(&error)?;
+                let mode = demo::game_mode(&wad);
+                let rules =
+                    Rules { no_monsters: options.no_monsters, ..Rules::single(skill, demo::game_version(mode), mode) };
+                let sim = Sim::new(&wad, name, rules, players, table).map_err(|e| error(e.to_string()))?;
+                (sim, Scene::new(links))
+            }
+            _ => {
+                let table = ActorTable::active().clone();
+                let compiled = &opened.level.compiled;
+                let level = from_map::level_from_map(compiled, &table).map_err(|e| error(e.to_string()))?;
+                let rules = Rules {
+                    compat: Compat::Sightline,
+                    no_monsters: options.no_monsters,
+                    ..Rules::single(skill, super::GameVersion::Doom19, super::GameMode::Commercial)
+                };
+                let sim = from_map::sim_on_map(level, rules, players, table);
+                (sim, Scene::identity(&compiled.map))
+            }
+        };
+        let mut game = SimGame {
+            sim,
+            level: opened.level,
+            scene,
+            options,
+            player: Player::new(DVec2::ZERO, 0.0, 0, 0.0, 0.0),
+            seen: Vec::new(),
+            busy: Vec::new(),
+            events: Vec::new(),
+            before: View::new(DVec2::ZERO, 0.0, 0.0),
+            after: View::new(DVec2::ZERO, 0.0, 0.0),
+            commands: Vec::new(),
+            carry: 0.0,
+            fingerprint,
+        };
+        game.level.show_skill(options.skill);
+        game.refresh();
+        game.before = game.after;
+        Ok(game)
+    }
+
+    /// A game on the next map of a campaign: the player keeps what Doom's
+    /// `G_PlayerFinishLevel` lets through (health, armour, weapons,
+    /// ammunition, the backpack), not keys or powers.
+    pub fn next_level(opened: Opened, options: GameOptions, from: &SimGame) -> Result<SimGame, SimGameError> {
+        let mut game = SimGame::new(opened, options)?;
+        let console = game.sim.console;
+        let (Some(old), Some(new)) = (from.sim.player(from.sim.console), game.sim.players[console].as_mut()) else {
+            return Ok(game);
+        };
+        new.health = old.health.max(1);
+        new.armorpoints = old.armorpoints;
+        new.armortype = old.armortype;
+        new.weaponowned = old.weaponowned;
+        new.ammo = old.ammo;
+        new.maxammo = old.maxammo;
+        new.backpack = old.backpack;
+        new.readyweapon = old.readyweapon;
+        let (mo, health) = (new.mo, new.health);
+        game.sim.mo_mut(mo).health = health;
+        super::weapons::setup_psprites(&mut game.sim, console);
+        game.refresh();
+        game.before = game.after;
+        Ok(game)
+    }
+
+    /// The game's whole state as bytes (what a save holds): the part of a
+    /// turn not yet carried into a command (8 bytes, an `f64`, little
+    /// endian), then the simulation's saved state ([`super::save::to_bytes`]).
+    pub fn state_bytes(&self) -> Vec<u8> {
+        let mut bytes = self.carry.to_le_bytes().to_vec();
+        bytes.extend(super::save::to_bytes(&self.sim));
+        bytes
+    }
+
+    /// Puts the game in the state `bytes` hold ([`SimGame::state_bytes`]),
+    /// checked against this game's map and actor table; on an error the
+    /// game is as it was. `label` names the file in errors.
+    pub fn restore(&mut self, bytes: &[u8], label: &str) -> Result<(), super::save::SaveError> {
+        let truncated = || super::save::SaveError::Truncated { path: label.to_string(), what: "no turn carry".into() };
+        let (carry, rest) = bytes.split_first_chunk::<8>().ok_or_else(truncated)?;
+        let carry = f64::from_le_bytes(*carry);
+        if !carry.is_finite() || carry.abs() > 360.0 {
+            let what = format!("a turn carry of {carry} degrees");
+            return Err(super::save::SaveError::Invalid { path: label.to_string(), element: "the game".into(), what });
+        }
+        let (level, info) = (self.sim.level.clone(), self.sim.info.clone());
+        self.sim = super::save::from_bytes(rest, label, level, info)?;
+        self.carry = carry;
+        self.refresh();
+        self.before = self.after;
+        Ok(())
+    }
+
+    /// The level to draw into (a Doom demo played elsewhere is drawn here).
+    pub fn level_mut(&mut self) -> &mut Level {
+        &mut self.level
+    }
+
+    /// The player as the outside reads it, to change for what is shown
+    /// only: the next tic reads it afresh from the simulation.
+    pub fn player_mut(&mut self) -> &mut Player {
+        &mut self.player
+    }
+
+    /// One tic from the player's input, as a 1.9 demo keeps it.
+    pub fn tick(&mut self, input: &TickInput) {
+        let cmd = vanilla::command_of(input, &mut self.carry);
+        self.command(cmd);
+    }
+
+    /// One tic from a Doom command. After the level has ended tics do
+    /// nothing.
+    pub fn command(&mut self, cmd: Ticcmd) {
+        self.events.clear();
+        if self.sim.exit.is_some() {
+            return;
+        }
+        self.before = self.after;
+        self.commands.push(cmd);
+        self.sim.tick(&[Some(cmd), None, None, None]);
+        self.refresh();
+        if self.after.pos.distance(self.before.pos) > 64.0 {
+            // A teleport: do not draw the way between.
+            self.before = self.after;
+        }
+    }
+
+    /// The fingerprint of the map as opened, before play.
+    pub fn fingerprint(&self) -> u32 {
+        self.fingerprint
+    }
+
+    /// The commands played so far: the game as a vanilla demo.
+    pub fn commands(&self) -> &[Ticcmd] {
+        &self.commands
+    }
+
+    pub fn options(&self) -> GameOptions {
+        self.options
+    }
+
+    /// The eye, interpolated between the start (`alpha` 0) and the end
+    /// (`alpha` 1) of the last tic.
+    pub fn view(&self, alpha: f64) -> View {
+        let a = if alpha.is_nan() { 1.0 } else { alpha.clamp(0.0, 1.0) };
+        let (p, q) = (self.before, self.after);
+        let turned = (q.angle - p.angle + 540.0).rem_euclid(360.0) - 180.0;
+        View::new(p.pos + (q.pos - p.pos) * a, p.z + (q.z - p.z) * a, (p.angle + turned * a).rem_euclid(360.0))
+    }
+
+    /// The converted map's sector of a body.
+    fn sector_of(&self, id: MobjId) -> usize {
+        let m = self.sim.mo(id);
+        let s = self.sim.level.subsectors.get(m.subsector).map_or(0, |s| s.sector);
+        self.scene.sector(s).unwrap_or(0)
+    }
+
+    /// Reads the game out after a tic: the level drawn, the player, the
+    /// things, the busy sectors, the tic's sounds and messages.
+    fn refresh(&mut self) {
+        self.scene.draw(&self.sim, &mut self.level);
+        if let Some(view) = self.scene.view(&self.sim) {
+            self.after = view;
+        }
+        self.refresh_player();
+        self.seen.clear();
+        let players: Vec<MobjId> = self.sim.players.iter().flatten().map(|p| p.mo).collect();
+        for m in &self.sim.mobjs {
+            let by_player = m.has(mf::MISSILE) && m.target.is_some_and(|t| players.contains(&t));
+            self.seen.push(Seen {
+                kind: m.kind,
+                pos: DVec2::new(m.x.to_f64(), m.y.to_f64()),
+                z: m.z.to_f64(),
+                vel: DVec2::new(m.momx.to_f64(), m.momy.to_f64()),
+                health: m.health,
+                removed: m.removed || m.state.is_none(),
+                solid: m.has(mf::SOLID),
+                shootable: m.has(mf::SHOOTABLE),
+                missile: m.has(mf::MISSILE),
+                by_player,
+            });
+        }
+        self.busy = vec![false; self.level.compiled.map.sectors.len()];
+        for (i, s) in self.sim.level.sectors.iter().enumerate() {
+            if let (Some(_), Some(j)) = (s.specialdata, self.scene.sector(i)) {
+                if let Some(b) = self.busy.get_mut(j) {
+                    *b = true;
+                }
+            }
+        }
+        self.take_events();
+    }
+
+    fn refresh_player(&mut self) {
+        let console = self.sim.console;
+        let Some(p) = self.sim.player(console) else { return };
+        let m = self.sim.mo(p.mo);
+        let info = &self.sim.info;
+        let weapon = |n: usize| info.weapons.get(n).and_then(Option::as_ref).map(|w| w.actor);
+        let colours = [KeyColour::Blue, KeyColour::Yellow, KeyColour::Red];
+        let keys = (0..6)
+            .filter(|&k| p.cards[k])
+            .map(|k| Key { colour: colours[k % 3], form: if k < 3 { KeyForm::Card } else { KeyForm::Skull } })
+            .collect();
+        // Doom's ammunition order is bullets, shells, cells, rockets.
+        let ammo = |a: [i32; 4]| [a[0], a[1], a[3], a[2]];
+        let psprite =
+            |s: &super::Psprite| PSprite { state: s.state, tics: s.tics, sx: s.sx.to_f64(), sy: s.sy.to_f64() };
+        let dead = p.playerstate != PlayerState::Live;
+        let q = &mut self.player;
+        q.pos = DVec2::new(m.x.to_f64(), m.y.to_f64());
+        q.z = m.z.to_f64();
+        q.angle = m.angle.to_degrees();
+        q.velocity = DVec2::new(m.momx.to_f64(), m.momy.to_f64());
+        q.vz = m.momz.to_f64();
+        q.floor = m.floorz.to_f64();
+        q.ceiling = m.ceilingz.to_f64();
+        q.view_height = p.viewheight.to_f64();
+        q.view_delta = p.deltaviewheight.to_f64();
+        q.health = if dead { p.health.min(0) } else { p.health.max(1) };
+        q.keys = keys;
+        q.armor = p.armorpoints;
+        q.armor_class = p.armortype.clamp(0, 2) as u8;
+        q.ammo = ammo(p.ammo);
+        q.max_ammo = ammo(p.maxammo);
+        q.backpack = p.backpack;
+        q.weapons = (0..super::NUMWEAPONS).filter(|&n| p.weaponowned[n]).filter_map(weapon).collect();
+        q.powers = p.powers;
+        q.freeze = m.reactiontime.max(0) as u32;
+        q.use_held = p.usedown;
+        q.fire_held = p.attackdown;
+        q.ready_weapon = weapon(p.readyweapon);
+        q.pending_weapon = p.pendingweapon.and_then(weapon);
+        q.psprites = [psprite(&p.psprites[0]), psprite(&p.psprites[1])];
+        q.refire = p.refire;
+        q.attack_down = p.attackdown;
+        q.extra_light = p.extralight;
+        q.damage_count = p.damagecount;
+        q.bonus_count = p.bonuscount;
+        let sector = self.sector_of(self.sim.players[console].as_ref().map_or(MobjId(0), |p| p.mo));
+        self.player.sector = sector;
+    }
+
+    /// The tic's sounds, switches and messages in the outside's terms.
+    fn take_events(&mut self) {
+        let viewer = self.sim.player(self.sim.console).map(|p| p.mo);
+        for e in std::mem::take(&mut self.sim.events) {
+            match e {
+                SimEvent::Sound { origin, sector, sound } => {
+                    // Events carry Doom's names from the shipped sound list (the
+                    // table's names are checked against it when it loads).
+                    let name = self.sim.info.table.sounds.get(sound.wrapping_sub(1));
+                    let Some(name) = name.and_then(|n| sounds::doom().iter().find(|d| d.name == *n)) else { continue };
+                    let origin = match (origin, sector) {
+                        (Some(id), _) if Some(id) == viewer => Origin::Player,
+                        (Some(id), _) => {
+                            let m = self.sim.mo(id);
+                            Origin::Actor { index: id.0, pos: DVec2::new(m.x.to_f64(), m.y.to_f64()) }
+                        }
+                        (None, Some(s)) => Origin::Sector(self.scene.sector(s).unwrap_or(0)),
+                        (None, None) => Origin::Player,
+                    };
+                    self.events.push(Event::Sound { sound: name.name.as_str(), origin });
+                }
+                SimEvent::Special { line, started } => {
+                    if let Some(line) = self.scene.line_of_linedef(line) {
+                        let line = line.map_or_else(SpecialLine::Trigger, SpecialLine::Wall);
+                        self.events.push(Event::Special { line, started });
+                    }
+                }
+                SimEvent::Exit { .. } => {}
+            }
+        }
+        let console = self.sim.console;
+        if let Some(message) = self.sim.players[console].as_mut().and_then(|p| p.message.take()) {
+            self.events.push(Event::Message(message));
+        }
+    }
+
+    /// The WAD linedef behind a line of the converted map.
+    fn linedef(&self, line: SpecialLine) -> Option<usize> {
+        match line {
+            SpecialLine::Wall(i) => self.scene.linedef(i),
+            SpecialLine::Trigger(i) => self.scene.trigger_linedef(i),
+        }
+    }
+
+    /// The converted map's special on `line`, as the map has it.
+    fn map_special(&self, line: SpecialLine) -> Option<&LineSpecial> {
+        let map = &self.level.compiled.map;
+        match line {
+            SpecialLine::Wall(i) => map.lines.get(i)?.special.as_ref(),
+            SpecialLine::Trigger(i) => Some(&map.trigger_lines.get(i)?.special),
+        }
+    }
+
+    /// How the level ended, once it has.
+    pub fn exit(&self) -> Option<Exit> {
+        self.sim.exit.map(|secret| if secret { Exit::Secret } else { Exit::Normal })
+    }
+}
+
+impl Observe for SimGame {
+    fn level(&self) -> &Level {
+        &self.level
+    }
+
+    fn ticks(&self) -> u64 {
+        u64::from(self.sim.leveltime)
+    }
+
+    fn player(&self) -> &Player {
+        &self.player
+    }
+
+    fn seen(&self) -> Cow<'_, [Seen]> {
+        Cow::Borrowed(&self.seen)
+    }
+
+    fn table(&self) -> &ActorTable {
+        &self.sim.info.table
+    }
+
+    fn exit(&self) -> Option<Exit> {
+        SimGame::exit(self)
+    }
+
+    fn events(&self) -> &[Event] {
+        &self.events
+    }
+
+    fn stats(&self) -> Stats {
+        let p = self.sim.player(self.sim.console);
+        let count = |f: fn(&super::Player) -> i32| p.map_or(0, f).max(0) as u32;
+        let total = |n: i32| n.max(0) as u32;
+        Stats {
+            kills: (count(|p| p.killcount), total(self.sim.total_kills)),
+            items: (count(|p| p.itemcount), total(self.sim.total_items)),
+            secrets: (count(|p| p.secretcount), total(self.sim.total_secrets)),
+            ticks: u64::from(self.sim.leveltime),
+        }
+    }
+
+    fn is_busy(&self, sector: usize) -> bool {
+        self.busy.get(sector).copied().unwrap_or(false)
+    }
+
+    fn special(&self, line: SpecialLine) -> Option<LineSpecial> {
+        let live = self.linedef(line).and_then(|d| self.sim.level.lines.get(d)).is_some_and(|l| l.special != 0);
+        self.map_special(line).filter(|_| live).cloned()
+    }
+
+    /// Doom's `PTR_UseTraverse` on the converted map: the first line with
+    /// a special (any, as vanilla stops at walk lines too), or a wall whose
+    /// opening is shut.
+    fn use_stop(&self, from: DVec2, to: DVec2) -> Option<SpecialLine> {
+        let map = &self.level.compiled.map;
+        let mut hits: Vec<(f64, SpecialLine)> = Vec::new();
+        let mut cross = |a: DVec2, b: DVec2, line: SpecialLine| {
+            if let Some(t) = segment_crossing(from, to, a, b) {
+                hits.push((t, line));
+            }
+        };
+        for (i, l) in map.lines.iter().enumerate() {
+            cross(map.vertices[l.from], map.vertices[l.to], SpecialLine::Wall(i));
+        }
+        for (i, t) in map.trigger_lines.iter().enumerate() {
+            cross(map.vertices[t.from], map.vertices[t.to], SpecialLine::Trigger(i));
+        }
+        hits.sort_by(|a, b| a.0.total_cmp(&b.0));
+        hits.into_iter().map(|(_, l)| l).find(|&l| {
+            let has_special = self.linedef(l).and_then(|d| self.sim.level.lines.get(d)).is_some_and(|d| d.special != 0);
+            has_special
+                || match l {
+                    SpecialLine::Wall(i) => {
+                        let line = &map.lines[i];
+                        line.back.as_ref().is_none_or(|back| {
+                            let (f, b) = (&map.sectors[line.front.sector], &map.sectors[back.sector]);
+                            f.ceiling.min(b.ceiling) <= f.floor.max(b.floor)
+                        })
+                    }
+                    SpecialLine::Trigger(_) => false,
+                }
+        })
+    }
+}
+
+/// Where along `p`→`q` (0 to 1) it crosses the segment `a`→`b`, if it does.
+fn segment_crossing(p: DVec2, q: DVec2, a: DVec2, b: DVec2) -> Option<f64> {
+    let (r, s) = (q - p, b - a);
+    let denom = r.perp_dot(s);
+    if denom == 0.0 {
+        return None;
+    }
+    let t = (a - p).perp_dot(s) / denom;
+    let u = (a - p).perp_dot(r) / denom;
+    ((0.0..=1.0).contains(&t) && (0.0..=1.0).contains(&u)).then_some(t)
+}
