@@ -26,12 +26,14 @@ pub struct Scene {
     sides: Vec<[NameId; 3]>,
     /// Per WAD sector, its flats as last drawn.
     flats: Vec<[NameId; 2]>,
+    /// [`Sim::textures_changed`] when they were last looked at.
+    changes: Option<u32>,
 }
 
 impl Scene {
     /// A scene on a converted WAD map.
     pub fn new(links: Links) -> Scene {
-        Scene { links, sides: Vec::new(), flats: Vec::new() }
+        Scene { links, sides: Vec::new(), flats: Vec::new(), changes: None }
     }
 
     /// A scene on a map the simulation numbers as the renderer does (a RON
@@ -44,6 +46,12 @@ impl Scene {
             lines: (0..lines).map(|l| vec![l]).collect(),
             triggers: (lines..lines + map.trigger_lines.len()).collect(),
         })
+    }
+
+    /// Makes the next draw look at every texture (the simulation was
+    /// replaced, by a loaded game, and its change count with it).
+    pub fn look_again(&mut self) {
+        self.changes = None;
     }
 
     /// The converted map's sector of the WAD's sector `s`.
@@ -107,8 +115,13 @@ impl Scene {
 
     /// The textures play changed (switches flipped, floors changed by a
     /// lift or a donut) written where they show; a name the renderer never
-    /// loaded is left as it was. The first call only remembers.
+    /// loaded is left as it was. The first call only remembers; later ones
+    /// look only when the simulation says a texture changed.
     fn draw_textures(&mut self, sim: &Sim, level: &mut Level) {
+        if self.changes == Some(sim.textures_changed) {
+            return;
+        }
+        self.changes = Some(sim.textures_changed);
         let front = |l: usize| {
             let s = sim.level.lines.get(l)?.sidenum[0]?;
             let s = sim.level.sides.get(s)?;

@@ -166,6 +166,7 @@ pub fn think(sim: &mut Sim, id: ThinkerId) {
     if changes {
         s.special = floor.newspecial;
         s.floorpic = floor.texture;
+        sim.textures_changed += 1;
     }
     sim.remove_thinker(id);
     sound(sim, sec, "pstop");
@@ -243,6 +244,7 @@ fn new_floor(sim: &mut Sim, line: usize, s: usize, kind: FloorType) -> FloorMove
                 let (pic, special) = (level.sectors[front].floorpic, level.sectors[front].special);
                 sim.level.sectors[s].floorpic = pic;
                 sim.level.sectors[s].special = special;
+                sim.textures_changed += 1;
             }
         }
         FloorType::RaiseToTexture => f.floordestheight = here + shortest_lower_texture(sim, s),

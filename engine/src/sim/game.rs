@@ -170,6 +170,7 @@ impl SimGame {
         let (level, info) = (self.sim.level.clone(), self.sim.info.clone());
         self.sim = super::save::from_bytes(rest, label, level, info)?;
         self.carry = carry;
+        self.scene.look_again();
         self.refresh();
         self.before = self.after;
         Ok(())
@@ -479,4 +480,74 @@ fn segment_crossing(p: DVec2, q: DVec2, a: DVec2, b: DVec2) -> Option<f64> {
     let t = (a - p).perp_dot(s) / denom;
     let u = (a - p).perp_dot(r) / denom;
     ((0.0..=1.0).contains(&t) && (0.0..=1.0).contains(&u)).then_some(t)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bsp::BuildOptions;
+    use crate::campaign::open;
+
+    fn e1m1() -> SimGame {
+        let dir = std::env::var_os("SIGHTLINE_DOOM_DIR")
+            .map_or_else(|| std::path::PathBuf::from("/usr/share/games/doom"), std::path::PathBuf::from);
+        let map = MapRef::Wad { wads: vec![dir.join("freedoom1.wad")], map: Some("E1M1".into()) };
+        let opened = open(&map, &BuildOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+        SimGame::new(opened, GameOptions { skill: 3, ..GameOptions::default() }).unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    /// A switch the simulation flips shows flipped on the converted map's
+    /// line, found through the importer's links.
+    #[test]
+    #[cfg_attr(freedoom_missing, ignore = "needs freedoom1.wad: apt-get install freedoom")]
+    fn a_flipped_switch_shows_on_the_converted_map() {
+        let mut game = e1m1();
+        let list = super::super::switches::switch_list(game.sim.rules.mode);
+        let is_switch = |name: &str| list.iter().any(|s| s.eq_ignore_ascii_case(name));
+        let level = &game.sim.level;
+        let linedef = (0..level.lines.len())
+            .find(|&l| {
+                level.lines[l].special != 0
+                    && level.lines[l].sidenum[0].is_some_and(|s| {
+                        let side = &level.sides[s];
+                        [side.toptexture, side.midtexture, side.bottomtexture].iter().any(|&t| is_switch(level.name(t)))
+                    })
+            })
+            .expect("E1M1 has a switch");
+        let Some(Ok(line)) = game.scene.line_of_linedef(linedef) else { panic!("linedef {linedef} is a wall") };
+        let shown = |game: &SimGame| game.level.materials.sides[line][0];
+        let before = shown(&game);
+        super::super::switches::change_switch_texture(&mut game.sim, linedef, true);
+        game.tick(&TickInput::default());
+        let after = shown(&game);
+        assert_ne!(before, after, "the switch on line {line} (linedef {linedef}) did not flip on screen");
+        let names = |s: crate::materials::SideTextures| {
+            [s.upper, s.middle, s.lower].map(|t| t.map(|t| game.level.materials.textures.name(t).to_string()))
+        };
+        assert!(names(after).iter().flatten().any(|n| is_switch(n)), "{:?}", names(after));
+        // A button pops back after a second.
+        for _ in 0..36 {
+            game.tick(&TickInput::default());
+        }
+        assert_eq!(shown(&game), before, "the button did not pop back");
+    }
+
+    /// The player read out is the simulation's: its ammunition in our
+    /// order (bullets, shells, rockets, cells), its weapons as actors.
+    #[test]
+    #[cfg_attr(freedoom_missing, ignore = "needs freedoom1.wad: apt-get install freedoom")]
+    fn the_player_reads_out_in_map_units_and_our_order() {
+        let mut game = e1m1();
+        let console = game.sim.console;
+        let p = game.sim.players[console].as_mut().unwrap();
+        p.ammo = [10, 20, 30, 40];
+        game.tick(&TickInput::default());
+        let player = Observe::player(&game);
+        assert_eq!(player.ammo, [10, 20, 40, 30], "Doom's cells are its third ammo, rockets its fourth");
+        let pistol = &game.sim.info.table.actors[player.ready_weapon.expect("a weapon in hand")];
+        assert_eq!(pistol.weapon.as_ref().map(|w| w.slot), Some(2));
+        let m = game.sim.mo(game.sim.players[console].as_ref().unwrap().mo);
+        assert_eq!(player.pos, DVec2::new(m.x.to_f64(), m.y.to_f64()));
+        assert_eq!(player.health, 100);
+    }
 }

@@ -301,6 +301,11 @@ pub struct Sim {
     /// Set when the level is left (`G_ExitLevel`, `G_SecretExitLevel`).
     pub exit: Option<bool>,
     pub events: Vec<SimEvent>,
+    /// Counts the times play changed a side's texture or a sector's flat
+    /// (switches, buttons popping back, floors and lifts that change
+    /// their flat): what draws the game looks at textures again only when
+    /// it moved. Not game state: a loaded game starts it at 0.
+    pub textures_changed: u32,
 }
 
 impl Sim {

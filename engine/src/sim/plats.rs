@@ -145,6 +145,7 @@ fn new_plat(sim: &mut Sim, line: usize, s: usize, kind: PlatType, amount: i32) -
             plat.speed = Fixed(PLATSPEED.0 / 2);
             if let Some(pic) = front_pic {
                 sim.level.sectors[s].floorpic = pic;
+                sim.textures_changed += 1;
             }
             plat.high = find_next_highest_floor(&sim.level, s, here);
             plat.wait = 0;
@@ -157,6 +158,7 @@ fn new_plat(sim: &mut Sim, line: usize, s: usize, kind: PlatType, amount: i32) -
             plat.speed = Fixed(PLATSPEED.0 / 2);
             if let Some(pic) = front_pic {
                 sim.level.sectors[s].floorpic = pic;
+                sim.textures_changed += 1;
             }
             plat.high = here + Fixed::from_int(amount);
             plat.wait = 0;

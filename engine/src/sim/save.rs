@@ -321,6 +321,7 @@ fn join(header: &SaveInfo, state: SimState, mut level: Level, info: Arc<Info>) -
         total_secrets: state.total_secrets,
         exit: state.exit,
         events: Vec::new(),
+        textures_changed: 0,
     }
 }
 

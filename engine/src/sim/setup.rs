@@ -85,6 +85,7 @@ impl Sim {
             total_secrets: 0,
             exit: None,
             events: Vec::new(),
+            textures_changed: 0,
             level,
         };
         for (n, &playing) in players.in_game.iter().enumerate() {

@@ -276,6 +276,7 @@ pub fn update_specials(sim: &mut Sim) {
                 ButtonWhere::Middle => s.midtexture = b.texture,
                 ButtonWhere::Bottom => s.bottomtexture = b.texture,
             }
+            sim.textures_changed += 1;
         }
         let click = sim.info.sound("swtchn");
         sim.sector_sound(b.sector, click);

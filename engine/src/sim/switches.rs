@@ -109,6 +109,7 @@ pub fn change_switch_texture(sim: &mut Sim, line: usize, use_again: bool) {
             ButtonWhere::Middle => s.midtexture = other,
             ButtonWhere::Bottom => s.bottomtexture = other,
         }
+        sim.textures_changed += 1;
         if use_again {
             start_button(sim, line, place, texture, BUTTONTIME);
         }
