@@ -60,9 +60,15 @@ impl Scene {
     }
 
     /// The WAD's linedef behind the converted map's line `line` (the first,
-    /// when several were merged into it).
+    /// when several were merged into it: the one whose front side shows).
     pub fn linedef(&self, line: usize) -> Option<usize> {
-        self.links.lines.get(line).and_then(|d| d.first()).copied()
+        self.linedefs(line).first().copied()
+    }
+
+    /// Every WAD linedef merged into the converted map's line `line` (the
+    /// line's special is whichever of them had one).
+    pub fn linedefs(&self, line: usize) -> &[usize] {
+        self.links.lines.get(line).map_or(&[], Vec::as_slice)
     }
 
     /// The WAD's linedef behind trigger line `t`.

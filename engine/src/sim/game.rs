@@ -362,11 +362,15 @@ impl SimGame {
         }
     }
 
-    /// The WAD linedef behind a line of the converted map.
-    fn linedef(&self, line: SpecialLine) -> Option<usize> {
+    /// Whether a line of the converted map still has its special in the
+    /// simulation: one of the WAD linedefs behind it does (lines with the
+    /// same ends are merged, and the merged line takes the special of the
+    /// one that had it).
+    fn live(&self, line: SpecialLine) -> bool {
+        let has = |d: usize| self.sim.level.lines.get(d).is_some_and(|l| l.special != 0);
         match line {
-            SpecialLine::Wall(i) => self.scene.linedef(i),
-            SpecialLine::Trigger(i) => self.scene.trigger_linedef(i),
+            SpecialLine::Wall(i) => self.scene.linedefs(i).iter().any(|&d| has(d)),
+            SpecialLine::Trigger(i) => self.scene.trigger_linedef(i).is_some_and(has),
         }
     }
 
@@ -431,8 +435,7 @@ impl Observe for SimGame {
     }
 
     fn special(&self, line: SpecialLine) -> Option<LineSpecial> {
-        let live = self.linedef(line).and_then(|d| self.sim.level.lines.get(d)).is_some_and(|l| l.special != 0);
-        self.map_special(line).filter(|_| live).cloned()
+        self.map_special(line).filter(|_| self.live(line)).cloned()
     }
 
     /// Doom's `PTR_UseTraverse` on the converted map: the first line with
@@ -454,8 +457,7 @@ impl Observe for SimGame {
         }
         hits.sort_by(|a, b| a.0.total_cmp(&b.0));
         hits.into_iter().map(|(_, l)| l).find(|&l| {
-            let has_special = self.linedef(l).and_then(|d| self.sim.level.lines.get(d)).is_some_and(|d| d.special != 0);
-            has_special
+            self.live(l)
                 || match l {
                     SpecialLine::Wall(i) => {
                         let line = &map.lines[i];
