@@ -252,21 +252,10 @@ impl<'a> Convert<'a> {
             if s.carry.is_some() {
                 self.note(&element, "its floor carry (Boom's 252) has no vanilla number; not kept".into());
             }
-            out.push(Sector {
-                floorheight: self.fixed(s.floor, || format!("{element}'s floor"))?,
-                ceilingheight: self.fixed(s.ceiling, || format!("{element}'s ceiling"))?,
-                floorpic: self.name_id(s.floor_texture.as_deref()),
-                ceilingpic: self.name_id(s.ceiling_texture.as_deref()),
-                lightlevel: i16::from(s.light),
-                special,
-                tag: s.tag as i16,
-                soundtraversed: 0,
-                soundtarget: None,
-                blockbox: [0; 4],
-                soundorg: (Fixed::ZERO, Fixed::ZERO),
-                specialdata: None,
-                lines: Vec::new(),
-            });
+            let floor = self.fixed(s.floor, || format!("{element}'s floor"))?;
+            let ceiling = self.fixed(s.ceiling, || format!("{element}'s ceiling"))?;
+            let pics = (self.name_id(s.floor_texture.as_deref()), self.name_id(s.ceiling_texture.as_deref()));
+            out.push(Sector::stored(floor, ceiling, pics, i16::from(s.light), special, s.tag as i16));
         }
         Ok(out)
     }

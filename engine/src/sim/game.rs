@@ -265,7 +265,8 @@ impl SimGame {
                 by_player,
             });
         }
-        self.busy = vec![false; self.level.compiled.map.sectors.len()];
+        self.busy.clear();
+        self.busy.resize(self.level.compiled.map.sectors.len(), false);
         for (i, s) in self.sim.level.sectors.iter().enumerate() {
             if let (Some(_), Some(j)) = (s.specialdata, self.scene.sector(i)) {
                 if let Some(b) = self.busy.get_mut(j) {
@@ -279,7 +280,8 @@ impl SimGame {
     fn refresh_player(&mut self) {
         let console = self.sim.console;
         let Some(p) = self.sim.player(console) else { return };
-        let m = self.sim.mo(p.mo);
+        let mo = p.mo;
+        let m = self.sim.mo(mo);
         let info = &self.sim.info;
         let weapon = |n: usize| info.weapons.get(n).and_then(Option::as_ref).map(|w| w.actor);
         let colours = [KeyColour::Blue, KeyColour::Yellow, KeyColour::Red];
@@ -322,8 +324,7 @@ impl SimGame {
         q.extra_light = p.extralight;
         q.damage_count = p.damagecount;
         q.bonus_count = p.bonuscount;
-        let sector = self.sector_of(self.sim.players[console].as_ref().map_or(MobjId(0), |p| p.mo));
-        self.player.sector = sector;
+        self.player.sector = self.sector_of(mo);
     }
 
     /// The tic's sounds, switches and messages in the outside's terms.
@@ -445,7 +446,7 @@ impl Observe for SimGame {
         let map = &self.level.compiled.map;
         let mut hits: Vec<(f64, SpecialLine)> = Vec::new();
         let mut cross = |a: DVec2, b: DVec2, line: SpecialLine| {
-            if let Some(t) = segment_crossing(from, to, a, b) {
+            if let Some(t) = crate::play::trace::crossing(from, to, a, b) {
                 hits.push((t, line));
             }
         };
@@ -470,18 +471,6 @@ impl Observe for SimGame {
                 }
         })
     }
-}
-
-/// Where along `p`→`q` (0 to 1) it crosses the segment `a`→`b`, if it does.
-fn segment_crossing(p: DVec2, q: DVec2, a: DVec2, b: DVec2) -> Option<f64> {
-    let (r, s) = (q - p, b - a);
-    let denom = r.perp_dot(s);
-    if denom == 0.0 {
-        return None;
-    }
-    let t = (a - p).perp_dot(s) / denom;
-    let u = (a - p).perp_dot(r) / denom;
-    ((0.0..=1.0).contains(&t) && (0.0..=1.0).contains(&u)).then_some(t)
 }
 
 #[cfg(test)]

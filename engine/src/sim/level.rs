@@ -70,6 +70,28 @@ pub struct Sector {
     pub lines: Vec<usize>,
 }
 
+impl Sector {
+    /// A sector as a map stores it (`mapsector_t`), with what play keeps
+    /// beside it empty (`P_GroupLines` fills the lines, box and sound origin).
+    pub fn stored(floor: Fixed, ceiling: Fixed, pics: (NameId, NameId), light: i16, special: i16, tag: i16) -> Sector {
+        Sector {
+            floorheight: floor,
+            ceilingheight: ceiling,
+            floorpic: pics.0,
+            ceilingpic: pics.1,
+            lightlevel: light,
+            special,
+            tag,
+            soundtraversed: 0,
+            soundtarget: None,
+            blockbox: [0; 4],
+            soundorg: (Fixed::ZERO, Fixed::ZERO),
+            specialdata: None,
+            lines: Vec::new(),
+        }
+    }
+}
+
 #[derive(Clone, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct Side {
     pub textureoffset: Fixed,
@@ -395,20 +417,9 @@ fn from_records(map: &WadMap) -> Level {
     let sectors = map
         .sectors
         .iter()
-        .map(|s| Sector {
-            floorheight: fixed(s.floor),
-            ceilingheight: fixed(s.ceiling),
-            floorpic: id(&s.floor_flat),
-            ceilingpic: id(&s.ceiling_flat),
-            lightlevel: s.light,
-            special: s.special,
-            tag: s.tag as i16,
-            soundtraversed: 0,
-            soundtarget: None,
-            blockbox: [0; 4],
-            soundorg: (Fixed::ZERO, Fixed::ZERO),
-            specialdata: None,
-            lines: Vec::new(),
+        .map(|s| {
+            let pics = (id(&s.floor_flat), id(&s.ceiling_flat));
+            Sector::stored(fixed(s.floor), fixed(s.ceiling), pics, s.light, s.special, s.tag as i16)
         })
         .collect();
     let sides: Vec<Side> = map
