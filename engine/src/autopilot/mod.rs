@@ -276,7 +276,7 @@ pub struct Autopilot {
     fighting: u32,
     /// Ticks since the last tick with an enemy to fire at.
     calm: u32,
-    /// The way a missile just fired at will leave, and until when.
+    /// The way a shot just fired at will leave, and until when.
     aim: Option<(f64, u64)>,
     /// Times each walk line was crossed (a live once-only one is crossed
     /// once more at most: it may do nothing for ever).
@@ -472,20 +472,29 @@ impl Autopilot {
             } else {
                 None
             };
+            // A shot the trigger was pulled for leaves some ticks later,
+            // where the body faces then: while it is on its way out, keep
+            // facing the way it was aimed (turning to another enemy in
+            // between would send it there, into a barrel beside the bot,
+            // say).
+            let held = self.aim.filter(|&(_, until)| now < until);
+            let angle = held.map_or(angle, |(aimed, _)| aimed);
             let turn = turn_to(player.angle, angle);
             input.turn = turn as f32;
-            input.fire = true;
             // Ask for the weapon only when another is in hand: asking again
             // would step to the next weapon in the slot.
             let in_hand = slot_of(game, player.pending_weapon.or(player.ready_weapon));
             input.weapon = if in_hand == Some(weapon) { 0 } else { weapon };
             // No shot with the weapon being put away (a rocket fired as
             // the enemy closes in bursts in the bot's face).
-            input.fire = player.pending_weapon.is_none() && slot_of(game, player.ready_weapon) == Some(weapon);
-            if input.fire && matches!(weapon, 5 | 7) {
-                // The missile leaves some ticks after the trigger (Doom's
-                // rocket launcher: 8): keep facing this way till then.
-                self.aim = Some((angle, now + 12));
+            input.fire = player.pending_weapon.is_none()
+                && slot_of(game, player.ready_weapon) == Some(weapon)
+                && !self.barrel_ahead(game, angle);
+            if input.fire && held.is_none() {
+                // The shot leaves some ticks after the trigger (Doom's
+                // rocket launcher: 8; the pistol and shotgun: 3-4): keep
+                // facing this way till then.
+                self.aim = Some((angle, now + if matches!(weapon, 5 | 7) { 12 } else { 5 }));
             }
             if stand {
                 input.strafe = if (now / 24).is_multiple_of(2) { 1 } else { -1 };
@@ -680,13 +689,17 @@ impl Autopilot {
         special.is_some() && game.special(line).is_none()
     }
 
-    /// Cells solid things stand on (not monsters: they move).
+    /// Cells solid things stand on (not monsters: they move; nor the
+    /// player's own body, which the simulation lists among its things:
+    /// taken for an obstacle, it walled the body's start in where the way
+    /// on was narrow, E4M6's pit, E4M7's lift foot, MAP11's door closet).
     fn blocked(&self, game: &dyn Observe) -> BTreeSet<Cell> {
         let (seen, table) = (game.seen(), game.table());
+        let me = game.player();
         let mut cells = BTreeSet::new();
         for a in seen.iter() {
             let def = &table.actors[a.kind];
-            if a.removed || !a.solid || def.has(ActorFlag::CountKill) {
+            if a.removed || !a.solid || def.has(ActorFlag::CountKill) || (a.pos == me.pos && a.z == me.z) {
                 continue;
             }
             let reach = def.radius + nav::CLEAR;
@@ -891,11 +904,20 @@ impl Autopilot {
         let live = live_heights(map);
         let now = game.ticks();
         let cells = &active.route.cells;
+        let player = game.player();
         for i in 1..cells.len() {
             if active.route.teleport[i] {
                 continue;
             }
-            let from = self.nav.span(cells[i - 1], &live);
+            let mut from = self.nav.span(cells[i - 1], &live);
+            if i == 1 && player.on_ground() && self.mech.lifts.get(player.sector).is_some_and(|l| l.is_empty()) {
+                // The body stands where it stands: a start cell whose
+                // circle overlaps the lift's top (Doom keeps the body
+                // itself 16 units off the lift's raised edge, in the
+                // corner below it) does not put the body up there. (On a
+                // lift itself, it rides where the lift takes it.)
+                from.high = from.high.min(player.z);
+            }
             let up = self.nav.touched(cells[i]).iter().map(|&s| s as usize).find(|&s| {
                 !self.mech.lifts[s].is_empty() && live.floor[s] > from.high + MAX_STEP && !self.mech.perpetual[s]
             });
@@ -1571,18 +1593,34 @@ impl Autopilot {
     fn coasting_off(&self, game: &dyn Observe, a: &Active, live: &Heights) -> bool {
         let player = game.player();
         let slide = player.velocity * 10.0;
+        // Off a step down the body flies, with neither friction nor
+        // thrust (Doom's P_XYMovement), for the fall's ticks: a 16-unit
+        // step at a run carries it some 50 units further (E2M9, over a
+        // teleport line past such a step). Measured from the floor under
+        // the body to other sectors' floors (on a lift going down fast
+        // the body lags its own floor: no step), and asked only of
+        // teleport lines (a longer slide taken for the drops below kept
+        // the bot from pushing on where it had to: MAP04, MAP06).
+        let drop = (1..=4)
+            .filter_map(|i| self.nav.cell_at(player.pos + slide * (i as f64 / 4.0)))
+            .map(|c| self.nav.centre[c as usize])
+            .filter(|&s| s != nav::NONE && s as usize != player.sector)
+            .map(|s| player.floor - live.floor[s as usize])
+            .fold(0.0, f64::max)
+            .min(MAX_STEP);
+        let flight = if drop > 0.0 && player.on_ground() { 1.0 + ((2.0 * drop).sqrt() + 1.0) / 10.0 } else { 1.0 };
         let ahead = a.at..(a.at + 16).min(a.route.cells.len());
         // Over a teleport line's front the route does not take (E2M9: a
         // run out of a teleporter's arrival, round a bend, back over the
         // line that sends it there).
         let map = &game.level().compiled.map;
-        let steps = (slide.length() / 8.0).ceil() as usize;
+        let (far, steps) = (slide * flight, (slide.length() * flight / 8.0).ceil() as usize);
         if !a.route.teleport[ahead.clone()].iter().any(|&t| t)
             && self.mech.teleports.keys().any(|&l| {
                 let (_, p, q, _) = line_of(map, l);
                 crate::geom::front_distance(p, q, player.pos) > 0.0
                     && (1..=steps).any(|i| {
-                        let at = player.pos + slide * (i as f64 / steps as f64);
+                        let at = player.pos + far * (i as f64 / steps as f64);
                         plan::nearest_on(at, p, q).distance(at) < RADIUS + 8.0
                     })
             })
@@ -1590,6 +1628,7 @@ impl Autopilot {
             return true;
         }
         let route = &a.route.cells[ahead];
+        let steps = (slide.length() / 8.0).ceil() as usize;
         (1..=steps).any(|i| {
             let p = player.pos + slide * (i as f64 / steps as f64);
             self.nav.cell_at(p).is_some_and(|c| {
@@ -2085,6 +2124,26 @@ impl Autopilot {
             return None;
         }
         Some((to.y.atan2(to.x).to_degrees(), weapon, d))
+    }
+
+    /// Is a live barrel close in front, near a shot fired facing `angle`
+    /// (degrees), before the enemy or beside it: a shot's spread (the
+    /// shotgun's, the chaingun's) or a pellet that misses would set it off
+    /// in the bot's face, and the barrels beside it with it (E1M1's row of
+    /// them by the shotgun guys).
+    fn barrel_ahead(&self, game: &dyn Observe, angle: f64) -> bool {
+        let player = game.player();
+        let table = game.table();
+        let dir = DVec2::from_angle(angle.to_radians());
+        game.seen().iter().any(|b| {
+            let p = b.pos - player.pos;
+            !b.removed
+                && b.health > 0
+                && table.actors[b.kind].name == "barrel"
+                && p.length() < BARREL_CLEARANCE
+                && p.dot(dir) > 0.0
+                && (p - dir * p.dot(dir)).length() < 32.0
+        })
     }
 }
 
