@@ -19,6 +19,7 @@ pub mod actors;
 pub mod autopilot;
 pub mod bsp;
 pub mod campaign;
+pub mod envelope;
 pub mod fixed;
 pub mod framebuffer;
 pub mod geom;

@@ -45,6 +45,7 @@ use serde::{Deserialize, Serialize};
 use crate::actors::ActorTable;
 use crate::bsp::BuildOptions;
 use crate::campaign::{open, Campaign, MapRef};
+use crate::envelope::{self, encode, EnvelopeError};
 use crate::level::Level;
 use crate::map::Sector;
 use crate::materials::{SectorTextures, SideTextures};
@@ -62,8 +63,6 @@ pub const MAGIC: &[u8] = b"SIGHTLINE-SAVE\n";
 /// the same field meaning something else). 2: the level's game may be the
 /// simulation with Doom's arithmetic.
 pub const VERSION: u8 = 2;
-/// The header: magic, version, checksum, length.
-const HEADER: usize = 15 + 1 + 4 + 8;
 
 #[derive(Debug, thiserror::Error)]
 pub enum SaveError {
@@ -319,12 +318,7 @@ impl Playthrough {
         };
         let mut body = encode(&info);
         body.extend(state);
-        let mut bytes = MAGIC.to_vec();
-        bytes.push(VERSION);
-        bytes.extend(crc32fast::hash(&body).to_le_bytes());
-        bytes.extend((body.len() as u64).to_le_bytes());
-        bytes.extend(body);
-        Ok(bytes)
+        Ok(envelope::seal(MAGIC, VERSION, &body))
     }
 
     /// Saves the playthrough to `path`, atomically (a failed write leaves
@@ -400,45 +394,17 @@ pub fn peek(path: &Path) -> Result<SaveInfo, SaveError> {
 /// The header checked, the info decoded, and the state's bytes.
 fn read<'a>(bytes: &'a [u8], label: &str) -> Result<(SaveInfo, &'a [u8]), SaveError> {
     let path = || label.to_string();
-    let truncated = |what: String| SaveError::Truncated { path: path(), what };
-    let corrupt = |what: String| SaveError::Corrupt { path: path(), what };
-    if bytes.len() < MAGIC.len() && MAGIC.starts_with(bytes) && !bytes.is_empty() {
-        return Err(truncated(format!("{} bytes, not even the header", bytes.len())));
-    }
-    let rest = bytes.strip_prefix(MAGIC).ok_or_else(|| SaveError::Magic { path: path() })?;
-    let (&version, rest) = rest.split_first().ok_or_else(|| truncated("no version after the magic".into()))?;
-    if version != VERSION {
-        return Err(SaveError::Version { path: path(), found: version });
-    }
-    let (checksum, rest) = rest.split_first_chunk::<4>().ok_or_else(|| truncated("no checksum".into()))?;
-    let (length, body) = rest.split_first_chunk::<8>().ok_or_else(|| truncated("no length".into()))?;
-    let length = u64::from_le_bytes(*length);
-    let present = body.len() as u64;
-    if length > present {
-        return Err(truncated(format!(
-            "{} bytes, the header says {}",
-            HEADER as u64 + present,
-            HEADER as u64 + length
-        )));
-    }
-    if length < present {
-        return Err(corrupt(format!("{} bytes after the end the header gives", present - length)));
-    }
-    if crc32fast::hash(body) != u32::from_le_bytes(*checksum) {
-        return Err(corrupt("checksum mismatch".into()));
-    }
-    let mut state = body;
-    let info: SaveInfo = ciborium::from_reader(&mut state)
-        .map_err(|e| corrupt(format!("the save's description does not decode: {e}")))?;
+    let mut state = envelope::open(bytes, MAGIC, VERSION).map_err(|e| match e {
+        EnvelopeError::Magic => SaveError::Magic { path: path() },
+        EnvelopeError::Version(found) => SaveError::Version { path: path(), found },
+        EnvelopeError::Truncated(what) => SaveError::Truncated { path: path(), what },
+        EnvelopeError::Corrupt(what) => SaveError::Corrupt { path: path(), what },
+    })?;
+    let info: SaveInfo = ciborium::from_reader(&mut state).map_err(|e| SaveError::Corrupt {
+        path: path(),
+        what: format!("the save's description does not decode: {e}"),
+    })?;
     Ok((info, state))
-}
-
-/// CBOR of `value` (writing to memory cannot fail; a value serde refuses,
-/// which none of ours is, would give an empty encoding and a load error).
-fn encode<T: Serialize>(value: &T) -> Vec<u8> {
-    let mut bytes = Vec::new();
-    ciborium::into_writer(value, &mut bytes).unwrap_or_default();
-    bytes
 }
 
 /// `path` made absolute (against the working directory), so a save made

@@ -65,6 +65,7 @@ use super::monsters::BrainState;
 use super::specials::SpecialState;
 use super::{Info, Mobj, MobjId, Player, Rules, Sim, Thinker, ThinkerId, ThinkerKind, MAXPLAYERS, NUMWEAPONS};
 use crate::actors::{ActorTable, StateId};
+use crate::envelope::{self, encode, EnvelopeError};
 use crate::fixed::{DoomRandom, Fixed};
 use crate::play::syncdump::Fnv;
 use crate::wad::level::WadThing;
@@ -74,8 +75,6 @@ use crate::wad::Wad;
 pub const MAGIC: &[u8] = b"SIGHTLINE-SIMS\n";
 /// Bumped whenever the saved state's meaning changes.
 pub const VERSION: u8 = 1;
-/// The header: magic, version, checksum, length.
-const HEADER: usize = 15 + 1 + 4 + 8;
 
 #[derive(Debug, thiserror::Error)]
 pub enum SaveError {
@@ -377,18 +376,17 @@ pub fn to_bytes(sim: &Sim) -> Vec<u8> {
 fn seal(header: &SaveInfo, state: &SimState) -> Vec<u8> {
     let mut body = encode(header);
     body.extend(encode(state));
-    envelope(&body)
+    envelope::seal(MAGIC, VERSION, &body)
 }
 
-/// `body` behind the magic, the version, its checksum and its length.
-fn envelope(body: &[u8]) -> Vec<u8> {
-    let mut bytes = Vec::with_capacity(HEADER + body.len());
-    bytes.extend(MAGIC);
-    bytes.push(VERSION);
-    bytes.extend(crc32fast::hash(body).to_le_bytes());
-    bytes.extend((body.len() as u64).to_le_bytes());
-    bytes.extend(body);
-    bytes
+/// The envelope's header: magic, version, checksum, length.
+#[cfg(test)]
+const HEADER: usize = MAGIC.len() + 1 + 4 + 8;
+
+/// `body` sealed as a save of this format.
+#[cfg(test)]
+fn in_envelope(body: &[u8]) -> Vec<u8> {
+    envelope::seal(MAGIC, VERSION, body)
 }
 
 /// Saves `sim` to `path`, atomically (a failed write leaves whatever was there).
@@ -454,44 +452,18 @@ pub fn from_bytes(bytes: &[u8], label: &str, level: Level, info: Arc<Info>) -> R
 /// The envelope checked, the description decoded, and the state's bytes.
 fn read<'a>(bytes: &'a [u8], label: &str) -> Result<(SaveInfo, &'a [u8]), SaveError> {
     let path = || label.to_string();
-    let truncated = |what: String| SaveError::Truncated { path: path(), what };
-    let corrupt = |what: String| SaveError::Corrupt { path: path(), what };
-    if bytes.len() < MAGIC.len() && MAGIC.starts_with(bytes) && !bytes.is_empty() {
-        return Err(truncated(format!("{} bytes, not even the header", bytes.len())));
-    }
-    let rest = bytes.strip_prefix(MAGIC).ok_or_else(|| SaveError::Magic { path: path() })?;
-    let (&version, rest) = rest.split_first().ok_or_else(|| truncated("no version after the magic".into()))?;
-    if version < VERSION {
-        return Err(SaveError::OldVersion { path: path(), found: version });
-    }
-    if version > VERSION {
-        return Err(SaveError::NewVersion { path: path(), found: version });
-    }
-    let (checksum, rest) = rest.split_first_chunk::<4>().ok_or_else(|| truncated("no checksum".into()))?;
-    let (length, body) = rest.split_first_chunk::<8>().ok_or_else(|| truncated("no length".into()))?;
-    let (length, present) = (u64::from_le_bytes(*length), body.len() as u64);
-    if length > present {
-        let (have, want) = (HEADER as u64 + present, HEADER as u64 + length);
-        return Err(truncated(format!("{have} bytes, the header says {want}")));
-    }
-    if length < present {
-        return Err(corrupt(format!("{} bytes after the end the header gives", present - length)));
-    }
-    if crc32fast::hash(body) != u32::from_le_bytes(*checksum) {
-        return Err(corrupt("checksum mismatch".into()));
-    }
-    let mut state = body;
-    let info: SaveInfo = ciborium::from_reader(&mut state)
-        .map_err(|e| corrupt(format!("the save's description does not decode: {e}")))?;
+    let mut state = envelope::open(bytes, MAGIC, VERSION).map_err(|e| match e {
+        EnvelopeError::Magic => SaveError::Magic { path: path() },
+        EnvelopeError::Version(found) if found < VERSION => SaveError::OldVersion { path: path(), found },
+        EnvelopeError::Version(found) => SaveError::NewVersion { path: path(), found },
+        EnvelopeError::Truncated(what) => SaveError::Truncated { path: path(), what },
+        EnvelopeError::Corrupt(what) => SaveError::Corrupt { path: path(), what },
+    })?;
+    let info: SaveInfo = ciborium::from_reader(&mut state).map_err(|e| SaveError::Corrupt {
+        path: path(),
+        what: format!("the save's description does not decode: {e}"),
+    })?;
     Ok((info, state))
-}
-
-/// CBOR of `value` (writing to memory cannot fail; a value serde refuses,
-/// which none of ours is, would give an empty encoding and a load error).
-fn encode<T: Serialize>(value: &T) -> Vec<u8> {
-    let mut bytes = Vec::new();
-    ciborium::into_writer(value, &mut bytes).unwrap_or_default();
-    bytes
 }
 
 /// An element of the state and what is wrong with it.

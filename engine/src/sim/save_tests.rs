@@ -299,7 +299,7 @@ fn random_bytes_truncations_and_resealed_edits_never_panic() {
     let junk = (proptest::collection::vec(any::<u8>(), 0..4096), any::<bool>());
     runner
         .run(&junk, |(junk, sealed)| {
-            let input = if sealed { envelope(&junk) } else { junk };
+            let input = if sealed { in_envelope(&junk) } else { junk };
             prop_assert!(try_load(&input).is_err());
             Ok(())
         })
@@ -322,7 +322,7 @@ fn random_bytes_truncations_and_resealed_edits_never_panic() {
             for (at, byte) in edits {
                 body[at - HEADER] = byte;
             }
-            let _ = try_load(&envelope(&body));
+            let _ = try_load(&in_envelope(&body));
             Ok(())
         })
         .unwrap();
