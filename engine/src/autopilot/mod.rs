@@ -19,6 +19,8 @@
 
 pub mod brain;
 pub mod check;
+mod fight;
+use fight::{weapon_for, Fire};
 pub mod leap;
 pub mod nav;
 pub mod observe;
@@ -31,11 +33,11 @@ use glam::DVec2;
 /// A point on the map (glam's, re-exported for the command line).
 pub type Point = DVec2;
 
-use crate::actors::{ActorDef, ActorFlag, Category, Give, Power};
+use crate::actors::{ActorDef, ActorFlag, Give, Power};
 use crate::map::special::{Action, Activation, DoorKind, KeyColour};
 use crate::play::events::Event;
 use crate::play::player::{MAX_STEP, RADIUS};
-use crate::play::sight::{self, Body};
+use crate::play::sight;
 use crate::play::TickInput;
 use nav::{Cell, Heights, LineId, NavGrid, Span, CELL, DIRS};
 use observe::Observe;
@@ -2041,110 +2043,6 @@ impl Autopilot {
             game.special(sl).is_some()
         );
     }
-
-    /// The enemy to shoot, if one is in sight: the angle to it and the
-    /// weapon number to hold.
-    fn fight(&mut self, game: &dyn Observe) -> Option<(f64, u8, f64)> {
-        let player = game.player();
-        let (seen, table) = (game.seen(), game.table());
-        let compiled = &game.level().compiled;
-        let looker = Body { pos: player.pos, z: player.z, height: 56.0, radius: 16.0, index: usize::MAX };
-        let mut best: Option<(f64, usize)> = None;
-        self.in_sight = 0;
-        for (i, a) in seen.iter().enumerate() {
-            let def = &table.actors[a.kind];
-            if a.removed
-                || a.health <= 0
-                || !(def.has(ActorFlag::CountKill) || def.name == "lost_soul")
-                || def.category != Category::Monster && !def.has(ActorFlag::CountKill)
-            {
-                continue;
-            }
-            let d = a.pos.distance(player.pos);
-            if d > FIGHT_RANGE || (best.is_some_and(|(bd, _)| bd <= d) && self.in_sight >= CROWD) {
-                continue;
-            }
-            let target = Body { pos: a.pos, z: a.z, height: def.height, radius: def.radius, index: i };
-            if sight::sight(compiled, &mut self.sight, &looker, &target) {
-                self.in_sight += 1;
-                if best.is_none_or(|(bd, _)| d < bd) {
-                    best = Some((d, i));
-                }
-            }
-        }
-        let Some((d, i)) = best else {
-            self.barrel_near = false;
-            return None;
-        };
-        let target = seen[i].pos;
-        let to = target - player.pos;
-        // Barrels close by in a fight: any shot, the bot's or an enemy's,
-        // can set one off, so fall back away from them; one on the line of
-        // fire would hurt the bot more than the shot hurts the enemy, so
-        // hold fire.
-        let mut in_the_way = false;
-        self.barrel_near = false;
-        for b in seen.iter() {
-            if b.removed || b.health <= 0 || table.actors[b.kind].name != "barrel" {
-                continue;
-            }
-            let p = b.pos - player.pos;
-            self.barrel_near |= p.length() < BARREL_BLAST;
-            in_the_way |= p.length() < BARREL_CLEARANCE
-                && p.length() < d
-                && p.dot(to) > 0.0
-                && plan::nearest_on(b.pos, player.pos, target).distance(b.pos) < 32.0;
-        }
-        if in_the_way {
-            return None;
-        }
-        // Nothing else that stops a rocket (a monster stepping in, a barrel)
-        // near its flight while its blast would still reach the bot.
-        let crowded = seen.iter().enumerate().any(|(j, b)| {
-            let def = &table.actors[b.kind];
-            let p = b.pos - player.pos;
-            j != i
-                && !b.removed
-                && b.health > 0
-                && b.shootable
-                && p.length() < ROCKET_SAFE + 64.0
-                && p.dot(to) > 0.0
-                && plan::nearest_on(b.pos, player.pos, target).distance(b.pos) < def.radius + 16.0
-        });
-        let fire = if d > ROCKET_SAFE && !crowded && rocket_clear(&compiled.map, player.pos, player.z, target) {
-            Fire::Any
-        } else {
-            Fire::NoBlast
-        };
-        let weapon = weapon_for(game, fire);
-        // With only a fist (or chainsaw), an enemy out of its reach is no
-        // fight: swinging at it, or falling back from it, only gives it
-        // time to shoot; go on (for ammo, say) instead.
-        if weapon == 1 && d > MELEE_REACH + table.actors[seen[i].kind].radius {
-            return None;
-        }
-        Some((to.y.atan2(to.x).to_degrees(), weapon, d))
-    }
-
-    /// Is a live barrel close in front, near a shot fired facing `angle`
-    /// (degrees), before the enemy or beside it: a shot's spread (the
-    /// shotgun's, the chaingun's) or a pellet that misses would set it off
-    /// in the bot's face, and the barrels beside it with it (E1M1's row of
-    /// them by the shotgun guys).
-    fn barrel_ahead(&self, game: &dyn Observe, angle: f64) -> bool {
-        let player = game.player();
-        let table = game.table();
-        let dir = DVec2::from_angle(angle.to_radians());
-        game.seen().iter().any(|b| {
-            let p = b.pos - player.pos;
-            !b.removed
-                && b.health > 0
-                && table.actors[b.kind].name == "barrel"
-                && p.length() < BARREL_CLEARANCE
-                && p.dot(dir) > 0.0
-                && (p - dir * p.dot(dir)).length() < 32.0
-        })
-    }
 }
 
 /// A line for the log: where it is and what it does.
@@ -2298,32 +2196,6 @@ fn turn_to(from: f64, to: f64) -> f64 {
     }
 }
 
-/// Closer than this a rocket's blast reaches the shooter.
-const ROCKET_SAFE: f64 = 300.0;
-
-/// Would a rocket fired from `from` (feet at `z`) at `to` fly clear of
-/// walls, ledges and low ceilings until it is past its blast's reach? A
-/// rocket that bursts on a corner or a step in front of the face is the
-/// bot's own death: the sight line to the target is not enough, the
-/// rocket has a body (radius 11) and flies at the height it is fired from.
-fn rocket_clear(map: &crate::map::Map, from: DVec2, z: f64, to: DVec2) -> bool {
-    const SIDE: f64 = 13.0;
-    let along = (to - from).normalize_or_zero();
-    let end = from + along * (to.distance(from) - 24.0).min(ROCKET_SAFE + 64.0);
-    let side = DVec2::new(-along.y, along.x) * SIDE;
-    let (low, high) = (z + 32.0 - 8.0, z + 32.0 + 16.0);
-    map.lines.iter().all(|l| {
-        if let Some(back) = &l.back {
-            let (f, b) = (&map.sectors[l.front.sector], &map.sectors[back.sector]);
-            if f.floor.max(b.floor) < low && f.ceiling.min(b.ceiling) > high {
-                return true;
-            }
-        }
-        let (a, b) = map.line_points(l);
-        [DVec2::ZERO, side, -side].iter().all(|&o| crate::play::trace::crossing(from + o, end + o, a, b).is_none())
-    })
-}
-
 /// What picking up `def` gives (nothing when it is no pickup).
 fn gives(def: &ActorDef) -> impl Iterator<Item = &Give> {
     def.pickup.iter().flat_map(|p| p.give.iter())
@@ -2348,43 +2220,4 @@ fn thrust_towards(facing: f64, way: f64) -> (i8, i8) {
         }
     };
     (key(c), -key(s))
-}
-
-/// Which weapons a shot may use.
-#[derive(Clone, Copy, PartialEq)]
-enum Fire {
-    Any,
-    /// No rocket launcher or BFG: a blast would reach the shooter.
-    NoBlast,
-    /// Hitscan only (a shot line wants bullets).
-    Bullets,
-}
-
-/// The weapon slot to fight with: the best owned with ammo that `fire`
-/// allows.
-fn weapon_for(game: &dyn Observe, fire: Fire) -> u8 {
-    let player = game.player();
-    let table = game.table();
-    let mut best = (0, 1u8);
-    for &w in &player.weapons {
-        let Some(def) = table.actors[w].weapon.as_ref() else { continue };
-        let has_ammo = def.ammo.is_none_or(|k| player.ammo[k.index()] >= def.ammo_use.max(1));
-        if !has_ammo {
-            continue;
-        }
-        let score = match def.slot {
-            1 => 1,
-            2 => 3,
-            3 => 6,
-            4 => 5,
-            5 if fire == Fire::Any => 7,
-            6 if fire != Fire::Bullets => 8,
-            7 if fire == Fire::Any => 4,
-            _ => 0,
-        };
-        if score > best.0 {
-            best = (score, def.slot);
-        }
-    }
-    best.1
 }
