@@ -86,6 +86,7 @@ fn corridor(sectors: &[(i32, i32, i16)]) -> Level {
         reject: Vec::new(),
         names: vec!["-".into(), "FLAT1".into(), "FLAT2".into()],
         things: Vec::new(),
+        generalized: Default::default(),
     }
 }
 
