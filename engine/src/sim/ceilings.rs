@@ -23,6 +23,11 @@ pub enum CeilingType {
     CrushAndRaise,
     FastCrushAndRaise,
     SilentCrushAndRaise,
+    /// A generalized crusher (Boom's `genCrusher`, `genSilentCrusher`): its
+    /// speed is its own, it slows while crushing only when slower than a
+    /// fast crusher, and it gets its speed back at the bottom.
+    GenCrusher,
+    GenSilentCrusher,
 }
 
 /// The thinker's data (`ceiling_t`). `direction` 1 up, -1 down, 0 in
@@ -38,6 +43,10 @@ pub struct Ceiling {
     pub direction: i32,
     pub tag: i16,
     pub olddirection: i32,
+    /// The speed it started with (Boom's `oldspeed`): a crusher slowed by a
+    /// body goes back to it at the bottom. Vanilla's slow crushers start at
+    /// `CEILSPEED`, which is what they go back to.
+    pub oldspeed: Fixed,
 }
 
 /// Runs the thinker one tic (`T_MoveCeiling`).
@@ -51,7 +60,7 @@ pub fn think(sim: &mut Sim, id: ThinkerId) {
 
 fn move_ceiling(sim: &mut Sim, id: ThinkerId, c: &mut Ceiling) {
     let sec = c.sector;
-    let silent = c.kind == CeilingType::SilentCrushAndRaise;
+    let silent = matches!(c.kind, CeilingType::SilentCrushAndRaise | CeilingType::GenSilentCrusher);
     match c.direction {
         1 => {
             let res = move_plane(sim, sec, c.speed, c.topheight, 0, Plane::Ceiling, 1);
@@ -61,11 +70,13 @@ fn move_ceiling(sim: &mut Sim, id: ThinkerId, c: &mut Ceiling) {
             if res == MoveResult::PastDest {
                 match c.kind {
                     CeilingType::RaiseToHighest => remove_active_ceiling(sim, id),
-                    CeilingType::SilentCrushAndRaise => {
+                    CeilingType::SilentCrushAndRaise | CeilingType::GenSilentCrusher => {
                         sound(sim, sec, "pstop");
                         c.direction = -1;
                     }
-                    CeilingType::FastCrushAndRaise | CeilingType::CrushAndRaise => c.direction = -1,
+                    CeilingType::FastCrushAndRaise | CeilingType::CrushAndRaise | CeilingType::GenCrusher => {
+                        c.direction = -1
+                    }
                     _ => {}
                 }
             }
@@ -88,6 +99,13 @@ fn move_ceiling(sim: &mut Sim, id: ThinkerId, c: &mut Ceiling) {
                         c.speed = CEILSPEED;
                         c.direction = 1;
                     }
+                    CeilingType::GenSilentCrusher | CeilingType::GenCrusher => {
+                        if c.kind == CeilingType::GenSilentCrusher {
+                            sound(sim, sec, "pstop");
+                        }
+                        c.speed = c.oldspeed;
+                        c.direction = 1;
+                    }
                     CeilingType::FastCrushAndRaise => c.direction = 1,
                     CeilingType::LowerAndCrush | CeilingType::LowerToFloor => remove_active_ceiling(sim, id),
                     CeilingType::RaiseToHighest => {}
@@ -98,6 +116,12 @@ fn move_ceiling(sim: &mut Sim, id: ThinkerId, c: &mut Ceiling) {
                         CeilingType::SilentCrushAndRaise | CeilingType::CrushAndRaise | CeilingType::LowerAndCrush
                     ) {
                         c.speed = Fixed(CEILSPEED.0 / 8);
+                    }
+                    // As the f64 game: an eighth of its own speed, unless
+                    // as fast as vanilla's fast crusher.
+                    let generalized = matches!(c.kind, CeilingType::GenCrusher | CeilingType::GenSilentCrusher);
+                    if generalized && c.oldspeed < CEILSPEED * 2 {
+                        c.speed = Fixed(c.oldspeed.0 / 8);
                     }
                 }
                 MoveResult::Ok => {}
@@ -124,42 +148,87 @@ pub fn do_ceiling(sim: &mut Sim, line: usize, kind: CeilingType) -> bool {
     while let Some(s) = next_free_tagged(sim, line, sec) {
         sec = Some(s);
         started = true;
-        let (floor, ceiling) = (sim.level.sectors[s].floorheight, sim.level.sectors[s].ceilingheight);
-        let mut c = Ceiling { kind, sector: s, tag: sim.level.sectors[s].tag, ..Ceiling::default() };
-        match kind {
-            CeilingType::FastCrushAndRaise => {
-                c.crush = true;
-                c.topheight = ceiling;
-                c.bottomheight = floor + Fixed::from_int(8);
-                c.direction = -1;
-                c.speed = CEILSPEED * 2;
-            }
-            CeilingType::SilentCrushAndRaise
-            | CeilingType::CrushAndRaise
-            | CeilingType::LowerAndCrush
-            | CeilingType::LowerToFloor => {
-                if matches!(kind, CeilingType::SilentCrushAndRaise | CeilingType::CrushAndRaise) {
-                    c.crush = true;
-                    c.topheight = ceiling;
-                }
-                c.bottomheight = floor;
-                if kind != CeilingType::LowerToFloor {
-                    c.bottomheight += Fixed::from_int(8);
-                }
-                c.direction = -1;
-                c.speed = CEILSPEED;
-            }
-            CeilingType::RaiseToHighest => {
-                c.topheight = find_highest_ceiling_surrounding(&sim.level, s);
-                c.direction = 1;
-                c.speed = CEILSPEED;
-            }
-        }
-        let id = sim.add_thinker(ThinkerKind::Ceiling(c));
-        sim.level.sectors[s].specialdata = Some(id);
-        add_active_ceiling(sim, id);
+        let c = new_ceiling(sim, s, kind);
+        start_ceiling(sim, c);
     }
     started
+}
+
+/// Starts ceiling `c` as its sector's mover, listed as active.
+pub fn start_ceiling(sim: &mut Sim, c: Ceiling) {
+    let s = c.sector;
+    let id = sim.add_thinker(ThinkerKind::Ceiling(c));
+    sim.level.sectors[s].specialdata = Some(id);
+    add_active_ceiling(sim, id);
+}
+
+/// One ceiling of `EV_DoCeiling`'s kinds on sector `s`.
+fn new_ceiling(sim: &Sim, s: usize, kind: CeilingType) -> Ceiling {
+    let (floor, ceiling) = (sim.level.sectors[s].floorheight, sim.level.sectors[s].ceilingheight);
+    let mut c = Ceiling { kind, sector: s, tag: sim.level.sectors[s].tag, ..Ceiling::default() };
+    match kind {
+        CeilingType::FastCrushAndRaise => {
+            c.crush = true;
+            c.topheight = ceiling;
+            c.bottomheight = floor + Fixed::from_int(8);
+            c.direction = -1;
+            c.speed = CEILSPEED * 2;
+        }
+        CeilingType::SilentCrushAndRaise
+        | CeilingType::CrushAndRaise
+        | CeilingType::LowerAndCrush
+        | CeilingType::LowerToFloor => {
+            if matches!(kind, CeilingType::SilentCrushAndRaise | CeilingType::CrushAndRaise) {
+                c.crush = true;
+                c.topheight = ceiling;
+            }
+            c.bottomheight = floor;
+            if kind != CeilingType::LowerToFloor {
+                c.bottomheight += Fixed::from_int(8);
+            }
+            c.direction = -1;
+            c.speed = CEILSPEED;
+        }
+        CeilingType::RaiseToHighest => {
+            c.topheight = find_highest_ceiling_surrounding(&sim.level, s);
+            c.direction = 1;
+            c.speed = CEILSPEED;
+        }
+        CeilingType::GenCrusher | CeilingType::GenSilentCrusher => {
+            c.crush = true;
+            c.topheight = ceiling;
+            c.bottomheight = floor + Fixed::from_int(8);
+            c.direction = -1;
+            c.speed = CEILSPEED;
+        }
+    }
+    c.oldspeed = c.speed;
+    c
+}
+
+/// A generalized crusher on sector `s` at `speed` (see [`CeilingType::GenCrusher`]).
+pub fn gen_crusher(sim: &Sim, s: usize, speed: Fixed, silent: bool) -> Ceiling {
+    let kind = if silent { CeilingType::GenSilentCrusher } else { CeilingType::GenCrusher };
+    let mut c = new_ceiling(sim, s, kind);
+    (c.speed, c.oldspeed) = (speed, speed);
+    c
+}
+
+/// A ceiling moving once to `dest` at `speed` on sector `s`: up as
+/// vanilla's raise-to-highest, down as its lower-to-floor (crushing if
+/// `crush`), each done on arrival.
+pub fn gen_ceiling(sim: &Sim, s: usize, dest: Fixed, speed: Fixed, crush: bool) -> Ceiling {
+    let up = dest > sim.level.sectors[s].ceilingheight;
+    let kind = if up { CeilingType::RaiseToHighest } else { CeilingType::LowerToFloor };
+    let mut c = new_ceiling(sim, s, kind);
+    if up {
+        c.topheight = dest;
+    } else {
+        c.bottomheight = dest;
+        c.crush = crush;
+    }
+    (c.speed, c.oldspeed) = (speed, speed);
+    c
 }
 
 /// `P_AddActiveCeiling`: the first free slot; none free, it is not listed

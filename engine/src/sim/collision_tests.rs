@@ -117,6 +117,7 @@ fn room(floor1: i32, ceiling1: i32) -> Level {
         reject: Vec::new(),
         names: vec!["-".into()],
         things: Vec::new(),
+        generalized: Default::default(),
     }
 }
 

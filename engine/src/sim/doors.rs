@@ -7,8 +7,10 @@
 use super::floors::{move_plane, MoveResult, Plane};
 use super::specials::{find_lowest_ceiling_surrounding, next_free_tagged};
 use super::think::ThinkerKind;
+use super::Compat;
 use super::{MobjId, Sim, ThinkerId, TICRATE};
 use crate::fixed::Fixed;
+use crate::map::special::{DoorKind, KeyColour};
 
 /// A door's speed a tic (`VDOORSPEED`) and wait at the top (`VDOORWAIT`).
 pub const VDOORSPEED: Fixed = Fixed(2 << 16);
@@ -39,6 +41,50 @@ pub struct Door {
     pub direction: i32,
     pub topwait: i32,
     pub topcountdown: i32,
+    /// Tics a close-then-open door stays shut (vanilla's 30 seconds; a
+    /// generalized special's own).
+    pub shut: i32,
+}
+
+/// What a door does and how fast and long: a vanilla type's constants
+/// ([`DoorParams::of`]) or a generalized special's own
+/// ([`DoorParams::generalized`]), started by the same code.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct DoorParams {
+    pub kind: DoorType,
+    pub speed: Fixed,
+    /// Tics a raise door stays open (`topwait`).
+    pub wait: i32,
+    /// Tics a close-then-open door stays shut.
+    pub shut: i32,
+}
+
+/// A close-then-open door's wait shut in vanilla (`EV_DoDoor`'s 30 seconds).
+pub const CLOSE30_WAIT: i32 = 30 * TICRATE as i32;
+
+impl DoorParams {
+    /// Vanilla's door of `kind`: the blazing kinds four times as fast.
+    pub fn of(kind: DoorType) -> DoorParams {
+        let blazing = matches!(kind, DoorType::BlazeRaise | DoorType::BlazeOpen | DoorType::BlazeClose);
+        let speed = if blazing { VDOORSPEED * 4 } else { VDOORSPEED };
+        DoorParams { kind, speed, wait: VDOORWAIT, shut: CLOSE30_WAIT }
+    }
+
+    /// A generalized door: a door at four times Doom's speed or faster is
+    /// a blazing one (its sounds), as in Boom's `EV_DoGenDoor`.
+    pub fn generalized(kind: DoorKind, speed: Fixed, wait: i32, shut: i32) -> DoorParams {
+        let blazing = speed >= VDOORSPEED * 4;
+        let kind = match (kind, blazing) {
+            (DoorKind::Raise, false) => DoorType::Normal,
+            (DoorKind::Raise, true) => DoorType::BlazeRaise,
+            (DoorKind::Open, false) => DoorType::Open,
+            (DoorKind::Open, true) => DoorType::BlazeOpen,
+            (DoorKind::Close, false) => DoorType::Close,
+            (DoorKind::Close, true) => DoorType::BlazeClose,
+            (DoorKind::CloseThenOpen, _) => DoorType::Close30ThenOpen,
+        };
+        DoorParams { kind, speed, wait, shut }
+    }
 }
 
 /// Runs the thinker one tic (`T_VerticalDoor`).
@@ -92,7 +138,7 @@ fn run_door(sim: &mut Sim, id: ThinkerId, door: &mut Door) {
                     DoorType::Normal | DoorType::Close => finish(sim, id, sec),
                     DoorType::Close30ThenOpen => {
                         door.direction = 0;
-                        door.topcountdown = TICRATE as i32 * 30;
+                        door.topcountdown = door.shut;
                     }
                     _ => {}
                 },
@@ -134,33 +180,48 @@ fn sound(sim: &mut Sim, sector: usize, name: &str) {
     sim.sector_sound(sector, s);
 }
 
-/// The key colours a locked line asks for, as card indices (`card_t`:
-/// blue, yellow, red cards 0-2, skulls 3-5), with the messages for a
-/// door (`PD_*K`) and for a switch-operated door (`PD_*O`).
-fn lock_of(special: i16) -> Option<(usize, &'static str, &'static str)> {
+/// The card a locked vanilla line asks for (`card_t`: blue, yellow, red
+/// cards 0-2, skulls 3-5; a key colour opens for either).
+fn lock_of(special: i16) -> Option<usize> {
     match special {
-        26 | 32 | 99 | 133 => {
-            Some((0, "You need a blue key to open this door", "You need a blue key to activate this object"))
-        }
-        27 | 34 | 136 | 137 => {
-            Some((1, "You need a yellow key to open this door", "You need a yellow key to activate this object"))
-        }
-        28 | 33 | 134 | 135 => {
-            Some((2, "You need a red key to open this door", "You need a red key to activate this object"))
-        }
+        26 | 32 | 99 | 133 => Some(0),
+        27 | 34 | 136 | 137 => Some(1),
+        28 | 33 | 134 | 135 => Some(2),
         _ => None,
+    }
+}
+
+/// The card index of a key colour (`card_t`'s order).
+pub fn card_of(colour: KeyColour) -> usize {
+    match colour {
+        KeyColour::Blue => 0,
+        KeyColour::Yellow => 1,
+        KeyColour::Red => 2,
+    }
+}
+
+/// What a locked door says without its key: used on the door itself
+/// (`PD_*K`) or through a switch (`PD_*O`).
+fn lock_message(card: usize, manual: bool) -> &'static str {
+    match (card, manual) {
+        (0, true) => "You need a blue key to open this door",
+        (1, true) => "You need a yellow key to open this door",
+        (_, true) => "You need a red key to open this door",
+        (0, false) => "You need a blue key to activate this object",
+        (1, false) => "You need a yellow key to activate this object",
+        (_, false) => "You need a red key to activate this object",
     }
 }
 
 /// Whether the player whose body is `thing` holds the card or skull of
 /// `colour`; if not, the message and the "oof".
-fn has_key(sim: &mut Sim, thing: MobjId, colour: usize, message: &str) -> bool {
+fn has_key(sim: &mut Sim, thing: MobjId, colour: usize, manual: bool) -> bool {
     let Some(n) = sim.mo(thing).player else { return false };
     let Some(p) = sim.players[n].as_mut() else { return false };
     if p.cards[colour] || p.cards[colour + 3] {
         return true;
     }
-    p.message = Some(message.to_string());
+    p.message = Some(lock_message(colour, manual).to_string());
     sim.sound_named(None, "oof");
     false
 }
@@ -168,76 +229,83 @@ fn has_key(sim: &mut Sim, thing: MobjId, colour: usize, message: &str) -> bool {
 /// `EV_DoLockedDoor`: a switch-operated blazing door behind a key; only a
 /// player with the key opens it.
 pub fn do_locked_door(sim: &mut Sim, line: usize, kind: DoorType, thing: MobjId) -> bool {
+    let special = sim.level.lines[line].special;
+    let key = if matches!(special, 99 | 133 | 134 | 135 | 136 | 137) { lock_of(special) } else { None };
+    locked_doors(sim, line, DoorParams::of(kind), key, thing)
+}
+
+/// Doors in the tagged sectors of `line` once the player `thing` has
+/// shown the card `key` asks for (any key-locked switch or walk line).
+pub fn locked_doors(sim: &mut Sim, line: usize, params: DoorParams, key: Option<usize>, thing: MobjId) -> bool {
     if sim.mo(thing).player.is_none() {
         return false;
     }
-    let special = sim.level.lines[line].special;
-    if matches!(special, 99 | 133 | 134 | 135 | 136 | 137) {
-        if let Some((colour, _, message)) = lock_of(special) {
-            if !has_key(sim, thing, colour, message) {
-                return false;
-            }
+    if let Some(colour) = key {
+        if !has_key(sim, thing, colour, false) {
+            return false;
         }
     }
-    do_door(sim, line, kind)
+    start_doors(sim, line, params)
 }
 
 /// `EV_DoDoor`: a door in each tagged sector without a mover; whether any
 /// started.
 pub fn do_door(sim: &mut Sim, line: usize, kind: DoorType) -> bool {
+    start_doors(sim, line, DoorParams::of(kind))
+}
+
+/// `EV_DoDoor` with its parameters given.
+pub fn start_doors(sim: &mut Sim, line: usize, params: DoorParams) -> bool {
     let mut sec = None;
     let mut started = false;
     while let Some(s) = next_free_tagged(sim, line, sec) {
         sec = Some(s);
         started = true;
-        let mut door = Door {
-            kind,
-            sector: s,
-            topheight: Fixed::ZERO,
-            speed: VDOORSPEED,
-            direction: 0,
-            topwait: VDOORWAIT,
-            topcountdown: 0,
-        };
-        let ceiling = sim.level.sectors[s].ceilingheight;
-        let top = || find_lowest_ceiling_surrounding(&sim.level, s) - Fixed::from_int(4);
-        let noise = match kind {
-            DoorType::BlazeClose => {
-                door.topheight = top();
-                door.direction = -1;
-                door.speed = VDOORSPEED * 4;
-                Some("bdcls")
-            }
-            DoorType::Close => {
-                door.topheight = top();
-                door.direction = -1;
-                Some("dorcls")
-            }
-            DoorType::Close30ThenOpen => {
-                door.topheight = ceiling;
-                door.direction = -1;
-                Some("dorcls")
-            }
-            DoorType::BlazeRaise | DoorType::BlazeOpen => {
-                door.direction = 1;
-                door.topheight = top();
-                door.speed = VDOORSPEED * 4;
-                (door.topheight != ceiling).then_some("bdopn")
-            }
-            DoorType::Normal | DoorType::Open => {
-                door.direction = 1;
-                door.topheight = top();
-                (door.topheight != ceiling).then_some("doropn")
-            }
-            DoorType::RaiseIn5Mins => None,
-        };
-        let id = sim.add_thinker(ThinkerKind::Door(door));
-        sim.level.sectors[s].specialdata = Some(id);
-        if let Some(n) = noise {
-            sound(sim, s, n);
-        }
+        start_door(sim, s, params);
     }
     started
+}
+
+/// One door of `EV_DoDoor` on sector `s` (which has no mover).
+pub fn start_door(sim: &mut Sim, s: usize, params: DoorParams) {
+    let DoorParams { kind, speed, wait, shut } = params;
+    let mut door =
+        Door { kind, sector: s, topheight: Fixed::ZERO, speed, direction: 0, topwait: wait, topcountdown: 0, shut };
+    let ceiling = sim.level.sectors[s].ceilingheight;
+    let top = || find_lowest_ceiling_surrounding(&sim.level, s) - Fixed::from_int(4);
+    let noise = match kind {
+        DoorType::BlazeClose => {
+            door.topheight = top();
+            door.direction = -1;
+            Some("bdcls")
+        }
+        DoorType::Close => {
+            door.topheight = top();
+            door.direction = -1;
+            Some("dorcls")
+        }
+        DoorType::Close30ThenOpen => {
+            door.topheight = ceiling;
+            door.direction = -1;
+            Some("dorcls")
+        }
+        DoorType::BlazeRaise | DoorType::BlazeOpen => {
+            door.direction = 1;
+            door.topheight = top();
+            (door.topheight != ceiling).then_some("bdopn")
+        }
+        DoorType::Normal | DoorType::Open => {
+            door.direction = 1;
+            door.topheight = top();
+            (door.topheight != ceiling).then_some("doropn")
+        }
+        DoorType::RaiseIn5Mins => None,
+    };
+    let id = sim.add_thinker(ThinkerKind::Door(door));
+    sim.level.sectors[s].specialdata = Some(id);
+    if let Some(n) = noise {
+        sound(sim, s, n);
+    }
 }
 
 /// `EV_VerticalDoor`: `thing` used the door line `line` (its back sector
@@ -246,40 +314,72 @@ pub fn do_door(sim: &mut Sim, line: usize, kind: DoorType) -> bool {
 /// closing, or (for a player) starts closing.
 pub fn vertical_door(sim: &mut Sim, line: usize, thing: MobjId) {
     let special = sim.level.lines[line].special;
-    if matches!(special, 26 | 27 | 28 | 32 | 33 | 34) {
-        if sim.mo(thing).player.is_none() {
-            return;
-        }
-        if let Some((colour, message, _)) = lock_of(special) {
-            if !has_key(sim, thing, colour, message) {
-                return;
-            }
+    let key = if matches!(special, 26 | 27 | 28 | 32 | 33 | 34) { lock_of(special) } else { None };
+    let kind = match special {
+        31..=34 => DoorType::Open,
+        117 => DoorType::BlazeRaise,
+        118 => DoorType::BlazeOpen,
+        _ => DoorType::Normal,
+    };
+    let door = ManualDoor { params: DoorParams::of(kind), key, once: matches!(special, 31..=34 | 118) };
+    manual_door(sim, line, thing, door);
+}
+
+/// A door used on its own line (Doom's D1 and DR lines, and generalized
+/// doors with no tag).
+#[derive(Clone, Copy, Debug)]
+pub struct ManualDoor {
+    pub params: DoorParams,
+    /// The card it asks for.
+    pub key: Option<usize>,
+    /// The line loses its special when the door starts (D1).
+    pub once: bool,
+}
+
+/// `EV_VerticalDoor` with its parameters given; whether a door started or
+/// a moving one turned. A raise door already moving is turned (see
+/// [`reuse_moving_door`]); any other door on a sector with a mover starts a
+/// second thinker in vanilla (the sector's `specialdata` then names the
+/// new one) and is refused under Sightline's rules, as by Boom.
+pub fn manual_door(sim: &mut Sim, line: usize, thing: MobjId, door: ManualDoor) -> bool {
+    let ManualDoor { params, key, once } = door;
+    if let Some(colour) = key {
+        if sim.mo(thing).player.is_none() || !has_key(sim, thing, colour, true) {
+            return false;
         }
     }
     // Vanilla stops with an error on a one-sided door line.
-    let Some(back) = sim.level.lines[line].sidenum[1] else { return };
+    let Some(back) = sim.level.lines[line].sidenum[1] else { return false };
     let sec = sim.level.sides[back].sector;
+    let raises = matches!(params.kind, DoorType::Normal | DoorType::BlazeRaise);
     if let Some(existing) = sim.level.sectors[sec].specialdata {
-        if matches!(special, 1 | 26 | 27 | 28 | 117) {
+        if raises {
             reuse_moving_door(sim, existing, thing);
-            return;
+            return true;
+        }
+        if sim.rules.compat == Compat::Sightline {
+            return false;
         }
     }
-    let noise = if matches!(special, 117 | 118) { "bdopn" } else { "doropn" };
-    sound(sim, sec, noise);
-    let (kind, speed) = match special {
-        31..=34 => (DoorType::Open, VDOORSPEED),
-        117 => (DoorType::BlazeRaise, VDOORSPEED * 4),
-        118 => (DoorType::BlazeOpen, VDOORSPEED * 4),
-        _ => (DoorType::Normal, VDOORSPEED),
-    };
-    if matches!(special, 31..=34 | 118) {
+    if !matches!(params.kind, DoorType::Normal | DoorType::BlazeRaise | DoorType::Open | DoorType::BlazeOpen) {
+        // A door that closes first starts as a tagged one does.
+        if sim.level.sectors[sec].specialdata.is_some() {
+            return false;
+        }
+        start_door(sim, sec, params);
+        return true;
+    }
+    let blazing = matches!(params.kind, DoorType::BlazeRaise | DoorType::BlazeOpen);
+    sound(sim, sec, if blazing { "bdopn" } else { "doropn" });
+    if once {
         sim.level.lines[line].special = 0;
     }
     let topheight = find_lowest_ceiling_surrounding(&sim.level, sec) - Fixed::from_int(4);
-    let door = Door { kind, sector: sec, topheight, speed, direction: 1, topwait: VDOORWAIT, topcountdown: 0 };
+    let DoorParams { kind, speed, wait, shut } = params;
+    let door = Door { kind, sector: sec, topheight, speed, direction: 1, topwait: wait, topcountdown: 0, shut };
     let id = sim.add_thinker(ThinkerKind::Door(door));
     sim.level.sectors[sec].specialdata = Some(id);
+    true
 }
 
 /// A raise door used while its sector already has a mover. Vanilla reads
@@ -333,6 +433,7 @@ pub fn spawn_door_close_in_30(sim: &mut Sim, sector: usize) {
         direction: 0,
         topwait: VDOORWAIT,
         topcountdown: 30 * TICRATE as i32,
+        shut: CLOSE30_WAIT,
     };
     let id = sim.add_thinker(ThinkerKind::Door(door));
     let s = &mut sim.level.sectors[sector];
@@ -352,6 +453,7 @@ pub fn spawn_door_raise_in_5_mins(sim: &mut Sim, sector: usize) {
         direction: 2,
         topwait: VDOORWAIT,
         topcountdown: 5 * 60 * TICRATE as i32,
+        shut: CLOSE30_WAIT,
     };
     let id = sim.add_thinker(ThinkerKind::Door(door));
     let s = &mut sim.level.sectors[sector];

@@ -7,11 +7,13 @@
 use super::level::NameId;
 use super::specials::{
     find_highest_floor_surrounding, find_lowest_ceiling_surrounding, find_lowest_floor_surrounding,
-    find_next_highest_floor, find_sector_from_line_tag, next_free_tagged, next_sector, texture_height,
+    find_next_highest_floor, find_next_lowest_floor, find_sector_from_line_tag, next_free_tagged, next_sector,
+    texture_height,
 };
 use super::think::ThinkerKind;
 use super::{collision, level::ml, Compat, Sim, ThinkerId};
 use crate::fixed::Fixed;
+use crate::map::special::{FloorTarget, SpecialChange};
 
 /// A floor's speed a tic (`FLOORSPEED`).
 pub const FLOORSPEED: Fixed = Fixed::ONE;
@@ -114,6 +116,17 @@ pub enum StairType {
     Turbo16,
 }
 
+/// What a floor does to its sector when it arrives: vanilla's donut ring
+/// and lower-and-change floors take `texture` and `newspecial`; a
+/// generalized change may take the flat alone (Boom's `genFloorChg`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum Arrival {
+    #[default]
+    Nothing,
+    Flat,
+    FlatAndSpecial,
+}
+
 /// The thinker's data (`floormove_t`).
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct FloorMove {
@@ -126,6 +139,9 @@ pub struct FloorMove {
     pub texture: NameId,
     pub floordestheight: Fixed,
     pub speed: Fixed,
+    /// What changes on arrival (vanilla decides by `kind` and `direction`,
+    /// which never change: set where the floor starts).
+    pub arrival: Arrival,
 }
 
 impl Default for FloorMove {
@@ -139,6 +155,7 @@ impl Default for FloorMove {
             texture: super::level::NO_TEXTURE,
             floordestheight: Fixed::ZERO,
             speed: Fixed::ZERO,
+            arrival: Arrival::Nothing,
         }
     }
 }
@@ -156,15 +173,12 @@ pub fn think(sim: &mut Sim, id: ThinkerId) {
     if res != MoveResult::PastDest {
         return;
     }
-    let changes = match floor.direction {
-        1 => floor.kind == FloorType::DonutRaise,
-        -1 => floor.kind == FloorType::LowerAndChange,
-        _ => false,
-    };
     let s = &mut sim.level.sectors[sec];
     s.specialdata = None;
-    if changes {
+    if floor.arrival == Arrival::FlatAndSpecial {
         s.special = floor.newspecial;
+    }
+    if floor.arrival != Arrival::Nothing {
         s.floorpic = floor.texture;
         sim.textures_changed += 1;
     }
@@ -178,7 +192,7 @@ fn sound(sim: &mut Sim, sector: usize, name: &str) {
 }
 
 /// Starts a floor thinker on `sector` and makes it the sector's mover.
-fn start(sim: &mut Sim, floor: FloorMove) -> ThinkerId {
+pub fn start(sim: &mut Sim, floor: FloorMove) -> ThinkerId {
     let sector = floor.sector;
     let id = sim.add_thinker(ThinkerKind::Floor(floor));
     sim.level.sectors[sector].specialdata = Some(id);
@@ -203,22 +217,22 @@ pub fn do_floor(sim: &mut Sim, line: usize, kind: FloorType) -> bool {
 /// at once (the 24-and-change floor takes the line's front flat and
 /// special now).
 fn new_floor(sim: &mut Sim, line: usize, s: usize, kind: FloorType) -> FloorMove {
-    let level = &sim.level;
-    let here = level.sectors[s].floorheight;
+    use FloorTarget as T;
+    let here = sim.level.sectors[s].floorheight;
     let mut f = FloorMove { kind, sector: s, direction: 1, speed: FLOORSPEED, ..FloorMove::default() };
     match kind {
         FloorType::LowerFloor => {
             f.direction = -1;
-            f.floordestheight = find_highest_floor_surrounding(level, s);
+            f.floordestheight = floor_target(sim, s, T::HighestNeighbourFloor);
         }
         FloorType::LowerFloorToLowest => {
             f.direction = -1;
-            f.floordestheight = find_lowest_floor_surrounding(level, s);
+            f.floordestheight = floor_target(sim, s, T::LowestNeighbourFloor);
         }
         FloorType::TurboLower => {
             f.direction = -1;
             f.speed = FLOORSPEED * 4;
-            f.floordestheight = find_highest_floor_surrounding(level, s);
+            f.floordestheight = floor_target(sim, s, T::HighestNeighbourFloor);
             // 1.2 always added the 8; later versions not when level.
             if f.floordestheight != here {
                 f.floordestheight += Fixed::from_int(8);
@@ -226,32 +240,28 @@ fn new_floor(sim: &mut Sim, line: usize, s: usize, kind: FloorType) -> FloorMove
         }
         FloorType::RaiseFloorCrush | FloorType::RaiseFloor => {
             f.crush = i32::from(kind == FloorType::RaiseFloorCrush);
-            f.floordestheight = find_lowest_ceiling_surrounding(level, s).min(level.sectors[s].ceilingheight);
+            f.floordestheight = floor_target(sim, s, T::LowestNeighbourCeiling);
             if kind == FloorType::RaiseFloorCrush {
                 f.floordestheight -= Fixed::from_int(8);
             }
         }
         FloorType::RaiseFloorTurbo => {
             f.speed = FLOORSPEED * 4;
-            f.floordestheight = find_next_highest_floor(level, s, here);
+            f.floordestheight = floor_target(sim, s, T::NextHigherFloor);
         }
-        FloorType::RaiseFloorToNearest => f.floordestheight = find_next_highest_floor(level, s, here),
+        FloorType::RaiseFloorToNearest => f.floordestheight = floor_target(sim, s, T::NextHigherFloor),
         FloorType::RaiseFloor24 => f.floordestheight = here + Fixed::from_int(24),
         FloorType::RaiseFloor512 => f.floordestheight = here + Fixed::from_int(512),
         FloorType::RaiseFloor24AndChange => {
             f.floordestheight = here + Fixed::from_int(24);
-            if let Some(front) = level.lines[line].frontsector {
-                let (pic, special) = (level.sectors[front].floorpic, level.sectors[front].special);
-                sim.level.sectors[s].floorpic = pic;
-                sim.level.sectors[s].special = special;
-                sim.textures_changed += 1;
-            }
+            change_from_trigger(sim, line, s, SpecialChange::Copy);
         }
-        FloorType::RaiseToTexture => f.floordestheight = here + shortest_lower_texture(sim, s),
+        FloorType::RaiseToTexture => f.floordestheight = floor_target(sim, s, T::ShortestLowerTexture),
         FloorType::LowerAndChange => {
             f.direction = -1;
-            f.floordestheight = find_lowest_floor_surrounding(level, s);
-            f.texture = level.sectors[s].floorpic;
+            f.floordestheight = floor_target(sim, s, T::LowestNeighbourFloor);
+            f.texture = sim.level.sectors[s].floorpic;
+            f.arrival = Arrival::FlatAndSpecial;
             if let Some((pic, special)) = change_source(sim, s, f.floordestheight) {
                 f.texture = pic;
                 f.newspecial = special;
@@ -260,6 +270,40 @@ fn new_floor(sim: &mut Sim, line: usize, s: usize, kind: FloorType) -> FloorMove
         FloorType::DonutRaise => {}
     }
     f
+}
+
+/// Where a floor special takes sector `s`'s floor, before any offset:
+/// the searches `EV_DoFloor`'s types use (`P_FindHighestFloorSurrounding`
+/// with its -500, ...), and Boom's next lower floor.
+pub fn floor_target(sim: &Sim, s: usize, to: FloorTarget) -> Fixed {
+    let level = &sim.level;
+    let (here, ceiling) = (level.sectors[s].floorheight, level.sectors[s].ceilingheight);
+    match to {
+        FloorTarget::LowestNeighbourFloor => find_lowest_floor_surrounding(level, s),
+        FloorTarget::HighestNeighbourFloor => find_highest_floor_surrounding(level, s),
+        FloorTarget::NextHigherFloor => find_next_highest_floor(level, s, here),
+        FloorTarget::NextLowerFloor => find_next_lowest_floor(level, s, here),
+        FloorTarget::Ceiling => ceiling,
+        FloorTarget::LowestNeighbourCeiling => find_lowest_ceiling_surrounding(level, s).min(ceiling),
+        FloorTarget::ShortestLowerTexture => here + shortest_lower_texture(sim, s),
+        FloorTarget::Current => here,
+    }
+}
+
+/// A floor's change taken at once from the front sector of the line that
+/// set it off (Doom's "trigger model": the 24-and-change floor, the
+/// raise-and-change plats): its flat, and its special as `special` says.
+pub fn change_from_trigger(sim: &mut Sim, line: usize, s: usize, special: SpecialChange) {
+    let Some(front) = sim.level.lines[line].frontsector else { return };
+    let (pic, model_special) = (sim.level.sectors[front].floorpic, sim.level.sectors[front].special);
+    let sector = &mut sim.level.sectors[s];
+    sector.floorpic = pic;
+    match special {
+        SpecialChange::Keep => {}
+        SpecialChange::Copy => sector.special = model_special,
+        SpecialChange::Clear => sector.special = 0,
+    }
+    sim.textures_changed += 1;
 }
 
 /// Raise-to-texture's height: the shortest lower texture on either side
@@ -271,6 +315,9 @@ fn shortest_lower_texture(sim: &Sim, s: usize) -> Fixed {
     if sim.spec.texture_heights.is_empty() {
         return Fixed::ZERO;
     }
+    // Sightline's rules, as Boom's: a side with no lower texture does not
+    // count, and with none at all the floor stays.
+    let boom = sim.rules.compat == Compat::Sightline;
     let mut minsize = Fixed::MAX;
     for &l in &sim.level.sectors[s].lines {
         let line = &sim.level.lines[l];
@@ -278,17 +325,24 @@ fn shortest_lower_texture(sim: &Sim, s: usize) -> Fixed {
             continue;
         }
         for side in line.sidenum.into_iter().flatten() {
-            if let Some(h) = texture_height(sim, sim.level.sides[side].bottomtexture) {
+            let texture = sim.level.sides[side].bottomtexture;
+            if boom && texture == super::level::NO_TEXTURE {
+                continue;
+            }
+            if let Some(h) = texture_height(sim, texture) {
                 minsize = minsize.min(h);
             }
         }
+    }
+    if boom && minsize == Fixed::MAX {
+        return Fixed::ZERO;
     }
     minsize
 }
 
 /// Lower-and-change's new flat and special: those of the first sector
 /// across a two-sided line whose floor is at the destination.
-fn change_source(sim: &Sim, s: usize, dest: Fixed) -> Option<(NameId, i16)> {
+pub fn change_source(sim: &Sim, s: usize, dest: Fixed) -> Option<(NameId, i16)> {
     let level = &sim.level;
     for &l in &level.sectors[s].lines {
         let line = &level.lines[l];
@@ -320,6 +374,24 @@ pub fn build_stairs(sim: &mut Sim, line: usize, kind: StairType) -> bool {
         StairType::Build8 => (Fixed(FLOORSPEED.0 / 4), Fixed::from_int(8)),
         StairType::Turbo16 => (FLOORSPEED * 4, Fixed::from_int(16)),
     };
+    stairs(sim, line, Stairs { speed, stairsize, crush: STAIRS_CRUSH })
+}
+
+/// A staircase's parameters: vanilla's two types', or a generalized
+/// special's (whose step may be negative: stairs down, as Boom's).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Stairs {
+    pub speed: Fixed,
+    pub stairsize: Fixed,
+    /// Doom's int (see [`move_plane`]): vanilla's stairs leave it
+    /// uninitialised ([`STAIRS_CRUSH`]).
+    pub crush: i32,
+}
+
+/// `EV_BuildStairs` with its parameters given.
+pub fn stairs(sim: &mut Sim, line: usize, params: Stairs) -> bool {
+    let Stairs { speed, stairsize, crush } = params;
+    let direction = if stairsize < Fixed::ZERO { -1 } else { 1 };
     let mut secnum = None;
     let mut started = false;
     while let Some(first) = find_sector_from_line_tag(&sim.level, line, secnum) {
@@ -332,9 +404,9 @@ pub fn build_stairs(sim: &mut Sim, line: usize, kind: StairType) -> bool {
         let mut height = sim.level.sectors[sec].floorheight + stairsize;
         let step = |sector, height| FloorMove {
             kind: FloorType::LowerFloor,
-            crush: STAIRS_CRUSH,
+            crush,
             sector,
-            direction: 1,
+            direction,
             speed,
             floordestheight: height,
             ..FloorMove::default()
@@ -390,46 +462,57 @@ pub fn do_donut(sim: &mut Sim, line: usize) -> bool {
             continue;
         }
         started = true;
-        let Some(&first_line) = sim.level.sectors[s1].lines.first() else { continue };
-        // Chocolate stops here where vanilla reads invalid memory.
-        let Some(s2) = next_sector(&sim.level, first_line, s1) else { break };
-        for i in 0..sim.level.sectors[s2].lines.len() {
-            let l = sim.level.sectors[s2].lines[i];
-            let s3 = sim.level.lines[l].backsector;
-            if s3 == Some(s1) {
-                continue;
-            }
-            let (height, pic) = match s3 {
-                Some(s3) => (sim.level.sectors[s3].floorheight, sim.level.sectors[s3].floorpic),
-                None if sim.rules.compat == Compat::Vanilla => (Fixed::ZERO, sim.level.sectors[s2].floorpic),
-                None => continue,
-            };
-            start(
-                sim,
-                FloorMove {
-                    kind: FloorType::DonutRaise,
-                    sector: s2,
-                    direction: 1,
-                    speed: Fixed(FLOORSPEED.0 / 2),
-                    texture: pic,
-                    newspecial: 0,
-                    floordestheight: height,
-                    ..FloorMove::default()
-                },
-            );
-            start(
-                sim,
-                FloorMove {
-                    kind: FloorType::LowerFloor,
-                    sector: s1,
-                    direction: -1,
-                    speed: Fixed(FLOORSPEED.0 / 2),
-                    floordestheight: height,
-                    ..FloorMove::default()
-                },
-            );
+        if !donut(sim, s1, Fixed(FLOORSPEED.0 / 2)) {
             break;
         }
     }
     started
+}
+
+/// One donut of `EV_DoDonut` around the hole `s1` (which has no mover),
+/// both floors at `speed`; `false` where Chocolate stops the search (the
+/// hole's first line is one-sided).
+pub fn donut(sim: &mut Sim, s1: usize, speed: Fixed) -> bool {
+    let Some(&first_line) = sim.level.sectors[s1].lines.first() else { return true };
+    // Chocolate stops here where vanilla reads invalid memory.
+    let Some(s2) = next_sector(&sim.level, first_line, s1) else { return false };
+    for i in 0..sim.level.sectors[s2].lines.len() {
+        let l = sim.level.sectors[s2].lines[i];
+        let s3 = sim.level.lines[l].backsector;
+        if s3 == Some(s1) {
+            continue;
+        }
+        let (height, pic) = match s3 {
+            Some(s3) => (sim.level.sectors[s3].floorheight, sim.level.sectors[s3].floorpic),
+            None if sim.rules.compat == Compat::Vanilla => (Fixed::ZERO, sim.level.sectors[s2].floorpic),
+            None => continue,
+        };
+        start(
+            sim,
+            FloorMove {
+                kind: FloorType::DonutRaise,
+                sector: s2,
+                direction: 1,
+                speed,
+                texture: pic,
+                newspecial: 0,
+                floordestheight: height,
+                arrival: Arrival::FlatAndSpecial,
+                ..FloorMove::default()
+            },
+        );
+        start(
+            sim,
+            FloorMove {
+                kind: FloorType::LowerFloor,
+                sector: s1,
+                direction: -1,
+                speed,
+                floordestheight: height,
+                ..FloorMove::default()
+            },
+        );
+        break;
+    }
+    true
 }

@@ -15,10 +15,17 @@
 //!   coordinates, the blockmap's 16-bit offsets): a vertex, thing or height
 //!   beyond ±32767 units is refused, and so is a map whose blockmap needs
 //!   more than 65536 words; nothing is wrapped.
-//! - specials as Doom's numbers: the reverse of `wad::specials` found by
-//!   asking it for every vanilla number (1..=141 for lines, 0..=17 for
-//!   sectors), so the two cannot drift apart. A special with no Doom number
-//!   is left 0 and named in the report.
+//! - specials as Doom's numbers where one says exactly the same: the
+//!   reverse of `wad::specials` found by asking it for every vanilla number
+//!   (1..=141 for lines, 0..=17 for sectors), so the two cannot drift
+//!   apart. Any other special (its own speed or wait, a trigger or "who"
+//!   no number pairs, a line teleport, a sector effect Doom's types cannot
+//!   combine) becomes a generalized one: a negative number naming an entry
+//!   of the level's table (`sim::generalized`), run by the same movers.
+//!   Wall scrolls other than vanilla's 48 and floor conveyors go into that
+//!   table too. Light transfers and translucency only change how a plane
+//!   or a middle texture is drawn: the renderer reads them from the RON
+//!   map it draws, whichever game runs it, so the level needs nothing.
 //! - segs, subsectors and nodes from the compiled BSP in Doom's layout:
 //!   nodes in post-order, so the root is the last node as `R_PointInSubsector`
 //!   expects; a child with [`NF_SUBSECTOR`] is a leaf.
@@ -32,6 +39,7 @@ use std::sync::Arc;
 
 use glam::DVec2;
 
+use super::generalized::{Carry, GenLine, Generalized, SideScroll};
 use super::level::{
     ml, Blockmap, Level, Line, NameId, Node, Sector, Seg, Side, Subsector, BOXBOTTOM, BOXLEFT, BOXRIGHT, BOXTOP,
     MAPBLOCKSHIFT, NF_SUBSECTOR, NO_TEXTURE,
@@ -132,6 +140,7 @@ pub fn level_and_report(compiled: &CompiledMap, table: &ActorTable) -> Result<Fr
     let nodes = c.nodes()?;
     let blockmap = build_blockmap(&c.name, &lines)?;
     c.report_rounding();
+    let generalized = std::mem::take(&mut c.generalized);
     let mut level = Level {
         name: c.name.clone(),
         vertices,
@@ -145,6 +154,7 @@ pub fn level_and_report(compiled: &CompiledMap, table: &ActorTable) -> Result<Fr
         reject: Vec::new(),
         names: c.names,
         things,
+        generalized,
     };
     // Every line here has a front side (the map's lines always do).
     level.group_lines().map_err(|what| FromMapError::Unsupported {
@@ -166,11 +176,20 @@ struct Convert<'a> {
     /// Coordinates that were not multiples of 1/65536 (or, for things, of a
     /// unit) and were rounded.
     rounded: usize,
+    /// The specials no vanilla number says, and the scrolls and conveyors.
+    generalized: Generalized,
 }
 
 impl<'a> Convert<'a> {
     fn new(compiled: &'a CompiledMap) -> Convert<'a> {
-        Convert { compiled, name: compiled.map.name.clone(), names: vec!["-".into()], report: Vec::new(), rounded: 0 }
+        Convert {
+            compiled,
+            name: compiled.map.name.clone(),
+            names: vec!["-".into()],
+            report: Vec::new(),
+            rounded: 0,
+            generalized: Generalized::default(),
+        }
     }
 
     fn note(&mut self, element: &str, what: String) {
@@ -241,16 +260,12 @@ impl<'a> Convert<'a> {
             let element = format!("sector {i}");
             let special = match doom_sector_type(&s.special) {
                 Ok(n) => n,
-                Err(what) => {
-                    self.note(&element, what);
-                    0
-                }
+                Err(_) => self.generalized.sector_number(s.special).ok_or_else(|| self.full(&element))?,
             };
-            if s.floor_light.is_some() || s.ceiling_light.is_some() {
-                self.note(&element, "its light transfer (Boom's 213/261) has no vanilla number; not kept".into());
-            }
-            if s.carry.is_some() {
-                self.note(&element, "its floor carry (Boom's 252) has no vanilla number; not kept".into());
+            if let Some(c) = s.carry {
+                let (dx, dy) =
+                    (self.fixed(c.x, || format!("{element}'s carry"))?, self.fixed(c.y, || element.clone())?);
+                self.generalized.carries.push(Carry { sector: i, dx, dy });
             }
             let floor = self.fixed(s.floor, || format!("{element}'s floor"))?;
             let ceiling = self.fixed(s.ceiling, || format!("{element}'s ceiling"))?;
@@ -310,14 +325,15 @@ impl<'a> Convert<'a> {
                     flags |= bit;
                 }
             }
-            if l.flags.translucent {
-                self.note(&element, "translucent (Boom's 260) has no vanilla number; drawn solid".into());
-            }
             let (mut special, tag) = match &l.special {
-                Some(s) => (self.line_number(&element, s), s.tag as i16),
+                Some(s) => (self.line_number(&element, s)?, s.tag as i16),
                 None => (0, 0),
             };
-            special = self.scroll_number(&element, special, l.front.scroll, l.back.as_ref().map(|b| b.scroll));
+            special = self.scrolls(
+                &element,
+                special,
+                [Some((front, l.front.scroll)), back.zip(l.back.as_ref().map(|b| b.scroll))],
+            )?;
             let (v1, v2) = (vertices[l.from], vertices[l.to]);
             let sidenum = [Some(front), back];
             let sectors = sidenum.map(|s| s.map(|s| sides[s].sector));
@@ -344,7 +360,7 @@ impl<'a> Convert<'a> {
             sides.push(blank.clone());
             sides.push(blank);
             let sidenum = [Some(sides.len() - 2), Some(sides.len() - 1)];
-            let special = self.line_number(&element, &t.special);
+            let special = self.line_number(&element, &t.special)?;
             let (v1, v2) = (vertices[t.from], vertices[t.to]);
             let sectors = sidenum.map(|s| s.map(|s| sides[s].sector));
             lines.push(Line::new((v1, v2), ml::TWOSIDED, special, t.special.tag as i16, sidenum, sectors));
@@ -352,41 +368,60 @@ impl<'a> Convert<'a> {
         Ok((sides, lines))
     }
 
-    fn line_number(&mut self, element: &str, special: &LineSpecial) -> i16 {
-        match doom_line_special(special) {
-            Ok((number, approximation)) => {
-                if let Some(what) = approximation {
-                    self.note(element, what);
-                }
-                number as i16
+    /// The line special number of `special`: Doom's when one says exactly
+    /// the same, else a generalized one.
+    fn line_number(&mut self, element: &str, special: &LineSpecial) -> Result<i16, FromMapError> {
+        if let Ok((number, None)) = doom_line_special(special) {
+            return Ok(number as i16);
+        }
+        let mut rounded = 0;
+        let mut out_of_range = None;
+        let g = GenLine::of(special, |v| {
+            if v.is_nan() || v.abs() > MAX_COORD {
+                out_of_range = Some(v);
             }
-            Err(what) => {
-                self.note(element, what);
-                0
-            }
+            let scaled = v * f64::from(FRACUNIT);
+            rounded += usize::from(scaled.fract() != 0.0);
+            Fixed(scaled.round() as i32)
+        });
+        if let Some(v) = out_of_range {
+            return Err(self.out_of_range(format!("{element}'s special"), v));
+        }
+        self.rounded += rounded;
+        self.generalized.line_number(g).ok_or_else(|| self.full(element))
+    }
+
+    fn full(&self, element: &str) -> FromMapError {
+        FromMapError::Unsupported {
+            map: self.name.clone(),
+            element: element.to_string(),
+            what: "more distinct generalized specials than the 32768 negative special numbers".into(),
         }
     }
 
-    /// Doom's scrolling walls (48, 85) scroll the front side one unit a tic;
-    /// a line has one special, so a scroll beside another is not kept.
-    fn scroll_number(&mut self, element: &str, special: i16, front: Scroll, back: Option<Scroll>) -> i16 {
+    /// The sides' scrolls: a front side scrolling one unit a tic towards
+    /// its start, on a line with no other special, is Doom's 48; any other
+    /// scroll is a generalized one (Doom scrolls only front sides, by one).
+    fn scrolls(
+        &mut self,
+        element: &str,
+        special: i16,
+        sides: [Option<(usize, Scroll)>; 2],
+    ) -> Result<i16, FromMapError> {
         let mut special = special;
-        if front != Scroll::default() {
-            let number = match (front.x, front.y) {
-                (1.0, 0.0) => Some(48),
-                (-1.0, 0.0) => Some(85),
-                _ => None,
-            };
-            match number {
-                Some(n) if special == 0 => special = n,
-                Some(_) => self.note(element, "its scroll and its special cannot share Doom's one number".into()),
-                None => self.note(element, format!("a scroll of ({}, {}) has no Doom number", front.x, front.y)),
+        for (k, (side, scroll)) in sides.into_iter().flatten().enumerate() {
+            if scroll == Scroll::default() {
+                continue;
             }
+            if k == 0 && special == 0 && scroll == (Scroll { x: 1.0, y: 0.0 }) {
+                special = 48;
+                continue;
+            }
+            let dx = self.fixed(scroll.x, || format!("{element}'s scroll"))?;
+            let dy = self.fixed(scroll.y, || format!("{element}'s scroll"))?;
+            self.generalized.scrolls.push(SideScroll { side, dx, dy });
         }
-        if back.is_some_and(|b| b != Scroll::default()) {
-            self.note(element, "its back side's scroll has no Doom number (Doom scrolls front sides)".into());
-        }
-        special
+        Ok(special)
     }
 
     fn things(&mut self, table: &ActorTable) -> Result<Vec<WadThing>, FromMapError> {

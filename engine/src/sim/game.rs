@@ -97,7 +97,14 @@ impl SimGame {
                     no_monsters: options.no_monsters,
                     ..Rules::single(skill, super::GameVersion::Doom19, super::GameMode::Commercial)
                 };
-                let sim = from_map::sim_on_map(level, rules, players, table);
+                let mut sim = from_map::sim_on_map(level, rules, players, table);
+                // Raise-to-texture floors measure the map's own textures.
+                let textures = &opened.level.materials.textures;
+                let heights = sim.level.names.iter().filter_map(|name| {
+                    let id = textures.find(name, crate::texture::TextureKind::Wall)?;
+                    Some((name.clone(), crate::fixed::Fixed::from_int(textures.get(id).height as i32)))
+                });
+                sim.spec.texture_heights = heights.collect();
                 (sim, Scene::identity(&compiled.map))
             }
         };

@@ -247,6 +247,10 @@ pub struct Level {
     pub names: Vec<String>,
     /// The map's things as stored (`mapthing_t`).
     pub things: Vec<crate::wad::level::WadThing>,
+    /// A RON map's specials that no vanilla number says (empty for a
+    /// WAD's map): what the negative line and sector specials name, and the
+    /// scrolls and conveyors ([`super::generalized`]).
+    pub generalized: super::generalized::Generalized,
 }
 
 #[derive(Debug, thiserror::Error)]
@@ -457,6 +461,7 @@ fn from_records(map: &WadMap) -> Level {
         reject: Vec::new(),
         names,
         things: map.things.clone(),
+        generalized: Default::default(),
     }
 }
 

@@ -33,6 +33,7 @@
 //! | `bosses.rs` | `p_enemy.c` (`A_BossDeath`, `A_Brain*`) | boss deaths and the boss brain |
 //! | `specials.rs` | `p_spec.c` | line and sector specials, animations |
 //! | `doors.rs`, `plats.rs`, `floors.rs`, `ceilings.rs`, `lights.rs`, `switches.rs`, `teleport.rs` | `p_doors.c` .. `p_telept.c` | the movers |
+//! | `generalized.rs` | Boom's `p_genlin.c` | a RON map's specials no vanilla number says, on the same movers |
 //! | `demo.rs` | `g_game.c` (`G_DoPlayDemo`) | a demo's game, checked against a dump |
 //! | `game.rs` | `g_game.c` (`G_InitNew`, `G_Ticker`) | a game for a person or the autopilot: input in, the game read out |
 //! | `draw.rs` | | the simulation drawn by the renderer |
@@ -51,6 +52,7 @@ pub mod draw;
 pub mod floors;
 pub mod from_map;
 pub mod game;
+pub mod generalized;
 pub mod hitscan;
 pub mod info;
 pub mod interaction;

@@ -108,33 +108,69 @@ fn sound(sim: &mut Sim, sector: usize, name: &str) {
     sim.sector_sound(sector, s);
 }
 
+/// How a plat moves: a vanilla type's speed and wait ([`PlatParams::of`])
+/// or a generalized lift's own.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PlatParams {
+    pub kind: PlatType,
+    pub speed: Fixed,
+    /// Tics it waits at either end.
+    pub wait: i32,
+    /// The rise of a raise-and-change plat.
+    pub amount: i32,
+}
+
+impl PlatParams {
+    /// Vanilla's plat of `kind` (`EV_DoPlat`'s constants).
+    pub fn of(kind: PlatType, amount: i32) -> PlatParams {
+        let (speed, wait) = match kind {
+            PlatType::RaiseToNearestAndChange | PlatType::RaiseAndChange => (Fixed(PLATSPEED.0 / 2), 0),
+            PlatType::DownWaitUpStay => (PLATSPEED * 4, TICRATE as i32 * PLATWAIT),
+            PlatType::BlazeDwus => (PLATSPEED * 8, TICRATE as i32 * PLATWAIT),
+            PlatType::PerpetualRaise => (PLATSPEED, TICRATE as i32 * PLATWAIT),
+        };
+        PlatParams { kind, speed, wait, amount }
+    }
+}
+
 /// `EV_DoPlat`: a plat in each tagged sector without a mover; `amount` is
 /// the rise of raise-and-change. A perpetual raise first restarts the
 /// stopped plats of the tag. Whether any started.
 pub fn do_plat(sim: &mut Sim, line: usize, kind: PlatType, amount: i32) -> bool {
-    let tag = sim.level.lines[line].tag;
-    if kind == PlatType::PerpetualRaise {
-        activate_in_stasis(sim, tag);
+    start_plats(sim, line, PlatParams::of(kind, amount))
+}
+
+/// `EV_DoPlat` with its parameters given.
+pub fn start_plats(sim: &mut Sim, line: usize, params: PlatParams) -> bool {
+    if params.kind == PlatType::PerpetualRaise {
+        activate_in_stasis(sim, sim.level.lines[line].tag);
     }
     let mut sec = None;
     let mut started = false;
     while let Some(s) = next_free_tagged(sim, line, sec) {
         sec = Some(s);
         started = true;
-        let plat = new_plat(sim, line, s, kind, amount);
-        let id = sim.add_thinker(ThinkerKind::Plat(plat));
-        sim.level.sectors[s].specialdata = Some(id);
-        add_active_plat(sim, id);
+        start_plat(sim, line, s, params);
     }
     started
 }
 
+/// One plat of `EV_DoPlat` on sector `s` (which has no mover), set off by
+/// `line`: the change kinds take the flat of its front sector.
+pub fn start_plat(sim: &mut Sim, line: usize, s: usize, params: PlatParams) {
+    let plat = new_plat(sim, line, s, params);
+    let id = sim.add_thinker(ThinkerKind::Plat(plat));
+    sim.level.sectors[s].specialdata = Some(id);
+    add_active_plat(sim, id);
+}
+
 /// One plat of `EV_DoPlat`'s kinds; the change kinds take the flat of the
 /// line's front sector at once.
-fn new_plat(sim: &mut Sim, line: usize, s: usize, kind: PlatType, amount: i32) -> Plat {
+fn new_plat(sim: &mut Sim, line: usize, s: usize, params: PlatParams) -> Plat {
+    let PlatParams { kind, speed, wait, amount } = params;
     let tag = sim.level.lines[line].tag;
     let here = sim.level.sectors[s].floorheight;
-    let mut plat = Plat { sector: s, kind, tag, ..Plat::default() };
+    let mut plat = Plat { sector: s, kind, tag, speed, wait, ..Plat::default() };
     let lowest = |sim: &Sim| find_lowest_floor_surrounding(&sim.level, s).min(here);
     let front_pic = sim.level.lines[line].sidenum[0].map(|side| {
         let front = sim.level.sides[side].sector;
@@ -142,42 +178,34 @@ fn new_plat(sim: &mut Sim, line: usize, s: usize, kind: PlatType, amount: i32) -
     });
     let noise = match kind {
         PlatType::RaiseToNearestAndChange => {
-            plat.speed = Fixed(PLATSPEED.0 / 2);
             if let Some(pic) = front_pic {
                 sim.level.sectors[s].floorpic = pic;
                 sim.textures_changed += 1;
             }
             plat.high = find_next_highest_floor(&sim.level, s, here);
-            plat.wait = 0;
             plat.status = PlatStatus::Up;
             // No more damage, if it hurt.
             sim.level.sectors[s].special = 0;
             "stnmov"
         }
         PlatType::RaiseAndChange => {
-            plat.speed = Fixed(PLATSPEED.0 / 2);
             if let Some(pic) = front_pic {
                 sim.level.sectors[s].floorpic = pic;
                 sim.textures_changed += 1;
             }
             plat.high = here + Fixed::from_int(amount);
-            plat.wait = 0;
             plat.status = PlatStatus::Up;
             "stnmov"
         }
         PlatType::DownWaitUpStay | PlatType::BlazeDwus => {
-            plat.speed = PLATSPEED * if kind == PlatType::BlazeDwus { 8 } else { 4 };
             plat.low = lowest(sim);
             plat.high = here;
-            plat.wait = TICRATE as i32 * PLATWAIT;
             plat.status = PlatStatus::Down;
             "pstart"
         }
         PlatType::PerpetualRaise => {
-            plat.speed = PLATSPEED;
             plat.low = lowest(sim);
             plat.high = find_highest_floor_surrounding(&sim.level, s).max(here);
-            plat.wait = TICRATE as i32 * PLATWAIT;
             plat.status = if sim.p_random() & 1 == 0 { PlatStatus::Up } else { PlatStatus::Down };
             "pstart"
         }

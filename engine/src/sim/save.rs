@@ -27,7 +27,9 @@
 //! the tallies, and the level's moving parts: each sector's heights, flats,
 //! light, special, tag, sound and mover links, each side's textures and
 //! offsets, each line's flags, special and tag, and the texture names
-//! (switches add names the map did not use).
+//! (switches add names the map did not use). A RON map's generalized
+//! specials are numbers in those same special fields; the table they name
+//! is a static part of the level (`sim::generalized`).
 //!
 //! What is not saved: the actor table ([`Info`]), which the loader is given
 //! and checks by [`info_fingerprint`]; the sounds and exits not yet taken
@@ -73,8 +75,11 @@ use crate::wad::Wad;
 
 /// A simulation's saved state (a playthrough's save is `SIGHTLINE-SAVE\n`).
 pub const MAGIC: &[u8] = b"SIGHTLINE-SIMS\n";
-/// Bumped whenever the saved state's meaning changes.
-pub const VERSION: u8 = 1;
+/// Bumped whenever the saved state's meaning changes. 2: the movers
+/// carry their parameters (a door's wait shut, a floor's change on
+/// arrival, a ceiling's starting speed) and the level its generalized
+/// specials, which the map's fingerprint covers.
+pub const VERSION: u8 = 2;
 
 #[derive(Debug, thiserror::Error)]
 pub enum SaveError {

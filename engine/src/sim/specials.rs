@@ -3,15 +3,18 @@
 //! with the level, the per-tic updates (scrolling walls, switch returns),
 //! altdeath's item respawns, and the sector searches the movers share (the
 //! lowest floor around a sector, the next higher, ...). Using a line is
-//! `switches.rs`; the movers themselves are `doors.rs` .. `teleport.rs`.
+//! `switches.rs`; the movers themselves are `doors.rs` .. `teleport.rs`;
+//! a RON map's specials that no vanilla number says (negative numbers)
+//! are handed to `generalized.rs`, which starts the same movers.
 
 use super::ceilings::{self, CeilingType};
 use super::doors::{self, DoorType};
 use super::floors::{self, FloorType, StairType};
 use super::level::{ml, Level, NameId};
 use super::plats::{self, PlatType};
-use super::{interaction, lights, teleport, MobjId, Sim, SimEvent, ThinkerId};
+use super::{generalized, interaction, lights, teleport, MobjId, Sim, SimEvent, ThinkerId};
 use crate::fixed::{Angle, Fixed, ANG45};
+use crate::map::special::{Suit, SUIT_LEAK};
 
 /// Plats that can be stopped and restarted at once (`MAXPLATS`).
 pub const MAXPLATS: usize = 30;
@@ -131,7 +134,7 @@ pub fn next_sector(level: &Level, line: usize, sec: usize) -> Option<usize> {
 
 /// The neighbours of `sec`, one per line in Doom's order (a sector met by
 /// two lines is met twice, as Doom's loops meet it).
-fn neighbours(level: &Level, sec: usize) -> impl Iterator<Item = usize> + '_ {
+pub fn neighbours(level: &Level, sec: usize) -> impl Iterator<Item = usize> + '_ {
     level.sectors[sec].lines.iter().filter_map(move |&l| next_sector(level, l, sec))
 }
 
@@ -167,6 +170,12 @@ pub fn find_next_highest_floor(level: &Level, sec: usize, current: Fixed) -> Fix
         }
     }
     list.into_iter().min().unwrap_or(current)
+}
+
+/// Boom's `P_FindNextLowestFloor`: the highest neighbouring floor below
+/// `current`, or `current`.
+pub fn find_next_lowest_floor(level: &Level, sec: usize, current: Fixed) -> Fixed {
+    neighbours(level, sec).map(|o| level.sectors[o].floorheight).filter(|&f| f < current).max().unwrap_or(current)
 }
 
 /// `P_FindLowestCeilingSurrounding` (`INT_MAX` with no neighbour).
@@ -235,7 +244,7 @@ pub fn spawn_specials(sim: &mut Sim) {
             14 => doors::spawn_door_raise_in_5_mins(sim, s),
             // Fire flicker came with 1.4's beta; every version we play has it.
             17 => lights::spawn_fire_flicker(sim, s),
-            _ => {}
+            _ => _ = generalized::spawn_sector(sim, s),
         }
     }
     sim.spec.scrollers =
@@ -251,6 +260,7 @@ pub fn spawn_specials(sim: &mut Sim) {
 /// read game state depends on them), so the renderer owns them. `-timer`
 /// is not among our rules, so there is no level timer.
 pub fn update_specials(sim: &mut Sim) {
+    generalized::update(sim);
     for i in 0..sim.spec.scrollers.len() {
         let line = sim.spec.scrollers[i];
         if sim.level.lines[line].special != 48 {
@@ -329,6 +339,9 @@ const INERT_MISSILES: [usize; 6] = {
 pub fn cross_special_line(sim: &mut Sim, line: usize, side: usize, thing: MobjId) {
     let Some(l) = sim.level.lines.get(line) else { return };
     let special = l.special;
+    if generalized::cross(sim, line, side, thing) {
+        return;
+    }
     let is_player = sim.mo(thing).player.is_some();
     if !is_player {
         if INERT_MISSILES.iter().any(|&m| sim.is(thing, m)) {
@@ -454,6 +467,9 @@ fn cross_repeatable(sim: &mut Sim, line: usize, side: usize, thing: MobjId, spec
 pub fn shoot_special_line(sim: &mut Sim, thing: MobjId, line: usize) {
     let Some(l) = sim.level.lines.get(line) else { return };
     let special = l.special;
+    if generalized::shoot(sim, thing, line) {
+        return;
+    }
     if sim.mo(thing).player.is_none() && special != 46 {
         return;
     }
@@ -488,34 +504,54 @@ pub fn player_in_special_sector(sim: &mut Sim, player: usize) {
     if sim.mo(mo).z != sim.level.sectors[sector].floorheight {
         return;
     }
-    let bite = sim.leveltime & 0x1f == 0;
+    let hurt = |amount, suit| FloorDamage { amount, every: 32, suit, exit_below: 0 };
     match sim.level.sectors[sector].special {
-        5 if !ironfeet && bite => interaction::damage_mobj(sim, mo, None, None, 10),
-        7 if !ironfeet && bite => interaction::damage_mobj(sim, mo, None, None, 5),
-        16 | 4 => {
-            if (!ironfeet || sim.p_random() < 5) && bite {
-                interaction::damage_mobj(sim, mo, None, None, 20);
-            }
-        }
+        5 => floor_damage(sim, player, mo, ironfeet, hurt(10, Suit::Shields)),
+        7 => floor_damage(sim, player, mo, ironfeet, hurt(5, Suit::Shields)),
+        16 | 4 => floor_damage(sim, player, mo, ironfeet, hurt(20, Suit::Leaks)),
         9 => {
             if let Some(p) = sim.players[player].as_mut() {
                 p.secretcount += 1;
             }
             sim.level.sectors[sector].special = 0;
         }
-        11 => {
-            // E1M8's exit: no god mode, and out at 10 health.
-            if let Some(p) = sim.players[player].as_mut() {
-                p.cheats &= !CF_GODMODE;
-            }
-            if bite {
-                interaction::damage_mobj(sim, mo, None, None, 20);
-            }
-            if sim.player(player).is_some_and(|p| p.health <= 10) {
-                exit_level(sim, false);
-            }
+        // E1M8's exit: no god mode, and out at 10 health.
+        11 => floor_damage(sim, player, mo, ironfeet, FloorDamage { exit_below: 10, ..hurt(20, Suit::Useless) }),
+        _ => _ = generalized::player_in_sector(sim, player, mo, sector, ironfeet),
+    }
+}
+
+/// A floor that hurts the player standing on it: `amount` every `every`
+/// tics, what a radiation suit does against it, and (E1M8's exit floor)
+/// the health at or below which the level ends, which also takes god mode
+/// away.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FloorDamage {
+    pub amount: i32,
+    pub every: u32,
+    pub suit: Suit,
+    pub exit_below: i32,
+}
+
+/// What floor `d` does this tic to player `player` (body `mo`) standing
+/// on it: vanilla's 5, 7, 4, 16 and 11, and any generalized damage.
+pub fn floor_damage(sim: &mut Sim, player: usize, mo: MobjId, ironfeet: bool, d: FloorDamage) {
+    if d.exit_below > 0 {
+        if let Some(p) = sim.players[player].as_mut() {
+            p.cheats &= !CF_GODMODE;
         }
-        _ => {}
+    }
+    let bite = sim.leveltime.is_multiple_of(d.every.max(1));
+    let hurts = match d.suit {
+        Suit::Shields => !ironfeet,
+        Suit::Leaks => !ironfeet || sim.p_random() < i32::from(SUIT_LEAK),
+        Suit::Useless => true,
+    };
+    if hurts && bite {
+        interaction::damage_mobj(sim, mo, None, None, d.amount);
+    }
+    if d.exit_below > 0 && sim.player(player).is_some_and(|p| p.health <= d.exit_below) {
+        exit_level(sim, false);
     }
 }
 

@@ -86,6 +86,7 @@ fn corridor(sectors: &[(i32, i32, i16)]) -> Level {
         reject: Vec::new(),
         names: vec!["-".into(), "FLAT1".into(), "FLAT2".into()],
         things: Vec::new(),
+        generalized: Default::default(),
     }
 }
 
@@ -292,6 +293,32 @@ fn stairs_rise_eight_a_step_along_the_same_flat() {
     tics(&mut sim, 1);
     assert_eq!(sim.level.sectors[0].specialdata, None);
     assert_eq!(sim.level.sectors[2].floorheight, u(8) + Fixed(16384));
+}
+
+/// A generalized staircase's step may be negative: the same search builds
+/// it, each step lower and moving down, at its own speed, not crushing.
+#[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
+fn generalized_stairs_go_down_a_step_at_a_time() {
+    let mut sim = sim(corridor(&[(64, 256, 160), (64, 256, 160), (64, 256, 160)]));
+    sim.level.sectors[0].tag = 7;
+    sim.level.lines[0].tag = 7;
+    let params = floors::Stairs { speed: u(2), stairsize: u(-16), crush: 0 };
+    assert!(floors::stairs(&mut sim, 0, params));
+    let dests: Vec<(usize, Fixed, i32)> = sim
+        .thinkers
+        .iter()
+        .map(|t| match &t.kind {
+            ThinkerKind::Floor(f) => (f.sector, f.floordestheight, f.direction),
+            _ => (99, u(0), 0),
+        })
+        .collect();
+    assert_eq!(dests, [(0, u(48), -1), (1, u(32), -1), (2, u(16), -1)]);
+    tics(&mut sim, 8);
+    assert_eq!(sim.level.sectors[0].floorheight, u(48));
+    assert_eq!(sim.level.sectors[2].floorheight, u(48));
+    tics(&mut sim, 17);
+    assert_eq!(sim.level.sectors[2].floorheight, u(16));
 }
 
 #[test]

@@ -144,8 +144,14 @@ pub fn use_special_line(sim: &mut Sim, thing: MobjId, line: usize, side: usize) 
     if side != 0 && special != 124 {
         return false;
     }
+    if let Some((taken, started)) = super::generalized::use_line(sim, line, thing) {
+        if by_player {
+            sim.events.push(SimEvent::Special { line, started });
+        }
+        return taken;
+    }
     if sim.mo(thing).player.is_none() {
-        if l.flags & ml::SECRET != 0 || !matches!(special, 1 | 32 | 33 | 34) {
+        if sim.level.lines[line].flags & ml::SECRET != 0 || !matches!(special, 1 | 32 | 33 | 34) {
             return false;
         }
     }
