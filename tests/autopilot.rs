@@ -118,6 +118,39 @@ fn the_autopilot_takes_a_teleporter() {
     assert!(jumped, "the player never teleported");
 }
 
+/// Doom spawns no thing a single-player game leaves out, so a teleporter
+/// whose only destination is for multiplayer games teleports no one
+/// (freedoom2's MAP28); the bot must not count on it. In both games.
+#[test]
+fn a_teleporter_to_a_multiplayer_only_destination_takes_no_one() {
+    let text = std::fs::read_to_string(map_path("tests/maps/autopilot_teleporter.ron")).unwrap();
+    let only_coop = text.replace(
+        r#"Thing(kind: "teleport_destination", x: 576.0, y: 128.0, angle: 0.0)"#,
+        r#"Thing(kind: "teleport_destination", x: 576.0, y: 128.0, angle: 0.0, multiplayer: true)"#,
+    );
+    assert_ne!(text, only_coop, "the teleporter map's destination moved");
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("coop_destination.ron");
+    std::fs::write(&path, only_coop).unwrap();
+    // Its textures, from beside the original.
+    for art in ["textures", "sprites"] {
+        std::os::unix::fs::symlink(map_path("tests/maps").join(art), dir.path().join(art)).unwrap();
+    }
+    for sim in [false, true] {
+        let options = GameOptions { no_monsters: true, sim, ..GameOptions::default() };
+        let mut play = Playthrough::of(&MapRef::File(path.clone()), options).unwrap_or_else(|e| panic!("{e}"));
+        let start = play.game.player().pos;
+        let mut farthest = 0.0f64;
+        let (outcome, bot) = autopilot::run(&mut play, 35 * 20, |play, _| {
+            farthest = farthest.max(play.game.player().pos.distance(start));
+            true
+        })
+        .unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(outcome.exit, None, "sim {sim}: exited through a teleporter with no destination");
+        assert!(farthest < 400.0, "sim {sim}: the player reached {farthest} units away\n{}", bot.log.join("\n"));
+    }
+}
+
 #[test]
 fn the_autopilot_jumps_down_a_one_way_drop() {
     let mut feet = Vec::new();

@@ -181,12 +181,27 @@ impl Shot<'_> {
     /// the brain does to it (0 when it bursts too far away, out of the
     /// brain's sight, or within its blast of the shooter), given the way's
     /// crossings.
-    fn damage(&self, scratch: &mut sight::Scratch, from: DVec2, z: f64, brain: &Body, ways: &[Crossing]) -> i32 {
-        let along = (brain.pos - from).normalize_or_zero();
+    /// The damage to `brain` of a rocket fired from `from` along `along`
+    /// (a unit vector; `ways` are the crossings along it).
+    fn damage(
+        &self,
+        scratch: &mut sight::Scratch,
+        from: DVec2,
+        along: DVec2,
+        z: f64,
+        brain: &Body,
+        ways: &[Crossing],
+    ) -> i32 {
         let stop = ways.iter().find(|c| !c.sides.is_some_and(|s| self.passes(s, z))).map_or(f64::INFINITY, |c| c.at);
-        // A direct hit: the rocket meets the brain's box before anything else.
+        // A direct hit: the rocket meets the brain's box before anything
+        // else (its path passes within the two radii of the brain).
         let level_with = z < brain.z + brain.height && z + self.rocket.height > brain.z;
-        if level_with && from.distance(brain.pos) - brain.radius - self.rocket.radius < stop {
+        let to = brain.pos - from;
+        let aside = along.perp_dot(to).abs();
+        if level_with
+            && aside < brain.radius + self.rocket.radius
+            && to.dot(along) - brain.radius - self.rocket.radius < stop
+        {
             return BLAST as i32;
         }
         if !stop.is_finite() {
@@ -229,8 +244,23 @@ pub fn blast(
     z: f64,
     brain: &Body,
 ) -> i32 {
-    let ways = crossings(&compiled.map, rocket, from, brain.pos);
-    Shot { compiled, rocket, lift: None }.damage(scratch, from, z, brain, &ways)
+    blast_along(compiled, scratch, rocket, (from, z), brain, (brain.pos - from).normalize_or_zero())
+}
+
+/// [`blast`] for a rocket fired along `along` (a unit vector), which need
+/// not point at the brain: a 1.9 demo turns in 1/256ths of the circle, and
+/// a rocket through the boss brain's slit wants the angle the body can
+/// face, not the one it would like to.
+pub fn blast_along(
+    compiled: &CompiledMap,
+    scratch: &mut sight::Scratch,
+    rocket: &Rocket,
+    (from, z): (DVec2, f64),
+    brain: &Body,
+    along: DVec2,
+) -> i32 {
+    let ways = crossings(&compiled.map, rocket, from, from + along * from.distance(brain.pos).max(1.0));
+    Shot { compiled, rocket, lift: None }.damage(scratch, from, along, z, brain, &ways)
 }
 
 /// The highest floor lift `lift` reaches with its floor at `floor`: its
@@ -287,7 +317,8 @@ pub fn spots(
         let mut floor = mech.lift_low[lift];
         while floor <= top {
             let shot = Shot { compiled, rocket, lift: Some((lift, floor)) };
-            if shot.damage(&mut scratch, from, floor + MISSILE_HEIGHT, brain, &ways) >= WORTH {
+            let along = (brain.pos - from).normalize_or_zero();
+            if shot.damage(&mut scratch, from, along, floor + MISSILE_HEIGHT, brain, &ways) >= WORTH {
                 window = Some(window.map_or((floor, floor), |w| (w.0, floor)));
             } else {
                 window = None;
@@ -413,11 +444,34 @@ impl Autopilot {
             return None;
         }
         let to = target.body.pos - player.pos;
-        let turn = turn_to(player.angle, to.y.atan2(to.x).to_degrees());
+        let direct = to.y.atan2(to.x).to_degrees();
+        let unit = |degrees: f64| DVec2::from_angle(degrees.to_radians());
+        let z = then + MISSILE_HEIGHT;
+        let mut hurts = |degrees: f64| {
+            blast_along(&level.compiled, &mut self.sight, &rocket, (player.pos, z), &target.body, unit(degrees))
+                >= WORTH
+        };
+        // Where the game turns in steps, the angle it can face nearest the
+        // brain whose rocket hurts it (the slit is narrow: one step off
+        // the direct line may hit its edge).
+        let step = game.turn_step();
+        let aim = if step > 0.0 {
+            let base = (direct / step).round();
+            [0.0, -1.0, 1.0, -2.0, 2.0]
+                .into_iter()
+                .map(|k| (base + k) * step)
+                .find(|&q| hurts(q))
+                .unwrap_or(base * step)
+        } else {
+            direct
+        };
+        let turn = turn_to(player.angle, aim);
         let in_hand = super::slot_of(game, player.pending_weapon.or(player.ready_weapon));
         let ready = player.pending_weapon.is_none() && super::slot_of(game, player.ready_weapon) == Some(LAUNCHER_SLOT);
-        // Never on the way down: the rocket would leave lower than reckoned.
-        let fire = ready && turn.abs() < 1.0 && rise >= 0.0 && blast >= WORTH;
+        // Fired only facing a way that hurts (as it faces now), and never
+        // on the way down: the rocket would leave lower than reckoned.
+        let facing = if step > 0.0 { turn.abs() < step / 2.0 && hurts(player.angle) } else { turn.abs() < 1.0 };
+        let fire = ready && facing && rise >= 0.0 && blast >= WORTH;
         if std::env::var_os("SIGHTLINE_AUTOPILOT_TRACE").is_some() {
             eprintln!(
                 "brain tick {now} pos {:?} z {} then {then} blast {blast} ready {ready} turn {turn:.1} arrived {}",

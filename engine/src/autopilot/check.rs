@@ -125,6 +125,7 @@ fn flood(
 ) -> Vec<bool> {
     let none = BTreeSet::new();
     let spent = BTreeSet::new();
+    let none_lines = BTreeSet::new();
     let shut = mech.shut_doors(&level.compiled.map);
     let w = plan::World {
         nav,
@@ -134,6 +135,7 @@ fn flood(
         blocked: solid,
         bad: &none,
         spent: &spent,
+        wasted: &none_lines,
         hurts,
         shut: &shut,
         wary: &[],

@@ -108,6 +108,13 @@ const CREEP: f64 = 1.0;
 /// The spacing of the trail's points, and how many are kept.
 const TRAIL_STEP: f64 = 32.0;
 const TRAIL_POINTS: usize = 128;
+/// Ticks the body waits before a once-only walk line whose sectors are
+/// busy (a lift on its way back takes a few seconds) before crossing it
+/// anyway.
+const WASTE_PATIENCE: u32 = 35 * 12;
+/// Ticks the body waits at a thing whose floor is moving (a pedestal
+/// coming down) before giving it up as out of reach.
+const MOVING_PATIENCE: u32 = 35 * 60;
 
 /// How a run is going, for the report.
 #[derive(Clone, Debug, PartialEq)]
@@ -133,13 +140,14 @@ pub struct Figures {
 }
 
 /// What a search assumes of the level as it stands: the plan's heights,
-/// the cells solid things stand on, the moves given up, the lines used up
-/// and the doors shut now.
+/// the cells solid things stand on, the moves given up, the lines used up,
+/// the lines a crossing now would waste and the doors shut now.
 struct Assumed {
     heights: Heights,
     blocked: BTreeSet<Cell>,
     bad: BTreeSet<u32>,
     spent: BTreeSet<LineId>,
+    wasted: BTreeSet<LineId>,
     shut: Vec<bool>,
 }
 
@@ -167,6 +175,7 @@ impl Assumed {
             blocked: &self.blocked,
             bad: &self.bad,
             spent: &self.spent,
+            wasted: &self.wasted,
             hurts,
             shut: &self.shut,
         }
@@ -237,6 +246,10 @@ pub struct Autopilot {
     bad: BTreeMap<u32, u64>,
     /// Things it could not pick up.
     unreachable: BTreeSet<u32>,
+    /// Per thing, the cells it was not picked up from though the body
+    /// stood there with its floor still (Doom's touch is a box test: a
+    /// key 36 units off along an axis is not touched, however near).
+    touch_missed: BTreeMap<u32, BTreeSet<Cell>>,
     /// Goals given up on, and how often: after [`MAX_FAILURES`] they are
     /// not chosen again.
     failures: BTreeMap<(u8, u32), u32>,
@@ -332,6 +345,7 @@ impl Autopilot {
             tried: BTreeMap::new(),
             bad: BTreeMap::new(),
             unreachable: BTreeSet::new(),
+            touch_missed: BTreeMap::new(),
             failures: BTreeMap::new(),
             last: Heights::of(map),
             did_nothing: BTreeSet::new(),
@@ -761,8 +775,23 @@ impl Autopilot {
             blocked: self.blocked(game),
             bad: self.bad.keys().copied().collect(),
             shut: self.mech.shut_doors(&level.compiled.map),
+            wasted: self.wasted(game, &spent),
             spent,
         }
+    }
+
+    /// Live once-only walk lines whose sectors are busy now: Doom spends
+    /// such a line when it is crossed, whether or not its special could
+    /// start (MAP15's line 163, crossed while a repeatable line's lift
+    /// was still moving, left that lift down for good).
+    fn wasted(&self, game: &dyn Observe, spent: &BTreeSet<LineId>) -> BTreeSet<LineId> {
+        let map = &game.level().compiled.map;
+        let walk = self.mech.triggers.iter().chain(self.mech.lifts.iter().flatten());
+        walk.copied()
+            .filter(|id| !spent.contains(id))
+            .filter(|&id| line_of(map, id).3.is_some_and(Self::wastable))
+            .filter(|&id| Self::targets_busy(game, id))
+            .collect()
     }
 
     /// Chooses the next goal and the route to it.
@@ -849,7 +878,7 @@ impl Autopilot {
                 && !self.unreachable.contains(&(i as u32))
                 && !self.failed(&Goal::Touch(a.pos, i as u32))
             {
-                targets.add(plan::touch_cells(&self.nav, map, a.pos));
+                targets.add(self.touch_targets(map, a.pos, i as u32));
                 wanted.push((i as u32, a.pos));
             }
         }
@@ -1098,7 +1127,7 @@ impl Autopilot {
             {
                 continue;
             }
-            targets.add(plan::touch_cells(nav, map, a.pos));
+            targets.add(self.touch_targets(map, a.pos, i as u32));
             wanted.push((i as u32, a.pos));
         }
         if !targets.is_empty() {
@@ -1315,7 +1344,7 @@ impl Autopilot {
             }
         }
         let (_, i, pos) = best?;
-        Some((Goal::Touch(pos, i), plan::touch_cells(&self.nav, &game.level().compiled.map, pos)))
+        Some((Goal::Touch(pos, i), self.touch_targets(&game.level().compiled.map, pos, i)))
     }
 
     /// Follows the route: the input that moves along it, opens what is in
@@ -1518,6 +1547,16 @@ impl Autopilot {
             a.idle = 0;
             return Some(self.hold(game));
         }
+        if let Some(line) = self.waste_ahead(game, a).filter(|_| a.waited < WASTE_PATIENCE) {
+            // A once-only walk line ahead whose sectors are busy: crossed
+            // now it would be spent for nothing. Wait for them.
+            if a.waited == 0 {
+                self.log.push(format!("tick {now}: waiting for the sectors of {} to stop", describe(map, line)));
+            }
+            a.idle = 0;
+            a.waited += 1;
+            return Some(self.hold(game));
+        }
         if a.route.leap[a.at + 1] > 0 {
             // A running jump from here: to the edge's centre first.
             return Some(self.drive_to(game, self.nav.centre_of(c), true));
@@ -1586,6 +1625,52 @@ impl Autopilot {
             target = self.nav.centre_of(before) + dir * CELL * 1.5;
         }
         Some(self.drive_to(game, target, k == last || ahead == 1 || wary))
+    }
+
+    /// Is `special` one a crossing spends for nothing while its sectors
+    /// are busy: a once-only walk line players set off that moves a floor,
+    /// a lift or a ceiling (a door's line crossed while the door is open
+    /// loses nothing that matters, and waiting for it changes the fight).
+    fn wastable(special: &crate::map::LineSpecial) -> bool {
+        special.on == Activation::Walk
+            && !special.repeat
+            && special.by.players()
+            && !matches!(special.action, Action::Door { .. })
+    }
+
+    /// Does the route, within the next moves the body could coast through,
+    /// cross a live once-only walk line that is not its goal while the
+    /// sectors that line moves are busy? (See [`Self::wasted`].)
+    fn waste_ahead(&self, game: &dyn Observe, a: &Active) -> Option<LineId> {
+        let cells = &a.route.cells;
+        let goal = match a.goal {
+            Goal::Cross(l) => Some(l),
+            _ => None,
+        };
+        let map = &game.level().compiled.map;
+        let reach = game.player().velocity.length() * 10.0 + 2.0 * CELL;
+        let from = self.nav.centre_of(cells[a.at]);
+        (a.at..cells.len() - 1)
+            .take_while(|&k| self.nav.centre_of(cells[k]).distance(from) <= reach)
+            .filter_map(|k| self.nav.direction(cells[k], cells[k + 1]).map(|d| (cells[k], d)))
+            .flat_map(|(c, d)| self.nav.crossings_of(c, d).map(|(l, _)| l).collect::<Vec<_>>())
+            .filter(|&l| Some(l) != goal)
+            .find(|&l| {
+                let (line, _, _, special) = line_of(map, l);
+                special.is_some_and(|s| Self::wastable(&s))
+                    && game.special(line).is_some()
+                    && Self::targets_busy(game, l)
+            })
+    }
+
+    /// The cells thing `i` at `p` is picked up from (`plan::touch_cells`),
+    /// less those it was found not to be (`touch_missed`).
+    fn touch_targets(&self, map: &crate::map::Map, p: DVec2, i: u32) -> plan::Targets {
+        let mut t = plan::touch_cells(&self.nav, map, p);
+        if let Some(missed) = self.touch_missed.get(&i) {
+            t.remove_cells(missed);
+        }
+        t
     }
 
     /// Would the body, coasting to a stop from its speed now, pass over a
@@ -1800,7 +1885,10 @@ impl Autopilot {
         adjust(&mut assumed.heights);
         let start = assumed.start(&self.nav, game)?;
         let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.wary), map);
-        let targets = plan::targets_of(&self.nav, map, goal);
+        let targets = match goal {
+            Goal::Touch(p, thing) => self.touch_targets(map, *p, *thing),
+            _ => plan::targets_of(&self.nav, map, goal),
+        };
         self.search.run(&world, start, Some(&targets))
     }
 
@@ -2006,18 +2094,39 @@ impl Autopilot {
                 Some(self.drive_to(game, pos, true))
             }
             Goal::Touch(pos, actor) => {
-                let gone = game.seen().get(actor as usize).is_none_or(|x| x.removed);
-                if gone || a.arrived > 70 {
-                    if !gone {
-                        // Out of reach from here (behind a wall, too high):
-                        // given up for now, for good after a few tries.
-                        self.unreachable.insert(actor);
-                        self.give_up(&a.goal);
-                    }
+                let seen = game.seen();
+                let Some(thing) = seen.get(actor as usize).filter(|x| !x.removed) else {
                     self.next_replan = now;
                     return None;
+                };
+                // A thing on a floor still moving (a pedestal coming down
+                // slowly, MAP20's blue key) is waited for, a while.
+                let level = game.level();
+                let moving = level.compiled.locate(thing.pos).is_some_and(|s| game.is_busy(s));
+                if a.arrived <= 70 || (moving && a.arrived <= MOVING_PATIENCE) {
+                    return Some(self.drive_to(game, pos, false));
                 }
-                Some(self.drive_to(game, pos, false))
+                self.next_replan = now;
+                // Given up, for good after a few tries. At a height the
+                // body touches (Doom: from 8 under its feet to its top),
+                // the body was not near enough (36 units off along an
+                // axis is not touched, however near): that cell is not
+                // tried again for it, others may be at once. Otherwise it
+                // is out of reach from here (behind a wall, too high).
+                self.give_up(&a.goal);
+                let player = game.player();
+                let mut other_cells = false;
+                if (-8.0..=crate::play::player::HEIGHT).contains(&(thing.z - player.z)) {
+                    let missed = self.touch_missed.entry(actor).or_default();
+                    let before = missed.len();
+                    missed.extend(self.nav.cell_at(player.pos));
+                    missed.extend(a.route.cells.last());
+                    other_cells = missed.len() > before;
+                }
+                if !other_cells {
+                    self.unreachable.insert(actor);
+                }
+                None
             }
         }
     }

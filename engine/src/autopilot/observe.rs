@@ -52,6 +52,11 @@ pub trait Observe {
     fn stats(&self) -> Stats;
     /// A mover is at work on the converted map's sector `sector`.
     fn is_busy(&self, sector: usize) -> bool;
+    /// The smallest turn the game's commands carry, in degrees (a 1.9
+    /// demo's 1/256 of the circle on the simulation), or 0 for any angle.
+    fn turn_step(&self) -> f64 {
+        0.0
+    }
     /// `line`'s special, unless it was used up.
     fn special(&self, line: SpecialLine) -> Option<LineSpecial>;
     /// Where a use from `from` towards `to` stops: the first line with a

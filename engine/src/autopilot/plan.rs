@@ -40,6 +40,9 @@ const LIFT_DROP_COST: u32 = 200;
 /// Extra cost of a running jump (on top of its run-up, there and back,
 /// and its flight): a risk taken only when it saves a long way round.
 const LEAP_COST: u32 = 300;
+/// Crossing a once-only walk line while its sectors are busy (it would be
+/// spent for nothing): far dearer than any way round.
+const WASTE_COST: u32 = 5000;
 /// A leap that comes down on a rim costs this much more: the stop there is
 /// not always held, so a way with landings clear of edges wins.
 const RIM_LEAP_COST: u32 = 600;
@@ -154,7 +157,10 @@ impl Mechanisms {
                 Action::Exit => m.exits.push((id, false)),
                 Action::SecretExit => m.exits.push((id, true)),
                 Action::Teleport if special.on == Activation::Walk => {
-                    let sector_of = |i: usize| level.compiled.locate(map.things[i].pos);
+                    // A destination the game at this skill does not spawn
+                    // (a multiplayer-only one on MAP28) teleports no one.
+                    let sector_of =
+                        |i: usize| level.thing_shown[i].then(|| level.compiled.locate(map.things[i].pos)).flatten();
                     if let Some(t) = crate::map::semantics::teleport_destination(map, special.tag, sector_of) {
                         m.teleports.insert(id, map.things[t].pos);
                     }
@@ -392,6 +398,9 @@ pub struct World<'a> {
     pub bad: &'a BTreeSet<u32>,
     /// Teleport and walk lines that are spent (used once, not repeatable).
     pub spent: &'a BTreeSet<LineId>,
+    /// Once-only walk lines a crossing now would spend for nothing (their
+    /// sectors are busy): crossed only where there is no way round.
+    pub wasted: &'a BTreeSet<LineId>,
     /// Damaging sectors.
     pub hurts: &'a [bool],
     /// Manual doors shut now (the heights assume them open): they can be
@@ -492,9 +501,12 @@ impl Search {
                 let mut teleported = false;
                 let mut met = false;
                 let mut lift_drop = false;
+                let mut waste = false;
                 for (line, front) in w.nav.crossings_of(c, d) {
                     if targets.is_some_and(|t| t.lines.contains(&line)) {
                         met = true;
+                    } else {
+                        waste |= w.wasted.contains(&line);
                     }
                     let (_, _, _, special) = line_of(w.map, line);
                     let Some(special) = special else { continue };
@@ -532,6 +544,9 @@ impl Search {
                 }
                 if lift_drop {
                     step += LIFT_DROP_COST;
+                }
+                if waste {
+                    step += WASTE_COST;
                 }
                 if self.relax(c, next, cost + step, teleported, 0) && met {
                     return Some(self.route(next));
@@ -755,6 +770,11 @@ impl Targets {
     pub fn add(&mut self, other: Targets) {
         self.cells.extend(other.cells);
         self.lines.extend(other.lines);
+    }
+
+    /// Drops `cells` from the targets.
+    pub fn remove_cells(&mut self, cells: &BTreeSet<Cell>) {
+        self.cells.retain(|c| !cells.contains(c));
     }
 
     pub fn contains_cell(&self, c: Cell) -> bool {

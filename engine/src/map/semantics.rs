@@ -89,7 +89,8 @@ pub fn is_teleport_destination(kind: &str) -> bool {
 /// The teleport destination Doom's EV_Teleport would pick: in the first
 /// sector tagged `tag` (by index) that holds one, the first in thing order.
 /// `sector_of` places a thing (validation has no BSP yet; play locates
-/// through it).
+/// through it), or answers `None` for one the game did not spawn (a
+/// destination for other skills or for multiplayer only is no destination).
 pub fn teleport_destination(map: &Map, tag: u16, sector_of: impl Fn(usize) -> Option<usize>) -> Option<usize> {
     let destinations: Vec<(usize, usize)> = (0..map.things.len())
         .filter(|&i| is_teleport_destination(&map.things[i].kind))

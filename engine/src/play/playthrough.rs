@@ -227,6 +227,10 @@ impl Observe for Played {
         self.inner().is_busy(sector)
     }
 
+    fn turn_step(&self) -> f64 {
+        self.inner().turn_step()
+    }
+
     fn special(&self, line: SpecialLine) -> Option<LineSpecial> {
         self.inner().special(line)
     }

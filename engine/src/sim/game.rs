@@ -442,6 +442,11 @@ impl Observe for SimGame {
         self.busy.get(sector).copied().unwrap_or(false)
     }
 
+    /// Commands keep a turn's high byte, as a 1.9 demo does.
+    fn turn_step(&self) -> f64 {
+        360.0 / 256.0
+    }
+
     fn special(&self, line: SpecialLine) -> Option<LineSpecial> {
         self.map_special(line).filter(|_| self.live(line)).cloned()
     }

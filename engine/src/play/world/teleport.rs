@@ -24,7 +24,8 @@ pub const TELEPORT_FREEZE: u32 = 18;
 pub fn teleport(ctx: &mut Ctx, tag: u16, who: Activator) -> bool {
     let map = &ctx.level.compiled.map;
     let sectors = &ctx.level.thing_sectors;
-    let Some(dest) = teleport_destination(map, tag, |i| Some(sectors[i])) else { return false };
+    let shown = &ctx.level.thing_shown;
+    let Some(dest) = teleport_destination(map, tag, |i| shown[i].then_some(sectors[i])) else { return false };
     let thing = &map.things[dest];
     // Doom spawns things facing a multiple of 45 degrees (the angle divided
     // by 45, truncated).
