@@ -4,6 +4,7 @@
 //! CBOR. Each format names its own errors; this module says only what is
 //! wrong with the envelope.
 
+use serde::de::DeserializeOwned;
 use serde::Serialize;
 
 /// What is wrong with an envelope.
@@ -56,6 +57,19 @@ pub fn open<'a>(bytes: &'a [u8], magic: &[u8], version: u8) -> Result<&'a [u8], 
         return Err(EnvelopeError::Corrupt("checksum mismatch".into()));
     }
     Ok(body)
+}
+
+/// [`open`], then the description the body starts with (CBOR) decoded;
+/// returns it and the rest of the body.
+pub fn open_described<'a, T: DeserializeOwned>(
+    bytes: &'a [u8],
+    magic: &[u8],
+    version: u8,
+) -> Result<(T, &'a [u8]), EnvelopeError> {
+    let mut body = open(bytes, magic, version)?;
+    let description = ciborium::from_reader(&mut body)
+        .map_err(|e| EnvelopeError::Corrupt(format!("the save's description does not decode: {e}")))?;
+    Ok((description, body))
 }
 
 /// CBOR of `value` (writing to memory cannot fail; a value serde refuses,

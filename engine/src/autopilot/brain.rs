@@ -177,12 +177,10 @@ impl Shot<'_> {
         self.floor(f).max(self.floor(b)) < z && sectors[f].ceiling.min(sectors[b].ceiling) >= z + self.rocket.height
     }
 
-    /// The damage a rocket fired level from `from`, its bottom at `z`, at
-    /// the brain does to it (0 when it bursts too far away, out of the
-    /// brain's sight, or within its blast of the shooter), given the way's
-    /// crossings.
-    /// The damage to `brain` of a rocket fired from `from` along `along`
-    /// (a unit vector; `ways` are the crossings along it).
+    /// The damage a rocket fired level from `from` along `along` (a unit
+    /// vector), its bottom at `z`, does to the brain (0 when it bursts too
+    /// far away, out of the brain's sight, or within its blast of the
+    /// shooter), given the way's crossings.
     fn damage(
         &self,
         scratch: &mut sight::Scratch,
@@ -312,12 +310,12 @@ pub fn spots(
         let top = lift_reach(map, mech, lift, floors[lift]);
         let from = nav.centre_of(cell);
         let ways = crossings(map, rocket, from, brain.pos);
+        let along = (brain.pos - from).normalize_or_zero();
         let mut window: Option<(f64, f64)> = None;
         let mut best: Option<(f64, f64)> = None;
         let mut floor = mech.lift_low[lift];
         while floor <= top {
             let shot = Shot { compiled, rocket, lift: Some((lift, floor)) };
-            let along = (brain.pos - from).normalize_or_zero();
             if shot.damage(&mut scratch, from, along, floor + MISSILE_HEIGHT, brain, &ways) >= WORTH {
                 window = Some(window.map_or((floor, floor), |w| (w.0, floor)));
             } else {
@@ -455,22 +453,20 @@ impl Autopilot {
         // brain whose rocket hurts it (the slit is narrow: one step off
         // the direct line may hit its edge).
         let step = game.turn_step();
-        let aim = if step > 0.0 {
+        let (aim, aim_hurts) = if step > 0.0 {
             let base = (direct / step).round();
-            [0.0, -1.0, 1.0, -2.0, 2.0]
-                .into_iter()
-                .map(|k| (base + k) * step)
-                .find(|&q| hurts(q))
-                .unwrap_or(base * step)
+            let hurting = [0.0, -1.0, 1.0, -2.0, 2.0].into_iter().map(|k| (base + k) * step).find(|&q| hurts(q));
+            (hurting.unwrap_or(base * step), hurting.is_some())
         } else {
-            direct
+            (direct, true)
         };
         let turn = turn_to(player.angle, aim);
         let in_hand = super::slot_of(game, player.pending_weapon.or(player.ready_weapon));
         let ready = player.pending_weapon.is_none() && super::slot_of(game, player.ready_weapon) == Some(LAUNCHER_SLOT);
-        // Fired only facing a way that hurts (as it faces now), and never
-        // on the way down: the rocket would leave lower than reckoned.
-        let facing = if step > 0.0 { turn.abs() < step / 2.0 && hurts(player.angle) } else { turn.abs() < 1.0 };
+        // Fired only facing the angle that hurts (the body faces a whole
+        // number of steps, so within half a step is on it), and never on
+        // the way down: the rocket would leave lower than reckoned.
+        let facing = aim_hurts && turn.abs() < if step > 0.0 { step / 2.0 } else { 1.0 };
         let fire = ready && facing && rise >= 0.0 && blast >= WORTH;
         if std::env::var_os("SIGHTLINE_AUTOPILOT_TRACE").is_some() {
             eprintln!(

@@ -123,9 +123,9 @@ fn flood(
     hurts: &[bool],
     start: Cell,
 ) -> Vec<bool> {
+    // Nothing given up, spent or wasted: the level as it starts.
     let none = BTreeSet::new();
-    let spent = BTreeSet::new();
-    let none_lines = BTreeSet::new();
+    let no_lines = BTreeSet::new();
     let shut = mech.shut_doors(&level.compiled.map);
     let w = plan::World {
         nav,
@@ -134,8 +134,8 @@ fn flood(
         heights,
         blocked: solid,
         bad: &none,
-        spent: &spent,
-        wasted: &none_lines,
+        spent: &no_lines,
+        wasted: &no_lines,
         hurts,
         shut: &shut,
         wary: &[],

@@ -394,17 +394,12 @@ pub fn peek(path: &Path) -> Result<SaveInfo, SaveError> {
 /// The header checked, the info decoded, and the state's bytes.
 fn read<'a>(bytes: &'a [u8], label: &str) -> Result<(SaveInfo, &'a [u8]), SaveError> {
     let path = || label.to_string();
-    let mut state = envelope::open(bytes, MAGIC, VERSION).map_err(|e| match e {
+    envelope::open_described(bytes, MAGIC, VERSION).map_err(|e| match e {
         EnvelopeError::Magic => SaveError::Magic { path: path() },
         EnvelopeError::Version(found) => SaveError::Version { path: path(), found },
         EnvelopeError::Truncated(what) => SaveError::Truncated { path: path(), what },
         EnvelopeError::Corrupt(what) => SaveError::Corrupt { path: path(), what },
-    })?;
-    let info: SaveInfo = ciborium::from_reader(&mut state).map_err(|e| SaveError::Corrupt {
-        path: path(),
-        what: format!("the save's description does not decode: {e}"),
-    })?;
-    Ok((info, state))
+    })
 }
 
 /// `path` made absolute (against the working directory), so a save made
