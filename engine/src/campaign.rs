@@ -112,6 +112,15 @@ pub struct Opened {
     pub links: Option<crate::wad::import::Links>,
 }
 
+impl Opened {
+    /// A RON level already loaded (a test's map, one made in memory),
+    /// as if opened from the file `label`.
+    pub fn of_level(level: Level, label: &str) -> Opened {
+        let map = MapRef::File(PathBuf::from(label));
+        Opened { level, map, repairs: Vec::new(), report: None, links: None }
+    }
+}
+
 /// Opens `map`: a file as [`open_level`] does; a WAD map converted in
 /// memory, validated and compiled with `options`, its art read from the WAD.
 pub fn open(map: &MapRef, options: &BuildOptions) -> Result<Opened, CampaignError> {

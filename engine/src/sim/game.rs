@@ -70,6 +70,23 @@ impl SimGame {
     /// DEHACKED applied and vanilla's bugs kept (its commands then replay
     /// in Chocolate Doom); a RON map plays with Sightline's fixes.
     pub fn new(opened: Opened, options: GameOptions) -> Result<SimGame, SimGameError> {
+        SimGame::with_table(opened, options, ActorTable::active().clone())
+    }
+
+    /// A new game on a RON level already loaded (not from a file: a test's
+    /// map, a reloaded one), named `label` in errors.
+    pub fn on_level(level: Level, label: &str, options: GameOptions) -> Result<SimGame, SimGameError> {
+        SimGame::new(Opened::of_level(level, label), options)
+    }
+
+    /// [`SimGame::new`] with the actor table `table` (a mod's, a test's)
+    /// for a RON map; a WAD map takes `table` with the IWAD's DEHACKED
+    /// applied.
+    pub fn with_table(
+        opened: Opened,
+        options: GameOptions,
+        table: std::sync::Arc<ActorTable>,
+    ) -> Result<SimGame, SimGameError> {
         let label = opened.map.label();
         let error = |what: String| SimGameError::Start { map: label.clone(), what };
         let fingerprint = crate::play::save::map_fingerprint(&opened.level);
@@ -81,7 +98,7 @@ impl SimGame {
         let (sim, scene) = match (&opened.map, opened.links) {
             (MapRef::Wad { wads, map: Some(name) }, Some(links)) => {
                 let wad = crate::campaign::stack(wads).map_err(|e| error(e.to_string()))?;
-                let table = demo::table_for(&wad, ActorTable::active()).map_err(&error)?;
+                let table = demo::table_for(&wad, &table).map_err(&error)?;
                 let mode = demo::game_mode(&wad);
                 let rules =
                     Rules { no_monsters: options.no_monsters, ..Rules::single(skill, demo::game_version(mode), mode) };
@@ -89,7 +106,6 @@ impl SimGame {
                 (sim, Scene::new(links))
             }
             _ => {
-                let table = ActorTable::active().clone();
                 let compiled = &opened.level.compiled;
                 let level = from_map::level_from_map(compiled, &table).map_err(|e| error(e.to_string()))?;
                 let rules = Rules {
