@@ -83,7 +83,7 @@ fn the_autopilot_fetches_health_before_a_wade_it_would_not_live_through() {
     let mut healed_before_pool = false;
     finish_from(
         "heal",
-        |play| play.game.player_mut().health = 30,
+        |play| play.game.set_health(30),
         |play| {
             let p = play.game.player();
             healed_before_pool |= p.sector == 0 && p.health > 30;

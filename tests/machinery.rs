@@ -8,6 +8,7 @@
 //! same game), and it is what the window test plays.
 
 use glam::DVec2;
+use sightline::autopilot::observe::Observe;
 use sightline::campaign::MapRef;
 use sightline::map::special::KeyColour;
 use sightline::play::events::Event;
@@ -56,7 +57,14 @@ impl Driver {
             let run = wanted > 8.0;
             self.tick(TickInput { forward: i8::from(push), turn: turn as f32, run, ..Default::default() });
         }
-        panic!("did not reach {to} from {} in {limit} ticks", self.pos());
+        let p = self.play.game.player();
+        panic!(
+            "did not reach {to} from {} in {limit} ticks (velocity {}, angle {}, z {})",
+            self.pos(),
+            p.velocity,
+            p.angle,
+            p.z
+        );
     }
 
     /// The turn that faces `angle` degrees, at most 15 a tick.
@@ -124,7 +132,7 @@ fn machinery_is_played_through_from_start_to_exit() {
     d.walk_to(DVec2::new(860.0, 192.0), 200);
     let before = d.play.game.level().materials.sides.clone();
     d.use_facing(0.0);
-    assert!(d.play.game.float().expect("the f64 game").world().is_busy(door1), "the switch did not start door 1");
+    assert!(d.play.game.is_busy(door1), "the switch did not start door 1");
     assert_ne!(d.play.game.level().materials.sides, before, "the switch texture did not flip");
     d.wait(80);
     assert!(d.play.game.level().map.sectors[door1].ceiling > 200.0, "door 1 did not open");
@@ -135,7 +143,7 @@ fn machinery_is_played_through_from_start_to_exit() {
     d.walk_to(DVec2::new(610.0, 592.0), 200);
     d.use_facing(180.0);
     assert!(d.messages.iter().any(|m| m == "You need a blue key to open this door"), "{:?}", d.messages);
-    assert!(!d.play.game.float().expect("the f64 game").world().is_busy(door2));
+    assert!(!d.play.game.is_busy(door2));
 
     // The key on the pedestal in the slime (which hurts).
     d.walk_to(DVec2::new(736.0, 500.0), 200);
@@ -143,9 +151,14 @@ fn machinery_is_played_through_from_start_to_exit() {
     let keys: Vec<_> = d.play.game.player().keys.iter().map(|k| k.colour).collect();
     assert_eq!(keys, [KeyColour::Blue]);
     assert!(d.messages.iter().any(|m| m == "Picked up a blue keycard."));
-    // Standing in the slime hurts: 5 every 32 ticks.
-    d.walk_to(DVec2::new(736.0, 540.0), 100);
-    d.wait(40);
+    // Standing in the slime hurts: 5 every 32 ticks. Doom hurts a body
+    // whose feet are on the slime's floor, and a body's floor is the
+    // highest its box touches: the ring round the pedestal is 40 wide, so
+    // the body (32 across) stands in the middle of its west side.
+    d.walk_to(DVec2::new(692.0, 592.0), 100);
+    d.wait(8);
+    assert_eq!(d.play.game.player().z, 120.0, "not down in the slime at {}", d.pos());
+    d.wait(32);
     let health = d.play.game.player().health;
     assert!(health == 95 || health == 90, "the slime did not hurt as Doom's does: health {health}");
     d.walk_to(DVec2::new(736.0, 500.0), 200);
@@ -153,10 +166,7 @@ fn machinery_is_played_through_from_start_to_exit() {
     // Now the blue door opens.
     d.walk_to(DVec2::new(610.0, 592.0), 200);
     d.use_facing(180.0);
-    assert!(
-        d.play.game.float().expect("the f64 game").world().is_busy(door2),
-        "the blue door did not open with the key"
-    );
+    assert!(d.play.game.is_busy(door2), "the blue door did not open with the key");
     d.wait(70);
 
     // Through it, onto the teleporter pad: to F, facing north, still.
@@ -178,7 +188,9 @@ fn machinery_is_played_through_from_start_to_exit() {
     // The secret recess in F's west wall.
     assert_eq!(d.play.game.stats().secrets, (0, 1));
     d.walk_to(DVec2::new(40.0, 1024.0), 300);
-    d.walk_to(DVec2::new(-24.0, 1024.0), 100);
+    // A lamp stands in it: Doom's bodies are boxes, so the player's centre
+    // gets 32 units from the lamp's, past the recess's mouth at x = 0.
+    d.walk_to(DVec2::new(-8.0, 1024.0), 100);
     assert_eq!(d.play.game.stats().secrets, (1, 1));
     assert!(d.messages.iter().any(|m| m == "A secret is revealed!"));
 
@@ -269,8 +281,8 @@ fn a_dead_player_restarts_the_map_with_use() {
     let map = MapRef::File(map_path("machinery.ron"));
     let mut play = Playthrough::of(&map, GameOptions::default()).unwrap();
     let start = play.game.player().pos;
-    play.game.float_mut().expect("the f64 game").teleport(DVec2::new(736.0, 548.0), 0.0).unwrap();
-    play.game.player_mut().health = 5;
+    assert!(play.game.put_player(DVec2::new(736.0, 548.0), 0.0), "the slime is out of reach");
+    play.game.set_health(5);
     for _ in 0..40 {
         play.tick(&TickInput::default()).unwrap();
     }

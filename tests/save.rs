@@ -44,7 +44,7 @@ fn check_map_on(map: &MapRef, ticks: usize, every: usize, ahead: usize, sim: boo
             let mo = player.mo;
             sim.mo_mut(mo).health = 1_000_000;
         }
-        None => play.game.player_mut().health = 1_000_000,
+        None => play.game.set_health(1_000_000),
     }
     let inputs = fighting(11, ticks);
     let save_at: Vec<usize> = (every..ticks - ahead).step_by(every).collect();

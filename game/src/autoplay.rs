@@ -5,15 +5,11 @@
 
 use anyhow::{Context, Result};
 use serde_json::json;
-use sightline::autopilot::observe::Observe;
 use sightline::autopilot::{self, Point};
-use sightline::bsp::BuildOptions;
-use sightline::campaign::{open, MapRef};
+use sightline::campaign::MapRef;
 use sightline::play::playthrough::{Phase, Playthrough};
-use sightline::play::vanilla;
 use sightline::play::{Exit, GameOptions, Stats, TickInput, TICRATE};
 use sightline::render::{RenderOptions, Renderer};
-use sightline::sim::game::SimGame;
 
 use crate::cli::AutoplayArgs;
 use crate::replay::Capture;
@@ -31,39 +27,17 @@ struct Run {
 
 pub fn run(args: &AutoplayArgs) -> Result<()> {
     let map = MapRef::parse(&args.map, args.iwad.as_deref());
-    let options = GameOptions { skill: args.skill, seed: args.seed, no_monsters: args.no_monsters, sim: false };
+    let options = GameOptions { skill: args.skill, seed: args.seed, no_monsters: args.no_monsters, sim: true };
     let started = std::time::Instant::now();
-    let run = if args.sim { on_sim(args, &map, options)? } else { on_float(args, &map, options)? };
+    let run = play(args, &map, options)?;
     let seconds = started.elapsed().as_secs_f64();
     report(args, &map, run, seconds);
     Ok(())
 }
 
-/// The autopilot on the simulation with Doom's arithmetic, one level.
-fn on_sim(args: &AutoplayArgs, map: &MapRef, options: GameOptions) -> Result<Run> {
-    let opened =
-        open(map, &BuildOptions::default()).with_context(|| format!("{}: cannot open the map", map.label()))?;
-    let map = opened.map.clone();
-    let mut game = SimGame::new(opened, options)?;
-    let (outcome, bot) = autopilot::run_sim(&mut game, args.max_ticks, |_, _| true);
-    if let Some(path) = &args.record {
-        // Doom completes a level at the start of the tic after the exit:
-        // one more (idle) tic takes a demo's player to the intermission.
-        let mut inputs = outcome.inputs.clone();
-        if outcome.exit.is_some() {
-            inputs.push(TickInput::default());
-        }
-        crate::replay_lmp::save_recording(path, &map, options, inputs)?;
-    }
-    let player = Observe::player(&game);
-    let (health, pos) = (player.health, player.pos);
-    Ok(Run { outcome, bot, stats: Observe::stats(&game), health, pos, captured: None })
-}
-
-/// The autopilot on the float game, through a playthrough.
-fn on_float(args: &AutoplayArgs, map: &MapRef, options: GameOptions) -> Result<Run> {
-    let map = map.clone();
-    let mut play = Playthrough::of(&map, options).with_context(|| format!("{}: cannot start the game", map.label()))?;
+/// The autopilot on one level of a playthrough, capturing frames if asked.
+fn play(args: &AutoplayArgs, map: &MapRef, options: GameOptions) -> Result<Run> {
+    let mut play = Playthrough::of(map, options).with_context(|| format!("{}: cannot start the game", map.label()))?;
     let mut capture = match (args.capture_every, &args.output) {
         (Some(every), Some(dir)) => {
             let renderer = Renderer::default_for(play.game.level());
@@ -75,11 +49,7 @@ fn on_float(args: &AutoplayArgs, map: &MapRef, options: GameOptions) -> Result<R
         _ => None,
     };
     let mut failed = None;
-    // A `.lmp` keeps turns to 1/256 of the circle: the game is fed them so.
-    let lmp = args.record.as_ref().is_some_and(|p| crate::replay_lmp::is_lmp_path(p));
-    let mut carry = 0.0;
-    let filter = |input| if lmp { vanilla::as_recorded(&input, &mut carry) } else { input };
-    let (outcome, bot) = autopilot::run_through(&mut play, args.max_ticks, filter, |play, tick| {
+    let (outcome, bot) = autopilot::run(&mut play, args.max_ticks, |play, tick| {
         if let Some(c) = &mut capture {
             if tick.is_multiple_of(c.every) && failed.is_none() {
                 failed = c.frame(play, tick).err();
@@ -97,7 +67,13 @@ fn on_float(args: &AutoplayArgs, map: &MapRef, options: GameOptions) -> Result<R
         }
     }
     if let Some(path) = &args.record {
-        crate::replay_lmp::save_recording(path, &map, options, outcome.inputs.clone())?;
+        // Doom completes a level at the start of the tic after the exit:
+        // one more (idle) tic takes a demo's player to the intermission.
+        let mut inputs = outcome.inputs.clone();
+        if outcome.exit.is_some() && crate::replay_lmp::is_lmp_path(path) {
+            inputs.push(TickInput::default());
+        }
+        crate::replay_lmp::save_recording(path, &play.map, options, inputs)?;
     }
     let stats = match &play.phase {
         Phase::Intermission { stats, .. } | Phase::Finished { stats } => *stats,
@@ -129,7 +105,6 @@ fn report(args: &AutoplayArgs, map: &MapRef, run: Run, seconds: f64) {
             "map": map.label(),
             "skill": args.skill,
             "monsters": !args.no_monsters,
-            "game": if args.sim { "sim" } else { "float" },
             "exited": outcome.exit.is_some(),
             "exit": outcome.exit.map(|e| if e == Exit::Secret { "secret" } else { "normal" }),
             "ticks": ticks,

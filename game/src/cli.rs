@@ -258,10 +258,6 @@ pub struct PlayArgs {
     /// Play without monsters (Doom's -nomonsters).
     #[arg(long, conflicts_with_all = ["demo", "load"])]
     pub no_monsters: bool,
-    /// Play a RON map on the simulation with Doom's arithmetic too (a
-    /// WAD's maps always are).
-    #[arg(long, conflicts_with_all = ["demo", "load"])]
-    pub sim: bool,
     /// Start with the HUD hidden (H toggles it).
     #[arg(long)]
     pub no_hud: bool,
@@ -403,10 +399,6 @@ pub struct AutoplayArgs {
     /// Print the outcome as one JSON object.
     #[arg(long)]
     pub json: bool,
-    /// Play on the simulation with Doom's arithmetic: a WAD's map plays as
-    /// Chocolate Doom plays it, and a `.lmp` recording replays there.
-    #[arg(long, conflicts_with = "capture_every")]
-    pub sim: bool,
 }
 
 #[derive(Args)]

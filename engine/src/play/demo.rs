@@ -88,7 +88,7 @@ impl Demo {
             skill: crate::play::DEFAULT_SKILL,
             seed: 0,
             no_monsters: false,
-            sim: false,
+            sim: true,
             inputs: Vec::new(),
         }
     }

@@ -108,7 +108,7 @@ pub struct GameOptions {
 
 impl Default for GameOptions {
     fn default() -> GameOptions {
-        GameOptions { skill: DEFAULT_SKILL, seed: 0, no_monsters: false, sim: false }
+        GameOptions { skill: DEFAULT_SKILL, seed: 0, no_monsters: false, sim: true }
     }
 }
 

@@ -154,6 +154,20 @@ impl Played {
         }
     }
 
+    /// Sets the player's health (tests and tools).
+    pub fn set_health(&mut self, health: i32) {
+        match self {
+            Played::Float(g) => g.player_mut().health = health,
+            Played::Sim(g) => g.set_health(health),
+        }
+    }
+
+    /// Puts the player at `pos` facing `angle`, standing still; `false`
+    /// when it does not fit there (tests and tools).
+    pub fn put_player(&mut self, pos: DVec2, angle: f64) -> bool {
+        self.place_player(pos, angle)
+    }
+
     /// The simulation with Doom's arithmetic, when that is what plays.
     pub fn sim(&self) -> Option<&SimGame> {
         match self {
@@ -171,11 +185,11 @@ impl Played {
 
     /// Puts the player at `pos` facing `angle`, standing still (a map
     /// reloaded under a map maker keeps their pose); `false` when it does
-    /// not fit there. The simulation starts its player at the map's start.
+    /// not fit there.
     fn place_player(&mut self, pos: DVec2, angle: f64) -> bool {
         match self {
             Played::Float(g) => g.place_player(pos, angle),
-            Played::Sim(_) => false,
+            Played::Sim(g) => g.place_player(pos, angle),
         }
     }
 }

@@ -199,6 +199,49 @@ impl SimGame {
         Ok(())
     }
 
+    /// Puts the player at `pos` facing `angle` (degrees), standing still on
+    /// the floor there (a map reloaded under a map maker keeps their pose).
+    /// Returns `false`, and leaves the game as it was, when `pos` is outside
+    /// every sector or the body does not fit there (`P_CheckPosition`).
+    pub fn place_player(&mut self, pos: DVec2, angle: f64) -> bool {
+        let limit = f64::from(i16::MAX);
+        if !pos.is_finite() || pos.abs().max_element() > limit || self.level.compiled.locate(pos).is_none() {
+            return false;
+        }
+        let Some(mo) = self.sim.player(self.sim.console).map(|p| p.mo) else { return false };
+        let (x, y) = (crate::fixed::Fixed::from_f64(pos.x), crate::fixed::Fixed::from_f64(pos.y));
+        if !super::collision::check_position(&mut self.sim, mo, x, y) {
+            return false;
+        }
+        let (floorz, ceilingz) = (self.sim.tm.floorz, self.sim.tm.ceilingz);
+        if ceilingz - floorz < self.sim.mo(mo).height {
+            return false;
+        }
+        self.sim.unset_thing_position(mo);
+        let m = self.sim.mo_mut(mo);
+        (m.x, m.y, m.z, m.floorz, m.ceilingz) = (x, y, floorz, floorz, ceilingz);
+        (m.momx, m.momy, m.momz) = (crate::fixed::Fixed::ZERO, crate::fixed::Fixed::ZERO, crate::fixed::Fixed::ZERO);
+        m.angle = crate::fixed::Angle::from_degrees(angle.rem_euclid(360.0));
+        self.sim.set_thing_position(mo);
+        if let Some(p) = self.sim.players[self.sim.console].as_mut() {
+            p.viewz = floorz + p.viewheight;
+        }
+        self.refresh();
+        self.before = self.after;
+        true
+    }
+
+    /// Sets the player's health, in the game and on its body (tests and
+    /// tools: a player about to die, one that cannot).
+    pub fn set_health(&mut self, health: i32) {
+        let console = self.sim.console;
+        let Some(p) = self.sim.players[console].as_mut() else { return };
+        p.health = health;
+        let mo = p.mo;
+        self.sim.mo_mut(mo).health = health;
+        self.refresh_player();
+    }
+
     /// The level to draw into (a Doom demo played elsewhere is drawn here).
     pub fn level_mut(&mut self) -> &mut Level {
         &mut self.level
@@ -521,7 +564,7 @@ mod tests {
     #[cfg_attr(freedoom_missing, ignore = "needs freedoom1.wad: apt-get install freedoom")]
     fn a_flipped_switch_shows_on_the_converted_map() {
         let mut game = e1m1();
-        let list = super::super::switches::switch_list(game.sim.rules.mode);
+        let list = super::super::switches::switch_list(game.sim.rules.mode, game.sim.rules.compat);
         let is_switch = |name: &str| list.iter().any(|s| s.eq_ignore_ascii_case(name));
         let level = &game.sim.level;
         let linedef = (0..level.lines.len())

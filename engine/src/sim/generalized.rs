@@ -526,9 +526,7 @@ pub fn player_in_sector(sim: &mut Sim, player: usize, mo: MobjId, sector: usize,
         super::specials::floor_damage(sim, player, mo, ironfeet, damage);
     }
     if special.secret {
-        if let Some(p) = sim.players[player].as_mut() {
-            p.secretcount += 1;
-        }
+        super::specials::found_secret(sim, player);
         let rest = SectorSpecial { secret: false, ..special };
         sim.level.sectors[sector].special = sim.level.generalized.sector_number_of(rest);
     }

@@ -510,9 +510,7 @@ pub fn player_in_special_sector(sim: &mut Sim, player: usize) {
         7 => floor_damage(sim, player, mo, ironfeet, hurt(5, Suit::Shields)),
         16 | 4 => floor_damage(sim, player, mo, ironfeet, hurt(20, Suit::Leaks)),
         9 => {
-            if let Some(p) = sim.players[player].as_mut() {
-                p.secretcount += 1;
-            }
+            found_secret(sim, player);
             sim.level.sectors[sector].special = 0;
         }
         // E1M8's exit: no god mode, and out at 10 health.
@@ -558,3 +556,15 @@ pub fn floor_damage(sim: &mut Sim, player: usize, mo: MobjId, ironfeet: bool, d:
 #[cfg(test)]
 #[path = "specials_tests.rs"]
 mod tests;
+
+/// A player found a secret: it counts, and under Sightline's rules the
+/// player is told so (Boom's message; vanilla says nothing).
+pub fn found_secret(sim: &mut Sim, player: usize) {
+    let sightline = sim.rules.compat == super::Compat::Sightline;
+    if let Some(p) = sim.players[player].as_mut() {
+        p.secretcount += 1;
+        if sightline {
+            p.message = Some("A secret is revealed!".into());
+        }
+    }
+}

@@ -567,9 +567,13 @@ fn texture_heights_read_from_a_texture_lump() {
 #[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn the_switch_list_grows_with_the_game_mode() {
     use crate::sim::switches::switch_list;
-    assert_eq!(switch_list(GameMode::Shareware).len(), 2 * 19);
-    assert_eq!(switch_list(GameMode::Retail).len(), 2 * 29);
-    let doom2 = switch_list(GameMode::Commercial);
+    use crate::sim::Compat;
+    assert_eq!(switch_list(GameMode::Shareware, Compat::Vanilla).len(), 2 * 19);
+    assert_eq!(switch_list(GameMode::Retail, Compat::Vanilla).len(), 2 * 29);
+    // Sightline's own switches (SWITCH1, EXITSW1) are switches in RON maps only.
+    let ours = switch_list(GameMode::Commercial, Compat::Sightline);
+    assert_eq!((ours.len(), ours[80], ours[83]), (2 * 42, "SWITCH1", "EXITSW2"));
+    let doom2 = switch_list(GameMode::Commercial, Compat::Vanilla);
     assert_eq!(doom2.len(), 2 * 40);
     // Off and on faces alternate, so `i ^ 1` is the other face.
     assert_eq!((doom2[0], doom2[1], doom2[79]), ("SW1BRCOM", "SW2BRCOM", "SW2SKULL"));

@@ -10,63 +10,22 @@ use super::floors::{self, FloorType, StairType};
 use super::level::{ml, Level, NameId};
 use super::plats::{self, PlatType};
 use super::specials::{exit_level, Button, ButtonWhere, BUTTONTIME, MAXBUTTONS};
-use super::{lights, GameMode, MobjId, Sim, SimEvent};
+use super::{lights, Compat, GameMode, MobjId, Sim, SimEvent};
+use crate::texture::animdefs::{AnimDefs, SwitchGame};
 
-/// `alphSwitchList`: each switch's off and on texture, with the first
-/// game that has it (1 shareware, 2 registered, 3 Doom II).
-const SWITCHES: [(&str, &str, u8); 40] = [
-    ("SW1BRCOM", "SW2BRCOM", 1),
-    ("SW1BRN1", "SW2BRN1", 1),
-    ("SW1BRN2", "SW2BRN2", 1),
-    ("SW1BRNGN", "SW2BRNGN", 1),
-    ("SW1BROWN", "SW2BROWN", 1),
-    ("SW1COMM", "SW2COMM", 1),
-    ("SW1COMP", "SW2COMP", 1),
-    ("SW1DIRT", "SW2DIRT", 1),
-    ("SW1EXIT", "SW2EXIT", 1),
-    ("SW1GRAY", "SW2GRAY", 1),
-    ("SW1GRAY1", "SW2GRAY1", 1),
-    ("SW1METAL", "SW2METAL", 1),
-    ("SW1PIPE", "SW2PIPE", 1),
-    ("SW1SLAD", "SW2SLAD", 1),
-    ("SW1STARG", "SW2STARG", 1),
-    ("SW1STON1", "SW2STON1", 1),
-    ("SW1STON2", "SW2STON2", 1),
-    ("SW1STONE", "SW2STONE", 1),
-    ("SW1STRTN", "SW2STRTN", 1),
-    ("SW1BLUE", "SW2BLUE", 2),
-    ("SW1CMT", "SW2CMT", 2),
-    ("SW1GARG", "SW2GARG", 2),
-    ("SW1GSTON", "SW2GSTON", 2),
-    ("SW1HOT", "SW2HOT", 2),
-    ("SW1LION", "SW2LION", 2),
-    ("SW1SATYR", "SW2SATYR", 2),
-    ("SW1SKIN", "SW2SKIN", 2),
-    ("SW1VINE", "SW2VINE", 2),
-    ("SW1WOOD", "SW2WOOD", 2),
-    ("SW1PANEL", "SW2PANEL", 3),
-    ("SW1ROCK", "SW2ROCK", 3),
-    ("SW1MET2", "SW2MET2", 3),
-    ("SW1WDMET", "SW2WDMET", 3),
-    ("SW1BRIK", "SW2BRIK", 3),
-    ("SW1MOD1", "SW2MOD1", 3),
-    ("SW1ZIM", "SW2ZIM", 3),
-    ("SW1STON6", "SW2STON6", 3),
-    ("SW1TEK", "SW2TEK", 3),
-    ("SW1MARB", "SW2MARB", 3),
-    ("SW1SKULL", "SW2SKULL", 3),
-];
-
-/// `P_InitSwitchList`: the texture names in Doom's `switchlist` order
-/// (off, on, off, on, ...) for a game `mode` (shareware has episode 1's,
-/// registered and retail add 2 and 3's, Doom II all).
-pub fn switch_list(mode: GameMode) -> Vec<&'static str> {
-    let episode = match mode {
-        GameMode::Registered | GameMode::Retail => 2,
-        GameMode::Commercial => 3,
-        GameMode::Shareware => 1,
+/// `P_InitSwitchList`: the switch textures, in pairs (off, on), from the
+/// shipped list (`engine/data/animations.ron`) as far as the game's mode
+/// goes (shareware's, the registered game's, Doom II's), and Sightline's
+/// own under Sightline's rules.
+pub fn switch_list(mode: GameMode, compat: Compat) -> Vec<&'static str> {
+    let last = match (compat, mode) {
+        (Compat::Sightline, _) => SwitchGame::Sightline,
+        (_, GameMode::Shareware) => SwitchGame::Shareware,
+        (_, GameMode::Registered | GameMode::Retail) => SwitchGame::Registered,
+        (_, GameMode::Commercial) => SwitchGame::Doom2,
     };
-    SWITCHES.iter().filter(|s| s.2 <= episode).flat_map(|s| [s.0, s.1]).collect()
+    let defs = &AnimDefs::doom().switches;
+    defs.iter().filter(|s| s.game <= last).flat_map(|s| [s.off.as_str(), s.on.as_str()]).collect()
 }
 
 /// The id of a texture name, added to the level's names if the level did
@@ -94,7 +53,7 @@ pub fn change_switch_texture(sim: &mut Sim, line: usize, use_again: bool) {
     let s = &sim.level.sides[side];
     let faces =
         [(ButtonWhere::Top, s.toptexture), (ButtonWhere::Middle, s.midtexture), (ButtonWhere::Bottom, s.bottomtexture)];
-    let list = switch_list(sim.rules.mode);
+    let list = switch_list(sim.rules.mode, sim.rules.compat);
     for (i, name) in list.iter().enumerate() {
         let Some(&(place, texture)) = faces.iter().find(|(_, t)| sim.level.name(*t).eq_ignore_ascii_case(name)) else {
             continue;

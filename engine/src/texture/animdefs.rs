@@ -18,12 +18,27 @@ pub struct AnimDef {
     pub tics: u32,
 }
 
-/// A switch's two textures.
+/// A switch's two textures, and the first game whose switch list has it.
 #[derive(Clone, Debug, PartialEq, Eq, Deserialize)]
 #[serde(rename = "Switch", deny_unknown_fields)]
 pub struct SwitchDef {
     pub off: String,
     pub on: String,
+    #[serde(default)]
+    pub game: SwitchGame,
+}
+
+/// The first game a switch is one in (Doom's `alphSwitchList` grows with
+/// the game: a Doom II switch texture in an Ultimate Doom map is not a
+/// switch there, and a demo depends on it). Sightline's own switches are
+/// switches in RON maps only; a mod's switch is one everywhere.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Deserialize)]
+pub enum SwitchGame {
+    #[default]
+    Shareware,
+    Registered,
+    Doom2,
+    Sightline,
 }
 
 #[derive(Clone, Debug, PartialEq, Eq, Deserialize)]

@@ -63,12 +63,7 @@ pub fn run(args: &PlayArgs) -> Result<()> {
     };
     let game_options = match &demo {
         Some(demo) => demo.options(),
-        None => {
-            // A WAD's maps play on the simulation with Doom's arithmetic (a
-            // Doom demo shown in the window only borrows the level to draw).
-            let sim = args.sim || (matches!(map, MapRef::Wad { .. }) && vanilla.is_none());
-            GameOptions { skill: args.skill, seed: args.seed, no_monsters: args.no_monsters, sim }
-        }
+        None => GameOptions { skill: args.skill, seed: args.seed, no_monsters: args.no_monsters, sim: true },
     };
     let play = match &args.load {
         Some(save) => Playthrough::load(save)?,
