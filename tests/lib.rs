@@ -14,6 +14,7 @@ use sightline::Framebuffer;
 
 pub mod chocolate;
 pub mod freedoom_wads;
+pub mod sim_play;
 
 /// The repository root.
 pub fn root() -> PathBuf {
