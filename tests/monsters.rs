@@ -17,7 +17,7 @@ use sightline::sim::game::SimGame;
 use sightline::sim::mobj::mf;
 use sightline_tests::sim_play::{
     assert_drawn_as_they_stand, first, game, game_with, idle, named, player_mo, pos, present, set_health, teleport,
-    turn,
+    turn, wake,
 };
 use sightline_tests::{load, root};
 
@@ -275,15 +275,6 @@ fn monster_lines_zombies(g: &SimGame) -> (sightline::sim::MobjId, sightline::sim
     } else {
         (b, a)
     }
-}
-
-/// Wakes a monster on the player as A_Look does when it sees it: the
-/// player its target, its see state.
-fn wake(g: &mut SimGame, id: sightline::sim::MobjId) {
-    let me = player_mo(g);
-    g.sim.mo_mut(id).target = Some(me);
-    let see = g.sim.info.things[g.sim.mo(id).kind].seestate;
-    g.sim.set_mobj_state(id, see);
 }
 
 #[test]

@@ -58,6 +58,59 @@ pub fn teleport(g: &mut SimGame, pos: DVec2, angle: f64) {
     p.viewz = z + p.viewheight;
 }
 
+/// [`teleport`] only where the player could stand: in the map, clear of
+/// walls and solid things (`P_CheckPosition`, asked of a copy of the game
+/// since it picks up what it touches), with room for its height. Whether
+/// it went.
+pub fn try_teleport(g: &mut SimGame, pos: DVec2, angle: f64) -> bool {
+    if Observe::level(g).compiled.locate(pos).is_none() {
+        return false;
+    }
+    let mo = player_mo(g);
+    let (x, y) = (Fixed::from_f64(pos.x), Fixed::from_f64(pos.y));
+    let mut probe = g.sim.clone();
+    if !collision::check_position(&mut probe, mo, x, y) || probe.tm.ceilingz - probe.tm.floorz < probe.mo(mo).height {
+        return false;
+    }
+    teleport(g, pos, angle);
+    true
+}
+
+/// Whether `looker` sees `target` by Doom's `P_CheckSight`, leaving the
+/// game as it was (the check marks lines with `validcount` and sets the
+/// shared slopes: both are put back).
+pub fn sees(g: &mut SimGame, looker: MobjId, target: MobjId) -> bool {
+    let sim = &mut g.sim;
+    let kept = (sim.validcount, sim.line_valid.clone(), sim.tm.clone());
+    let seen = sightline::sim::sight::check_sight(sim, looker, target);
+    (sim.validcount, sim.line_valid, sim.tm) = kept;
+    seen
+}
+
+/// Wakes a monster on the player as `A_Look` does when it sees it: the
+/// player its target, its see state.
+pub fn wake(g: &mut SimGame, id: MobjId) {
+    let me = player_mo(g);
+    g.sim.mo_mut(id).target = Some(me);
+    let see = g.sim.info.things[g.sim.mo(id).kind].seestate;
+    g.sim.set_mobj_state(id, see);
+}
+
+/// Wakes every live monster (counted as a kill, not dead).
+pub fn wake_all(g: &mut SimGame) {
+    let asleep: Vec<MobjId> = g
+        .sim
+        .live_mobjs()
+        .filter(|&id| {
+            let m = g.sim.mo(id);
+            m.has(mf::COUNTKILL) && m.health > 0 && m.target.is_none()
+        })
+        .collect();
+    for id in asleep {
+        wake(g, id);
+    }
+}
+
 /// Turns the player to `angle` degrees where it stands.
 pub fn turn(g: &mut SimGame, angle: f64) {
     let mo = player_mo(g);
