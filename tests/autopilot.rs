@@ -68,7 +68,8 @@ fn the_autopilot_rides_a_lift_down_by_the_switch_on_it() {
 
 #[test]
 fn the_autopilot_fetches_a_radiation_suit_before_a_long_wade_through_nukage() {
-    let suit = sightline::play::pickups::power_slot(sightline::actors::Power::IronFeet);
+    // Doom's power order (`powertype_t`), which the player read out keeps.
+    let suit = sightline::sim::user::pw::IRONFEET;
     let mut suited_in_pool = false;
     let play = finish("suit", |play| {
         let p = play.game.player();

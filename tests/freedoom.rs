@@ -10,26 +10,25 @@
 use std::path::{Path, PathBuf};
 
 use glam::DVec2;
-use sightline::actors::ActorFlag;
-use sightline::actors::KeyForm;
+use sightline::autopilot::observe::Observe;
 use sightline::bsp::check::check_invariants;
 use sightline::bsp::{build, BuildOptions, SplitterKind};
 use sightline::geom::{exact_side, Side};
 use sightline::level::open_level;
-use sightline::map::special::KeyColour;
 use sightline::map::validate::validate;
 use sightline::map::{Action, Activation};
-use sightline::play::actors::movement::Ground;
-use sightline::play::blockmap::{Blockmap, LineQuery};
 use sightline::play::events::Event;
-use sightline::play::player::Key;
 use sightline::play::world::SpecialLine;
-use sightline::play::{Game, GameOptions, TickInput};
+use sightline::play::{GameOptions, TickInput};
 use sightline::render::{render_frame, Frame, RenderOptions, Renderer, View};
+use sightline::sim::game::SimGame;
+use sightline::sim::mobj::mf;
+use sightline::sim::MobjId;
 use sightline::tour::tour;
 use sightline::wad::import::{convert, write_art, Art};
 use sightline::wad::{wad_bytes, Wad};
 use sightline::Framebuffer;
+use sightline_tests::sim_play::{player_mo, pos as body_pos, present, sees, set_health, try_teleport, wake_all};
 use sightline_tests::{
     assert_agree, assert_agree_on_two_sided_lines, freedoom_wads, points_on_two_sided_lines, random_inputs,
 };
@@ -114,72 +113,84 @@ fn render_tour(level: &sightline::level::Level, path: &Path) {
     }
 }
 
-/// The player and every actor in the map, everything finite.
-fn check_state(game: &Game, path: &Path, at: &str) {
-    let p = game.player();
-    let map = &game.level().map;
-    assert!(p.pos.is_finite() && p.z.is_finite(), "{} {at}: the player is at {:?} z {}", path.display(), p.pos, p.z);
-    assert!(map.contains(p.pos), "{} {at}: the player left the map at {}", path.display(), p.pos);
-    for (i, s) in map.sectors.iter().enumerate() {
-        assert!(s.floor.is_finite() && s.ceiling.is_finite(), "{} {at}: sector {i} heights {s:?}", path.display());
-    }
-    for (i, a) in game.actors().list.iter().enumerate().filter(|(_, a)| !a.removed) {
-        let finite = a.pos.is_finite() && a.z.is_finite() && a.vel.is_finite() && a.angle.is_finite();
-        let name = &game.actors().table.actors[a.kind].name;
-        assert!(finite, "{} {at}: actor {i} ({name}) at {} z {} momentum {}", path.display(), a.pos, a.z, a.vel);
-    }
+/// The player is in the map (where point location answers).
+fn check_state(game: &SimGame, path: &Path, at: &str) {
+    let p = Observe::player(game).pos;
+    let level = Observe::level(game);
+    assert!(level.map.contains(p), "{} {at}: the player left the map at {p}", path.display());
+    assert!(level.compiled.locate(p).is_some(), "{} {at}: no sector at the player's {p}", path.display());
 }
 
-/// Every actor that has moved from where it appeared (a map may place a
+/// Whether a square of half-width `r` round `c` straddles the segment
+/// `a`-`b` (Doom's `PIT_CheckLine`: the boxes overlap and the line has
+/// corners of the square strictly on both sides).
+fn box_crosses(c: DVec2, r: f64, a: DVec2, b: DVec2) -> bool {
+    if a.x.max(b.x) <= c.x - r || a.x.min(b.x) >= c.x + r || a.y.max(b.y) <= c.y - r || a.y.min(b.y) >= c.y + r {
+        return false;
+    }
+    let side = |p: DVec2| (b - a).perp_dot(p - a);
+    let corners = [(-r, -r), (-r, r), (r, -r), (r, r)].map(|(dx, dy)| side(c + DVec2::new(dx, dy)));
+    corners.iter().any(|&s| s > 0.0) && corners.iter().any(|&s| s < 0.0)
+}
+
+/// Every body that has moved from where it appeared (a map may place a
 /// thing outside or in a wall; play must never put one there) and that
-/// takes part in movement (effects such as puffs and the arch-vile's fire
-/// are put where Doom puts them, which may be in a wall) is inside the
-/// map, and a solid one's box crosses no one-sided wall.
-fn check_walls(game: &Game, ground: &Ground, query: &mut LineQuery, start: &[(DVec2, bool)], path: &Path, at: &str) {
-    let table = &game.actors().table;
+/// takes part in movement (not `MF_NOBLOCKMAP`: effects such as puffs and
+/// the arch-vile's fire are put where Doom puts them, which may be in a
+/// wall) is inside the map, and a solid one's box crosses no one-sided
+/// wall.
+fn check_walls(game: &SimGame, start: &[(DVec2, bool)], path: &Path, at: &str) {
+    let sim = &game.sim;
+    let table = &sim.info.table;
+    let map = &Observe::level(game).compiled.map;
     // A thing the map put outside (E3M7 has a cacodemon in the void) and
     // what it fires stay where they are, as in Doom.
-    let outside = |k: usize| start.get(k).is_some_and(|&(_, inside)| !inside);
-    for (i, a) in game.actors().list.iter().enumerate() {
-        let moved = start.get(i).is_none_or(|&(s, _)| s != a.pos);
-        let from_outside = match a.source {
-            sightline::play::actors::Target::Actor(k) => outside(k as usize),
-            _ => false,
-        };
-        if a.removed || !moved || a.flags.has(ActorFlag::NoBlockmap) || outside(i) || from_outside {
+    let outside = |id: MobjId| start.get(id.0 as usize).is_some_and(|&(_, inside)| !inside);
+    for id in sim.live_mobjs() {
+        let m = sim.mo(id);
+        let p = body_pos(game, id);
+        let moved = start.get(id.0 as usize).is_none_or(|&(s, _)| s != p);
+        let from_outside = m.has(mf::MISSILE) && m.target.is_some_and(outside);
+        if !present(game, id) || !moved || m.has(mf::NOBLOCKMAP) || outside(id) || from_outside {
             continue;
         }
-        let def = &table.actors[a.kind];
-        let inside = game.level().compiled.locate(a.pos).is_some();
-        assert!(inside, "{} {at}: actor {i} ({}) left the map at {}", path.display(), def.name, a.pos);
+        let name = &table.actors[m.kind].name;
+        let inside = Observe::level(game).compiled.locate(p).is_some();
+        assert!(inside, "{} {at}: body {} ({name}) left the map at {p}", path.display(), id.0);
         // A body still falling in its death frames may be where it was
         // killed: a pain elemental's soul spawned into a wall dies there
         // at once (Doom's A_PainShootSkull), solid until it falls.
-        if !a.flags.has(ActorFlag::Solid) || a.health <= 0 {
+        if !m.has(mf::SOLID) || m.health <= 0 {
             continue;
         }
-        if let Err(line) = ground.opening(query, a.pos, def.radius, true) {
-            panic!("{} {at}: actor {i} ({}) at {} is in wall {line}", path.display(), def.name, a.pos);
+        for (i, line) in map.lines.iter().enumerate().filter(|(_, l)| l.back.is_none()) {
+            let (a, b) = map.line_points(line);
+            assert!(
+                !box_crosses(p, m.radius.to_f64(), a, b),
+                "{} {at}: body {} ({name}) at {p} is in wall {i}",
+                path.display(),
+                id.0
+            );
         }
     }
 }
 
-/// Plays the map on skill 4: every use special (door, switch; every key
-/// held, exits left out) is used from in front of its line, and must start
-/// something or find its sectors already at work; then, with everything it
-/// set going still running and every monster awake, 2,000 ticks of seeded
-/// play, firing in bursts, by a player too tough to die. At every tick the
-/// player is in the map and everything is finite; every 50 ticks every
-/// actor that moved is in the map and out of the walls (`check_walls`).
-/// Returns the number of lines used.
+/// Plays the map on skill 4 on the simulation: every use special (door,
+/// switch; every key held, exits left out) is used from in front of its
+/// line, and must start something or find its sectors already at work;
+/// then, with everything it set going still running and every monster
+/// awake, 2,000 tics of seeded play, firing in bursts, by a player too
+/// tough to die. At every tic the player is in the map; every 50 tics
+/// every body that moved is in the map and out of the walls
+/// (`check_walls`). Returns the number of lines used.
 fn play(level: sightline::level::Level, path: &Path) -> usize {
     let map = level.map.clone();
-    let options = GameOptions { skill: 4, ..GameOptions::default() };
-    let mut game = Game::with_options(level, options).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    game.player_mut().keys = KeyColour::ALL
-        .iter()
-        .flat_map(|&colour| [KeyForm::Card, KeyForm::Skull].map(|form| Key { colour, form }))
-        .collect();
+    let options = GameOptions { skill: 4, sim: true, ..GameOptions::default() };
+    let label = path.display().to_string();
+    let mut game = SimGame::on_level(level, &label, options).unwrap_or_else(|e| panic!("{label}: {e}"));
+    game.sim.players[0].as_mut().expect("a player").cards = [true; sightline::sim::NUMCARDS];
+    // A new player starts with use held (G_PlayerReborn's usedown): let go.
+    game.tick(&TickInput::default());
     let mut used = 0;
     for (i, line) in map.lines.iter().enumerate() {
         let Some(special) = &line.special else { continue };
@@ -197,14 +208,14 @@ fn play(level: sightline::level::Level, path: &Path) -> usize {
             continue;
         };
         let angle = (-normal).y.atan2((-normal).x).to_degrees();
-        if game.teleport(pos, angle).is_err() {
+        if !try_teleport(&mut game, pos, angle) {
             continue;
         }
         let targets: Vec<usize> = match special.tag {
             0 => line.back.iter().map(|b| b.sector).collect(),
             tag => map.sectors_tagged(tag).collect(),
         };
-        let busy = targets.iter().all(|&s| game.world().is_busy(s));
+        let busy = targets.iter().all(|&s| game.is_busy(s));
         game.tick(&TickInput { use_line: true, ..Default::default() });
         let started = game.events().contains(&Event::Special { line: SpecialLine::Wall(i), started: true });
         assert!(
@@ -218,21 +229,22 @@ fn play(level: sightline::level::Level, path: &Path) -> usize {
         used += 1;
     }
     let start = map.player_start();
-    game.teleport(start.pos, start.angle).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    game.player_mut().health = 1_000_000;
-    game.wake_monsters();
-    let compiled = &game.level().compiled;
-    let spawned: Vec<(DVec2, bool)> =
-        game.actors().list.iter().map(|a| (a.pos, compiled.locate(a.pos).is_some())).collect();
-    let blockmap = Blockmap::new(&game.level().compiled.map);
-    let mut query = LineQuery::default();
+    assert!(try_teleport(&mut game, start.pos, start.angle), "{}: the start is taken", path.display());
+    set_health(&mut game, 1_000_000);
+    wake_all(&mut game);
+    let compiled = &Observe::level(&game).compiled;
+    let spawned: Vec<(DVec2, bool)> = (0..game.sim.mobjs.len() as u32)
+        .map(|k| {
+            let p = body_pos(&game, MobjId(k));
+            (p, compiled.locate(p).is_some())
+        })
+        .collect();
     for (tick, input) in random_inputs(7, 2_000).iter().enumerate() {
         let fire = (tick / 35) % 3 == 0;
         game.tick(&TickInput { fire, ..*input });
-        check_state(&game, path, &format!("random play, tick {tick}"));
+        check_state(&game, path, &format!("random play, tic {tick}"));
         if tick % 50 == 49 {
-            let ground = Ground { compiled: &game.level().compiled, blockmap: &blockmap };
-            check_walls(&game, &ground, &mut query, &spawned, path, &format!("random play, tick {tick}"));
+            check_walls(&game, &spawned, path, &format!("random play, tic {tick}"));
         }
         if game.exit().is_some() {
             break;
@@ -389,28 +401,38 @@ fn map10_poses_and_play_on_two_sided_lines() {
     let map = level.map.clone();
     let points = points_on_two_sided_lines(&map);
     assert!(points.len() > 100, "MAP10: only {} points on two-sided lines", points.len());
-    let mut game = Game::new(level).unwrap_or_else(|e| panic!("{e}"));
-    let in_map = |game: &Game, at: &str| {
-        let p = game.player().pos;
+    let options = GameOptions { sim: true, ..GameOptions::default() };
+    let mut game = SimGame::on_level(level, "MAP10", options).unwrap_or_else(|e| panic!("{e}"));
+    let in_map = |game: &SimGame, at: &str| {
+        let p = Observe::player(game).pos;
         assert!(
-            map.contains(p) && game.level().locate(p).is_some(),
+            map.contains(p) && Observe::level(game).locate(p).is_some(),
             "MAP10 {at}: ({:?}, {:?}) not in the map",
             p.x,
             p.y
         );
     };
+    let (mut tried, mut stood) = (0, 0);
     for (k, (what, p, directions)) in points.iter().enumerate().step_by(7) {
-        game.teleport(*p, directions[0]).unwrap_or_else(|e| panic!("MAP10 {what}: {e}"));
+        // Doom's player is a box 32 wide: on a line near a wall it does
+        // not fit, and is not put there.
+        tried += 1;
+        if !try_teleport(&mut game, *p, directions[0]) {
+            continue;
+        }
+        stood += 1;
         for (tick, input) in random_inputs(k as u64, 35).iter().enumerate() {
             game.tick(input);
-            in_map(&game, &format!("{what}, tick {tick} after teleporting there"));
+            in_map(&game, &format!("{what}, tic {tick} after teleporting there"));
         }
     }
-    game.teleport(map.player_start().pos, map.player_start().angle).unwrap();
+    eprintln!("MAP10: the player stood on {stood} of {tried} points on two-sided lines");
+    assert!(stood * 2 > tried, "MAP10: the player stood on only {stood} of {tried} points on two-sided lines");
+    assert!(try_teleport(&mut game, map.player_start().pos, map.player_start().angle));
     for seed in 0..4 {
         for (tick, input) in random_inputs(seed, 20_000).iter().enumerate() {
             game.tick(input);
-            in_map(&game, &format!("random play seed {seed}, tick {tick}"));
+            in_map(&game, &format!("random play seed {seed}, tic {tick}"));
         }
     }
 }
@@ -428,8 +450,9 @@ fn freedoom1_plays_from_the_wad_through_exits_and_intermissions() {
     use sightline::play::{Exit, GameOptions};
 
     let wad = wad_path("freedoom1.wad");
-    let mut play = Playthrough::of(&MapRef::parse(wad.to_str().unwrap(), None), GameOptions::default())
-        .unwrap_or_else(|e| panic!("{e}"));
+    let options = GameOptions { sim: true, ..GameOptions::default() };
+    let mut play =
+        Playthrough::of(&MapRef::parse(wad.to_str().unwrap(), None), options).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(play.map.short_name(), "E1M1");
     let press = TickInput { use_line: true, ..Default::default() };
     for (exit, next) in [(Exit::Normal, "E1M2"), (Exit::Normal, "E1M3"), (Exit::Secret, "E1M9"), (Exit::Normal, "E1M4")]
@@ -446,16 +469,17 @@ fn freedoom1_plays_from_the_wad_through_exits_and_intermissions() {
         let (a, b) = map.line_points(line);
         let d = (b - a).normalize();
         let normal = DVec2::new(d.y, -d.x);
-        let pos = [20.0, 8.0, 2.0]
+        // In front, as near as the player's box fits (Doom's use range is
+        // 64; the switch's own sector may be too shallow for the box).
+        let angle = (-normal).y.atan2((-normal).x).to_degrees();
+        let stood = [20.0, 24.0, 32.0, 40.0, 48.0]
             .into_iter()
             .map(|k| (a + b) / 2.0 + normal * k)
-            .find(|&p| map.sector_strictly_containing(p) == Some(line.front.sector))
-            .unwrap_or_else(|| panic!("no room in front of line {i}"));
-        play.game
-            .float_mut()
-            .expect("the f64 game")
-            .teleport(pos, (-normal).y.atan2((-normal).x).to_degrees())
-            .unwrap();
+            .any(|p| try_teleport(game_mut(&mut play), p, angle));
+        assert!(stood, "{}: no room in front of line {i} ({a} to {b})", play.map.short_name());
+        // Use must be let go first: a new player starts with it held
+        // (G_PlayerReborn's usedown, "don't do anything immediately").
+        play.tick(&TickInput::default()).unwrap();
         play.tick(&press).unwrap();
         let Phase::Intermission { exit: ended, next: Some(ref to), ref stats, .. } = play.phase else {
             panic!("{}: using line {i} did not end the level: {:?}", play.map.short_name(), play.phase)
@@ -511,6 +535,23 @@ fn a_pwad_plays_on_its_iwad_without_importing() {
     assert!(err.to_string().contains("mymap.wad") && err.to_string().contains("PLAYPAL"), "{err}");
 }
 
+/// The game of a playthrough on the simulation.
+fn game(play: &sightline::play::playthrough::Playthrough) -> &SimGame {
+    play.game.sim().expect("the game on the simulation")
+}
+
+fn game_mut(play: &mut sightline::play::playthrough::Playthrough) -> &mut SimGame {
+    play.game.sim_mut().expect("the game on the simulation")
+}
+
+/// The player's eye as the simulation has it now (between tics, just
+/// after a teleport: `SimGame::view` is read at the end of a tic).
+fn eye_of(game: &SimGame) -> View {
+    let m = game.sim.mo(player_mo(game));
+    let viewz = game.sim.players[game.sim.console].as_ref().expect("a player").viewz;
+    View::new(DVec2::new(m.x.to_f64(), m.y.to_f64()), viewz.to_f64(), m.angle.to_degrees())
+}
+
 /// E1M1's monsters as a game draws them: a zombieman seen from eight sides
 /// shows eight different views (Doom's rotations, the mirrored ones
 /// included), the BSP renderer agrees with the reference in `ids` shading
@@ -521,24 +562,21 @@ fn a_pwad_plays_on_its_iwad_without_importing() {
 fn e1m1_monsters_are_drawn_from_every_side() {
     use sightline::campaign::MapRef;
     use sightline::play::playthrough::Playthrough;
-    use sightline::play::GameOptions;
 
     let wad = wad_path("freedoom1.wad");
     let map = format!("{}:E1M1", wad.display());
-    let mut play =
-        Playthrough::of(&MapRef::parse(&map, None), GameOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+    let options = GameOptions { sim: true, ..GameOptions::default() };
+    let mut play = Playthrough::of(&MapRef::parse(&map, None), options).unwrap_or_else(|e| panic!("{e}"));
     play.tick(&TickInput::default()).unwrap();
-    let level = play.game.level();
-    let (zombie, pos) = {
-        let map = &level.compiled.map;
-        let i = map
-            .things
-            .iter()
-            .position(|t| t.kind == "zombieman" && t.in_single_player(3))
-            .expect("E1M1 has a zombieman");
-        (i, map.things[i].pos)
-    };
-    let drawn = *level.things.iter().find(|t| t.key == zombie).expect("the zombieman is drawn");
+    let game = play.game.sim().expect("the game on the simulation");
+    // The first zombieman spawned (bodies are drawn keyed by their index).
+    let zombie = game
+        .sim
+        .live_mobjs()
+        .find(|&id| game.sim.info.table.actors[game.sim.mo(id).kind].name == "zombieman")
+        .expect("E1M1 has a zombieman");
+    let pos = body_pos(game, zombie);
+    let drawn = *play.game.level().things.iter().find(|t| t.key == zombie.0 as usize).expect("the zombieman is drawn");
     let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("e1m1-rotations");
     std::fs::create_dir_all(&out).unwrap();
     let mut seen = Vec::new();
@@ -549,8 +587,10 @@ fn e1m1_monsters_are_drawn_from_every_side() {
         let (s, c) = from.to_radians().sin_cos();
         let eye = pos + DVec2::new(c, s) * 96.0;
         seen.push(drawn.texture_seen_from(eye));
-        let Ok(()) = play.game.float_mut().expect("the f64 game").teleport(eye, from + 180.0) else { continue };
-        let view = play.game.view(1.0);
+        if !try_teleport(play.game.sim_mut().expect("the game on the simulation"), eye, from + 180.0) {
+            continue;
+        }
+        let view = eye_of(play.game.sim().expect("the game on the simulation"));
         let level = play.game.level();
         assert_agree(level, &view, (160, 100), &format!("E1M1 zombieman from side {}", k + 1));
         let mut fb = Framebuffer::new(320, 200);
@@ -575,25 +615,25 @@ fn frames_full_of_actors_agree_with_the_reference() {
     let (mut hanging, mut rotations) = (0, std::collections::BTreeSet::new());
     for name in ["E1M1", "E3M9"] {
         let map = format!("{}:{name}", wad.display());
-        let options = GameOptions { skill: 4, ..GameOptions::default() };
+        let options = GameOptions { skill: 4, sim: true, ..GameOptions::default() };
         let mut play = Playthrough::of(&MapRef::parse(&map, None), options).unwrap_or_else(|e| panic!("{e}"));
-        play.game.player_mut().health = 1_000_000;
-        play.game.float_mut().expect("the f64 game").wake_monsters();
+        let game = play.game.sim_mut().expect("the game on the simulation");
+        set_health(game, 1_000_000);
+        wake_all(game);
         for _ in 0..70 {
             play.tick(&TickInput::default()).unwrap();
         }
-        let table = play.game.float().expect("the f64 game").actors().table.clone();
+        let game = play.game.sim().expect("the game on the simulation");
+        let drawn: std::collections::BTreeSet<usize> = play.game.level().things.iter().map(|t| t.key).collect();
         let mut targets = Vec::new();
         let mut monsters = 0;
-        for a in
-            play.game.float().expect("the f64 game").actors().list.iter().filter(|a| !a.removed && a.views.is_some())
-        {
-            let def = &table.actors[a.kind];
-            if def.has(ActorFlag::SpawnCeiling) {
-                targets.push((a.key, 2));
+        for id in game.sim.live_mobjs().filter(|id| drawn.contains(&(id.0 as usize))) {
+            let m = game.sim.mo(id);
+            if m.has(mf::SPAWNCEILING) {
+                targets.push((id.0 as usize, 2));
                 hanging += 1;
-            } else if def.has(ActorFlag::CountKill) && a.health > 0 && monsters < 8 {
-                targets.push((a.key, 8));
+            } else if m.has(mf::COUNTKILL) && m.health > 0 && monsters < 8 {
+                targets.push((id.0 as usize, 8));
                 monsters += 1;
             }
         }
@@ -603,10 +643,10 @@ fn frames_full_of_actors_agree_with_the_reference() {
                 let from = drawn.angle + 360.0 / sides as f64 * k as f64;
                 let (s, c) = from.to_radians().sin_cos();
                 let eye = drawn.pos + DVec2::new(c, s) * 128.0;
-                if play.game.float_mut().expect("the f64 game").teleport(eye, from + 180.0).is_err() {
+                if !try_teleport(play.game.sim_mut().expect("the game on the simulation"), eye, from + 180.0) {
                     continue;
                 }
-                let view = play.game.view(1.0);
+                let view = eye_of(play.game.sim().expect("the game on the simulation"));
                 rotations.insert(drawn.texture_seen_from(view.pos).0);
                 assert_agree(play.game.level(), &view, (160, 100), &format!("{name} thing {key} from {from:.0}"));
                 if sides == 2 && k == 0 {
@@ -626,7 +666,7 @@ fn frames_full_of_actors_agree_with_the_reference() {
 
 /// E1M1 on skill 3 is a game that can be won: every monster can be
 /// fought and killed with the weapons found, and the exit switch ends the
-/// level. A scripted fighter (not a person, and it moves by teleporting)
+/// level, on the simulation. A scripted fighter (not a person, and it moves by teleporting)
 /// stands 128 to 320 units from each monster in turn, at the first spot
 /// it can stand on round it from which it sees it, faces it and fires
 /// (the shotgun, picked up first with the green armour), backing off from what comes near,
@@ -641,29 +681,26 @@ fn e1m1_can_be_fought_through_to_its_exit_on_skill_3() {
 
     let wad = wad_path("freedoom1.wad");
     let map = MapRef::parse(&format!("{}:E1M1", wad.display()), None);
-    let mut play = Playthrough::of(&map, GameOptions::default()).unwrap_or_else(|e| panic!("{e}"));
-    let table = play.game.float().expect("the f64 game").actors().table.clone();
+    let options = GameOptions { sim: true, ..GameOptions::default() };
+    let mut play = Playthrough::of(&map, options).unwrap_or_else(|e| panic!("{e}"));
+    let table = game(&play).sim.info.table.clone();
+    let name = |play: &Playthrough, id: MobjId| table.actors[game(play).sim.mo(id).kind].name.clone();
     let idle = TickInput::default();
     let total = play.game.stats().kills.1;
     assert!(total > 0, "E1M1 has monsters on skill 3");
-    let mut scratch = sightline::play::sight::Scratch::default();
-    use sightline::play::sight::{sight, Body};
     let mut healed = 0;
-    let heal = |game: &mut Game, to: i32| {
-        let p = game.player_mut();
-        let more = (to - p.health).max(0);
-        p.health += more;
+    let heal = |play: &mut Playthrough, to: i32| {
+        let game = game_mut(play);
+        let health = game.sim.players[0].as_ref().expect("a player").health;
+        let more = (to - health).max(0);
+        set_health(game, health + more);
         more
     };
+    let bodies = |play: &Playthrough| game(play).sim.live_mobjs().collect::<Vec<_>>();
     // The health the map holds (what a person would pick up).
-    let supply: i32 = play
-        .game
-        .float()
-        .expect("the f64 game")
-        .actors()
-        .list
-        .iter()
-        .filter_map(|a| match table.actors[a.kind].name.as_str() {
+    let supply: i32 = bodies(&play)
+        .into_iter()
+        .filter_map(|id| match name(&play, id).as_str() {
             "stimpack" => Some(10),
             "medikit" => Some(25),
             "health_bonus" => Some(1),
@@ -671,89 +708,86 @@ fn e1m1_can_be_fought_through_to_its_exit_on_skill_3() {
             _ => None,
         })
         .sum();
+    // Doom picks up in a move only (P_TryMove): put beside an item, the
+    // fighter walks onto it.
+    let fetch = |play: &mut Playthrough, id: MobjId| {
+        let at = body_pos(game(play), id);
+        for k in 0..8 {
+            let from = 45.0 * k as f64;
+            let (s, c) = from.to_radians().sin_cos();
+            if try_teleport(game_mut(play), at + DVec2::new(c, s) * 40.0, from + 180.0) {
+                for _ in 0..20 {
+                    if !present(game(play), id) {
+                        break;
+                    }
+                    play.tick(&TickInput { forward: 1, ..TickInput::default() }).unwrap();
+                }
+                return;
+            }
+        }
+    };
     // The shotgun and the armour first, where they lie.
     for want in ["shotgun", "green_armor"] {
-        let item = play
-            .game
-            .float()
-            .expect("the f64 game")
-            .actors()
-            .list
-            .iter()
-            .find(|a| !a.removed && table.actors[a.kind].name == want);
-        if let Some(pos) = item.map(|a| a.pos) {
-            play.game.float_mut().expect("the f64 game").teleport(pos, 0.0).unwrap();
-            play.tick(&idle).unwrap();
+        if let Some(id) = bodies(&play).into_iter().find(|&id| name(&play, id) == want) {
+            fetch(&mut play, id);
+            assert!(!present(game(&play), id), "the {want} was not picked up");
         }
     }
     for round in 0..3 {
         // Nearest first, from where the fighter stands.
         let here = play.game.player().pos;
-        let mut targets: Vec<usize> = (0..play.game.float().expect("the f64 game").actors().list.len())
-            .filter(|&i| {
-                let a = &play.game.float().expect("the f64 game").actors().list[i];
-                !a.removed && a.health > 0 && table.actors[a.kind].has(ActorFlag::CountKill)
-            })
-            .collect();
+        let alive = |play: &Playthrough, id: MobjId| {
+            let m = game(play).sim.mo(id);
+            present(game(play), id) && m.health > 0 && m.has(mf::COUNTKILL)
+        };
+        let mut targets: Vec<MobjId> = bodies(&play).into_iter().filter(|&id| alive(&play, id)).collect();
         targets.sort_by(|&i, &j| {
-            let d = |k: usize| play.game.float().expect("the f64 game").actors().list[k].pos.distance(here);
+            let d = |k: MobjId| body_pos(game(&play), k).distance(here);
             d(i).total_cmp(&d(j))
         });
         for i in targets {
             // Between fights, healed to 100: a person takes cover and the
             // map's health; the fighter stands in the open and does neither.
-            healed += heal(play.game.float_mut().expect("the f64 game"), 100);
+            healed += heal(&mut play, 100);
             // Low on ammunition: the nearest box or clip that lies about.
             let ammo = play.game.player().ammo;
             if ammo[1] < 4 && ammo[0] < 20 {
                 let here = play.game.player().pos;
                 let kinds = ["box_of_shells", "shotgun_shells", "box_of_bullets", "clip"];
-                let item = play
-                    .game
-                    .float()
-                    .expect("the f64 game")
-                    .actors()
-                    .list
-                    .iter()
-                    .filter(|a| !a.removed && kinds.contains(&table.actors[a.kind].name.as_str()))
-                    .map(|a| a.pos)
-                    .min_by(|p, q| p.distance(here).total_cmp(&q.distance(here)));
-                if let Some(pos) =
-                    item.filter(|&p| play.game.float_mut().expect("the f64 game").teleport(p, 0.0).is_ok())
-                {
-                    let _ = pos;
-                    play.tick(&idle).unwrap();
+                let item = bodies(&play)
+                    .into_iter()
+                    .filter(|&id| present(game(&play), id) && kinds.contains(&name(&play, id).as_str()))
+                    .min_by(|&p, &q| {
+                        body_pos(game(&play), p).distance(here).total_cmp(&body_pos(game(&play), q).distance(here))
+                    });
+                if let Some(id) = item {
+                    fetch(&mut play, id);
                 }
             }
             // At most 20 s on one monster (a person gives up on one it cannot hit, for now).
             let began = play.game.ticks();
             'spots: for distance in [320.0, 224.0, 128.0] {
                 for k in 0..16 {
-                    let a = &play.game.float().expect("the f64 game").actors().list[i];
-                    if a.health <= 0 || play.game.ticks() > began + 700 {
+                    if !alive(&play, i) || play.game.ticks() > began + 700 {
                         break 'spots;
                     }
                     let from = 22.5 * k as f64;
                     let (s, c) = from.to_radians().sin_cos();
-                    let eye = a.pos + DVec2::new(c, s) * distance;
-                    if play.game.float_mut().expect("the f64 game").teleport(eye, from + 180.0).is_err() {
+                    let eye = body_pos(game(&play), i) + DVec2::new(c, s) * distance;
+                    if !try_teleport(game_mut(&mut play), eye, from + 180.0) {
                         continue;
                     }
                     // Only where it can see the monster.
-                    let (me, it) = (play.game.player(), &play.game.float().expect("the f64 game").actors().list[i]);
-                    let looker = Body { pos: me.pos, z: me.z, height: 56.0, radius: 16.0, index: usize::MAX };
-                    let def = &table.actors[it.kind];
-                    let target = Body { pos: it.pos, z: it.z, height: def.height, radius: def.radius, index: i };
-                    if !sight(&play.game.level().compiled, &mut scratch, &looker, &target) {
+                    let me = player_mo(game(&play));
+                    if !sees(game_mut(&mut play), me, i) {
                         continue;
                     }
                     for _ in 0..35 * 3 {
-                        let a = &play.game.float().expect("the f64 game").actors().list[i];
-                        if a.health <= 0 {
+                        if !alive(&play, i) {
                             break 'spots;
                         }
                         // Keep facing it as it moves.
-                        let d = a.pos - play.game.player().pos;
+                        let d = body_pos(game(&play), i) - play.game.player().pos;
                         let turn = (d.y.atan2(d.x).to_degrees() - play.game.player().angle + 540.0) % 360.0 - 180.0;
                         let weapon = if play.game.player().ammo[1] > 0 { 3 } else { 0 };
                         // Back off from what comes close, as a person would.
@@ -763,12 +797,13 @@ fn e1m1_can_be_fought_through_to_its_exit_on_skill_3() {
                         let input = TickInput { fire: true, turn: turn as f32, weapon, forward, strafe, ..idle };
                         play.tick(&input).unwrap();
                         if play.game.player().health < 30 {
-                            healed += heal(play.game.float_mut().expect("the f64 game"), 100);
+                            healed += heal(&mut play, 100);
                         }
                         assert!(
                             !play.game.player().dead(),
-                            "round {round}: the fighter died facing actor {i} ({}), kills {:?}, tick {}",
-                            table.actors[play.game.float().expect("the f64 game").actors().list[i].kind].name,
+                            "round {round}: the fighter died facing body {} ({}), kills {:?}, tic {}",
+                            i.0,
+                            name(&play, i),
                             play.game.stats().kills,
                             play.game.ticks()
                         );
@@ -778,15 +813,13 @@ fn e1m1_can_be_fought_through_to_its_exit_on_skill_3() {
         }
     }
     let kills = play.game.stats().kills;
-    let left: Vec<String> = play
-        .game
-        .float()
-        .expect("the f64 game")
-        .actors()
-        .list
-        .iter()
-        .filter(|a| a.health > 0 && table.actors[a.kind].has(ActorFlag::CountKill))
-        .map(|a| format!("{} at {} (sector {}, target {:?})", table.actors[a.kind].name, a.pos, a.sector, a.target))
+    let left: Vec<String> = bodies(&play)
+        .into_iter()
+        .filter(|&id| game(&play).sim.mo(id).health > 0 && game(&play).sim.mo(id).has(mf::COUNTKILL))
+        .map(|id| {
+            let m = game(&play).sim.mo(id);
+            format!("{} at {} (target {:?})", name(&play, id), body_pos(game(&play), id), m.target)
+        })
         .collect();
     assert_eq!(kills.0, kills.1, "monsters left alive: {left:?}");
     // The exit switch, used from in front.
@@ -801,11 +834,7 @@ fn e1m1_can_be_fought_through_to_its_exit_on_skill_3() {
     let d = (b - a).normalize();
     let normal = DVec2::new(d.y, -d.x);
     let angle = (-normal).y.atan2((-normal).x).to_degrees();
-    play.game
-        .float_mut()
-        .expect("the f64 game")
-        .teleport((a + b) / 2.0 + normal * 20.0, angle)
-        .unwrap_or_else(|e| panic!("line {i}: {e}"));
+    assert!(try_teleport(game_mut(&mut play), (a + b) / 2.0 + normal * 20.0, angle), "line {i}: no room in front");
     play.tick(&TickInput { use_line: true, ..idle }).unwrap();
     assert_eq!(play.game.exit(), Some(sightline::play::Exit::Normal), "the exit switch did not end the level");
     eprintln!(

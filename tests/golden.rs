@@ -54,18 +54,20 @@ fn frames_match_golden_images() {
     assert!(failures.is_empty(), "golden frames changed:\n{}", failures.join("\n"));
 }
 
-/// A frame of play with no Freedoom: `tests/maps/monsters.ron` with its
-/// trooper in view (the procedural sprite), the procedural pistol raised and
+/// A frame of play on the simulation with no Freedoom:
+/// `tests/maps/monsters.ron` with its trooper in view (the procedural sprite), the procedural pistol raised and
 /// firing (its flash), and the status bar; then the minimal HUD with a
 /// pickup's gold tint. Compared as the frames above.
 #[test]
 fn play_frames_with_the_status_bar_and_a_weapon_match_golden_images() {
-    use sightline::play::{Game, TickInput};
+    use sightline::autopilot::observe::Observe;
+    use sightline::play::TickInput;
     use sightline::screen::{draw, Hud};
+    use sightline_tests::sim_play::{game, set_health, teleport};
     let bless = std::env::var_os("SIGHTLINE_BLESS").is_some();
-    let mut g = Game::new(load(&root().join("tests/maps/monsters.ron"))).unwrap();
-    g.player_mut().health = 1_000_000;
-    g.teleport(glam::DVec2::new(700.0, 256.0), 0.0).unwrap();
+    let mut g = game("monsters");
+    set_health(&mut g, 1_000_000);
+    teleport(&mut g, glam::DVec2::new(700.0, 256.0), 0.0);
     for _ in 0..20 {
         g.tick(&TickInput::default());
     }
@@ -76,13 +78,15 @@ fn play_frames_with_the_status_bar_and_a_weapon_match_golden_images() {
         for _ in 0..fire {
             g.tick(&TickInput { fire: true, ..TickInput::default() });
         }
+        // What is shown only: the next tic reads the player afresh.
         if hud == Hud::Minimal {
             g.player_mut().health = 75;
             g.player_mut().bonus_count = 6;
         }
-        g.player_mut().health = g.player().health.min(100);
-        let mut frame = render(g.level(), &g.view(1.0), SIZE, Renderer::Bsp, Shade::Textured);
-        draw(&mut frame, g.level(), g.player(), hud);
+        let shown = Observe::player(&g).health.min(100);
+        g.player_mut().health = shown;
+        let mut frame = render(Observe::level(&g), &g.view(1.0), SIZE, Renderer::Bsp, Shade::Textured);
+        draw(&mut frame, Observe::level(&g), Observe::player(&g), hud);
         frames.push((name, frame));
     }
     let dir = root().join("tests/images");
@@ -108,16 +112,20 @@ fn play_frames_with_the_status_bar_and_a_weapon_match_golden_images() {
 /// the pistol), the courtyard from its door (the slime pool, the lift, the
 /// sky; the shotgun), the hall from its door (the dais, the flickering
 /// light, monsters) and the exit yard (the scrolling chevrons, the exit
-/// building). Compared as the frames above; looked at when blessed.
+/// building). Played on the simulation; compared as the frames above;
+/// looked at when blessed.
 #[test]
 fn the_default_level_s_main_views_match_golden_images() {
-    use sightline::play::{Game, TickInput};
+    use sightline::autopilot::observe::Observe;
+    use sightline::play::{GameOptions, TickInput};
     use sightline::screen::{draw, Hud};
+    use sightline::sim::game::SimGame;
+    use sightline_tests::sim_play::{set_health, teleport};
     let bless = std::env::var_os("SIGHTLINE_BLESS").is_some();
     let level = load(&root().join("maps/outpost.ron"));
-    let mut g = Game::new(level).unwrap();
-    let table = g.actors().table.clone();
-    let shotgun = table.index("shotgun").unwrap();
+    let options = GameOptions { sim: true, ..Default::default() };
+    let mut g = SimGame::on_level(level, "outpost.ron", options).unwrap_or_else(|e| panic!("{e}"));
+    let shotgun = g.sim.info.table.index("shotgun").unwrap();
     let dir = root().join("tests/images");
     let views = [
         ("start", None),
@@ -127,20 +135,22 @@ fn the_default_level_s_main_views_match_golden_images() {
     ];
     for (k, (name, pose)) in views.into_iter().enumerate() {
         if let Some((x, y, angle)) = pose {
-            g.teleport(glam::DVec2::new(x, y), angle).unwrap();
+            teleport(&mut g, glam::DVec2::new(x, y), angle);
         }
         if k == 1 {
-            g.player_mut().weapons.push(shotgun);
-            g.player_mut().ammo[1] = 8;
+            // Doom's weapon 2 is the shotgun, its ammunition 1 shells.
+            let p = g.sim.players[0].as_mut().unwrap();
+            p.weaponowned[2] = true;
+            p.ammo[1] = 8;
             g.tick(&TickInput { weapon: 3, ..TickInput::default() });
         }
-        g.player_mut().health = 100;
         for _ in 0..40 {
+            set_health(&mut g, 100);
             g.tick(&TickInput::default());
-            g.player_mut().health = 100;
         }
-        let mut frame = render(g.level(), &g.view(1.0), SIZE, Renderer::Bsp, Shade::Textured);
-        draw(&mut frame, g.level(), g.player(), Hud::StatusBar);
+        assert!(k != 1 || Observe::player(&g).ready_weapon == Some(shotgun), "the shotgun is not up");
+        let mut frame = render(Observe::level(&g), &g.view(1.0), SIZE, Renderer::Bsp, Shade::Textured);
+        draw(&mut frame, Observe::level(&g), Observe::player(&g), Hud::StatusBar);
         let file = dir.join(format!("outpost-play-{k}-{name}.png"));
         if bless {
             std::fs::write(&file, frame.to_png()).unwrap();

@@ -14,6 +14,7 @@ use sightline::Framebuffer;
 
 pub mod chocolate;
 pub mod freedoom_wads;
+pub mod sim_play;
 
 /// The repository root.
 pub fn root() -> PathBuf {
@@ -270,7 +271,7 @@ pub struct SaveCheck {
     pub machinery: usize,
 }
 
-/// Plays `inputs` on `play`; at each tick in `save_at` (while a level is
+/// Plays `inputs` on `play` (a game on the simulation); at each tick in `save_at` (while a level is
 /// being played) saves the playthrough, loads the save into a new
 /// playthrough and plays the next `ahead` inputs on both, side by side:
 /// the loaded game must equal the original in its whole state after every
@@ -282,7 +283,6 @@ pub fn saves_continue_exactly(
     save_at: &[usize],
     ahead: usize,
 ) -> SaveCheck {
-    use sightline::play::actors::Target;
     use sightline::play::playthrough::{Phase, Played, Playthrough};
     let mut check = SaveCheck::default();
     let mut followers: Vec<(usize, Playthrough, usize)> = Vec::new();
@@ -294,28 +294,19 @@ pub fn saves_continue_exactly(
             assert!(loaded.game.state_bytes() == play.game.state_bytes(), "tick {i}: the loaded game differs at once");
             check.saves += 1;
             check.largest = check.largest.max(bytes.len());
-            let (fighting, machinery) = match &play.game {
-                Played::Float(game) => {
-                    let chasing =
-                        |a: &sightline::play::actors::Actor| !a.removed && a.health > 0 && a.target != Target::None;
-                    (game.actors().list.iter().any(chasing), !game.world().thinkers.is_empty())
-                }
-                Played::Sim(game) => {
-                    let sim = &game.sim;
-                    let chasing = |id: sightline::sim::MobjId| {
-                        let m = sim.mo(id);
-                        m.player.is_none() && m.health > 0 && m.target.is_some()
-                    };
-                    let moving = |t: &sightline::sim::Thinker| {
-                        t.status == sightline::sim::think::Status::Active
-                            && !matches!(
-                                t.kind,
-                                sightline::sim::ThinkerKind::Mobj(_) | sightline::sim::ThinkerKind::Light(_)
-                            )
-                    };
-                    (sim.live_mobjs().any(chasing), sim.thinkers.iter().any(moving))
-                }
+            let Played::Sim(game) = &play.game else {
+                panic!("saves_continue_exactly follows a game on the simulation (GameOptions {{ sim: true, .. }})")
             };
+            let sim = &game.sim;
+            let chasing = |id: sightline::sim::MobjId| {
+                let m = sim.mo(id);
+                m.player.is_none() && m.health > 0 && m.target.is_some()
+            };
+            let moving = |t: &sightline::sim::Thinker| {
+                t.status == sightline::sim::think::Status::Active
+                    && !matches!(t.kind, sightline::sim::ThinkerKind::Mobj(_) | sightline::sim::ThinkerKind::Light(_))
+            };
+            let (fighting, machinery) = (sim.live_mobjs().any(chasing), sim.thinkers.iter().any(moving));
             check.fighting += usize::from(fighting);
             check.machinery += usize::from(machinery);
             followers.push((i, loaded, ahead));
