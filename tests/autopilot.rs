@@ -121,7 +121,7 @@ fn the_autopilot_takes_a_teleporter() {
 
 /// Doom spawns no thing a single-player game leaves out, so a teleporter
 /// whose only destination is for multiplayer games teleports no one
-/// (freedoom2's MAP28); the bot must not count on it. In both games.
+/// (freedoom2's MAP28); the bot must not count on it.
 #[test]
 fn a_teleporter_to_a_multiplayer_only_destination_takes_no_one() {
     let text = std::fs::read_to_string(map_path("tests/maps/autopilot_teleporter.ron")).unwrap();
@@ -137,8 +137,8 @@ fn a_teleporter_to_a_multiplayer_only_destination_takes_no_one() {
     for art in ["textures", "sprites"] {
         std::os::unix::fs::symlink(map_path("tests/maps").join(art), dir.path().join(art)).unwrap();
     }
-    for sim in [false, true] {
-        let options = GameOptions { no_monsters: true, sim, ..GameOptions::default() };
+    {
+        let options = GameOptions { no_monsters: true, ..GameOptions::default() };
         let mut play = Playthrough::of(&MapRef::File(path.clone()), options).unwrap_or_else(|e| panic!("{e}"));
         let start = play.game.player().pos;
         let mut farthest = 0.0f64;
@@ -147,8 +147,8 @@ fn a_teleporter_to_a_multiplayer_only_destination_takes_no_one() {
             true
         })
         .unwrap_or_else(|e| panic!("{e}"));
-        assert_eq!(outcome.exit, None, "sim {sim}: exited through a teleporter with no destination");
-        assert!(farthest < 400.0, "sim {sim}: the player reached {farthest} units away\n{}", bot.log.join("\n"));
+        assert_eq!(outcome.exit, None, "exited through a teleporter with no destination");
+        assert!(farthest < 400.0, "the player reached {farthest} units away\n{}", bot.log.join("\n"));
     }
 }
 
@@ -257,17 +257,12 @@ fn the_autopilot_kills_the_boss_brain_from_a_rising_lift() {
     // up past 144 to 168 do (three: 250 health, about 80 a blast).
     let mut fired_from = Vec::new();
     let mut rockets = 0;
+    let named = |play: &Playthrough, name: &str| -> Vec<sightline::autopilot::observe::Seen> {
+        let table = play.game.table();
+        play.game.seen().iter().filter(|t| !t.removed && table.actors[t.kind].name == name).cloned().collect()
+    };
     let play = finish("brain", |play| {
-        let table = &play.game.float().expect("the f64 game").actors().table;
-        let now = play
-            .game
-            .float()
-            .expect("the f64 game")
-            .actors()
-            .list
-            .iter()
-            .filter(|a| !a.removed && table.actors[a.kind].name == "rocket_projectile")
-            .count();
+        let now = named(play, "rocket_projectile").len();
         if now > rockets {
             fired_from.push(play.game.player().z);
         }
@@ -275,14 +270,8 @@ fn the_autopilot_kills_the_boss_brain_from_a_rising_lift() {
     });
     assert!(fired_from.len() >= 3, "rockets fired from floors {fired_from:?}");
     assert!(fired_from.iter().all(|&z| z > 144.0 && z <= 168.0), "rockets fired from floors {fired_from:?}");
-    let brain = play
-        .game
-        .float()
-        .expect("the f64 game")
-        .actors()
-        .list
-        .iter()
-        .find(|a| play.game.float().expect("the f64 game").actors().table.actors[a.kind].name == "boss_brain");
+    let table = play.game.table();
+    let brain = play.game.seen().iter().find(|t| table.actors[t.kind].name == "boss_brain").cloned();
     assert!(brain.is_some_and(|b| b.health <= 0), "the brain lives");
 }
 
@@ -344,7 +333,7 @@ fn check_says_a_key_behind_its_own_door_is() {
 #[test]
 fn a_recorded_autopilot_run_with_monsters_replays_to_the_same_state() {
     let map = MapRef::File(map_path("maps/outpost.ron"));
-    let options = GameOptions { skill: 2, seed: 5, no_monsters: false, sim: false };
+    let options = GameOptions { skill: 2, seed: 5, no_monsters: false, sim: true };
     let mut play = Playthrough::of(&map, options).unwrap();
     let (outcome, _) = autopilot::run(&mut play, 35 * 40, |_, _| true).unwrap();
     assert!(play.game.stats().kills.0 > 0 || outcome.exit.is_some(), "no fight in 40 s: {outcome:?}");
@@ -371,11 +360,8 @@ fn the_autopilot_finishes_freedoom_e1m1_without_monsters() {
 /// at a time: the maps that exit within 20 minutes of game time, and a
 /// table of how each went (printed; `--nocapture` shows it). The issue's
 /// targets are 30 of freedoom1's 36 and 26 of freedoom2's 32; freedoom2's
-/// floor is what this (f64) game exits now: 24. Its 26 counted MAP28,
-/// exited through a teleporter whose only destination is multiplayer-only
-/// (Doom never spawns it in single player, and since 99c692a neither game
-/// teleports through it), and MAP20, which the bot's changes of that
-/// commit cost it.
+/// floor is what the bot exits on the simulation now: 24 (MAP07 needs the
+/// bosses killed, MAP28's teleporter has only a multiplayer destination).
 const FREEDOOM1_FLOOR: usize = 30;
 const FREEDOOM2_FLOOR: usize = 24;
 

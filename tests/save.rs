@@ -27,25 +27,12 @@ fn fighting(seed: u64, ticks: usize) -> Vec<TickInput> {
 }
 
 /// Plays `map` with an unkillable player firing as it wanders, saving every
-/// `every` ticks and following each save for `ahead` ticks; `sim`: on the
-/// simulation with Doom's arithmetic.
+/// `every` ticks and following each save for `ahead` ticks: the game's
+/// state in the save is `sim::save`'s, bit for bit.
 fn check_map(map: &MapRef, ticks: usize, every: usize, ahead: usize) -> sightline_tests::SaveCheck {
-    check_map_on(map, ticks, every, ahead, false)
-}
-
-fn check_map_on(map: &MapRef, ticks: usize, every: usize, ahead: usize, sim: bool) -> sightline_tests::SaveCheck {
-    let options = GameOptions { skill: 4, seed: 7, sim, ..Default::default() };
+    let options = GameOptions { skill: 4, seed: 7, ..Default::default() };
     let mut play = Playthrough::of(map, options).unwrap_or_else(|e| panic!("{e}"));
-    match play.game.sim_mut() {
-        Some(game) => {
-            let sim = &mut game.sim;
-            let player = sim.players[0].as_mut().expect("player 1");
-            player.health = 1_000_000;
-            let mo = player.mo;
-            sim.mo_mut(mo).health = 1_000_000;
-        }
-        None => play.game.set_health(1_000_000),
-    }
+    play.game.set_health(1_000_000);
     let inputs = fighting(11, ticks);
     let save_at: Vec<usize> = (every..ticks - ahead).step_by(every).collect();
     let check = saves_continue_exactly(&mut play, &inputs, &save_at, ahead);
@@ -70,18 +57,6 @@ fn a_loaded_game_continues_tick_for_tick_on_freedoom_maps_with_monsters_fighting
     let wad = |name: &str| sightline_tests::freedoom_wads::path(name).display().to_string();
     for map in [format!("{}:E1M1", wad("freedoom1.wad")), format!("{}:MAP01", wad("freedoom2.wad"))] {
         let check = check_map(&MapRef::parse(&map, None), 1500, 300, 70);
-        assert!(check.fighting > 0, "{map}: no monster was fighting at any save point: {check:?}");
-    }
-}
-
-/// The same on the simulation with Doom's arithmetic (the window's game on
-/// a WAD's map): its state in the save is `sim::save`'s, bit for bit.
-#[test]
-#[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
-fn a_loaded_game_on_the_simulation_continues_tic_for_tic_with_monsters_fighting() {
-    let wad = |name: &str| sightline_tests::freedoom_wads::path(name).display().to_string();
-    for map in [format!("{}:E1M1", wad("freedoom1.wad")), format!("{}:MAP01", wad("freedoom2.wad"))] {
-        let check = check_map_on(&MapRef::parse(&map, None), 1500, 300, 70, true);
         assert!(check.fighting > 0, "{map}: no monster was fighting at any save point: {check:?}");
         assert!(check.machinery > 0, "{map}: no door or lift moved at any save point: {check:?}");
     }
