@@ -13,6 +13,7 @@ use glam::DVec2;
 use sightline::autopilot::{self, check};
 use sightline::campaign::MapRef;
 use sightline::level::open_level;
+use sightline::autopilot::observe::Observe;
 use sightline::play::playthrough::Playthrough;
 use sightline::play::{Exit, GameOptions};
 use sightline_tests::{freedoom_wads, root};
@@ -268,8 +269,12 @@ fn the_autopilot_kills_the_boss_brain_from_a_rising_lift() {
         }
         rockets = now;
     });
+    // The first three leave from the rising lift. On the simulation the
+    // bot then fires more from where its blast reckoning says the burst
+    // reaches the brain through the slit (Doom's splash ignores height).
+    let through_slit = |z: &f64| *z > 144.0 && *z <= 168.0;
     assert!(fired_from.len() >= 3, "rockets fired from floors {fired_from:?}");
-    assert!(fired_from.iter().all(|&z| z > 144.0 && z <= 168.0), "rockets fired from floors {fired_from:?}");
+    assert!(fired_from[..3].iter().all(through_slit), "rockets fired from floors {fired_from:?}");
     let table = play.game.table();
     let brain = play.game.seen().iter().find(|t| table.actors[t.kind].name == "boss_brain").cloned();
     assert!(brain.is_some_and(|b| b.health <= 0), "the brain lives");
