@@ -19,6 +19,7 @@ use std::collections::BTreeSet;
 use glam::DVec2;
 
 use super::brain;
+use super::observe::Observe;
 use super::nav::{solid, Cell, Heights, LineId, NavGrid, CELL, NONE};
 use super::plan::{self, line_of, Mechanisms, Search, Targets};
 use crate::actors::{ActorFlag, ActorTable, Category};
@@ -445,14 +446,15 @@ fn forward_edges(
 /// The autopilot's route through the level, planned offline: a game with
 /// no monsters, played until the exit or 20 minutes, its path kept.
 fn offline_route(level: Level, skill: u8) -> Vec<DVec2> {
-    let options = crate::play::GameOptions { skill, seed: 0, no_monsters: true, sim: false };
-    let Ok(mut game) = crate::play::Game::with_options(level, options) else { return Vec::new() };
+    let options = crate::play::GameOptions { skill, seed: 0, no_monsters: true, sim: true };
+    let label = level.compiled.map.name.clone();
+    let Ok(mut game) = crate::sim::game::SimGame::on_level(level, &label, options) else { return Vec::new() };
     let mut bot = super::Autopilot::new(&game);
-    let mut path = vec![game.player().pos];
+    let mut path = vec![Observe::player(&game).pos];
     for _ in 0..42_000 {
         let input = bot.tick(&game);
         game.tick(&input);
-        let p = game.player().pos;
+        let p = Observe::player(&game).pos;
         if path.last().is_none_or(|q| q.distance(p) >= 8.0) {
             path.push(p);
         }
