@@ -76,15 +76,20 @@ fn z(game: &SimGame) -> f64 {
 }
 
 /// Puts the player at `at` facing `angle` degrees, still, feet on the
-/// floor there (Doom's `P_TeleportMove` then `EV_Teleport`'s `z =
-/// floorz`, without the fog or the 18-tic hold).
+/// floor there: Doom's `P_TeleportMove`, then the floor and ceiling
+/// `P_CheckPosition` finds there (P_TeleportMove takes the sector's alone,
+/// so a body overhanging a ledge would stand in the air until it moved),
+/// without the fog or the 18-tic hold.
 fn place(game: &mut SimGame, at: DVec2, angle: f64) {
+    use sightline::sim::collision::{check_position, teleport_move};
     let console = game.sim.console;
     let mo = game.sim.players[console].as_ref().expect("a player").mo;
-    let moved =
-        sightline::sim::collision::teleport_move(&mut game.sim, mo, Fixed::from_f64(at.x), Fixed::from_f64(at.y));
-    assert!(moved, "could not place the player at {at}");
+    let (x, y) = (Fixed::from_f64(at.x), Fixed::from_f64(at.y));
+    assert!(teleport_move(&mut game.sim, mo, x, y), "could not place the player at {at}");
+    check_position(&mut game.sim, mo, x, y);
+    let (floorz, ceilingz) = (game.sim.tm.floorz, game.sim.tm.ceilingz);
     let m = game.sim.mo_mut(mo);
+    (m.floorz, m.ceilingz) = (floorz, ceilingz);
     m.z = m.floorz;
     (m.momx, m.momy, m.momz) = (Fixed(0), Fixed(0), Fixed(0));
     m.angle = Angle::from_degrees(angle);
