@@ -10,10 +10,10 @@
 //! a recorded run replays to the same state; and Freedoom's E1M1 is finished.
 
 use glam::DVec2;
+use sightline::autopilot::observe::Observe;
 use sightline::autopilot::{self, check};
 use sightline::campaign::MapRef;
 use sightline::level::open_level;
-use sightline::autopilot::observe::Observe;
 use sightline::play::playthrough::Playthrough;
 use sightline::play::{Exit, GameOptions};
 use sightline_tests::{freedoom_wads, root};

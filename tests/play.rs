@@ -5,7 +5,7 @@
 //! nasty.ron, beyond Doom's 16-bit coordinates, is refused); directed cases
 //! (a wall from every angle at full speed, sliding, the 24/25 step, the
 //! 56/55 passage, a fall, doors, a grid map's doors); demos that replay bit
-//! for bit; corrupt demo files; a broken animations file.
+//! for bit; corrupt demo files; a map's own animations.
 //!
 //! Positions are read from the simulation's own bodies (`game.sim`), in map
 //! units; heights from the drawn level, which the simulation writes back
@@ -1016,12 +1016,11 @@ fn corrupt_demo_files_are_errors() {
     assert!(matches!(err, DemoError::Read { .. }) && err.to_string().contains("sightline-no-such.demo"), "{err}");
 }
 
-/// A map may name its own animations file: a broken one is an error
-/// naming the file and what is wrong. (That its textures animate by it is
-/// not checked here: the simulation's game does not animate RON maps'
-/// textures yet.)
+/// A map may name its own animations file: its textures animate by it (a
+/// modder's list, not the shipped one), and a broken one is an error naming
+/// the file and what is wrong.
 #[test]
-fn a_broken_animations_file_named_by_a_map_is_an_error() {
+fn a_map_names_its_own_animations() {
     let dir = tempfile::tempdir().unwrap();
     let anims =
         r#"Animations(flats: [], textures: [Animation(frames: ["BRICK", "STONE", "WOOD"], tics: 2)], switches: [])"#;
@@ -1032,11 +1031,19 @@ fn a_broken_animations_file_named_by_a_map_is_an_error() {
     let path = dir.path().join("m.ron");
     std::fs::write(&path, &text).unwrap();
     let level = sightline::level::open_level(&path, &BuildOptions::default()).unwrap_or_else(|e| panic!("{e}"));
-    // The good file is read: the map's animation of BRICK is its own three frames.
-    let m = &level.materials;
-    let names: Vec<Vec<&str>> =
-        m.animations.iter().map(|a| a.frames.iter().map(|&f| m.textures.name(f)).collect()).collect();
-    assert!(names.contains(&vec!["BRICK", "STONE", "WOOD"]), "{names:?}");
+    let mut game = SimGame::on_level(level, "m.ron", GameOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+    let shown = |game: &SimGame| {
+        let m = &Observe::level(game).materials;
+        m.textures.name(m.side(0, 0).middle.expect("a middle texture")).to_string()
+    };
+    let mut seen = Vec::new();
+    for _ in 0..7 {
+        seen.push(shown(&game));
+        game.tick(&IDLE);
+    }
+    // Doom's P_UpdateSpecials shows frame (leveltime / tics) of the cycle
+    // and runs before the tic's leveltime++: frames change after ticks 3, 5.
+    assert_eq!(seen, ["BRICK", "BRICK", "BRICK", "STONE", "STONE", "WOOD", "WOOD"]);
     std::fs::write(dir.path().join("anims.ron"), anims.replace("tics: 2", "tics: 0")).unwrap();
     let err = sightline::level::open_level(&path, &BuildOptions::default()).unwrap_err().to_string();
     assert!(

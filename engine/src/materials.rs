@@ -80,6 +80,23 @@ pub struct MaterialError {
 }
 
 impl Materials {
+    /// Sets every animated texture's current frame for tick `time` (Doom's
+    /// `P_UpdateSpecials`): a texture that is frame `k` of an animation of
+    /// `n` shows frame `(k + time / tics) mod n`, so all run in step. The
+    /// renderers apply [`Materials::translation`] where they look a
+    /// texture up: only what is drawn pays for it.
+    pub fn animate(&mut self, time: u64) {
+        for anim in &self.animations {
+            let n = anim.frames.len();
+            let step = (time / u64::from(anim.tics)) as usize % n;
+            for (k, &frame) in anim.frames.iter().enumerate() {
+                if let Some(slot) = self.translation.get_mut(frame.0 as usize) {
+                    *slot = anim.frames[(k + step) % n];
+                }
+            }
+        }
+    }
+
     /// Resolves every texture `map` names, looking for PNGs under each of `dirs`
     /// (`textures/` and `sprites/` inside them) before the built-in textures.
     /// `label` names the map in errors.

@@ -19,8 +19,8 @@ use std::collections::BTreeSet;
 use glam::DVec2;
 
 use super::brain;
-use super::observe::Observe;
 use super::nav::{solid, Cell, Heights, LineId, NavGrid, CELL, NONE};
+use super::observe::Observe;
 use super::plan::{self, line_of, Mechanisms, Search, Targets};
 use crate::actors::{ActorFlag, ActorTable, Category};
 use crate::framebuffer::{rgb, Framebuffer};

@@ -95,6 +95,7 @@ impl Scene {
             out.ceiling = s.ceilingheight.to_f64();
             out.light = s.lightlevel.clamp(0, 255) as u8;
         }
+        slide_grid_doors(level);
         self.draw_textures(sim, level);
         let viewer = sim.player(sim.console).map(|p| p.mo);
         let table = &sim.info.table;
@@ -117,6 +118,8 @@ impl Scene {
         });
         level.things = things.collect();
         level.time = u64::from(sim.leveltime);
+        // `P_UpdateSpecials` ran before the tic's `leveltime++`.
+        level.materials.animate(u64::from(sim.leveltime.saturating_sub(1)));
     }
 
     /// The textures play changed (switches flipped, floors changed by a
@@ -184,5 +187,29 @@ impl Scene {
         let m = sim.mo(p.mo);
         let z = if p.viewz.0 != 0 { p.viewz } else { m.z + p.viewheight };
         Some(View::new(DVec2::new(m.x.to_f64(), m.y.to_f64()), z.to_f64(), m.angle.to_degrees()))
+    }
+}
+
+/// A grid map's doors slide (Wolfenstein's): the simulation raises each as
+/// a Doom door (to 4 below the grid's ceiling, its one neighbour's), and
+/// the drawn panel slides into its jamb by the share of that rise, the
+/// doorway shut to the renderers until the door is fully open. Door `k`
+/// is sector `k + 1` (`grid::compile`'s numbering, checked).
+fn slide_grid_doors(level: &mut Level) {
+    let Some(full) = level.compiled.grid.as_ref().map(|g| g.ceiling) else { return };
+    let Some(grid) = level.grid.as_mut() else { return };
+    for (k, &cell) in grid.faces.doors.iter().enumerate() {
+        let sector = k + 1;
+        if grid.faces.door_sectors.get(cell).map(|&s| s as usize) != Some(sector) {
+            continue;
+        }
+        let Some(s) = level.compiled.map.sectors.get_mut(sector) else { continue };
+        // Doom's doors stop 4 below the lowest ceiling around them.
+        let rise = full - 4.0 - s.floor;
+        let open = if rise > 0.0 { ((s.ceiling - s.floor) / rise).clamp(0.0, 1.0) } else { 1.0 };
+        if let Some(o) = grid.open.get_mut(k) {
+            *o = open;
+        }
+        s.ceiling = if open >= 1.0 { full } else { s.floor };
     }
 }
