@@ -338,7 +338,7 @@ fn check_says_a_key_behind_its_own_door_is() {
 #[test]
 fn a_recorded_autopilot_run_with_monsters_replays_to_the_same_state() {
     let map = MapRef::File(map_path("maps/outpost.ron"));
-    let options = GameOptions { skill: 2, seed: 5, no_monsters: false, sim: true };
+    let options = GameOptions { skill: 2, seed: 5, no_monsters: false };
     let mut play = Playthrough::of(&map, options).unwrap();
     let (outcome, _) = autopilot::run(&mut play, 35 * 40, |_, _| true).unwrap();
     assert!(play.game.stats().kills.0 > 0 || outcome.exit.is_some(), "no fight in 40 s: {outcome:?}");

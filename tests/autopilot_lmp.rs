@@ -32,7 +32,7 @@ struct Row {
 fn round_trip(iwad: &str, maps: &[&str]) -> Vec<Row> {
     let path = freedoom_wads::path(iwad);
     let dir = tempfile::tempdir().unwrap();
-    let options = GameOptions { skill: 2, seed: 0, no_monsters: false, sim: false };
+    let options = GameOptions { skill: 2, seed: 0, no_monsters: false };
     let mut rows = Vec::new();
     for &name in maps {
         let map = MapRef::Wad { wads: vec![path.clone()], map: Some(name.to_string()) };

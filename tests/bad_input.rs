@@ -671,7 +671,7 @@ fn a_start_on_a_two_sided_line_is_accepted() {
     assert!(compiled.locate(map.player_start().pos).is_some());
     render_both(&compiled);
     let level = sightline::level::Level::with_builtin_textures(compiled).unwrap_or_else(|e| panic!("{e}"));
-    let options = sightline::play::GameOptions { sim: true, ..Default::default() };
+    let options = sightline::play::GameOptions::default();
     let game = sightline::sim::game::SimGame::on_level(level, "doorway.ron", options).unwrap_or_else(|e| panic!("{e}"));
     let start = sightline::autopilot::observe::Observe::player(&game).pos;
     assert_eq!(start, DVec2::new(256.0, 128.0), "the game did not start at the map's start");

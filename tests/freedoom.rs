@@ -185,7 +185,7 @@ fn check_walls(game: &SimGame, start: &[(DVec2, bool)], path: &Path, at: &str) {
 /// (`check_walls`). Returns the number of lines used.
 fn play(level: sightline::level::Level, path: &Path) -> usize {
     let map = level.map.clone();
-    let options = GameOptions { skill: 4, sim: true, ..GameOptions::default() };
+    let options = GameOptions { skill: 4, ..GameOptions::default() };
     let label = path.display().to_string();
     let mut game = SimGame::on_level(level, &label, options).unwrap_or_else(|e| panic!("{label}: {e}"));
     game.sim.players[0].as_mut().expect("a player").cards = [true; sightline::sim::NUMCARDS];
@@ -401,7 +401,7 @@ fn map10_poses_and_play_on_two_sided_lines() {
     let map = level.map.clone();
     let points = points_on_two_sided_lines(&map);
     assert!(points.len() > 100, "MAP10: only {} points on two-sided lines", points.len());
-    let options = GameOptions { sim: true, ..GameOptions::default() };
+    let options = GameOptions::default();
     let mut game = SimGame::on_level(level, "MAP10", options).unwrap_or_else(|e| panic!("{e}"));
     let in_map = |game: &SimGame, at: &str| {
         let p = Observe::player(game).pos;
@@ -450,7 +450,7 @@ fn freedoom1_plays_from_the_wad_through_exits_and_intermissions() {
     use sightline::play::{Exit, GameOptions};
 
     let wad = wad_path("freedoom1.wad");
-    let options = GameOptions { sim: true, ..GameOptions::default() };
+    let options = GameOptions::default();
     let mut play =
         Playthrough::of(&MapRef::parse(wad.to_str().unwrap(), None), options).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(play.map.short_name(), "E1M1");
@@ -537,11 +537,11 @@ fn a_pwad_plays_on_its_iwad_without_importing() {
 
 /// The game of a playthrough on the simulation.
 fn game(play: &sightline::play::playthrough::Playthrough) -> &SimGame {
-    play.game.sim().expect("the game on the simulation")
+    &play.game
 }
 
 fn game_mut(play: &mut sightline::play::playthrough::Playthrough) -> &mut SimGame {
-    play.game.sim_mut().expect("the game on the simulation")
+    &mut play.game
 }
 
 /// The player's eye as the simulation has it now (between tics, just
@@ -565,10 +565,10 @@ fn e1m1_monsters_are_drawn_from_every_side() {
 
     let wad = wad_path("freedoom1.wad");
     let map = format!("{}:E1M1", wad.display());
-    let options = GameOptions { sim: true, ..GameOptions::default() };
+    let options = GameOptions::default();
     let mut play = Playthrough::of(&MapRef::parse(&map, None), options).unwrap_or_else(|e| panic!("{e}"));
     play.tick(&TickInput::default()).unwrap();
-    let game = play.game.sim().expect("the game on the simulation");
+    let game = &play.game;
     // The first zombieman spawned (bodies are drawn keyed by their index).
     let zombie = game
         .sim
@@ -587,10 +587,10 @@ fn e1m1_monsters_are_drawn_from_every_side() {
         let (s, c) = from.to_radians().sin_cos();
         let eye = pos + DVec2::new(c, s) * 96.0;
         seen.push(drawn.texture_seen_from(eye));
-        if !try_teleport(play.game.sim_mut().expect("the game on the simulation"), eye, from + 180.0) {
+        if !try_teleport(&mut play.game, eye, from + 180.0) {
             continue;
         }
-        let view = eye_of(play.game.sim().expect("the game on the simulation"));
+        let view = eye_of(&play.game);
         let level = play.game.level();
         assert_agree(level, &view, (160, 100), &format!("E1M1 zombieman from side {}", k + 1));
         let mut fb = Framebuffer::new(320, 200);
@@ -615,15 +615,15 @@ fn frames_full_of_actors_agree_with_the_reference() {
     let (mut hanging, mut rotations) = (0, std::collections::BTreeSet::new());
     for name in ["E1M1", "E3M9"] {
         let map = format!("{}:{name}", wad.display());
-        let options = GameOptions { skill: 4, sim: true, ..GameOptions::default() };
+        let options = GameOptions { skill: 4, ..GameOptions::default() };
         let mut play = Playthrough::of(&MapRef::parse(&map, None), options).unwrap_or_else(|e| panic!("{e}"));
-        let game = play.game.sim_mut().expect("the game on the simulation");
+        let game = &mut play.game;
         set_health(game, 1_000_000);
         wake_all(game);
         for _ in 0..70 {
             play.tick(&TickInput::default()).unwrap();
         }
-        let game = play.game.sim().expect("the game on the simulation");
+        let game = &play.game;
         let drawn: std::collections::BTreeSet<usize> = play.game.level().things.iter().map(|t| t.key).collect();
         let mut targets = Vec::new();
         let mut monsters = 0;
@@ -643,10 +643,10 @@ fn frames_full_of_actors_agree_with_the_reference() {
                 let from = drawn.angle + 360.0 / sides as f64 * k as f64;
                 let (s, c) = from.to_radians().sin_cos();
                 let eye = drawn.pos + DVec2::new(c, s) * 128.0;
-                if !try_teleport(play.game.sim_mut().expect("the game on the simulation"), eye, from + 180.0) {
+                if !try_teleport(&mut play.game, eye, from + 180.0) {
                     continue;
                 }
-                let view = eye_of(play.game.sim().expect("the game on the simulation"));
+                let view = eye_of(&play.game);
                 rotations.insert(drawn.texture_seen_from(view.pos).0);
                 assert_agree(play.game.level(), &view, (160, 100), &format!("{name} thing {key} from {from:.0}"));
                 if sides == 2 && k == 0 {
@@ -681,7 +681,7 @@ fn e1m1_can_be_fought_through_to_its_exit_on_skill_3() {
 
     let wad = wad_path("freedoom1.wad");
     let map = MapRef::parse(&format!("{}:E1M1", wad.display()), None);
-    let options = GameOptions { sim: true, ..GameOptions::default() };
+    let options = GameOptions::default();
     let mut play = Playthrough::of(&map, options).unwrap_or_else(|e| panic!("{e}"));
     let table = game(&play).sim.info.table.clone();
     let name = |play: &Playthrough, id: MobjId| table.actors[game(play).sim.mo(id).kind].name.clone();

@@ -123,7 +123,7 @@ fn the_default_level_s_main_views_match_golden_images() {
     use sightline_tests::sim_play::{set_health, teleport};
     let bless = std::env::var_os("SIGHTLINE_BLESS").is_some();
     let level = load(&root().join("maps/outpost.ron"));
-    let options = GameOptions { sim: true, ..Default::default() };
+    let options = GameOptions::default();
     let mut g = SimGame::on_level(level, "outpost.ron", options).unwrap_or_else(|e| panic!("{e}"));
     let shotgun = g.sim.info.table.index("shotgun").unwrap();
     let dir = root().join("tests/images");

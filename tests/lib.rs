@@ -283,7 +283,7 @@ pub fn saves_continue_exactly(
     save_at: &[usize],
     ahead: usize,
 ) -> SaveCheck {
-    use sightline::play::playthrough::{Phase, Played, Playthrough};
+    use sightline::play::playthrough::{Phase, Playthrough};
     let mut check = SaveCheck::default();
     let mut followers: Vec<(usize, Playthrough, usize)> = Vec::new();
     for (i, input) in inputs.iter().enumerate() {
@@ -294,10 +294,7 @@ pub fn saves_continue_exactly(
             assert!(loaded.game.state_bytes() == play.game.state_bytes(), "tick {i}: the loaded game differs at once");
             check.saves += 1;
             check.largest = check.largest.max(bytes.len());
-            let Played::Sim(game) = &play.game else {
-                panic!("saves_continue_exactly follows a game on the simulation (GameOptions {{ sim: true, .. }})")
-            };
-            let sim = &game.sim;
+            let sim = &play.game.sim;
             let chasing = |id: sightline::sim::MobjId| {
                 let m = sim.mo(id);
                 m.player.is_none() && m.health > 0 && m.target.is_some()

@@ -281,7 +281,7 @@ fn a_dead_player_restarts_the_map_with_use() {
     let map = MapRef::File(map_path("machinery.ron"));
     let mut play = Playthrough::of(&map, GameOptions::default()).unwrap();
     let start = play.game.player().pos;
-    assert!(play.game.put_player(DVec2::new(736.0, 548.0), 0.0), "the slime is out of reach");
+    assert!(play.game.place_player(DVec2::new(736.0, 548.0), 0.0), "the slime is out of reach");
     play.game.set_health(5);
     for _ in 0..40 {
         play.tick(&TickInput::default()).unwrap();

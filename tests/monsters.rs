@@ -327,7 +327,7 @@ fn a_user_actor_file_replaces_the_zombieman() {
     assert_eq!(table.get("sturdy_zombieman").map(|a| a.health), Some(400));
     let level = load(&root().join("tests").join("maps").join("monsters.ron"));
     let opened = sightline::campaign::Opened::of_level(level, "monsters.ron");
-    let options = GameOptions { sim: true, ..Default::default() };
+    let options = GameOptions::default();
     let mut g = SimGame::with_table(opened, options, std::sync::Arc::new(table)).unwrap_or_else(|e| panic!("{e}"));
     set_health(&mut g, 1_000_000);
     teleport(&mut g, DVec2::new(700.0, 256.0), 0.0);
@@ -365,7 +365,7 @@ fn a_monster_out_of_the_player_s_reach_wakes_when_the_player_comes() {
 /// P_Random() <= 4), as a new body; its corpse goes (P_NightmareRespawn).
 #[test]
 fn on_skill_5_a_dead_monster_comes_back_at_its_spot() {
-    let mut g = game_with("monsters", GameOptions { skill: 5, sim: true, ..Default::default() });
+    let mut g = game_with("monsters", GameOptions { skill: 5, ..Default::default() });
     set_health(&mut g, 1_000_000);
     let spot = pos(&g, first(&g, "zombieman"));
     teleport(&mut g, DVec2::new(700.0, 256.0), 0.0);
@@ -409,7 +409,7 @@ fn a_lift_carries_a_barrel_down_and_up() {
     let library = sightline::texture::Library::dirs(&[path.parent().unwrap().to_path_buf()]);
     let materials = sightline::materials::Materials::resolve_in(&compiled.map, &library, "lift.ron")
         .unwrap_or_else(|e| panic!("{e}"));
-    let options = GameOptions { sim: true, ..Default::default() };
+    let options = GameOptions::default();
     let mut g = SimGame::on_level(Level::new(compiled, materials), "lift.ron with a barrel", options)
         .unwrap_or_else(|e| panic!("{e}"));
     let lift = 1;

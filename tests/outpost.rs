@@ -82,14 +82,14 @@ impl Driver {
     }
 
     fn sim(&self) -> &SimGame {
-        self.play.game.sim().expect("the game on the simulation")
+        &self.play.game
     }
 
     /// The nearest live monster the player can see, within 1,500 units.
     /// Looking leaves the game as it was: Doom's sight check marks lines
     /// with `validcount` and sets the shared slopes, which are put back.
     fn enemy(&mut self) -> Option<MobjId> {
-        let game = self.play.game.sim_mut().expect("the game on the simulation");
+        let game = &mut self.play.game;
         let sim = &mut game.sim;
         let me = sim.player(sim.console).expect("a player").mo;
         let kept = (sim.validcount, sim.line_valid.clone(), sim.tm.clone());
@@ -213,7 +213,7 @@ impl Driver {
 #[test]
 fn the_outpost_is_fought_through_to_its_exit_on_the_middle_skill() {
     let map = MapRef::File(map_path("outpost.ron"));
-    let options = GameOptions { sim: true, ..Default::default() };
+    let options = GameOptions::default();
     let play = Playthrough::of(&map, options).unwrap_or_else(|e| panic!("{e}"));
     let mut d = Driver { play, inputs: Vec::new(), fighting: 0 };
     let w = DVec2::new;
@@ -298,7 +298,7 @@ fn the_outpost_is_fought_through_to_its_exit_on_the_middle_skill() {
     assert!(stats.kills.0 >= stats.kills.1 / 2, "fought through too few: {:?}", stats.kills);
 
     // The inputs are the game: played again, the same end.
-    let demo = Demo { inputs: d.inputs.clone(), sim: true, ..Demo::new(map.label()) };
+    let demo = Demo { inputs: d.inputs.clone(), ..Demo::new(map.label()) };
     let demo = Demo::from_bytes(&demo.to_bytes(), "outpost.sldemo").unwrap();
     let mut again = Playthrough::of(&map, demo.options()).unwrap();
     // Saved every 151 ticks on the way (mid-fight, doors and the lift
@@ -347,6 +347,6 @@ fn the_outpost_is_fought_through_to_its_exit_on_the_middle_skill() {
     assert!(sightline_tests::render_audio(&mut play(), &d.inputs).0 == samples, "the same run sounds different");
     println!("heard: {mine} of mine, {machines} of machines, {monsters} of monsters; {checked} ticks silent");
     if let Some(path) = std::env::var_os("SIGHTLINE_WRITE_OUTPOST_DEMO") {
-        Demo { inputs: d.inputs.clone(), sim: true, ..Demo::new("maps/outpost.ron") }.save(path.as_ref()).unwrap();
+        Demo { inputs: d.inputs.clone(), ..Demo::new("maps/outpost.ron") }.save(path.as_ref()).unwrap();
     }
 }

@@ -42,7 +42,7 @@ const MAXMOVE: f64 = 30.0;
 const UNIT: f64 = 1.0 / 65536.0;
 
 fn options() -> GameOptions {
-    GameOptions { sim: true, ..GameOptions::default() }
+    GameOptions::default()
 }
 
 fn level_from(text: &str) -> Level {
@@ -940,13 +940,12 @@ fn a_demo_replays_to_the_same_positions_and_frames() {
     let start = || SimGame::on_level(load(&path), "doors.ron", options()).unwrap_or_else(|e| panic!("{e}"));
     let mut live_frames = Vec::new();
     let live = trace(&mut start(), &inputs, &mut live_frames);
-    let demo = Demo { inputs, sim: true, ..Demo::new("maps/doors.ron") };
+    let demo = Demo { inputs, ..Demo::new("maps/doors.ron") };
     let file = std::env::temp_dir().join(format!("sightline-play-{}.demo", std::process::id()));
     demo.save(&file).unwrap();
     let loaded = Demo::load(&file).unwrap();
     let _ = std::fs::remove_file(&file);
     assert_eq!(loaded, demo);
-    assert!(loaded.sim, "the demo forgot it was played on the simulation");
     for run in 0..2 {
         let mut frames = Vec::new();
         let replay = trace(&mut start(), &loaded.inputs, &mut frames);
@@ -963,7 +962,7 @@ fn a_demo_replays_to_the_same_positions_and_frames() {
 }
 #[test]
 fn corrupt_demo_files_are_errors() {
-    let demo = Demo { inputs: random_inputs(3, 200), sim: true, ..Demo::new("maps/doors.ron") };
+    let demo = Demo { inputs: random_inputs(3, 200), ..Demo::new("maps/doors.ron") };
     let bytes = demo.to_bytes();
     assert_eq!(Demo::from_bytes(&bytes, "ok.demo").unwrap(), demo);
     for len in 0..bytes.len() {

@@ -145,7 +145,7 @@ fn sight_brute(sim: &Sim, looker: MobjId, target: MobjId) -> bool {
 /// A game on `compiled` (a RON map's tree converted by `sim::from_map`).
 fn game_on(compiled: CompiledMap, label: &str) -> SimGame {
     let level = sightline::level::Level::with_builtin_textures(compiled).unwrap_or_else(|e| panic!("{e}"));
-    let options = GameOptions { sim: true, no_monsters: true, ..Default::default() };
+    let options = GameOptions { no_monsters: true, ..Default::default() };
     SimGame::on_level(level, label, options).unwrap_or_else(|e| panic!("{label}: {e}"))
 }
 
@@ -439,7 +439,7 @@ fn freedoom_pairs_agree() {
         let map = MapRef::Wad { wads: vec![path], map: Some(name.into()) };
         let opened = open(&map, &BuildOptions::default()).unwrap_or_else(|e| panic!("{e}"));
         let level = opened.level.compiled.clone();
-        let options = GameOptions { sim: true, no_monsters: true, ..Default::default() };
+        let options = GameOptions { no_monsters: true, ..Default::default() };
         let mut game = SimGame::new(opened, options).unwrap_or_else(|e| panic!("{e}"));
         // Without vanilla's typo in P_DivlineSide (Sightline's rules, which
         // both paths read): with it a horizontal line's test is garbage,

@@ -16,7 +16,7 @@ use crate::{load, root};
 
 /// A game on `tests/maps/{name}.ron` with the default options.
 pub fn game(name: &str) -> SimGame {
-    game_with(name, sightline::play::GameOptions { sim: true, ..Default::default() })
+    game_with(name, sightline::play::GameOptions::default())
 }
 
 pub fn game_with(name: &str, options: sightline::play::GameOptions) -> SimGame {

@@ -42,7 +42,7 @@ fn fixture(name: &str) -> PathBuf {
 }
 
 fn options() -> GameOptions {
-    GameOptions { sim: true, ..GameOptions::default() }
+    GameOptions::default()
 }
 
 fn game(name: &str) -> SimGame {

@@ -20,6 +20,27 @@ pub fn cross(a: DVec2, b: DVec2) -> f64 {
     a.x * b.y - a.y * b.x
 }
 
+/// Where segment `p-q` crosses segment `a-b`, as a fraction of `p-q`;
+/// touching counts.
+pub fn crossing(p: DVec2, q: DVec2, a: DVec2, b: DVec2) -> Option<f64> {
+    let r = q - p;
+    let s = b - a;
+    let denom = cross(r, s);
+    if denom == 0.0 {
+        return None;
+    }
+    let t = cross(a - p, s) / denom;
+    let u = cross(a - p, r) / denom;
+    ((0.0..=1.0).contains(&t) && (0.0..=1.0).contains(&u)).then_some(t)
+}
+
+/// Distance from `p` to the segment `a-b`.
+pub fn distance_to_segment(p: DVec2, a: DVec2, b: DVec2) -> f64 {
+    let d = b - a;
+    let t = ((p - a).dot(d) / d.length_squared()).clamp(0.0, 1.0);
+    (a + d * t).distance(p)
+}
+
 /// Signed distance of `p` from the line through `a` and `b`; positive on the
 /// front (right-hand) side. `a != b` is required; the caller guarantees it.
 #[inline]

@@ -27,7 +27,7 @@ struct Run {
 
 pub fn run(args: &AutoplayArgs) -> Result<()> {
     let map = MapRef::parse(&args.map, args.iwad.as_deref());
-    let options = GameOptions { skill: args.skill, seed: args.seed, no_monsters: args.no_monsters, sim: true };
+    let options = GameOptions { skill: args.skill, seed: args.seed, no_monsters: args.no_monsters };
     let started = std::time::Instant::now();
     let run = play(args, &map, options)?;
     let seconds = started.elapsed().as_secs_f64();

@@ -55,7 +55,6 @@ pub fn save_recording(path: &Path, map: &MapRef, options: GameOptions, inputs: V
             skill: options.skill,
             seed: options.seed,
             no_monsters: options.no_monsters,
-            sim: options.sim,
             ..Demo::new(map.label())
         };
         demo.save(path)?;

@@ -223,7 +223,7 @@ impl Autopilot {
         let (level, player) = (game.level(), game.player());
         let (sl, _, _, special) = line_of(&level.compiled.map, line);
         let busy: Vec<(usize, bool)> = special
-            .map(|sp| crate::play::world::specials::target_sectors(level, sl, sp))
+            .map(|sp| super::sectors::target_sectors(level, sl, sp))
             .unwrap_or_default()
             .into_iter()
             .map(|s| (s, game.is_busy(s)))

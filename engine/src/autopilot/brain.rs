@@ -12,12 +12,11 @@
 
 use glam::DVec2;
 
+use super::sight::{self, Body};
 use super::Observe;
 use crate::actors::{ActorTable, Arg, Category};
 use crate::map::special::Activation;
 use crate::map::Map;
-use crate::play::actors::attacks::MISSILE_HEIGHT;
-use crate::play::sight::{self, Body};
 use crate::play::TickInput;
 use crate::CompiledMap;
 
@@ -28,6 +27,12 @@ use super::{live_heights, turn_to, Active, Autopilot};
 /// The reach of a rocket's blast (Doom's `A_Explode`: 128, and 128 damage
 /// at its centre).
 const BLAST: f64 = 128.0;
+/// A missile leaves 32 above the shooter's feet (Doom's `P_SpawnMissile`'s
+/// `4*8*FRACUNIT`).
+const MISSILE_HEIGHT: f64 = 32.0;
+/// A missile's move is taken in pieces of at most this (Doom's
+/// `P_XYMovement` halves any move over `MAXMOVE/2`).
+const MAX_PIECE: f64 = 15.0;
 /// A shot is worth firing when its blast does at least this much.
 const WORTH: i32 = 40;
 /// Lifts this far from the brain at most, along either axis, are looked at.
@@ -144,7 +149,7 @@ fn crossings(map: &Map, rocket: &Rocket, from: DVec2, to: DVec2) -> Vec<Crossing
         let (a, b) = map.line_points(l);
         let sides = l.back.as_ref().map(|back| (l.front.sector, back.sector));
         for o in [DVec2::ZERO, side, -side] {
-            if let Some(t) = crate::play::trace::crossing(from + o, from + o + along * reach, a, b) {
+            if let Some(t) = crate::geom::crossing(from + o, from + o + along * reach, a, b) {
                 out.push(Crossing { at: t * reach, sides });
             }
         }
@@ -213,7 +218,7 @@ impl Shot<'_> {
         // It bursts where it last stood before the wall: up to one piece of
         // its move (the engine cuts a move into pieces of 15 at most) short
         // of it. The nearer of the two ends counts.
-        let piece = self.rocket.speed.min(crate::play::actors::physics::MAX_PIECE);
+        let piece = self.rocket.speed.min(MAX_PIECE);
         let mut worst = i32::MAX;
         for back in [self.rocket.radius, self.rocket.radius + piece] {
             let burst = from + along * (stop - back);

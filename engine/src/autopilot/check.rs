@@ -446,7 +446,7 @@ fn forward_edges(
 /// The autopilot's route through the level, planned offline: a game with
 /// no monsters, played until the exit or 20 minutes, its path kept.
 fn offline_route(level: Level, skill: u8) -> Vec<DVec2> {
-    let options = crate::play::GameOptions { skill, seed: 0, no_monsters: true, sim: true };
+    let options = crate::play::GameOptions { skill, seed: 0, no_monsters: true };
     let label = level.compiled.map.name.clone();
     let Ok(mut game) = crate::sim::game::SimGame::on_level(level, &label, options) else { return Vec::new() };
     let mut bot = super::Autopilot::new(&game);

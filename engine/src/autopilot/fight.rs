@@ -5,9 +5,9 @@
 
 use glam::DVec2;
 
+use super::sight::{self, Body};
 use super::{plan, Autopilot, Observe, BARREL_BLAST, BARREL_CLEARANCE, CROWD, FIGHT_RANGE, MELEE_REACH};
 use crate::actors::{ActorFlag, Category};
-use crate::play::sight::{self, Body};
 
 impl Autopilot {
     /// The enemy to shoot, if one is in sight: the angle to it and the
@@ -137,7 +137,7 @@ fn rocket_clear(map: &crate::map::Map, from: DVec2, z: f64, to: DVec2) -> bool {
             }
         }
         let (a, b) = map.line_points(l);
-        [DVec2::ZERO, side, -side].iter().all(|&o| crate::play::trace::crossing(from + o, end + o, a, b).is_none())
+        [DVec2::ZERO, side, -side].iter().all(|&o| crate::geom::crossing(from + o, end + o, a, b).is_none())
     })
 }
 

@@ -18,6 +18,7 @@
 //!   secret and item be reached, and where can the player get stuck.
 
 mod arrive;
+pub mod blockmap;
 pub mod brain;
 pub mod check;
 mod fight;
@@ -27,6 +28,8 @@ pub mod leap;
 pub mod nav;
 pub mod observe;
 pub mod plan;
+pub mod sectors;
+pub mod sight;
 
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -39,7 +42,6 @@ use crate::actors::{ActorDef, ActorFlag, Give, Power};
 use crate::map::special::{Action, Activation, DoorKind, KeyColour};
 use crate::play::events::Event;
 use crate::play::player::{MAX_STEP, RADIUS};
-use crate::play::sight;
 use crate::play::TickInput;
 use nav::{Cell, Heights, LineId, NavGrid, Span, CELL, DIRS};
 use observe::Observe;
@@ -415,7 +417,7 @@ impl Autopilot {
         }
         // A suit with a few seconds left shields from all but the floors it
         // is no use on (its rare leaks are taken).
-        let suited = player.powers[crate::play::pickups::power_slot(Power::IronFeet)] > SUIT_MARGIN;
+        let suited = player.powers[Power::IronFeet as usize] > SUIT_MARGIN;
         // A floor can come to hurt (a line that copies a neighbour's
         // special as it lowers a floor to nukage).
         for (hurts, sector) in self.hurts.iter_mut().zip(&game.level().compiled.map.sectors) {
@@ -655,7 +657,7 @@ impl Autopilot {
         let lifts = self.mech.lifts.iter().flatten();
         for &id in walk.chain(lifts) {
             let (_, a, b, special) = line_of(map, id);
-            if special.is_some_and(|s| s.on == Activation::Walk) && crate::play::trace::crossing(p, q, a, b).is_some() {
+            if special.is_some_and(|s| s.on == Activation::Walk) && crate::geom::crossing(p, q, a, b).is_some() {
                 crossed.push(id);
             }
         }
@@ -1305,9 +1307,7 @@ impl Autopilot {
     fn targets_busy(game: &dyn Observe, line: LineId) -> bool {
         let level = game.level();
         let (sl, _, _, special) = line_of(&level.compiled.map, line);
-        special.is_some_and(|sp| {
-            crate::play::world::specials::target_sectors(level, sl, sp).into_iter().any(|s| game.is_busy(s))
-        })
+        special.is_some_and(|sp| sectors::target_sectors(level, sl, sp).into_iter().any(|s| game.is_busy(s)))
     }
 
     /// The cheapest reached cell from which a move crosses `line` (after a

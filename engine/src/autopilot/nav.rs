@@ -13,11 +13,11 @@
 
 use glam::DVec2;
 
+use super::blockmap::{Blockmap, LineQuery};
 use crate::bsp::CompiledMap;
+use crate::geom::crossing;
 use crate::map::Map;
-use crate::play::blockmap::{Blockmap, LineQuery};
 use crate::play::player::{HEIGHT, MAX_STEP, RADIUS};
-use crate::play::trace::crossing;
 
 /// Side of a cell, map units.
 pub const CELL: f64 = 16.0;

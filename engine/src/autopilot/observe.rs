@@ -1,21 +1,19 @@
 //! What the autopilot reads of a game: the level as it stands, the player,
 //! the things in play, the tallies, and which sectors are moving and which
-//! specials are spent. Both games answer it: the float game
-//! ([`crate::play::Game`]) and the simulation with Doom's arithmetic behind
-//! [`crate::sim::game::SimGame`], so one autopilot plays either, and a
-//! game it plays on the simulation can be recorded as a vanilla demo.
+//! specials are spent, in map units and degrees. The simulation with
+//! Doom's arithmetic answers it ([`crate::sim::game::SimGame`]), so a game
+//! the autopilot plays can be recorded as a vanilla demo.
 
 use std::borrow::Cow;
 
 use glam::DVec2;
 
-use crate::actors::{ActorFlag, ActorTable};
+use crate::actors::ActorTable;
 use crate::level::Level;
 use crate::map::LineSpecial;
-use crate::play::actors::Target;
 use crate::play::events::Event;
 use crate::play::world::{Exit, SpecialLine};
-use crate::play::{Game, Player, Stats};
+use crate::play::{Player, Stats};
 
 /// A thing in play as the autopilot sees it.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -62,62 +60,4 @@ pub trait Observe {
     /// Where a use from `from` towards `to` stops: the first line with a
     /// live use special, or a wall with no opening; `None` when nothing does.
     fn use_stop(&self, from: DVec2, to: DVec2) -> Option<SpecialLine>;
-}
-
-impl Observe for Game {
-    fn level(&self) -> &Level {
-        Game::level(self)
-    }
-
-    fn ticks(&self) -> u64 {
-        Game::ticks(self)
-    }
-
-    fn player(&self) -> &Player {
-        Game::player(self)
-    }
-
-    fn seen(&self) -> Cow<'_, [Seen]> {
-        let seen = self.actors().list.iter().map(|a| Seen {
-            kind: a.kind,
-            pos: a.pos,
-            z: a.z,
-            vel: a.vel.truncate(),
-            health: a.health,
-            removed: a.removed,
-            solid: a.flags.has(ActorFlag::Solid),
-            shootable: a.flags.has(ActorFlag::Shootable),
-            missile: a.flags.has(ActorFlag::Missile),
-            by_player: a.source == Target::Player,
-        });
-        Cow::Owned(seen.collect())
-    }
-
-    fn table(&self) -> &ActorTable {
-        &self.actors().table
-    }
-
-    fn exit(&self) -> Option<Exit> {
-        Game::exit(self)
-    }
-
-    fn events(&self) -> &[Event] {
-        Game::events(self)
-    }
-
-    fn stats(&self) -> Stats {
-        Game::stats(self)
-    }
-
-    fn is_busy(&self, sector: usize) -> bool {
-        self.world().is_busy(sector)
-    }
-
-    fn special(&self, line: SpecialLine) -> Option<LineSpecial> {
-        self.world().special(self.level(), line)
-    }
-
-    fn use_stop(&self, from: DVec2, to: DVec2) -> Option<SpecialLine> {
-        Game::use_stop(self, &mut Default::default(), from, to).map(|c| c.line)
-    }
 }

@@ -12,13 +12,13 @@ use glam::DVec2;
 
 use super::leap;
 use super::nav::{Cell, Heights, LineId, NavGrid, CELL, NONE};
+use super::sectors::{self, target_sectors};
+use crate::geom::distance_to_segment;
 use crate::level::Level;
 use crate::map::special::{Action, Activation, CeilingTarget, DoorKind, KeyColour, LineSpecial};
 use crate::map::Map;
-use crate::play::collision::distance_to_segment;
 use crate::play::player::{HEIGHT, MAX_STEP, RADIUS};
-use crate::play::world::specials::{self, target_sectors};
-use crate::play::world::{floors, SpecialLine};
+use crate::play::world::SpecialLine;
 use crate::play::USE_RANGE;
 
 /// Extra cost of standing in a cell whose floor hurts.
@@ -114,7 +114,7 @@ impl Mechanisms {
             door_use: vec![Vec::new(); sectors],
             lifts: vec![Vec::new(); sectors],
             lift_top: map.sectors.iter().map(|s| s.floor).collect(),
-            lift_low: (0..sectors).map(|s| specials::lowest_floor_around(level, s)).collect(),
+            lift_low: (0..sectors).map(|s| sectors::lowest_floor_around(level, s)).collect(),
             crushers: vec![false; sectors],
             lift_down: vec![Vec::new(); sectors],
             lift_lines: vec![Vec::new(); sectors],
@@ -147,7 +147,7 @@ impl Mechanisms {
                 Action::Lift { .. } | Action::PerpetualLift { .. } => {
                     for &s in &targets {
                         if matches!(special.action, Action::PerpetualLift { .. }) {
-                            let high = specials::highest_floor_around(level, s).unwrap_or(m.lift_top[s]);
+                            let high = sectors::highest_floor_around(level, s).unwrap_or(m.lift_top[s]);
                             m.lift_top[s] = m.lift_top[s].max(high);
                             m.perpetual[s] = true;
                         }
@@ -211,7 +211,7 @@ impl Mechanisms {
             // Its bottom moves too when a neighbour's floor does (a pool
             // lowered beside it brings a switch down there into reach).
             let floor = map.sectors[s].floor;
-            let low = specials::lowest_floor_around(level, s);
+            let low = sectors::lowest_floor_around(level, s);
             if floor != self.lift_top[s] || low != self.lift_low[s] {
                 self.lift_top[s] = floor;
                 self.lift_low[s] = low;
@@ -237,7 +237,7 @@ const LIFT_REACH: f64 = 1024.0;
 /// top with a side on the lift or level with its top.
 fn lift_calls(level: &Level, id: LineId, on: Activation, lift: usize, top: f64) -> (bool, bool) {
     let map = &level.compiled.map;
-    let low = specials::lowest_floor_around(level, lift);
+    let low = sectors::lowest_floor_around(level, lift);
     let (sl, a, b, _) = line_of(map, id);
     let sides: Vec<(usize, bool)> = match sl {
         SpecialLine::Wall(i) => {
@@ -720,7 +720,7 @@ pub fn touch_cells(nav: &NavGrid, map: &Map, p: DVec2) -> Targets {
             .iter()
             .filter_map(|l| {
                 let (a, b) = map.line_points(l);
-                crate::play::trace::crossing(from, p, a, b).map(|f| (f, l))
+                crate::geom::crossing(from, p, a, b).map(|f| (f, l))
             })
             .collect();
         crossed.sort_by(|x, y| x.0.total_cmp(&y.0));
@@ -839,7 +839,7 @@ pub fn clear_between(map: &Map, p: DVec2, q: DVec2, line: LineId) -> bool {
             }
         }
         let (a, b) = map.line_points(l);
-        crate::play::trace::crossing(p, q, a, b).is_none()
+        crate::geom::crossing(p, q, a, b).is_none()
     })
 }
 
@@ -850,14 +850,14 @@ pub fn plan_heights(level: &Level, mech: &Mechanisms, keys: &[KeyColour], spent:
     let mut h = Heights::of(map);
     for (s, doors) in mech.doors.iter().enumerate() {
         if doors.iter().any(|(_, key)| key.is_none_or(|k| keys.contains(&k))) {
-            if let Some(top) = specials::lowest_ceiling_around(level, s) {
+            if let Some(top) = sectors::lowest_ceiling_around(level, s) {
                 h.ceiling[s] = h.ceiling[s].max(top - 4.0);
             }
         }
     }
     for (s, lifts) in mech.lifts.iter().enumerate() {
         if lifts.iter().chain(&mech.lift_down[s]).any(|l| !spent.contains(l)) {
-            h.low[s] = h.low[s].min(specials::lowest_floor_around(level, s));
+            h.low[s] = h.low[s].min(sectors::lowest_floor_around(level, s));
             h.floor[s] = h.floor[s].max(mech.lift_top[s].min(h.ceiling[s] - 56.0));
         }
     }
@@ -875,7 +875,7 @@ pub fn predict(level: &Level, heights: &Heights, line: SpecialLine, special: &Li
         let sector = &map.sectors[s];
         match &special.action {
             Action::Door { kind: DoorKind::Open | DoorKind::Raise, .. } => {
-                if let Some(top) = specials::lowest_ceiling_around(level, s) {
+                if let Some(top) = sectors::lowest_ceiling_around(level, s) {
                     if top - 4.0 > h.ceiling[s] {
                         h.ceiling[s] = top - 4.0;
                         changed = true;
@@ -888,9 +888,8 @@ pub fn predict(level: &Level, heights: &Heights, line: SpecialLine, special: &Li
                     changed = true;
                 }
             }
-            Action::Floor { to, offset, speed, crush, change } => {
-                let f = floors::Floor { to: *to, offset: *offset, speed: *speed, crush: *crush, change: *change };
-                let dest = floors::destination(level, s, &f);
+            Action::Floor { to, offset, .. } => {
+                let dest = sectors::floor_destination(level, s, *to, *offset);
                 if dest != sector.floor {
                     h.floor[s] = dest;
                     h.low[s] = h.low[s].min(dest);
@@ -901,10 +900,10 @@ pub fn predict(level: &Level, heights: &Heights, line: SpecialLine, special: &Li
                 let target = match to {
                     CeilingTarget::Floor => sector.floor,
                     CeilingTarget::HighestNeighbourCeiling => {
-                        specials::highest_ceiling_around(level, s).unwrap_or(sector.ceiling)
+                        sectors::highest_ceiling_around(level, s).unwrap_or(sector.ceiling)
                     }
                     CeilingTarget::LowestNeighbourCeiling => {
-                        specials::lowest_ceiling_around(level, s).unwrap_or(sector.ceiling)
+                        sectors::lowest_ceiling_around(level, s).unwrap_or(sector.ceiling)
                     }
                     CeilingTarget::Current => sector.ceiling,
                 } + offset;

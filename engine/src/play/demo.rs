@@ -8,7 +8,7 @@
 //! | 16-19 | CRC-32 of every byte after these four (little-endian u32) |
 //! | 20-23 | length `N` of the map string in bytes (u32), at most [`MAX_MAP_BYTES`] |
 //! | 24-(24+N) | the map (a path, or `WAD:MAP`), UTF-8 |
-//! | next 1 | skill, 1 to 5, plus 128 for a game without monsters, plus 64 for a game on the simulation with Doom's arithmetic |
+//! | next 1 | skill, 1 to 5, plus 128 for a game without monsters |
 //! | next 8 | the game's random seed (u64) |
 //! | next 4 | tick count `T` (u32) |
 //! | rest | `T` records of 7 bytes: forward (i8), strafe (i8), flags (bit 0 run, bit 1 use, bit 2 fire, bits 3-5 the weapon number asked for, 0 for none), turn (f32, degrees) |
@@ -28,15 +28,14 @@ pub const MAGIC: &[u8] = b"SIGHTLINE-DEMO\n";
 /// replay the same). Version 3: actors run (monsters wake, chase and
 /// shoot; pickups give), and fire shoots them. Version 4: weapons (fire
 /// held keeps firing, weapon numbers in the flags), missiles and infighting.
-pub const VERSION: u8 = 4;
+/// Version 5: the simulation with Doom's arithmetic is the only game (a
+/// version 4 demo of the f64 game that came first cannot replay).
+pub const VERSION: u8 = 5;
 /// Longest map string accepted (a path, not a map).
 pub const MAX_MAP_BYTES: u32 = 4096;
 const RECORD: usize = 7;
 /// The skill byte's flag for a game without monsters.
 const NO_MONSTERS: u8 = 128;
-/// The skill byte's flag for a game on the simulation with Doom's
-/// arithmetic (`GameOptions::sim`).
-const SIM: u8 = 64;
 const RUN: u8 = 1;
 const USE: u8 = 2;
 const FIRE: u8 = 4;
@@ -55,8 +54,6 @@ pub struct Demo {
     pub seed: u64,
     /// Played without monsters (`--no-monsters`).
     pub no_monsters: bool,
-    /// Played on the simulation with Doom's arithmetic.
-    pub sim: bool,
     /// One input per tick, from the first.
     pub inputs: Vec<TickInput>,
 }
@@ -83,19 +80,12 @@ pub enum DemoError {
 
 impl Demo {
     pub fn new(map: impl Into<String>) -> Demo {
-        Demo {
-            map: map.into(),
-            skill: crate::play::DEFAULT_SKILL,
-            seed: 0,
-            no_monsters: false,
-            sim: true,
-            inputs: Vec::new(),
-        }
+        Demo { map: map.into(), skill: crate::play::DEFAULT_SKILL, seed: 0, no_monsters: false, inputs: Vec::new() }
     }
 
     /// The options the recorded game was played with.
     pub fn options(&self) -> crate::play::GameOptions {
-        crate::play::GameOptions { skill: self.skill, seed: self.seed, no_monsters: self.no_monsters, sim: self.sim }
+        crate::play::GameOptions { skill: self.skill, seed: self.seed, no_monsters: self.no_monsters }
     }
 
     /// The file's bytes (see the module docs for the layout).
@@ -103,7 +93,7 @@ impl Demo {
         let mut body = Vec::with_capacity(8 + self.map.len() + self.inputs.len() * RECORD);
         body.extend((self.map.len() as u32).to_le_bytes());
         body.extend(self.map.as_bytes());
-        body.push(self.skill | if self.no_monsters { NO_MONSTERS } else { 0 } | if self.sim { SIM } else { 0 });
+        body.push(self.skill | if self.no_monsters { NO_MONSTERS } else { 0 });
         body.extend(self.seed.to_le_bytes());
         body.extend((self.inputs.len() as u32).to_le_bytes());
         for input in &self.inputs {
@@ -156,7 +146,7 @@ impl Demo {
         }
         let map = reader.take(map_len as usize).ok_or_else(|| truncated("the map name is cut short"))?;
         let byte = reader.take(1).ok_or_else(|| truncated("no skill"))?[0];
-        let (skill, no_monsters, sim) = (byte & !(NO_MONSTERS | SIM), byte & NO_MONSTERS != 0, byte & SIM != 0);
+        let (skill, no_monsters) = (byte & !NO_MONSTERS, byte & NO_MONSTERS != 0);
         let seed = reader.take(8).ok_or_else(|| truncated("no seed"))?;
         let seed = u64::from_le_bytes(seed.try_into().unwrap_or_default());
         let ticks = reader.u32().ok_or_else(|| truncated("no tick count"))? as usize;
@@ -200,7 +190,7 @@ impl Demo {
                 turn: f32::from_le_bytes([r[3], r[4], r[5], r[6]]),
             });
         }
-        Ok(Demo { map, skill, seed, no_monsters, sim, inputs })
+        Ok(Demo { map, skill, seed, no_monsters, inputs })
     }
 }
 

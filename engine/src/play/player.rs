@@ -1,17 +1,13 @@
-//! The player's body and its physics between collisions: turning, thrust and
-//! friction in the plane, gravity and the eye's height on the z axis.
-//!
-//! The numbers are Doom's (p_user.c, p_mobj.c, g_game.c), converted from 16.16
-//! fixed point to map units per tick, so the game feels like the one the
-//! issue asks for. Collision ([`super::collision`]) takes the velocity this
-//! module produces and moves the body along it.
+//! The player as the outside reads it (the window, the status bar, the
+//! sound, the autopilot, tests): where the body is, what it holds, in map
+//! units and degrees, written each tic from the simulation by
+//! [`crate::sim::game::SimGame`]; and Doom's player measures the autopilot
+//! plans with (p_user.c, p_mobj.c, g_game.c, converted from 16.16 fixed
+//! point to map units per tick).
 
 use glam::DVec2;
 
-use super::collision::Area;
-use super::input::TickInput;
 use crate::actors::KeyForm;
-use crate::geom::sin_cos_degrees;
 use crate::map::special::KeyColour;
 use crate::render::view::EYE_HEIGHT;
 
@@ -188,64 +184,8 @@ impl Player {
         }
     }
 
-    /// Power-ups run down (berserk and the map last the level), and the
-    /// screen's tints fade.
-    pub fn tick_powers(&mut self) {
-        use crate::actors::Power;
-        for power in [Power::Invulnerability, Power::Invisibility, Power::IronFeet, Power::Infrared] {
-            let t = &mut self.powers[crate::play::pickups::power_slot(power)];
-            *t = (*t - 1).max(0);
-        }
-        // Berserk counts up while owned: the screen's red fades with it.
-        let strength = &mut self.powers[crate::play::pickups::power_slot(Power::Strength)];
-        if *strength > 0 {
-            *strength = strength.saturating_add(1);
-        }
-        self.damage_count = (self.damage_count - 1).max(0);
-        self.bonus_count = (self.bonus_count - 1).max(0);
-    }
-
     pub fn dead(&self) -> bool {
         self.health <= 0
-    }
-
-    /// Loses `amount` health (at least nothing; death at 0), less what
-    /// the armour absorbs (Doom's P_DamageMobj): a third for class 1, a
-    /// half for class 2, never more than the armour has left, which then
-    /// is gone.
-    pub fn hurt(&mut self, amount: i32) {
-        if self.dead() {
-            return;
-        }
-        let mut amount = amount.max(0);
-        if self.armor_class > 0 {
-            let mut saved = if self.armor_class == 1 { amount / 3 } else { amount / 2 };
-            if self.armor <= saved {
-                saved = self.armor;
-                self.armor_class = 0;
-            }
-            self.armor -= saved;
-            amount -= saved;
-        }
-        self.health = (self.health - amount).max(0);
-    }
-
-    /// Puts the body at `pos` facing `angle`, still, on the floor of `area`,
-    /// unable to move for `freeze` ticks. Health and keys are kept.
-    pub fn teleport_to(&mut self, pos: DVec2, angle: f64, area: Area, freeze: u32) {
-        self.pos = pos;
-        self.angle = angle.rem_euclid(360.0);
-        self.velocity = DVec2::ZERO;
-        self.vz = 0.0;
-        (self.sector, self.floor, self.ceiling) = (area.sector, area.floor, area.ceiling);
-        self.z = area.floor;
-        self.freeze = freeze;
-    }
-
-    /// A dead player's eye sinks towards [`DEAD_EYE`], a unit a tick (Doom's P_DeathThink).
-    pub fn sink(&mut self) {
-        self.view_height = (self.view_height - 1.0).max(DEAD_EYE);
-        self.view_delta = 0.0;
     }
 
     /// Standing on the floor (not falling): only then do thrust and friction act.
@@ -257,118 +197,5 @@ impl Player {
     /// ceiling as Doom does, so the eye never pokes through a low ceiling.
     pub fn eye_z(&self) -> f64 {
         (self.z + self.view_height).min(self.ceiling - 4.0).max(self.z + 1.0)
-    }
-
-    /// Turns by the input's angle (any finite amount).
-    pub fn turn(&mut self, input: &TickInput) {
-        // Only a hand-edited player (Game::player_mut) can hold a non-finite
-        // angle or velocity; never let one reach the geometry.
-        if !self.angle.is_finite() {
-            self.angle = 0.0;
-        }
-        if !self.velocity.is_finite() {
-            self.velocity = DVec2::ZERO;
-        }
-        self.angle = (self.angle + f64::from(input.turn)).rem_euclid(360.0);
-        // rem_euclid of a value just below zero can round up to 360 itself.
-        if self.angle >= 360.0 {
-            self.angle = 0.0;
-        }
-    }
-
-    /// Adds this tick's thrust (on the ground only, as in Doom: no air
-    /// control) and clamps the speed.
-    ///
-    /// Forward and sideways thrust together are limited to the forward
-    /// thrust, so moving diagonally is not faster. (Doom adds them, which
-    /// makes strafe-running 28% faster than running; that is a famous quirk,
-    /// not a feel worth keeping.)
-    pub fn thrust(&mut self, input: &TickInput) {
-        if self.on_ground() && (input.forward != 0 || input.strafe != 0) {
-            let (forward, side) = if input.run { (RUN_THRUST, RUN_STRAFE) } else { (WALK_THRUST, WALK_STRAFE) };
-            let (sin, cos) = sin_cos_degrees(self.angle);
-            let ahead = DVec2::new(cos, sin);
-            let right = DVec2::new(sin, -cos);
-            let mut push = ahead * (f64::from(input.forward) * forward) + right * (f64::from(input.strafe) * side);
-            let len = push.length();
-            if len > forward {
-                push *= forward / len;
-            }
-            self.velocity += push;
-        }
-        let speed = self.velocity.length();
-        if speed > MAX_SPEED {
-            self.velocity *= MAX_SPEED / speed;
-        }
-    }
-
-    /// Friction after the move (on the ground only); a slow body with no
-    /// thrust stops.
-    pub fn friction(&mut self, input: &TickInput) {
-        if !self.on_ground() {
-            return;
-        }
-        let idle = input.forward == 0 && input.strafe == 0;
-        if idle && self.velocity.length() < STOP_SPEED {
-            self.velocity = DVec2::ZERO;
-        } else {
-            self.velocity *= FRICTION;
-        }
-    }
-
-    /// Vertical movement once the body has moved in the plane: step up onto
-    /// a higher floor at once (the eye follows smoothly), fall under gravity
-    /// onto a lower one.
-    pub fn fall(&mut self) {
-        if self.z < self.floor {
-            // A step up (at most MAX_STEP; collision saw to that). The eye
-            // stays where it was and rises over a few ticks (Doom's P_ZMovement).
-            self.view_height -= self.floor - self.z;
-            self.view_delta = (EYE_HEIGHT - self.view_height) / 8.0;
-            self.z = self.floor;
-            self.vz = 0.0;
-        } else if self.z > self.floor {
-            // As Doom's P_ZMovement: the fall so far moves the body, then
-            // gravity acts, starting at twice gravity so stepping off a
-            // ledge is not a float. The first tick over a drop the body
-            // does not sink yet: a running body carries that much further.
-            self.z += self.vz;
-            if self.z <= self.floor {
-                if self.vz < -SQUAT_SPEED {
-                    self.view_delta = self.vz / 8.0;
-                }
-                self.z = self.floor;
-                self.vz = 0.0;
-            } else {
-                self.vz = if self.vz == 0.0 { -2.0 * GRAVITY } else { self.vz - GRAVITY };
-            }
-        } else {
-            self.vz = 0.0;
-        }
-        self.settle_view();
-    }
-
-    /// Doom's P_CalcHeight without the bob: the eye returns to its rest height.
-    fn settle_view(&mut self) {
-        if self.dead() {
-            return;
-        }
-        self.view_height += self.view_delta;
-        if self.view_height > EYE_HEIGHT {
-            self.view_height = EYE_HEIGHT;
-            self.view_delta = 0.0;
-        }
-        if self.view_height < EYE_HEIGHT / 2.0 {
-            self.view_height = EYE_HEIGHT / 2.0;
-            if self.view_delta <= 0.0 {
-                self.view_delta = 1.0;
-            }
-        }
-        if self.view_delta != 0.0 {
-            self.view_delta += 0.25;
-            if self.view_delta == 0.0 {
-                self.view_delta = 1.0;
-            }
-        }
     }
 }

@@ -117,8 +117,7 @@ fn weapon_of(slot: u8) -> Option<u8> {
 /// Doom II's maps (`commercial`) or episodes, its skill as the simulation
 /// numbers it (1 to 5), and whether monsters are left out.
 pub fn game_of(header: &DemoHeader, commercial: bool) -> (String, crate::play::GameOptions) {
-    let options =
-        crate::play::GameOptions { skill: header.skill + 1, seed: 0, no_monsters: header.no_monsters, sim: false };
+    let options = crate::play::GameOptions { skill: header.skill + 1, seed: 0, no_monsters: header.no_monsters };
     (header.map_name(commercial), options)
 }
 
@@ -221,7 +220,7 @@ mod tests {
             .map(|i| TickInput { forward: 1, turn: 0.3 * i as f32, run: i % 2 == 0, ..TickInput::default() })
             .map(|i| as_recorded(&i, &mut carry))
             .collect();
-        let options = crate::play::GameOptions { skill: 3, seed: 0, no_monsters: true, sim: false };
+        let options = crate::play::GameOptions { skill: 3, seed: 0, no_monsters: true };
         let demo = demo_of("e1m4", options, &inputs).unwrap();
         assert_eq!((demo.header.skill, demo.header.episode, demo.header.map), (2, 1, 4));
         assert!(demo.header.no_monsters);

@@ -24,7 +24,8 @@ const GREY: u32 = rgb(150, 150, 150);
 
 /// The ammunition of the weapon in hand, if it uses any.
 fn current_ammo(player: &Player) -> Option<(i32, i32)> {
-    let (k, _) = crate::play::weapons::ammo_of(ActorTable::active(), player.ready_weapon?)?;
+    let weapon = ActorTable::active().actors.get(player.ready_weapon?)?.weapon.as_ref()?;
+    let k = weapon.ammo?.index();
     Some((player.ammo[k], player.max_ammo[k]))
 }
 

@@ -5,7 +5,6 @@
 
 use crate::actors::Power;
 use crate::framebuffer::Framebuffer;
-use crate::play::pickups::power_slot;
 use crate::play::Player;
 
 /// The tint a player's state calls for: colour and share (0 to 1), or the
@@ -21,7 +20,8 @@ pub enum Tint {
 /// then the gold of a pickup, then the suit's green (blinking in its last
 /// seconds); invulnerability (also blinking out) overrides them.
 pub fn of(player: &Player) -> Tint {
-    let power = |p: Power| player.powers[power_slot(p)];
+    // The read-out keeps Doom's power order (`powertype_t`), as `Power` does.
+    let power = |p: Power| player.powers[p as usize];
     let invulnerable = power(Power::Invulnerability);
     if invulnerable > 4 * 32 || invulnerable & 8 != 0 {
         return Tint::Inverse;

@@ -450,6 +450,40 @@ impl SimGame {
         }
     }
 
+    /// The level as drawn: the converted map with the simulation's heights,
+    /// light, textures and things written in after every tic.
+    pub fn level(&self) -> &Level {
+        &self.level
+    }
+
+    /// The player in map units and degrees.
+    pub fn player(&self) -> &Player {
+        &self.player
+    }
+
+    /// Tics played on this level (Doom's `leveltime`).
+    pub fn ticks(&self) -> u64 {
+        u64::from(self.sim.leveltime)
+    }
+
+    /// The last tic's sounds, switches and messages.
+    pub fn events(&self) -> &[Event] {
+        &self.events
+    }
+
+    /// The console player's tallies and the level's totals.
+    pub fn stats(&self) -> Stats {
+        let p = self.sim.player(self.sim.console);
+        let count = |f: fn(&super::Player) -> i32| p.map_or(0, f).max(0) as u32;
+        let total = |n: i32| n.max(0) as u32;
+        Stats {
+            kills: (count(|p| p.killcount), total(self.sim.total_kills)),
+            items: (count(|p| p.itemcount), total(self.sim.total_items)),
+            secrets: (count(|p| p.secretcount), total(self.sim.total_secrets)),
+            ticks: u64::from(self.sim.leveltime),
+        }
+    }
+
     /// How the level ended, once it has.
     pub fn exit(&self) -> Option<Exit> {
         self.sim.exit.map(|secret| if secret { Exit::Secret } else { Exit::Normal })
@@ -458,15 +492,15 @@ impl SimGame {
 
 impl Observe for SimGame {
     fn level(&self) -> &Level {
-        &self.level
+        SimGame::level(self)
     }
 
     fn ticks(&self) -> u64 {
-        u64::from(self.sim.leveltime)
+        SimGame::ticks(self)
     }
 
     fn player(&self) -> &Player {
-        &self.player
+        SimGame::player(self)
     }
 
     fn seen(&self) -> Cow<'_, [Seen]> {
@@ -482,19 +516,11 @@ impl Observe for SimGame {
     }
 
     fn events(&self) -> &[Event] {
-        &self.events
+        SimGame::events(self)
     }
 
     fn stats(&self) -> Stats {
-        let p = self.sim.player(self.sim.console);
-        let count = |f: fn(&super::Player) -> i32| p.map_or(0, f).max(0) as u32;
-        let total = |n: i32| n.max(0) as u32;
-        Stats {
-            kills: (count(|p| p.killcount), total(self.sim.total_kills)),
-            items: (count(|p| p.itemcount), total(self.sim.total_items)),
-            secrets: (count(|p| p.secretcount), total(self.sim.total_secrets)),
-            ticks: u64::from(self.sim.leveltime),
-        }
+        SimGame::stats(self)
     }
 
     fn is_busy(&self, sector: usize) -> bool {
@@ -517,7 +543,7 @@ impl Observe for SimGame {
         let map = &self.level.compiled.map;
         let mut hits: Vec<(f64, SpecialLine)> = Vec::new();
         let mut cross = |a: DVec2, b: DVec2, line: SpecialLine| {
-            if let Some(t) = crate::play::trace::crossing(from, to, a, b) {
+            if let Some(t) = crate::geom::crossing(from, to, a, b) {
                 hits.push((t, line));
             }
         };

@@ -106,7 +106,7 @@ fn sim_game(m: &MapSource) -> SimGame {
         report: None,
         links: None,
     };
-    let options = GameOptions { skill: 3, no_monsters: true, sim: true, ..GameOptions::default() };
+    let options = GameOptions { skill: 3, no_monsters: true, ..GameOptions::default() };
     SimGame::new(opened, options).unwrap_or_else(|e| panic!("{e}"))
 }
 

@@ -18,7 +18,7 @@ use sightline::Framebuffer;
 use crate::cli::BenchAutopilotArgs;
 
 pub fn run(args: &BenchAutopilotArgs) -> Result<()> {
-    let options = GameOptions { skill: args.skill, seed: 0, no_monsters: args.no_monsters, sim: false };
+    let options = GameOptions { skill: args.skill, seed: 0, no_monsters: args.no_monsters };
     let mut planning = Vec::new();
     println!(
         "{:<28} {:>7} {:>9} {:>6} {:>9} {:>9} {:>7} {:>10} {:>10}",

@@ -63,7 +63,7 @@ pub fn run(args: &PlayArgs) -> Result<()> {
     };
     let game_options = match &demo {
         Some(demo) => demo.options(),
-        None => GameOptions { skill: args.skill, seed: args.seed, no_monsters: args.no_monsters, sim: true },
+        None => GameOptions { skill: args.skill, seed: args.seed, no_monsters: args.no_monsters },
     };
     let play = match &args.load {
         Some(save) => Playthrough::load(save)?,

@@ -29,7 +29,7 @@
 //!
 //! **Shots** (P_LineAttack). From `(origin, z)` along `angle` (degrees) with
 //! `slope` (height per horizontal unit) up to `range` (Doom's 2048 for
-//! bullets, [`super::SHOT_RANGE`]; 64 for melee, [`MELEE_RANGE`]). The shot
+//! bullets, [`crate::play::SHOT_RANGE`]; 64 for melee, [`MELEE_RANGE`]). The shot
 //! stops at the first of:
 //! - a one-sided wall ([`Part::Middle`]);
 //! - a two-sided line whose opening is closed or does not hold the shot's
@@ -964,7 +964,7 @@ mod tests {
                 for f in m.ends() {
                     let x = p + (q - p) * f;
                     prop_assert!((0.0..=1.0).contains(&f));
-                    prop_assert!(crate::play::collision::distance_to_segment(x, a, b) < 1e-9, "{:?} at {}", m, f);
+                    prop_assert!(crate::geom::distance_to_segment(x, a, b) < 1e-9, "{:?} at {}", m, f);
                 }
             }
         }

@@ -9,7 +9,7 @@ use crate::map::Map;
 
 /// Cell size in map units (Doom's `MAPBLOCKSIZE`, 128). A tick's move, with
 /// the body round it, fits in a box of at most 94 units a side (the speed
-/// limit 30 plus radius 16 plus one, each way; see [`super::collision`]), so
+/// limit 30 plus radius 16 plus one, each way; as Doom's player moves), so
 /// a query touches at most two cells along each axis.
 pub const CELL: f64 = 128.0;
 /// Cells per axis are capped so a huge sparse map (coordinates up to 2^24)
