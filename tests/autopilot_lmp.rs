@@ -89,8 +89,8 @@ fn clock(c: Clock) -> String {
     format!("{}:{:02}", c.minutes, c.seconds)
 }
 
-/// The autopilot's exits on the simulation today (`sightline autoplay
-/// --sim`): a change that loses one shows here. freedoom1: E1M1, E1M3,
+/// The autopilot's exits on the simulation today (`sightline autoplay`):
+/// a change that loses one shows here. freedoom1: E1M1, E1M3,
 /// E1M5, E1M9; freedoom2: MAP01, MAP03, MAP04, MAP05, MAP07. (Fights in
 /// Doom's rules are chaotic: a change anywhere in the bot moves which maps
 /// it survives, so a drop here is worth a look, not always a bug.)

@@ -117,7 +117,7 @@ fn move_ceiling(sim: &mut Sim, id: ThinkerId, c: &mut Ceiling) {
                     ) {
                         c.speed = Fixed(CEILSPEED.0 / 8);
                     }
-                    // As the f64 game: an eighth of its own speed, unless
+                    // Boom's generalized crushers: an eighth of their own speed, unless
                     // as fast as vanilla's fast crusher.
                     let generalized = matches!(c.kind, CeilingType::GenCrusher | CeilingType::GenSilentCrusher);
                     if generalized && c.oldspeed < CEILSPEED * 2 {
