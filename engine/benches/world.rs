@@ -1,9 +1,14 @@
-//! The world's machinery, per tick (issue 12's benchmarks):
+//! The world's machinery, per tick (issue 12's benchmarks), on the
+//! simulation with Doom's arithmetic: each tick is `SimGame::tick`, the
+//! game's whole tic (the player's command, every thinker, the specials,
+//! then the level read out for the renderer), as the window runs it.
 //!
 //! - **idle**: a tick in a generated room of 1,000 pillar sectors, each with
 //!   a unique tag, an idle sector special and a line special naming it that
 //!   is never set off, against the same geometry with none, the player
-//!   walking about (the same seeded inputs on both). Criterion times one
+//!   walking about (the same seeded inputs on both; a RON map plays by
+//!   Sightline's rules, its specials as Boom's generalized ones,
+//!   `sim::from_map`). Criterion times one
 //!   tick per iteration (`idle-tags/none`, `idle-tags/1000-tagged`,
 //!   `idle-tags/none-again`); a
 //!   second, interleaved loop (none, tagged, tagged, none, ...) gives the
@@ -11,19 +16,22 @@
 //! - **freedoom**: ticks per second on every map of freedoom1.wad and
 //!   freedoom2.wad (68 maps) with everything the player can set off
 //!   running. Each round starts a fresh game at skill 3 on the map (opened
-//!   once from the WAD, its level rebuilt untimed), sets off every special
+//!   once from the WAD, its level rebuilt and the simulation loaded from
+//!   the WAD untimed), sets off every special
 //!   through the player's inputs (`world/setoff.rs`, untimed), puts the
 //!   player back at the start and times each of [`WINDOW`] ticks on its
 //!   own: walking (seeded random inputs), standing still, and standing still
 //!   in a game where nothing was set off (the lights and timers a level
 //!   starts with still run), the three in rotating order. A custom loop, not
-//!   criterion: a tick can be timed only once from a given state (`Game` is
-//!   not `Clone`), so every window needs an untimed fresh game and setup
+//!   criterion: a tick can be timed only once from a given state, so every
+//!   window needs an untimed fresh game and setup
 //!   worth hundreds of ticks, which criterion's loop cannot keep out of its
 //!   budget; and its warm-up, analysis and reports for 68 maps would take far
 //!   longer than the ticks. Prints a markdown table: median µs per tick over
-//!   all rounds, ticks per second, the thinkers running at the start and end
-//!   of the window, and what could not be set off.
+//!   all rounds, ticks per second, the sector thinkers running (the
+//!   simulation's doors, lifts, floors, ceilings and lights, and the
+//!   pressed buttons waiting to pop back) at the start and end of the
+//!   window, and what could not be set off.
 //!
 //! Run: `cargo bench -p sightline-engine --bench world` (both), or with
 //! `-- idle` or `-- freedoom` for one; `SIGHTLINE_WORLD_MAPS=MAP20,E1M4`
@@ -42,13 +50,15 @@ use std::time::{Duration, Instant};
 use common::{extent, median, open_wad, wad_library, Wanted};
 use criterion::Criterion;
 use sightline::bsp::{build, BuildOptions, CompiledMap};
-use sightline::campaign::{open, MapRef};
+use sightline::campaign::{open, MapRef, Opened};
 use sightline::level::Level;
 use sightline::map::load::parse_map;
 use sightline::materials::Materials;
 use sightline::play::input::wander;
-use sightline::play::world::Thinker;
-use sightline::play::{Game, TickInput};
+use sightline::play::{GameOptions, TickInput};
+use sightline::sim::game::SimGame;
+use sightline::sim::think::Status;
+use sightline::sim::ThinkerKind;
 
 /// Ticks timed per round on a Freedoom map: 3 s of play, while what was
 /// set off still runs (a door is done about 214 ticks after it opens).
@@ -87,12 +97,19 @@ fn median_us(times: &[Duration]) -> f64 {
 }
 
 /// Ticks `game` through `inputs`, timing each tick on its own.
-fn time_ticks(game: &mut Game, inputs: &[TickInput], times: &mut Vec<Duration>) {
+fn time_ticks(game: &mut SimGame, inputs: &[TickInput], times: &mut Vec<Duration>) {
     for input in inputs {
         let start = Instant::now();
         game.tick(input);
         times.push(start.elapsed());
     }
+}
+
+/// A fresh game on the pillar room, with (`specials`) or without its
+/// tags and specials.
+fn pillar_game(specials: bool) -> SimGame {
+    let label = if specials { "pillars-tagged" } else { "pillars-plain" };
+    SimGame::on_level(pillar_level(specials), label, GameOptions::default()).unwrap_or_else(|e| panic!("{e}"))
 }
 
 fn pillar_level(specials: bool) -> Level {
@@ -115,7 +132,7 @@ fn idle(c: &mut Criterion, quick: bool) {
     // "none" once more at the end: the first run of a group tends to be
     // slower (the sectors bench sees the same).
     for (name, specials) in [("none", false), ("1000-tagged", true), ("none-again", false)] {
-        let mut game = Game::new(pillar_level(specials)).unwrap_or_else(|e| panic!("{e}"));
+        let mut game = pillar_game(specials);
         let mut k = 0;
         group.bench_function(name, |b| {
             b.iter(|| {
@@ -134,11 +151,11 @@ fn idle(c: &mut Criterion, quick: bool) {
     for round in 0..rounds {
         let order = if round.is_multiple_of(2) { [0, 1] } else { [1, 0] };
         for which in order {
-            let mut game = Game::new(pillar_level(levels[which])).unwrap_or_else(|e| panic!("{e}"));
+            let mut game = pillar_game(levels[which]);
             let mut times = Vec::with_capacity(ticks);
             time_ticks(&mut game, &inputs[..ticks], &mut times);
             medians[which].push(median_us(&times));
-            assert_eq!(game.world().thinkers.len(), 0, "an idle map has no thinker running");
+            assert_eq!(sector_thinkers(&game), 0, "an idle map has no sector thinker running");
             ends[which] = Some(game.player().pos);
         }
     }
@@ -158,21 +175,30 @@ fn idle(c: &mut Criterion, quick: bool) {
     println!("per-round medians: none {}, tagged {}\n", spread(&medians[0]), spread(&medians[1]));
 }
 
-/// The thinkers running, by kind: doors, plats (lifts), floors, ceilings
-/// (and crushers), lights, buttons.
-fn census(game: &Game) -> [usize; 6] {
+/// The sector thinkers running, by kind: doors, plats (lifts), floors,
+/// ceilings (and crushers), lights; and the pressed buttons waiting to pop
+/// back (Doom keeps them in `buttonlist`, not as thinkers). A plat or
+/// crusher in stasis is not running; bodies are not counted.
+fn census(game: &SimGame) -> [usize; 6] {
     let mut n = [0; 6];
-    for t in &game.world().thinkers {
-        n[match t {
-            Thinker::Door(_) => 0,
-            Thinker::Plat(_) => 1,
-            Thinker::Floor(_) => 2,
-            Thinker::Ceiling(_) => 3,
-            Thinker::Light(_) => 4,
-            Thinker::Button(_) => 5,
-        }] += 1;
+    for t in game.sim.thinkers.iter().filter(|t| t.status == Status::Active) {
+        let k = match t.kind {
+            ThinkerKind::Mobj(_) => continue,
+            ThinkerKind::Door(_) => 0,
+            ThinkerKind::Plat(_) => 1,
+            ThinkerKind::Floor(_) => 2,
+            ThinkerKind::Ceiling(_) => 3,
+            ThinkerKind::Light(_) => 4,
+        };
+        n[k] += 1;
     }
+    n[5] = game.sim.spec.buttons.iter().filter(|b| b.timer != 0).count();
     n
+}
+
+/// All of [`census`]: the level's machinery at work.
+fn sector_thinkers(game: &SimGame) -> usize {
+    census(game).iter().sum()
 }
 
 /// How a Freedoom map is timed: with everything set off or nothing, the
@@ -229,11 +255,20 @@ fn freedoom(quick: bool) {
             let label = format!("{}:{name}", path.display());
             let opened = open(&MapRef::parse(&label, None), &BuildOptions::default()).unwrap_or_else(|e| panic!("{e}"));
             let compiled = opened.level.compiled.clone();
-            // A fresh level as `open` makes it, without compiling again.
-            let fresh = || -> Game {
+            // A fresh level as `open` makes it, without compiling again; the
+            // simulation reads the WAD's own lumps.
+            let fresh = || -> SimGame {
                 let materials =
                     Materials::resolve_in(&compiled.map, &library, &label).unwrap_or_else(|e| panic!("{e}"));
-                Game::new(Level::new(compiled.clone(), materials)).unwrap_or_else(|e| panic!("{label}: {e}"))
+                let again = Opened {
+                    level: Level::new(compiled.clone(), materials),
+                    map: opened.map.clone(),
+                    repairs: Vec::new(),
+                    report: None,
+                    links: opened.links.clone(),
+                };
+                SimGame::new(again, GameOptions { skill: 3, ..Default::default() })
+                    .unwrap_or_else(|e| panic!("{label}: {e}"))
             };
             let row = time_map(&name, &compiled, fresh, [&walk, &still, &still], rounds);
             eprintln!(
@@ -257,7 +292,7 @@ fn freedoom(quick: bool) {
 fn time_map(
     name: &str,
     compiled: &CompiledMap,
-    fresh: impl Fn() -> Game,
+    fresh: impl Fn() -> SimGame,
     inputs: [&[TickInput]; 3],
     rounds: usize,
 ) -> Row {
@@ -283,8 +318,8 @@ fn time_map(
                 Setup::PlainIdle => setoff::SetOff::default(),
             };
             let start = compiled.map.player_start();
-            game.teleport(start.pos, start.angle).unwrap_or_else(|e| panic!("{name}: {e}"));
-            game.player_mut().health = HEALTH;
+            assert!(game.place_player(start.pos, start.angle), "{name}: the player start has no room");
+            game.set_health(HEALTH);
             let census_start = census(&game);
             for (tick, input) in inputs[which].iter().enumerate() {
                 let t = Instant::now();
@@ -296,7 +331,7 @@ fn time_map(
                 }
             }
             match setup {
-                Setup::Walking => (row.set, row.start, row.end) = (set, census_start, game.world().thinkers.len()),
+                Setup::Walking => (row.set, row.start, row.end) = (set, census_start, sector_thinkers(&game)),
                 Setup::Idle => {}
                 Setup::PlainIdle => row.plain_thinkers = census_start.iter().sum(),
             }

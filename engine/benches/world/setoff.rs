@@ -1,8 +1,17 @@
 //! Sets off every line special of a level through the player's inputs, as
 //! a player who could stand anywhere would: each use special used from in
 //! front of its line, each walk special walked across, each shoot special
-//! shot, every key held. Teleporting the player in front of each line is
-//! the only help (tests/freedoom.rs does the same for use lines).
+//! shot, every key held. Putting the player in front of each line
+//! (`SimGame::place_player`) is the only help (tests/freedoom.rs does the
+//! same for use lines).
+//!
+//! Whether a special went off is read from what the simulation shows the
+//! outside: a used line's `Event::Special` (`P_UseSpecialLine` acted); a
+//! walk line's when the player's centre went from one side of it to the
+//! other (`P_TryMove` calls `P_CrossSpecialLine` then), a teleport froze
+//! the player, a mover started or the line lost its special (W1); a shot
+//! line's when the shot changed a switch texture
+//! (each of Doom's three gun specials does) or started a mover.
 //!
 //! Left out: exits (the level would end and ticks would do nothing), the
 //! specials only monsters set off, the specials that stop perpetual lifts
@@ -11,14 +20,16 @@
 //! reverses it, as in Doom, and would undo what the first side set going.
 
 use glam::DVec2;
-use sightline::actors::KeyForm;
+use sightline::autopilot::observe::Observe;
+use sightline::fixed::Fixed;
 use sightline::geom::{exact_side, Side};
-use sightline::map::special::{Action, Activation, KeyColour};
+use sightline::map::special::{Action, Activation};
 use sightline::map::{LineSpecial, Map};
 use sightline::play::events::Event;
-use sightline::play::player::Key;
 use sightline::play::world::SpecialLine;
-use sightline::play::{Game, TickInput};
+use sightline::play::TickInput;
+use sightline::sim::game::SimGame;
+use sightline::sim::{ThinkerKind, NUMCARDS};
 
 /// What setting the specials off did.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -49,11 +60,14 @@ pub struct Failure {
 pub enum Outcome {
     WentOff,
     /// No place inside the map on the side it goes off from (the sector in
-    /// front is too thin, or a point there is in another sector).
+    /// front is too thin, a point there is in another sector, or Doom's
+    /// 32-unit body does not fit there: `P_CheckPosition` finds a wall, a
+    /// thing or too low a ceiling, as for the face of a shut door).
     NoRoom,
     /// The player stood there and pressed, fired or walked, and the special
-    /// did not go off: the way across is blocked (a closed door or a step
-    /// just beyond the line), or a wall came first.
+    /// did not go off: the way across is blocked (a closed door, a step or
+    /// a solid thing such as a tree just beyond the line), or a wall came
+    /// first.
     Blocked,
 }
 
@@ -104,18 +118,22 @@ fn specials(map: &Map) -> Vec<(SpecialLine, LineSpecial)> {
     all
 }
 
-/// Every key, so that locked doors open.
-pub fn all_keys() -> Vec<Key> {
-    KeyColour::ALL.iter().flat_map(|&colour| [KeyForm::Card, KeyForm::Skull].map(|form| Key { colour, form })).collect()
+/// Gives the player every key (Doom's six cards and skulls), so that
+/// locked doors open.
+fn give_all_keys(game: &mut SimGame) {
+    let console = game.sim.console;
+    if let Some(p) = game.sim.players[console].as_mut() {
+        p.cards = [true; NUMCARDS];
+    }
 }
 
 /// Sets off every special of the game's map it can (see the module doc)
 /// and returns what it did. Those that do not go off are tried once more
 /// after the rest, when the doors and floors in their way may have moved.
 /// The player ends wherever the last one left it.
-pub fn set_off_everything(game: &mut Game) -> SetOff {
-    let map = game.level().map.clone();
-    game.player_mut().keys = all_keys();
+pub fn set_off_everything(game: &mut SimGame) -> SetOff {
+    let map = game.level().compiled.map.clone();
+    give_all_keys(game);
     let start = game.ticks();
     let mut out = SetOff::default();
     let mut retry = Vec::new();
@@ -146,7 +164,7 @@ pub fn set_off_everything(game: &mut Game) -> SetOff {
     out
 }
 
-fn try_one(game: &mut Game, map: &Map, line: SpecialLine, special: &LineSpecial) -> Outcome {
+fn try_one(game: &mut SimGame, map: &Map, line: SpecialLine, special: &LineSpecial) -> Outcome {
     match special.on {
         Activation::Use => press(game, map, line, TickInput { use_line: true, ..Default::default() }),
         Activation::Shoot => press(game, map, line, TickInput { fire: true, ..Default::default() }),
@@ -156,7 +174,7 @@ fn try_one(game: &mut Game, map: &Map, line: SpecialLine, special: &LineSpecial)
 
 /// Does `special` move sectors (with a mover: lights and teleports do not)
 /// and is every one of them moving already?
-fn moves_only_busy_sectors(game: &Game, map: &Map, line: SpecialLine, special: &LineSpecial) -> bool {
+fn moves_only_busy_sectors(game: &SimGame, map: &Map, line: SpecialLine, special: &LineSpecial) -> bool {
     if !special.action.moves_sectors() || matches!(special.action, Action::Light(_)) {
         return false;
     }
@@ -165,7 +183,7 @@ fn moves_only_busy_sectors(game: &Game, map: &Map, line: SpecialLine, special: &
         (0, SpecialLine::Trigger(_)) => Vec::new(),
         (tag, _) => map.sectors_tagged(tag).collect(),
     };
-    !targets.is_empty() && targets.iter().all(|&s| game.world().is_busy(s))
+    !targets.is_empty() && targets.iter().all(|&s| game.is_busy(s))
 }
 
 /// The line's two ends, the unit normal pointing to its front (right-hand)
@@ -188,7 +206,7 @@ fn geometry(map: &Map, line: SpecialLine) -> (DVec2, DVec2, DVec2, [Option<usize
 /// Puts the player `distance` in front of (`side` 1) or behind (-1) the
 /// middle of `line`, facing it, alive and free to act. `false` when no
 /// such place is inside the map on that side.
-fn stand_by(game: &mut Game, map: &Map, line: SpecialLine, side: f64, distances: &[f64]) -> bool {
+fn stand_by(game: &mut SimGame, map: &Map, line: SpecialLine, side: f64, distances: &[f64]) -> bool {
     let (a, b, normal, sectors) = geometry(map, line);
     let want = if side > 0.0 { Side::Front } else { Side::Back };
     let sector = if side > 0.0 { sectors[0] } else { sectors[1] };
@@ -201,26 +219,41 @@ fn stand_by(game: &mut Game, map: &Map, line: SpecialLine, side: f64, distances:
         return false;
     };
     let facing = -normal * side;
-    if game.teleport(pos, facing.y.atan2(facing.x).to_degrees()).is_err() {
+    if !game.place_player(pos, facing.y.atan2(facing.x).to_degrees()) {
         return false;
     }
-    let p = game.player_mut();
-    (p.health, p.freeze, p.use_held, p.fire_held) = (100, 0, false, false);
+    game.set_health(100);
+    let console = game.sim.console;
+    let Some(p) = game.sim.players[console].as_mut() else { return false };
+    // Free to act: use and fire let go (a press needs them up first, as
+    // Doom's `usedown` and `attackdown` say), no teleport freeze left.
+    (p.usedown, p.attackdown) = (false, false);
+    let mo = p.mo;
+    game.sim.mo_mut(mo).reactiontime = 0;
     true
 }
 
-/// Did `line`'s special go off on the last tick?
-fn went_off(game: &Game, line: SpecialLine) -> bool {
+/// What a shot or walk line's going off changes: the switch textures
+/// flipped so far and the movers started so far.
+fn marks(game: &SimGame) -> (u32, usize) {
+    let movers = game.sim.thinkers.iter().filter(|t| !matches!(t.kind, ThinkerKind::Mobj(_))).count();
+    (game.sim.textures_changed, movers)
+}
+
+/// Did the used `line`'s special go off on the last tick?
+fn used(game: &SimGame, line: SpecialLine) -> bool {
     game.events().iter().any(|e| matches!(e, Event::Special { line: l, .. } if *l == line))
 }
 
 /// Uses or shoots `line` from its front: one tick.
-fn press(game: &mut Game, map: &Map, line: SpecialLine, input: TickInput) -> Outcome {
+fn press(game: &mut SimGame, map: &Map, line: SpecialLine, input: TickInput) -> Outcome {
     if !stand_by(game, map, line, 1.0, &[20.0, 8.0, 2.0]) {
         return Outcome::NoRoom;
     }
+    let before = marks(game);
     game.tick(&input);
-    if went_off(game, line) {
+    let went_off = if input.use_line { used(game, line) } else { marks(game) != before };
+    if went_off {
         Outcome::WentOff
     } else {
         Outcome::Blocked
@@ -229,18 +262,28 @@ fn press(game: &mut Game, map: &Map, line: SpecialLine, input: TickInput) -> Out
 
 /// Runs across `line` from 12 units in front of it (or, if that fails,
 /// from behind: walk specials go off either way), a few ticks at most.
-fn walk_across(game: &mut Game, map: &Map, line: SpecialLine) -> Outcome {
-    let normal = geometry(map, line).2;
+fn walk_across(game: &mut SimGame, map: &Map, line: SpecialLine) -> Outcome {
+    let (a, b, normal, _) = geometry(map, line);
     let mut outcome = Outcome::NoRoom;
     for side in [1.0, -1.0] {
         if !stand_by(game, map, line, side, &[12.0, 6.0, 2.0]) {
             continue;
         }
         outcome = Outcome::Blocked;
-        game.player_mut().velocity = -normal * side * 16.0;
+        let start = if side > 0.0 { Side::Front } else { Side::Back };
+        let velocity = -normal * side * 16.0;
+        let mo = game.sim.player(game.sim.console).map(|p| p.mo).expect("a player in the game");
+        let m = game.sim.mo_mut(mo);
+        (m.momx, m.momy) = (Fixed::from_f64(velocity.x), Fixed::from_f64(velocity.y));
         for _ in 0..3 {
+            let before = marks(game);
             game.tick(&TickInput { forward: 1, run: true, ..Default::default() });
-            if went_off(game, line) {
+            let crossed = exact_side(a, b, game.player().pos) != start;
+            // A teleport freezes the player (`P_Teleport` sets its
+            // reactiontime to 18), wherever the destination is; a W1 line
+            // loses its special once it has acted.
+            let teleported = game.player().freeze > 0;
+            if crossed || teleported || marks(game) != before || game.special(line).is_none() {
                 return Outcome::WentOff;
             }
         }
