@@ -212,7 +212,8 @@ pub struct PlayArgs {
     /// Skill level 1 to 5 (Doom's: 3 is Hurt Me Plenty); things appear by it.
     #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(1..=5))]
     pub skill: u8,
-    /// The game's random seed (light flicker, lifts' first direction).
+    /// Where a RON map's game starts in Doom's random table (a WAD's map
+    /// starts at 0, as vanilla does).
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
     /// Internal frame size, WxH; the window scales it to fit.
@@ -372,7 +373,8 @@ pub struct AutoplayArgs {
     /// Skill level 1 to 5.
     #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(1..=5))]
     pub skill: u8,
-    /// The game's random seed.
+    /// Where a RON map's game starts in Doom's random table (a WAD's map
+    /// starts at 0, as vanilla does).
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
     /// Play without monsters (Doom's -nomonsters).

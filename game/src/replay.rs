@@ -1,7 +1,7 @@
 //! `sightline replay`: a demo's inputs through the simulation, headless, as
 //! fast as it runs. The same demo gives the same positions and the same
 //! frames every time: the simulation is deterministic and frames are
-//! rendered from the state after whole ticks (`Game::view(1.0)`), never from
+//! rendered from the state after whole ticks (`SimGame::view(1.0)`), never from
 //! wall time. A demo that exits a level goes on through the intermission
 //! into the next map, as the window would.
 

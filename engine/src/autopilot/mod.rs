@@ -3,7 +3,7 @@
 //! Each tick it looks at what a player can know (the map's geometry and
 //! specials as they stand now, the things in view, its own health, ammo and
 //! keys) and answers one [`TickInput`], which the caller hands to
-//! [`Game::tick`] like a keyboard's. It never changes the game.
+//! [`SimGame::tick`](crate::sim::game::SimGame::tick) like a keyboard's. It never changes the game.
 //!
 //! - [`nav`]: the navigation grid (16-unit cells, walls, heights).
 //! - [`plan`]: the level's mechanisms, the heights a plan assumes, the
@@ -238,7 +238,7 @@ impl Active {
 }
 
 /// The bot. Make one per game with [`Autopilot::new`], then call
-/// [`Autopilot::tick`] before every [`Game::tick`].
+/// [`Autopilot::tick`] before every [`SimGame::tick`](crate::sim::game::SimGame::tick).
 pub struct Autopilot {
     nav: NavGrid,
     mech: Mechanisms,

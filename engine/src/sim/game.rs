@@ -114,6 +114,11 @@ impl SimGame {
                     ..Rules::single(skill, super::GameVersion::Doom19, super::GameMode::Commercial)
                 };
                 let mut sim = from_map::sim_on_map(level, rules, players, table);
+                // Doom's generator is one table read in turn: a seed picks
+                // where in it `P_Random` and `M_Random` start. (A WAD's map
+                // starts both at 0, as vanilla does and its demos need.)
+                let [p, m, ..] = options.seed.to_le_bytes();
+                sim.rng = crate::fixed::DoomRandom::from_indices(p, m);
                 // Raise-to-texture floors measure the map's own textures.
                 let textures = &opened.level.materials.textures;
                 let heights = sim.level.names.iter().filter_map(|name| {
