@@ -128,10 +128,13 @@ fn truncated_flipped_and_foreign_saves_are_errors_naming_the_file() {
     let mut other = bytes.clone();
     other[MAGIC.len()] = VERSION + 1;
     assert!(matches!(refused(&other, "version"), SaveError::Version { found, .. } if found == VERSION + 1));
-    // Version 1, before the simulation with Doom's arithmetic: refused, saying so.
-    other[MAGIC.len()] = 1;
-    let e = refused(&other, "version 1");
-    assert!(matches!(e, SaveError::Version { found: 1, .. }) && e.to_string().contains("reads version 2"), "{e}");
+    // Versions 1 and 2, which could hold the f64 game: refused, saying so.
+    for old in [1, 2] {
+        other[MAGIC.len()] = old;
+        let e = refused(&other, "an older version");
+        let says = e.to_string().contains(&format!("version {old}, this build reads version 3"));
+        assert!(matches!(e, SaveError::Version { found, .. } if found == old) && says, "{e}");
+    }
     let mut longer = bytes.clone();
     longer.push(0);
     assert!(matches!(refused(&longer, "longer"), SaveError::Corrupt { .. }));

@@ -192,9 +192,10 @@ impl Scene {
 
 /// A grid map's doors slide (Wolfenstein's): the simulation raises each as
 /// a Doom door (to 4 below the grid's ceiling, its one neighbour's), and
-/// the drawn panel slides into its jamb by the share of that rise, the
-/// doorway shut to the renderers until the door is fully open. Door `k`
-/// is sector `k + 1` (`grid::compile`'s numbering, checked).
+/// the ray-caster draws the panel slid into its jamb by the share of that
+/// rise. The sector's heights stay the simulation's (what the body meets,
+/// and what the autopilot plans by). Door `k` is sector `k + 1`
+/// (`grid::compile`'s numbering, checked).
 fn slide_grid_doors(level: &mut Level) {
     let Some(full) = level.compiled.grid.as_ref().map(|g| g.ceiling) else { return };
     let Some(grid) = level.grid.as_mut() else { return };
@@ -203,13 +204,12 @@ fn slide_grid_doors(level: &mut Level) {
         if grid.faces.door_sectors.get(cell).map(|&s| s as usize) != Some(sector) {
             continue;
         }
-        let Some(s) = level.compiled.map.sectors.get_mut(sector) else { continue };
+        let Some(s) = level.compiled.map.sectors.get(sector) else { continue };
         // Doom's doors stop 4 below the lowest ceiling around them.
         let rise = full - 4.0 - s.floor;
         let open = if rise > 0.0 { ((s.ceiling - s.floor) / rise).clamp(0.0, 1.0) } else { 1.0 };
         if let Some(o) = grid.open.get_mut(k) {
             *o = open;
         }
-        s.ceiling = if open >= 1.0 { full } else { s.floor };
     }
 }
