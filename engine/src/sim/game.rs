@@ -625,6 +625,36 @@ mod tests {
         assert_eq!(shown(&game), before, "the button did not pop back");
     }
 
+    fn cursors(g: &SimGame) -> (u8, u8) {
+        (g.sim.rng.p_index(), g.sim.rng.m_index())
+    }
+
+    /// A RON map's seed picks where Doom's random table is read from.
+    #[test]
+    fn a_seed_moves_a_ron_map_s_random_cursors() {
+        let ron = |seed: u64| {
+            let map = MapRef::File(std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../maps/outpost.ron"));
+            let opened = open(&map, &BuildOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+            SimGame::new(opened, GameOptions { seed, ..GameOptions::default() }).unwrap_or_else(|e| panic!("{e}"))
+        };
+        assert_eq!(cursors(&ron(0)), (0, 0));
+        assert_eq!(cursors(&ron(0x0201)), (1, 2));
+    }
+
+    /// A WAD's map starts the table at 0 whatever the seed, as vanilla does
+    /// (its demos need it).
+    #[test]
+    #[cfg_attr(freedoom_missing, ignore = "needs freedoom1.wad: apt-get install freedoom")]
+    fn a_wad_map_s_random_cursors_do_not_follow_the_seed() {
+        let dir = std::env::var_os("SIGHTLINE_DOOM_DIR")
+            .map_or_else(|| std::path::PathBuf::from("/usr/share/games/doom"), std::path::PathBuf::from);
+        let map = MapRef::Wad { wads: vec![dir.join("freedoom1.wad")], map: Some("E1M1".into()) };
+        let opened = open(&map, &BuildOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+        let options = GameOptions { seed: 0x0201, ..GameOptions::default() };
+        let seeded = SimGame::new(opened, options).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(cursors(&seeded), cursors(&e1m1()));
+    }
+
     /// The player read out is the simulation's: its ammunition in our
     /// order (bullets, shells, rockets, cells), its weapons as actors.
     #[test]
