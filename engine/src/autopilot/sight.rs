@@ -1,110 +1,72 @@
-//! Sight and shots: the geometry questions of Doom's `p_sight.c` (can one
-//! body see another, P_CheckSight) and of the attack half of `p_map.c` (what
-//! a shot hits, P_LineAttack; where auto-aim points, P_AimLineAttack). Each
-//! comes twice and the two answer identically: a fast path that asks the BSP
-//! which lines lie near the segment ([`sight`], [`hitscan`], [`aim_slope`])
-//! and a brute-force oracle that tries every line of the map
-//! ([`sight_brute`], [`hitscan_brute`], [`aim_slope_brute`]). It hands the
-//! simulation a bool, a [`Hit`] or an [`Aimed`] slope; it changes nothing.
+//! The autopilot's line of sight: the geometry question of Doom's
+//! `p_sight.c` (can one body see another, P_CheckSight) asked in f64 over the
+//! converted map, for the planner to judge what it may expect. The game's own
+//! sight is `sim/sight.rs` (Doom's P_CheckSight on Doom's nodes, in fixed
+//! point); this one is the planner's: it answers what the bot may expect,
+//! never what happens. It comes twice and the two answer identically: a fast path that asks the compiled
+//! BSP which lines lie near the segment ([`sight`]) and a brute-force oracle
+//! that tries every line of the map ([`sight_brute`]). It hands the
+//! autopilot a bool; it changes nothing.
 //!
 //! **The model.** Everything happens in the vertical plane over the 2D
-//! segment from `p` (the looker or shooter) to `q` (the target, or the end of
-//! the shot's range), at fractions `f` of it (0 at `p`, 1 at `q`). A line
-//! acts wherever the closed segment meets it ([`meet`]). Sector heights are
-//! read from `Map::sectors` at the call, so moving floors and ceilings count.
-//! A two-sided line's *opening* is the higher of its two floors up to the
-//! lower of its two ceilings; it is *closed* when that floor is at or above
-//! that ceiling. Every two-sided line acts by its opening, not only those
-//! whose floors (or ceilings) differ as in Doom: Doom's shortcut lets a line
-//! of sight or a shot dip under a floor and come back up between lines of
-//! one floor height, where here it is stopped at the first line it is under.
+//! segment from `p` (the looker) to `q` (the target), at fractions `f` of it
+//! (0 at `p`, 1 at `q`). A line acts wherever the closed segment meets it
+//! ([`meet`]). Sector heights are read from `Map::sectors` at the call, so
+//! moving floors and ceilings count. A two-sided line's *opening* is the
+//! higher of its two floors up to the lower of its two ceilings; it is
+//! *closed* when that floor is at or above that ceiling. Every two-sided line
+//! acts by its opening, not only those whose floors (or ceilings) differ as
+//! in Doom: Doom's shortcut lets a line of sight dip under a floor and come
+//! back up between lines of one floor height, where here it is stopped at the
+//! first line it is under.
 //!
-//! **Sight** (P_CheckSight). From the looker's eye, `z + 3/4 height`, to the
-//! target's extent `[z, z + height]`: a window of slopes (height per unit of
-//! `f`) starts as the target's extent seen at `f = 1`. A one-sided line met
-//! anywhere blocks; a closed opening blocks; an open one narrows the window to
-//! the slopes through it at each `f` where it is met. The target is seen when
-//! nothing blocked and the window is still open (top above bottom, strictly:
-//! Doom's `topslope <= bottomslope` fails).
-//!
-//! **Shots** (P_LineAttack). From `(origin, z)` along `angle` (degrees) with
-//! `slope` (height per horizontal unit) up to `range` (Doom's 2048 for
-//! bullets, [`crate::play::SHOT_RANGE`]; 64 for melee, [`MELEE_RANGE`]). The shot
-//! stops at the first of:
-//! - a one-sided wall ([`Part::Middle`]);
-//! - a two-sided line whose opening is closed or does not hold the shot's
-//!   height there: [`Part::Lower`] below the opening's floor, else
-//!   [`Part::Upper`];
-//! - a body: the shot enters its box, a square `2 radius` on a side, axis
-//!   aligned, from `z` to `z + height` (the whole box, entered in 3D; not
-//!   Doom's bounding-box diagonal facing the shooter, which makes a hit
-//!   depend on the direction of the shot). The shooter's own body is skipped;
-//!   the caller passes only shootable bodies;
-//! - the sky: a wall hit above the sky ceiling of the sector the shot comes
-//!   from, or below its sky floor, or the upper part between two sky ceilings
-//!   (where the renderer draws sky, `shade::ceiling_at_line`) is
-//!   [`Struck::Sky`]: the shot stops with no puff (PTR_ShootTraverse returns
-//!   without P_SpawnPuff).
-//!
-//! The puff goes 4 units short of a wall and the blood 10 short of a body,
-//! as Doom's; unlike Doom, never behind the origin. Floors and ceilings are
-//! not hit between lines (as in Doom): a shot aimed into the floor stops at
-//! the next line it meets, as that line's lower part, where its height is
-//! already under the floor.
-//!
-//! **Auto-aim** (P_AimLineAttack). The window of slopes starts at `±100/160`
-//! ([`AIM_SLOPE`]) and narrows at every line in order of distance as sight's
-//! does (a one-sided line or a closed opening ends the search); the first body
-//! whose box, at the distance where the shot enters it, shows within the
-//! window is the target, and the slope is the middle of the part of it the
-//! window shows (Doom's clipped middle, not the body's own middle when the
-//! window cuts it).
+//! **Sight** (P_CheckSight). From the looker's eye, `z + 3/4 height`
+//! ([`EYE_SHARE`]), to the target's extent `[z, z + height]`: a window of
+//! slopes (height per unit of `f`) starts as the target's extent seen at
+//! `f = 1`. A one-sided line met anywhere blocks; a closed opening blocks; an
+//! open one narrows the window to the slopes through it at each `f` where it
+//! is met. The target is seen when nothing blocked and the window is still
+//! open (top above bottom, strictly: Doom's `topslope <= bottomslope` fails).
 //!
 //! **Tie rules.** Decided exactly (orient2d), and the same in both paths.
 //! - *Touching counts.* A segment through a vertex meets every line ending
 //!   there: exactly through the corner of a pillar, the end of a wall or a
-//!   door jamb, sight is blocked and a shot hits the wall; through a vertex
-//!   where only two-sided lines meet it passes if it is inside each opening
-//!   there.
+//!   door jamb, sight is blocked; through a vertex where only two-sided lines
+//!   meet it passes if it is inside each opening there.
 //! - *Along a line* (collinear, overlapping more than a point): a one-sided
-//!   wall stops it where the overlap begins; a two-sided line acts at both
-//!   ends of the overlap (the segment and the opening's limits are straight,
-//!   so both ends inside means every point between is); a shot is stopped
-//!   where its height leaves the opening.
-//! - *Starting on a line* (`f = 0`): a one-sided line blocks (the shot hits
-//!   it at the muzzle); for a two-sided line, slopes mean nothing at distance
-//!   0, so sight and aim ask only that the eye (shot height) be within the
-//!   opening, limits included; a shot is checked like anywhere else.
+//!   wall blocks; a two-sided line acts at both ends of the overlap (the
+//!   segment and the opening's limits are straight, so both ends inside
+//!   means every point between is).
+//! - *Starting on a line* (`f = 0`): a one-sided line blocks; for a
+//!   two-sided line, slopes mean nothing at distance 0, so sight asks only
+//!   that the eye be within the opening, limits included.
 //! - *Ending on a line* (a target exactly on it, `f = 1`): an ordinary
 //!   contact. A target on a one-sided line is never seen; on a two-sided one
 //!   the opening at the target narrows the window.
-//! - *Equal distances*: lines before bodies (a body flush with a wall is
-//!   behind it), then the lower line or body index. Lines meeting the
-//!   segment at one vertex get one fraction ([`meet`]), so they do tie.
-//! - *The side a shot comes from* is the origin's side of the line, a point
-//!   on the line counting as in front (the BSP's tie rule).
 //! - *Huge coordinates*: every decision is an exact orientation, so a map at
 //!   ±30,000 (or anywhere within `geom::MAX_COORD`) is judged as at the
 //!   origin; only fractions and heights carry rounding.
 //!
 //! **Why the two paths agree bit for bit.** Both run the same per-line
 //! function (where the segment meets the line, and what that does to the
-//! window or the shot) on the same sector heights, and combine its results in
-//! a way that does not depend on the order lines come in: a minimum, a
-//! maximum, "any blocks", or a sort by (fraction, index). So they agree
-//! exactly as long as the fast path offers every line the segment meets. It
-//! does: the descent enters a child whenever the segment comes within a
-//! margin of its side of the partition and of the box round its segs. Every
-//! seg lies on its side of each ancestor's partition to within the compiler's
-//! `ON_EPSILON` (1e-6, plus 1e-12 of the coordinates for split points: what
-//! `bsp::check` allows), the pieces of a line's side cover the line, and a
-//! node's boxes bound its children's segs (the renderer's culling relies on
-//! that too); so a point where the segment meets a line is within that
-//! tolerance of the leaf holding the piece through it, and a margin of a
-//! hundred times the tolerance reaches that leaf (a test moves partitions by
-//! `ON_EPSILON` to prove it; with no margin it fails). The descent never
-//! prunes by fraction: a fraction is computed, not decided, and at a glancing
-//! angle a line could be listed nearer than the subtree it lies in.
+//! window) on the same sector heights, and combine its results in a way that
+//! does not depend on the order lines come in: a minimum of the tops, a
+//! maximum of the bottoms and "any blocks". Both stop at the first line after
+//! which the target cannot be seen, which is safe because none of the three
+//! can be undone by a later line. So they agree exactly as long as the fast
+//! path offers every line the segment meets. It does: the descent enters a
+//! child whenever the segment comes within a margin of its side of the
+//! partition and of the box round its segs. Every seg lies on its side of
+//! each ancestor's partition to within the compiler's `ON_EPSILON` (1e-6,
+//! plus 1e-12 of the coordinates for split points: what `bsp::check`
+//! allows), the pieces of a line's side cover the line, and a node's boxes
+//! bound its children's segs (the renderer's culling relies on that too); so
+//! a point where the segment meets a line is within that tolerance of the
+//! leaf holding the piece through it, and a margin of a hundred times the
+//! tolerance reaches that leaf (a test moves partitions by `ON_EPSILON` to
+//! prove it; with no margin it fails). The descent never prunes by fraction:
+//! a fraction is computed, not decided, and at a glancing angle a line could
+//! be listed nearer than the subtree it lies in.
 //!
 //! **Why the BSP, not the blockmap.** Doom 1.2 walked the blockmap for sight
 //! (Heretic kept that code; ports keep it as `P_CheckSight_12` for old demos)
@@ -117,42 +79,33 @@
 //! points in the map, bodies 56 high on the floor; release build, the shared
 //! 2-core VM, two runs, microseconds per query), fast / brute force / the
 //! blockmap (every line in the cells of the segment's bounding box, as
-//! `trace.rs` queries, then the window):
+//! `autopilot/blockmap.rs` lists them, then the window):
 //!
-//! | map | lines | sight | shot, 2048 units |
-//! |---|---|---|---|
-//! | E1M1 (freedoom1) | 812 | 1.5-2.0 / 2.5-3.2 / 1.6-2.6 | 5.3-7.7 / 10-13 |
-//! | MAP10 (freedoom2) | 3,154 | 3.3-3.8 / 7.0-8.9 / 4.5-5.8 | 8-12 / 46-48 |
-//! | maze.ron | 2,290 | 0.5-0.6 / 6.4-7.5 / 1.8-2.2 | 5.4-7.0 / 26-32 |
+//! | map | lines | sight |
+//! |---|---|---|
+//! | E1M1 (freedoom1) | 812 | 1.5-2.0 / 2.5-3.2 / 1.6-2.6 |
+//! | MAP10 (freedoom2) | 3,154 | 3.3-3.8 / 7.0-8.9 / 4.5-5.8 |
+//! | maze.ron | 2,290 | 0.5-0.6 / 6.4-7.5 / 1.8-2.2 |
 //!
 //! The brute force is not far behind on small maps because most pairs are
 //! blocked by a wall it reaches early and its box test rejects most lines
 //! without an orientation; it grows with the map, the descent barely.
 
-use std::cmp::Ordering;
 use std::ops::ControlFlow;
 
-use glam::{DVec2, DVec3};
+use glam::DVec2;
 
-use crate::bsp::{Bsp, Child, CompiledMap, LineSide};
-use crate::geom::{cross, on_segment, sin_cos_degrees, Aabb};
-use crate::map::{Line, Map, Sector};
+use crate::bsp::{Bsp, Child, CompiledMap};
+use crate::geom::{cross, on_segment, Aabb};
+use crate::map::{Line, Map};
 
-/// Doom's `MELEERANGE`: a punch or a saw reaches 64 units.
-pub const MELEE_RANGE: f64 = 64.0;
-/// Auto-aim looks this far up and down (Doom's `100*FRACUNIT/160`: the
-/// height of the view over the width, at Doom's 320x200 with a 90 degree field).
-pub const AIM_SLOPE: f64 = 100.0 / 160.0;
 /// The eye is this share of a body's height above its feet (Doom:
 /// `height - (height >> 2)`).
 pub const EYE_SHARE: f64 = 0.75;
-/// Doom spawns a wall's puff this far back along the shot.
-pub const PUFF_BACK: f64 = 4.0;
-/// And a body's blood this far back.
-pub const BLOOD_BACK: f64 = 10.0;
 
-/// A body as sight and shots see it: where it stands, how tall and wide it
-/// is, and the caller's name for it (reported back in hits).
+/// A body as sight sees it: where it stands and how tall it is. Its radius
+/// and the caller's name for it (`index`) ride along for the caller; sight
+/// only refuses a radius that is negative or not finite.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Body {
     pub pos: DVec2,
@@ -180,30 +133,6 @@ impl Body {
     }
 }
 
-/// A shot's or an aim's line: from `origin` at height `z` along `angle`
-/// (degrees, counter-clockwise from +x) for `range` map units; the body with
-/// index `shooter` is not hit.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Ray {
-    pub origin: DVec2,
-    pub z: f64,
-    pub angle: f64,
-    pub range: f64,
-    pub shooter: Option<usize>,
-}
-
-impl Ray {
-    /// Where the range ends (exact along the axes: [`sin_cos_degrees`]).
-    pub fn end(&self) -> DVec2 {
-        let (sin, cos) = sin_cos_degrees(self.angle);
-        self.origin + DVec2::new(cos, sin) * self.range
-    }
-
-    fn valid(&self) -> bool {
-        self.origin.is_finite() && self.z.is_finite() && self.angle.is_finite() && self.range.is_finite()
-    }
-}
-
 /// How the closed segment `p -> q` meets a closed line segment.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Meet {
@@ -214,12 +143,6 @@ pub enum Meet {
 }
 
 impl Meet {
-    pub fn first(self) -> f64 {
-        match self {
-            Meet::Point(f) | Meet::Along(f, _) => f,
-        }
-    }
-
     /// The fractions where the line acts: the point, or both ends of the overlap.
     fn ends(self) -> impl Iterator<Item = f64> {
         let (a, b) = match self {
@@ -230,55 +153,12 @@ impl Meet {
     }
 }
 
-/// The wall part a shot hit.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Part {
-    /// A one-sided wall.
-    Middle,
-    /// A two-sided line below its opening's floor.
-    Lower,
-    /// A two-sided line above its opening's ceiling (or in a closed opening).
-    Upper,
-}
-
-/// What a shot stopped at.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Struck {
-    /// Line `line`, on the side the shot came from.
-    Wall { line: usize, side: LineSide, part: Part },
-    /// Line `line`, where the sky is: the shot is gone, with no puff.
-    Sky { line: usize },
-    /// The body with this index.
-    Body { index: usize },
-}
-
-/// Where a shot stopped.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Hit {
-    pub struck: Struck,
-    /// Fraction of the range.
-    pub fraction: f64,
-    /// The point struck.
-    pub point: DVec3,
-    /// Where the puff (a wall) or the blood (a body) appears; none in the sky.
-    pub puff: Option<DVec3>,
-}
-
-/// Auto-aim's answer: the slope (height per horizontal unit) and the body it aims at.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Aimed {
-    pub slope: f64,
-    pub index: usize,
-}
-
-/// Reusable scratch for the fast paths: the descent's stack, a stamp per
-/// line so each is tried once per query (Doom's `validcount`), and the
-/// contacts auto-aim sorts. Cleared per query, never shrunk.
+/// Reusable scratch for the fast path: the descent's stack and a stamp per
+/// line so each is tried once per query (Doom's `validcount`). Cleared per
+/// query, never shrunk.
 #[derive(Clone, Debug, Default)]
 pub struct Scratch {
     walk: Walk,
-    events: Vec<Event>,
-    bodies: Vec<(f64, usize)>,
 }
 
 #[derive(Clone, Debug, Default)]
@@ -306,54 +186,6 @@ pub fn sight_brute(map: &Map, looker: &Body, target: &Body) -> bool {
         }
     }
     window.open()
-}
-
-/// The first thing a shot along `ray` with `slope` hits, through the BSP;
-/// `None` when it reaches its range. The same answer as [`hitscan_brute`].
-pub fn hitscan(compiled: &CompiledMap, scratch: &mut Scratch, ray: &Ray, slope: f64, bodies: &[Body]) -> Option<Hit> {
-    let shot = Shot::new(ray, slope)?;
-    let map = &compiled.map;
-    let mut best = None;
-    let _ = bsp_lines(map, &compiled.bsp, &mut scratch.walk, shot.p, shot.q, |i| {
-        shot.keep_first(&mut best, map, i);
-        ControlFlow::Continue(())
-    });
-    shot.finish(best, bodies)
-}
-
-/// [`hitscan`] by trying every line of the map.
-pub fn hitscan_brute(map: &Map, ray: &Ray, slope: f64, bodies: &[Body]) -> Option<Hit> {
-    let shot = Shot::new(ray, slope)?;
-    let mut best = None;
-    for i in 0..map.lines.len() {
-        shot.keep_first(&mut best, map, i);
-    }
-    shot.finish(best, bodies)
-}
-
-/// Auto-aim along `ray` (its `z` is the shot's height): the slope to the
-/// nearest body in view within [`AIM_SLOPE`] up or down, through the BSP;
-/// `None` when there is none. The same answer as [`aim_slope_brute`].
-pub fn aim_slope(compiled: &CompiledMap, scratch: &mut Scratch, ray: &Ray, bodies: &[Body]) -> Option<Aimed> {
-    let aim = Aim::new(ray)?;
-    let map = &compiled.map;
-    let Scratch { walk, events, bodies: order } = scratch;
-    events.clear();
-    let _ = bsp_lines(map, &compiled.bsp, walk, aim.p, aim.q, |i| {
-        aim.events(map, i, events);
-        ControlFlow::Continue(())
-    });
-    aim.first_in_view(events, order, bodies)
-}
-
-/// [`aim_slope`] by trying every line of the map.
-pub fn aim_slope_brute(map: &Map, ray: &Ray, bodies: &[Body]) -> Option<Aimed> {
-    let aim = Aim::new(ray)?;
-    let mut events = Vec::new();
-    for i in 0..map.lines.len() {
-        aim.events(map, i, &mut events);
-    }
-    aim.first_in_view(&mut events, &mut Vec::new(), bodies)
 }
 
 /// How the closed segment `p -> q` meets the closed segment `a-b`, decided
@@ -438,14 +270,12 @@ fn orient(a: DVec2, b: DVec2, c: DVec2) -> f64 {
     robust::orient2d(coord(a), coord(b), coord(c))
 }
 
-/// A two-sided line's opening: the higher floor and the lower ceiling, with
-/// the sector on the side the segment comes from (the back when
-/// `from_back`) and the one across; `None` for a one-sided line.
-fn opening<'m>(map: &'m Map, line: &Line, from_back: bool) -> Option<(f64, f64, &'m Sector, &'m Sector)> {
+/// A two-sided line's opening: the higher floor and the lower ceiling;
+/// `None` for a one-sided line.
+fn opening(map: &Map, line: &Line) -> Option<(f64, f64)> {
     let back = line.back.as_ref()?;
     let (front, back) = (&map.sectors[line.front.sector], &map.sectors[back.sector]);
-    let (near, far) = if from_back { (back, front) } else { (front, back) };
-    Some((front.floor.max(back.floor), front.ceiling.min(back.ceiling), near, far))
+    Some((front.floor.max(back.floor), front.ceiling.min(back.ceiling)))
 }
 
 /// How far the descent reaches past a partition: a hundred times the
@@ -546,8 +376,8 @@ impl Window {
         let line = &map.lines[i];
         let (a, b) = map.line_points(line);
         let Some(meet) = meet(self.p, self.q, a, b) else { return ControlFlow::Continue(()) };
-        match opening(map, line, false) {
-            Some((floor, ceiling, ..)) if floor < ceiling => {
+        match opening(map, line) {
+            Some((floor, ceiling)) if floor < ceiling => {
                 for f in meet.ends() {
                     if f == 0.0 {
                         self.blocked |= !(floor <= self.eye && self.eye <= ceiling);
@@ -569,159 +399,6 @@ impl Window {
     fn open(&self) -> bool {
         !self.blocked && self.top > self.bottom
     }
-}
-
-/// A shot being traced: its segment and heights.
-struct Shot {
-    p: DVec2,
-    q: DVec2,
-    z: f64,
-    slope: f64,
-    range: f64,
-    shooter: Option<usize>,
-}
-
-/// A candidate first hit, ordered by fraction, then lines before bodies, then index.
-#[derive(Clone, Copy, Debug)]
-struct Candidate {
-    fraction: f64,
-    struck: Struck,
-}
-
-impl Candidate {
-    fn key(&self) -> (f64, u8, usize) {
-        match self.struck {
-            Struck::Wall { line, .. } | Struck::Sky { line } => (self.fraction, 0, line),
-            Struck::Body { index } => (self.fraction, 1, index),
-        }
-    }
-
-    fn before(&self, other: &Candidate) -> bool {
-        let (a, b) = (self.key(), other.key());
-        a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)).then(a.2.cmp(&b.2)) == Ordering::Less
-    }
-}
-
-impl Shot {
-    fn new(ray: &Ray, slope: f64) -> Option<Shot> {
-        if !(ray.valid() && slope.is_finite() && ray.range > 0.0) {
-            return None;
-        }
-        Some(Shot { p: ray.origin, q: ray.end(), z: ray.z, slope, range: ray.range, shooter: ray.shooter })
-    }
-
-    fn height(&self, f: f64) -> f64 {
-        self.z + self.slope * (f * self.range)
-    }
-
-    fn at(&self, f: f64) -> DVec3 {
-        let xy = self.p + (self.q - self.p) * f;
-        DVec3::new(xy.x, xy.y, self.height(f))
-    }
-
-    /// Keeps in `best` whichever stops the shot first: it, or line `i`.
-    fn keep_first(&self, best: &mut Option<Candidate>, map: &Map, i: usize) {
-        if let Some(c) = self.line_hit(map, i) {
-            if best.is_none_or(|b| c.before(&b)) {
-                *best = Some(c);
-            }
-        }
-    }
-
-    /// Where line `i` alone would stop the shot.
-    fn line_hit(&self, map: &Map, i: usize) -> Option<Candidate> {
-        let line = &map.lines[i];
-        let (a, b) = map.line_points(line);
-        let meet = meet(self.p, self.q, a, b)?;
-        let from_back = orient(a, b, self.p) > 0.0;
-        let side = if from_back { LineSide::Back } else { LineSide::Front };
-        let Some((floor, ceiling, near, far)) = opening(map, line, from_back) else {
-            let near = &map.sectors[line.front.sector];
-            let f = meet.first();
-            return Some(self.stop(i, side, Part::Middle, f, near, None));
-        };
-        let part = |z: f64| if z < floor { Part::Lower } else { Part::Upper };
-        let inside = |z: f64| floor < ceiling && floor <= z && z <= ceiling;
-        let (f, part) = match meet {
-            Meet::Point(f) => {
-                let z = self.height(f);
-                if inside(z) {
-                    return None;
-                }
-                (f, part(z))
-            }
-            Meet::Along(f0, f1) => {
-                let (z0, z1) = (self.height(f0), self.height(f1));
-                if !inside(z0) {
-                    (f0, part(z0))
-                } else if inside(z1) {
-                    return None;
-                } else {
-                    // It leaves the opening between the ends, through the limit it passes.
-                    let limit = if z1 < floor { floor } else { ceiling };
-                    let f = f0 + (limit - z0) / (z1 - z0) * (f1 - f0);
-                    (f.clamp(f0, f1), part(z1))
-                }
-            }
-        };
-        Some(self.stop(i, side, part, f, near, Some(far)))
-    }
-
-    /// The shot stops at line `line`: on the wall, or in the sky.
-    fn stop(&self, line: usize, side: LineSide, part: Part, f: f64, near: &Sector, far: Option<&Sector>) -> Candidate {
-        let z = self.height(f);
-        let sky_hack = part == Part::Upper && near.ceiling_is_sky() && far.is_some_and(Sector::ceiling_is_sky);
-        let sky = sky_hack || (z > near.ceiling && near.ceiling_is_sky()) || (z < near.floor && near.floor_is_sky());
-        let struck = if sky { Struck::Sky { line } } else { Struck::Wall { line, side, part } };
-        Candidate { fraction: f, struck }
-    }
-
-    /// Where the shot enters `body`'s box, as a fraction, if it does.
-    fn body_hit(&self, body: &Body) -> Option<f64> {
-        if Some(body.index) == self.shooter || !body.valid() {
-            return None;
-        }
-        let (t0, t1) = box_span(self.p, self.q, body)?;
-        let rise = self.slope * self.range;
-        let (lo, hi) = (body.z, body.z + body.height);
-        let (u0, u1) = if rise == 0.0 {
-            if self.z < lo || self.z > hi {
-                return None;
-            }
-            (t0, t1)
-        } else {
-            let (a, b) = ((lo - self.z) / rise, (hi - self.z) / rise);
-            (t0.max(a.min(b)), t1.min(a.max(b)))
-        };
-        (u0 <= u1).then_some(u0)
-    }
-
-    /// The nearer of the first line hit and the first body hit, with its points.
-    fn finish(&self, line: Option<Candidate>, bodies: &[Body]) -> Option<Hit> {
-        let mut best = line;
-        for body in bodies {
-            if let Some(f) = self.body_hit(body) {
-                let c = Candidate { fraction: f, struck: Struck::Body { index: body.index } };
-                if best.is_none_or(|b| c.before(&b)) {
-                    best = Some(c);
-                }
-            }
-        }
-        let c = best?;
-        let back = match c.struck {
-            Struck::Wall { .. } => Some(PUFF_BACK),
-            Struck::Body { .. } => Some(BLOOD_BACK),
-            Struck::Sky { .. } => None,
-        };
-        let puff = back.map(|b| self.at((c.fraction - b / self.range).max(0.0)));
-        Some(Hit { struck: c.struck, fraction: c.fraction, point: self.at(c.fraction), puff })
-    }
-}
-
-/// The fractions `[t0, t1]` over which the segment `p -> q` is inside the
-/// closed square box of `body` (seen from above), if it ever is.
-fn box_span(p: DVec2, q: DVec2, body: &Body) -> Option<(f64, f64)> {
-    slab_span(p, q, body.pos - body.radius, body.pos + body.radius)
 }
 
 /// Does the segment `p -> q` come within `m` of `bbox`? (True for a box
@@ -747,101 +424,6 @@ fn slab_span(p: DVec2, q: DVec2, lo: DVec2, hi: DVec2) -> Option<(f64, f64)> {
         }
     }
     (t0 <= t1).then_some((t0, t1))
-}
-
-/// What a line does to auto-aim at one fraction.
-#[derive(Clone, Copy, Debug)]
-struct Event {
-    fraction: f64,
-    line: usize,
-    /// `None`: the search ends here; else the opening's floor and ceiling.
-    opening: Option<(f64, f64)>,
-}
-
-/// An auto-aim being traced.
-struct Aim {
-    p: DVec2,
-    q: DVec2,
-    z: f64,
-    range: f64,
-    shooter: Option<usize>,
-}
-
-/// A slope to a height `dz` away at horizontal distance `dist`: at distance
-/// 0 straight up or down (level when the heights are equal).
-fn slope_to(dz: f64, dist: f64) -> f64 {
-    if dist > 0.0 {
-        dz / dist
-    } else if dz == 0.0 {
-        0.0
-    } else {
-        dz.signum() * f64::INFINITY
-    }
-}
-
-impl Aim {
-    fn new(ray: &Ray) -> Option<Aim> {
-        if !(ray.valid() && ray.range > 0.0) {
-            return None;
-        }
-        Some(Aim { p: ray.origin, q: ray.end(), z: ray.z, range: ray.range, shooter: ray.shooter })
-    }
-
-    /// Line `i`'s events, into `out`.
-    fn events(&self, map: &Map, i: usize, out: &mut Vec<Event>) {
-        let line = &map.lines[i];
-        let (a, b) = map.line_points(line);
-        let Some(meet) = meet(self.p, self.q, a, b) else { return };
-        match opening(map, line, false) {
-            Some((floor, ceiling, ..)) if floor < ceiling => {
-                for f in meet.ends() {
-                    let through = f > 0.0 || (floor <= self.z && self.z <= ceiling);
-                    out.push(Event { fraction: f, line: i, opening: through.then_some((floor, ceiling)) });
-                }
-            }
-            _ => out.push(Event { fraction: meet.first(), line: i, opening: None }),
-        }
-    }
-
-    /// Walks `events` and the bodies in order of distance, lines first at
-    /// equal distances: the first body the window shows.
-    fn first_in_view(&self, events: &mut [Event], order: &mut Vec<(f64, usize)>, bodies: &[Body]) -> Option<Aimed> {
-        events.sort_by(|a, b| a.fraction.total_cmp(&b.fraction).then(a.line.cmp(&b.line)));
-        order.clear();
-        for (k, body) in bodies.iter().enumerate() {
-            if Some(body.index) != self.shooter && body.valid() {
-                if let Some((t0, _)) = box_span(self.p, self.q, body) {
-                    order.push((t0, k));
-                }
-            }
-        }
-        order.sort_by(|a, b| a.0.total_cmp(&b.0).then(bodies[a.1].index.cmp(&bodies[b.1].index)));
-        let (mut top, mut bottom) = (AIM_SLOPE, -AIM_SLOPE);
-        let mut next = events.iter().peekable();
-        for &(t, k) in order.iter() {
-            while let Some(e) = next.next_if(|e| e.fraction <= t) {
-                let (floor, ceiling) = e.opening?;
-                if e.fraction > 0.0 {
-                    let dist = e.fraction * self.range;
-                    bottom = bottom.max(slope_to(floor - self.z, dist));
-                    top = top.min(slope_to(ceiling - self.z, dist));
-                }
-                if top <= bottom {
-                    return None;
-                }
-            }
-            let body = &bodies[k];
-            let dist = t * self.range;
-            let body_top = slope_to(body.z + body.height - self.z, dist);
-            let body_bottom = slope_to(body.z - self.z, dist);
-            if body_top < bottom || body_bottom > top {
-                continue; // over it or under it
-            }
-            let slope = (body_top.min(top) + body_bottom.max(bottom)) / 2.0;
-            return Some(Aimed { slope, index: body.index });
-        }
-        None
-    }
 }
 
 #[cfg(test)]
@@ -900,22 +482,6 @@ mod tests {
         let fast = sight(map, &mut Scratch::default(), a, b);
         assert_eq!(fast, sight_brute(&map.map, a, b), "fast and brute disagree: {a:?} -> {b:?}");
         fast
-    }
-
-    fn shoot(map: &CompiledMap, ray: &Ray, slope: f64, bodies: &[Body]) -> Option<Hit> {
-        let fast = hitscan(map, &mut Scratch::default(), ray, slope, bodies);
-        assert_eq!(fast, hitscan_brute(&map.map, ray, slope, bodies), "{ray:?} slope {slope}");
-        fast
-    }
-
-    fn aim(map: &CompiledMap, ray: &Ray, bodies: &[Body]) -> Option<Aimed> {
-        let fast = aim_slope(map, &mut Scratch::default(), ray, bodies);
-        assert_eq!(fast, aim_slope_brute(&map.map, ray, bodies), "{ray:?}");
-        fast
-    }
-
-    fn ray(x: f64, y: f64, z: f64, angle: f64, range: f64) -> Ray {
-        Ray { origin: v(x, y), z, angle, range, shooter: None }
     }
 
     #[test]
@@ -1051,31 +617,14 @@ mod tests {
     #[test]
     fn along_a_line() {
         let map = tie_map();
-        // Along the pillar's south face: blocked; the shot stops where the face begins.
+        // Along the pillar's south face: blocked.
         assert!(!sees(&map, &body(128.0, 192.0, 0.0, 56.0, 0), &body(448.0, 192.0, 0.0, 56.0, 1)));
-        let hit = shoot(&map, &ray(128.0, 192.0, 32.0, 0.0, 2048.0), 0.0, &[]).unwrap();
-        // Lines 4 (the south face) and 7 (the west face, ending at the corner) tie: the lower index.
-        assert_eq!(hit.struck, Struck::Wall { line: 4, side: LineSide::Front, part: Part::Middle });
-        assert_eq!((hit.point, hit.puff), (DVec3::new(256.0, 192.0, 32.0), Some(DVec3::new(252.0, 192.0, 32.0))));
         // Along the platform's south edge: both ends of the overlap count.
         let (a, b) = (body(576.0, 192.0, 0.0, 56.0, 0), body(768.0, 192.0, 0.0, 56.0, 1));
         assert!(sees(&map, &a, &b));
         let mut raised = map.clone();
         raised.map.sectors[1].floor = 50.0;
         assert!(!sees(&raised, &a, &b));
-        // A shot along it above the lip passes; below, it hits the lower part where the overlap begins.
-        let along = ray(576.0, 192.0, 32.0, 0.0, 2048.0);
-        assert_eq!(shoot(&map, &along, 0.0, &[]).unwrap().point, DVec3::new(1024.0, 192.0, 32.0));
-        let low = shoot(&map, &Ray { z: 10.0, ..along }, 0.0, &[]).unwrap();
-        assert_eq!(
-            (low.struck, low.point.x),
-            (Struck::Wall { line: 8, side: LineSide::Front, part: Part::Lower }, 640.0)
-        );
-        // Sinking through the lip's height on the way along: stopped where it
-        // crosses 24 (72 units out), not where the overlap begins or ends.
-        let sinking = shoot(&map, &Ray { z: 30.0, ..along }, -1.0 / 12.0, &[]).unwrap();
-        assert_eq!(sinking.struck, Struck::Wall { line: 8, side: LineSide::Front, part: Part::Lower });
-        assert!((sinking.point.x - 648.0).abs() < 1e-9 && (sinking.point.z - 24.0).abs() < 1e-9, "{sinking:?}");
     }
 
     #[test]
@@ -1086,82 +635,10 @@ mod tests {
         assert!(sees(&map, &on, &body(672.0, 64.0, 0.0, 56.0, 1)));
         // With the eye under the lip (24): not at all.
         assert!(!sees(&map, &body(672.0, 192.0, -40.0, 56.0, 0), &body(672.0, 64.0, 0.0, 56.0, 1)));
-        // A shot from a one-sided face hits it at the muzzle, puff at the origin.
-        let hit = shoot(&map, &ray(256.0, 224.0, 32.0, 180.0, 2048.0), 0.0, &[]).unwrap();
-        assert_eq!(
-            (hit.struck, hit.fraction),
-            (Struck::Wall { line: 7, side: LineSide::Front, part: Part::Middle }, 0.0)
-        );
-        assert_eq!(hit.puff, Some(DVec3::new(256.0, 224.0, 32.0)));
-        // From the platform's edge, out over the room: on to the south wall.
-        let hit = shoot(&map, &ray(672.0, 192.0, 32.0, 270.0, 2048.0), 0.0, &[]).unwrap();
-        assert_eq!(
-            (hit.struck, hit.point),
-            (Struck::Wall { line: 3, side: LineSide::Front, part: Part::Middle }, DVec3::new(672.0, 0.0, 32.0))
-        );
         // A target on a one-sided face: never; on the platform's edge: if it shows over the lip.
         assert!(!sees(&map, &body(64.0, 224.0, 0.0, 56.0, 0), &body(256.0, 224.0, 0.0, 56.0, 1)));
         let looker = body(576.0, 224.0, 0.0, 56.0, 0);
         assert!(sees(&map, &looker, &body(640.0, 224.0, 0.0, 56.0, 1)));
         assert!(!sees(&map, &looker, &body(640.0, 224.0, 0.0, 20.0, 1)));
-    }
-
-    #[test]
-    fn shots_hit_parts_sky_and_bodies() {
-        let map = tie_map();
-        // The alcove's face, above its ceiling (128): both ceilings are sky, so the shot is gone.
-        let high = ray(800.0, 352.0, 200.0, 0.0, 2048.0);
-        let hit = shoot(&map, &high, 0.0, &[]).unwrap();
-        assert_eq!((hit.struck, hit.puff), (Struck::Sky { line: 15 }, None));
-        let mut plain = map.clone();
-        plain.map.sectors[2].ceiling_texture = Some("CEIL".into());
-        let hit = shoot(&plain, &high, 0.0, &[]).unwrap();
-        assert_eq!(hit.struck, Struck::Wall { line: 15, side: LineSide::Front, part: Part::Upper });
-        assert_eq!(hit.puff, Some(DVec3::new(828.0, 352.0, 200.0)));
-        // Climbing out of the room through its sky ceiling (256) before the east wall.
-        let hit = shoot(&map, &ray(960.0, 64.0, 200.0, 0.0, 2048.0), 1.0, &[]).unwrap();
-        assert_eq!(hit.struck, Struck::Sky { line: 2 });
-        // A body: entered at its box's face (x = 492), shooter skipped, blood 10 back.
-        let bodies = [body(400.0, 384.0, 0.0, 56.0, 7), body(512.0, 384.0, 0.0, 56.0, 3)];
-        let shot = Ray { shooter: Some(7), ..ray(400.0, 384.0, 32.0, 0.0, 2048.0) };
-        let hit = shoot(&map, &shot, 0.0, &bodies).unwrap();
-        assert_eq!((hit.struck, hit.point), (Struck::Body { index: 3 }, DVec3::new(496.0, 384.0, 32.0)));
-        assert_eq!(hit.puff, Some(DVec3::new(486.0, 384.0, 32.0)));
-        // Over its head, on to the wall; melee range stops short of it.
-        assert!(matches!(shoot(&map, &shot, 0.5, &bodies).unwrap().struck, Struck::Sky { .. } | Struck::Wall { .. }));
-        assert_eq!(shoot(&map, &Ray { range: MELEE_RANGE, ..shot }, 0.0, &bodies), None);
-        // A body in front of a wall is hit first.
-        let against = [body(1008.0, 64.0, 0.0, 56.0, 1)];
-        let hit = shoot(&map, &ray(960.0, 64.0, 32.0, 0.0, 2048.0), 0.0, &against).unwrap();
-        assert_eq!(hit.struck, Struck::Body { index: 1 });
-        // Its box's face on the wall (x = 1024): the same distance, and the wall wins.
-        let flush = [body(1040.0, 64.0, 0.0, 56.0, 2)];
-        let hit = shoot(&map, &ray(960.0, 64.0, 32.0, 0.0, 2048.0), 0.0, &flush).unwrap();
-        assert!(matches!(hit.struck, Struck::Wall { line: 2, .. }), "{hit:?}");
-    }
-
-    #[test]
-    fn auto_aim_takes_the_nearest_body_in_the_window() {
-        let map = tie_map();
-        let from = Ray { shooter: Some(0), ..ray(400.0, 384.0, 32.0, 0.0, 1024.0) };
-        let me = body(400.0, 384.0, 0.0, 56.0, 0);
-        let near = body(512.0, 384.0, 0.0, 56.0, 3);
-        let far = body(700.0, 384.0, 0.0, 56.0, 4);
-        // Entered at 96 units: slopes 24/96 up and -32/96 down, the middle -4/96.
-        let aimed = aim(&map, &from, &[me, far, near]).unwrap();
-        assert_eq!(aimed.index, 3);
-        assert!((aimed.slope - (24.0 - 32.0) / 2.0 / 96.0).abs() < 1e-12, "{aimed:?}");
-        // Too high for the window: the next one is taken.
-        let perched = Body { z: 200.0, ..near };
-        assert_eq!(aim(&map, &from, &[perched, far]).unwrap().index, 4);
-        // Cut by the window: the middle of the part it shows.
-        let tall = Body { z: 0.0, height: 400.0, ..near };
-        let aimed = aim(&map, &from, &[tall]).unwrap();
-        assert!((aimed.slope - (AIM_SLOPE - 32.0 / 96.0) / 2.0).abs() < 1e-12, "{aimed:?}");
-        // Behind the pillar: nothing.
-        let behind = ray(64.0, 224.0, 32.0, 0.0, 1024.0);
-        assert_eq!(aim(&map, &behind, &[body(448.0, 224.0, 0.0, 56.0, 1)]), None);
-        // Over the platform's lip, a body beyond it is aimed at.
-        assert!(aim(&map, &ray(576.0, 224.0, 32.0, 0.0, 1024.0), &[body(768.0, 224.0, 0.0, 56.0, 1)]).is_some());
     }
 }
