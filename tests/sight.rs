@@ -25,8 +25,7 @@
 //!
 //! The f64 sight the autopilot plans with (`autopilot::sight`, once the
 //! f64 game's) keeps its own unit tests. Dropped here with the f64 game:
-//! its shots and aim (`hitscan`, `aim_slope` against their brute-force
-//! twins, the body-in-front-of-a-wall tie), the agreement on random maps of both splitters
+//! its shots and aim (deleted with it), the agreement on random maps of both splitters
 //! (a random map's sectors can be too thin for Doom's fixed-point
 //! arithmetic and its `Scratch` reuse), and its f64 tie rules on moved
 //! heights as a map edit: the simulation's shots are
