@@ -212,8 +212,8 @@ pub struct PlayArgs {
     /// Skill level 1 to 5 (Doom's: 3 is Hurt Me Plenty); things appear by it.
     #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(1..=5))]
     pub skill: u8,
-    /// Where a RON map's game starts in Doom's random table (a WAD's map
-    /// starts at 0, as vanilla does).
+    /// How far a RON map's game moves on in Doom's random table (a WAD's
+    /// map does not, as vanilla does not).
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
     /// Internal frame size, WxH; the window scales it to fit.
@@ -373,8 +373,8 @@ pub struct AutoplayArgs {
     /// Skill level 1 to 5.
     #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(1..=5))]
     pub skill: u8,
-    /// Where a RON map's game starts in Doom's random table (a WAD's map
-    /// starts at 0, as vanilla does).
+    /// How far a RON map's game moves on in Doom's random table (a WAD's
+    /// map does not, as vanilla does not).
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
     /// Play without monsters (Doom's -nomonsters).

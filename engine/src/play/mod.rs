@@ -52,9 +52,9 @@ pub enum PlayError {
 pub struct GameOptions {
     /// 1 to 5, as Doom's: things appear by their skill flags.
     pub skill: u8,
-    /// Where a RON map's game starts reading Doom's random table (its low
-    /// byte for `P_Random`, the next for `M_Random`); a WAD's map starts
-    /// at 0, as vanilla does.
+    /// How far a RON map's game moves on in Doom's random table after the
+    /// level's setup (its low byte for `P_Random`, the next for
+    /// `M_Random`); a WAD's map does not, as vanilla does not.
     pub seed: u64,
     /// Monsters are not spawned (Doom's `-nomonsters`: nothing that counts
     /// as a kill, nor lost souls).

@@ -114,11 +114,13 @@ impl SimGame {
                     ..Rules::single(skill, super::GameVersion::Doom19, super::GameMode::Commercial)
                 };
                 let mut sim = from_map::sim_on_map(level, rules, players, table);
-                // Doom's generator is one table read in turn: a seed picks
-                // where in it `P_Random` and `M_Random` start. (A WAD's map
-                // starts both at 0, as vanilla does and its demos need.)
+                // Doom's generator is one table read in turn: a seed moves
+                // `P_Random`'s and `M_Random`'s cursors on from where the
+                // level's setup left them. (A WAD's map does not move them,
+                // as vanilla does not and its demos need.)
                 let [p, m, ..] = options.seed.to_le_bytes();
-                sim.rng = crate::fixed::DoomRandom::from_indices(p, m);
+                let (p0, m0) = (sim.rng.p_index(), sim.rng.m_index());
+                sim.rng = crate::fixed::DoomRandom::from_indices(p0.wrapping_add(p), m0.wrapping_add(m));
                 // Raise-to-texture floors measure the map's own textures.
                 let textures = &opened.level.materials.textures;
                 let heights = sim.level.names.iter().filter_map(|name| {
@@ -629,7 +631,8 @@ mod tests {
         (g.sim.rng.p_index(), g.sim.rng.m_index())
     }
 
-    /// A RON map's seed picks where Doom's random table is read from.
+    /// A RON map's seed moves where Doom's random table is read from on
+    /// from where the level's setup left it.
     #[test]
     fn a_seed_moves_a_ron_map_s_random_cursors() {
         let ron = |seed: u64| {
@@ -637,8 +640,9 @@ mod tests {
             let opened = open(&map, &BuildOptions::default()).unwrap_or_else(|e| panic!("{e}"));
             SimGame::new(opened, GameOptions { seed, ..GameOptions::default() }).unwrap_or_else(|e| panic!("{e}"))
         };
-        assert_eq!(cursors(&ron(0)), (0, 0));
-        assert_eq!(cursors(&ron(0x0201)), (1, 2));
+        let (p, m) = cursors(&ron(0));
+        assert_eq!(cursors(&ron(0x0201)), (p.wrapping_add(1), m.wrapping_add(2)));
+        assert_eq!(cursors(&ron(0x0201)), cursors(&ron(0x0201)), "the same seed, the same game");
     }
 
     /// A WAD's map starts the table at 0 whatever the seed, as vanilla does
