@@ -28,7 +28,7 @@ use sightline::tour::tour;
 use sightline::wad::import::{convert, write_art, Art};
 use sightline::wad::{wad_bytes, Wad};
 use sightline::Framebuffer;
-use sightline_tests::sim_play::{player_mo, pos as body_pos, present, sees, set_health, try_teleport, wake_all};
+use sightline_tests::sim_play::{player_mo, pos as body_pos, present, sees, try_teleport, wake_all};
 use sightline_tests::{
     assert_agree, assert_agree_on_two_sided_lines, freedoom_wads, points_on_two_sided_lines, random_inputs,
 };
@@ -230,7 +230,7 @@ fn play(level: sightline::level::Level, path: &Path) -> usize {
     }
     let start = map.player_start();
     assert!(try_teleport(&mut game, start.pos, start.angle), "{}: the start is taken", path.display());
-    set_health(&mut game, 1_000_000);
+    game.set_health(1_000_000);
     wake_all(&mut game);
     let compiled = &Observe::level(&game).compiled;
     let spawned: Vec<(DVec2, bool)> = (0..game.sim.mobjs.len() as u32)
@@ -618,7 +618,7 @@ fn frames_full_of_actors_agree_with_the_reference() {
         let options = GameOptions { skill: 4, ..GameOptions::default() };
         let mut play = Playthrough::of(&MapRef::parse(&map, None), options).unwrap_or_else(|e| panic!("{e}"));
         let game = &mut play.game;
-        set_health(game, 1_000_000);
+        game.set_health(1_000_000);
         wake_all(game);
         for _ in 0..70 {
             play.tick(&TickInput::default()).unwrap();
@@ -693,7 +693,7 @@ fn e1m1_can_be_fought_through_to_its_exit_on_skill_3() {
         let game = game_mut(play);
         let health = game.sim.players[0].as_ref().expect("a player").health;
         let more = (to - health).max(0);
-        set_health(game, health + more);
+        game.set_health(health + more);
         more
     };
     let bodies = |play: &Playthrough| game(play).sim.live_mobjs().collect::<Vec<_>>();

@@ -63,10 +63,10 @@ fn play_frames_with_the_status_bar_and_a_weapon_match_golden_images() {
     use sightline::autopilot::observe::Observe;
     use sightline::play::TickInput;
     use sightline::screen::{draw, Hud};
-    use sightline_tests::sim_play::{game, set_health, teleport};
+    use sightline_tests::sim_play::{game, teleport};
     let bless = std::env::var_os("SIGHTLINE_BLESS").is_some();
     let mut g = game("monsters");
-    set_health(&mut g, 1_000_000);
+    g.set_health(1_000_000);
     teleport(&mut g, glam::DVec2::new(700.0, 256.0), 0.0);
     for _ in 0..20 {
         g.tick(&TickInput::default());
@@ -120,7 +120,7 @@ fn the_default_level_s_main_views_match_golden_images() {
     use sightline::play::{GameOptions, TickInput};
     use sightline::screen::{draw, Hud};
     use sightline::sim::game::SimGame;
-    use sightline_tests::sim_play::{set_health, teleport};
+    use sightline_tests::sim_play::teleport;
     let bless = std::env::var_os("SIGHTLINE_BLESS").is_some();
     let level = load(&root().join("maps/outpost.ron"));
     let options = GameOptions::default();
@@ -145,7 +145,7 @@ fn the_default_level_s_main_views_match_golden_images() {
             g.tick(&TickInput { weapon: 3, ..TickInput::default() });
         }
         for _ in 0..40 {
-            set_health(&mut g, 100);
+            g.set_health(100);
             g.tick(&TickInput::default());
         }
         assert!(k != 1 || Observe::player(&g).ready_weapon == Some(shotgun), "the shotgun is not up");

@@ -16,8 +16,7 @@ use sightline::play::{GameOptions, TickInput};
 use sightline::sim::game::SimGame;
 use sightline::sim::mobj::mf;
 use sightline_tests::sim_play::{
-    assert_drawn_as_they_stand, first, game, game_with, idle, named, player_mo, pos, present, set_health, teleport,
-    turn, wake,
+    assert_drawn_as_they_stand, first, game, game_with, idle, named, player_mo, pos, present, teleport, turn, wake,
 };
 use sightline_tests::{load, root};
 
@@ -33,7 +32,7 @@ fn awake_one(g: &SimGame, id: sightline::sim::MobjId) -> bool {
 #[test]
 fn a_zombieman_wakes_on_sight_fires_and_walks_round_a_pillar() {
     let mut g = game("monsters");
-    set_health(&mut g, 1_000_000);
+    g.set_health(1_000_000);
     let z = first(&g, "zombieman");
     let start = pos(&g, z);
     // Hidden behind the pillar: it sleeps, where it stands.
@@ -87,7 +86,7 @@ fn fire_until_a_kill(g: &mut SimGame) -> i32 {
 #[test]
 fn the_player_s_shots_kill_a_zombieman_which_drops_a_clip() {
     let mut g = game("monsters");
-    set_health(&mut g, 1_000_000);
+    g.set_health(1_000_000);
     teleport(&mut g, DVec2::new(700.0, 256.0), 0.0);
     let shots = fire_until_a_kill(&mut g);
     assert_eq!(g.stats().kills, (1, 1), "after {shots} shots");
@@ -133,7 +132,7 @@ fn awake(g: &SimGame) -> Vec<bool> {
 #[test]
 fn a_shot_is_heard_across_one_sound_blocking_line_not_two() {
     let mut g = game("hearing");
-    set_health(&mut g, 1_000_000);
+    g.set_health(1_000_000);
     idle(&mut g, 35);
     assert_eq!(awake(&g), [false, false], "they face away: nothing to see or hear");
     // A shot into the wall (P_FireWeapon's P_NoiseAlert): the next room
@@ -163,7 +162,7 @@ fn fire_at(g: &mut SimGame, angle: f64, ticks: usize) {
 #[test]
 fn a_barrel_chain_explodes() {
     let mut g = game("barrels");
-    set_health(&mut g, 1_000_000);
+    g.set_health(1_000_000);
     // Raise the pistol, then fire at the first barrel of the row, south
     // of east (the others are behind it).
     idle(&mut g, 20);
@@ -183,7 +182,7 @@ fn a_barrel_chain_explodes() {
 #[test]
 fn a_rockets_splash_does_not_pass_a_wall() {
     let mut g = game("barrels");
-    set_health(&mut g, 1_000_000);
+    g.set_health(1_000_000);
     let launcher = g.sim.info.table.index("rocket_launcher").unwrap();
     // Doom's weapon 4 is the launcher, its ammunition 3 rockets.
     let p = g.sim.players[0].as_mut().unwrap();
@@ -233,7 +232,7 @@ fn weapons_change_by_number_and_use_their_ammunition() {
 /// target.
 fn play_through(inputs: &[TickInput]) -> (Vec<u8>, Vec<u32>, bool) {
     let mut g = game("monsters");
-    set_health(&mut g, 1_000_000);
+    g.set_health(1_000_000);
     let z = first(&g, "zombieman");
     let mut noticed = false;
     for i in inputs {
@@ -280,7 +279,7 @@ fn monster_lines_zombies(g: &SimGame) -> (sightline::sim::MobjId, sightline::sim
 #[test]
 fn a_monster_opens_a_door_and_another_takes_a_monsters_teleporter() {
     let mut g = game("monster_lines");
-    set_health(&mut g, 1_000_000);
+    g.set_health(1_000_000);
     let door = 1;
     idle(&mut g, 35);
     let ceiling = |g: &SimGame| Observe::level(g).compiled.map.sectors[door].ceiling;
@@ -329,7 +328,7 @@ fn a_user_actor_file_replaces_the_zombieman() {
     let opened = sightline::campaign::Opened::of_level(level, "monsters.ron");
     let options = GameOptions::default();
     let mut g = SimGame::with_table(opened, options, std::sync::Arc::new(table)).unwrap_or_else(|e| panic!("{e}"));
-    set_health(&mut g, 1_000_000);
+    g.set_health(1_000_000);
     teleport(&mut g, DVec2::new(700.0, 256.0), 0.0);
     let shots = fire_until_a_kill(&mut g);
     // The shipped zombieman takes two shots at least (see above).
@@ -343,7 +342,7 @@ fn a_user_actor_file_replaces_the_zombieman() {
 #[test]
 fn a_monster_out_of_the_player_s_reach_wakes_when_the_player_comes() {
     let mut g = game("monster_lines");
-    set_health(&mut g, 1_000_000);
+    g.set_health(1_000_000);
     let (by_door, walker) = monster_lines_zombies(&g);
     idle(&mut g, 35);
     assert!(!awake_one(&g, by_door) && !awake_one(&g, walker));
@@ -366,7 +365,7 @@ fn a_monster_out_of_the_player_s_reach_wakes_when_the_player_comes() {
 #[test]
 fn on_skill_5_a_dead_monster_comes_back_at_its_spot() {
     let mut g = game_with("monsters", GameOptions { skill: 5, ..Default::default() });
-    set_health(&mut g, 1_000_000);
+    g.set_health(1_000_000);
     let spot = pos(&g, first(&g, "zombieman"));
     teleport(&mut g, DVec2::new(700.0, 256.0), 0.0);
     fire_until_a_kill(&mut g);

@@ -16,7 +16,7 @@ use rand::rngs::ChaCha8Rng;
 use rand::{RngExt, SeedableRng};
 use sightline::autopilot::observe::Observe;
 use sightline::bsp::{build, BuildOptions};
-use sightline::fixed::{Angle, Fixed};
+use sightline::fixed::Fixed;
 use sightline::geom::{segment_contact, Contact};
 use sightline::level::Level;
 use sightline::map::{parse_map, Map};
@@ -26,6 +26,7 @@ use sightline::render::{render_frame, Frame, RenderOptions};
 use sightline::sim::game::SimGame;
 use sightline::sim::ThinkerKind;
 use sightline::Framebuffer;
+use sightline_tests::sim_play::{door, stand as place, DoorState};
 use sightline_tests::{load, map_path, random_inputs, shipped_maps};
 
 /// The player's box (Doom's `mobjinfo[MT_PLAYER]`: radius 16, height 56)
@@ -73,40 +74,6 @@ fn pos(game: &SimGame) -> DVec2 {
 
 fn z(game: &SimGame) -> f64 {
     body(game).z.to_f64()
-}
-
-/// Puts the player at `at` facing `angle` degrees, still, feet on the
-/// floor there: Doom's `P_TeleportMove`, then the floor and ceiling
-/// `P_CheckPosition` finds there (P_TeleportMove takes the sector's alone,
-/// so a body overhanging a ledge would stand in the air until it moved),
-/// without the fog or the 18-tic hold.
-fn place(game: &mut SimGame, at: DVec2, angle: f64) {
-    use sightline::sim::collision::{check_position, teleport_move};
-    let console = game.sim.console;
-    let mo = game.sim.players[console].as_ref().expect("a player").mo;
-    let (x, y) = (Fixed::from_f64(at.x), Fixed::from_f64(at.y));
-    assert!(teleport_move(&mut game.sim, mo, x, y), "could not place the player at {at}");
-    check_position(&mut game.sim, mo, x, y);
-    let (floorz, ceilingz) = (game.sim.tm.floorz, game.sim.tm.ceilingz);
-    let m = game.sim.mo_mut(mo);
-    (m.floorz, m.ceilingz) = (floorz, ceilingz);
-    m.z = m.floorz;
-    (m.momx, m.momy, m.momz) = (Fixed(0), Fixed(0), Fixed(0));
-    m.angle = Angle::from_degrees(angle);
-    m.reactiontime = 0;
-    // Use released, as a tic before without it leaves it (G_PlayerReborn
-    // holds use down at a level's start so that nothing is used on tic 0).
-    game.sim.players[console].as_mut().expect("a player").usedown = false;
-}
-
-/// Makes the player all but unkillable for a tick (random walking is not a
-/// fight).
-fn endure(game: &mut SimGame) {
-    let console = game.sim.console;
-    let p = game.sim.players[console].as_mut().expect("a player");
-    p.health = 1_000_000_000;
-    let mo = p.mo;
-    game.sim.mo_mut(mo).health = 1_000_000_000;
 }
 
 const RUN_EAST: TickInput =
@@ -180,7 +147,7 @@ fn play_checked(name: &str, game: &mut SimGame, inputs: &[TickInput]) -> Seen {
         // Every tick: a health bonus or a soul sphere caps health at 200,
         // and a dead body (a quarter of the height) would pass where the
         // player may not.
-        endure(game);
+        game.set_health(1_000_000_000);
         let (old, z0) = (pos(game), z(game));
         game.tick(input);
         let (p, z) = (pos(game), z(game));
@@ -500,35 +467,6 @@ fn ceiling(game: &SimGame, sector: usize) -> f64 {
 
 fn door_ceiling(game: &SimGame) -> f64 {
     ceiling(game, 1)
-}
-
-/// What a door thinker (`vldoor_t`) is doing, by its `direction`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum DoorState {
-    /// 1: going up.
-    Opening,
-    /// 0: at the top, counting down `topcountdown`.
-    Open,
-    /// -1: going down.
-    Closing,
-    /// 2: a raise-in-5-minutes door's first wait.
-    Waiting,
-}
-
-/// What the door on `sector` is doing; `None` when no door is at work there
-/// (it is shut, or open for good): the thinker the sector's `specialdata`
-/// names, as Doom finds it.
-fn door(game: &SimGame, sector: usize) -> Option<DoorState> {
-    let id = game.sim.level.sectors[sector].specialdata?;
-    match &game.sim.thinker(id).kind {
-        ThinkerKind::Door(d) => Some(match d.direction {
-            1 => DoorState::Opening,
-            0 => DoorState::Open,
-            -1 => DoorState::Closing,
-            _ => DoorState::Waiting,
-        }),
-        _ => None,
-    }
 }
 
 #[test]

@@ -44,6 +44,7 @@ use sightline::play::GameOptions;
 use sightline::sim::game::SimGame;
 use sightline::sim::level::ml;
 use sightline::sim::mobj::point_in_subsector;
+use sightline::sim::sight::divline_side;
 use sightline::sim::{Compat, MobjId, Sim};
 use sightline_tests::freedoom_wads;
 
@@ -61,38 +62,6 @@ struct Tally {
     /// Pairs within P_DivlineSide's rounding of a line or its end, not
     /// compared (see `check_pairs`).
     fuzzy: usize,
-}
-
-/// `P_DivlineSide`: 0 front, 1 back, 2 on; both factors' fractions dropped
-/// and multiplied in wrapping integers; vanilla's typo (the horizontal case
-/// compares `x` with the line's `y`) under `typo`.
-fn divline_side(x: Fixed, y: Fixed, node: &Divline, typo: bool) -> u8 {
-    if node.dx.0 == 0 {
-        if x == node.x {
-            return 2;
-        }
-        if x <= node.x {
-            return u8::from(node.dy.0 > 0);
-        }
-        return u8::from(node.dy.0 < 0);
-    }
-    if node.dy.0 == 0 {
-        if (if typo { x } else { y }) == node.y {
-            return 2;
-        }
-        if y <= node.y {
-            return u8::from(node.dx.0 < 0);
-        }
-        return u8::from(node.dx.0 > 0);
-    }
-    let (dx, dy) = ((x - node.x).0, (y - node.y).0);
-    let left = (node.dy.0 >> 16).wrapping_mul(dx >> 16);
-    let right = (dy >> 16).wrapping_mul(node.dx.0 >> 16);
-    match right.cmp(&left) {
-        std::cmp::Ordering::Less => 0,
-        std::cmp::Ordering::Equal => 2,
-        std::cmp::Ordering::Greater => 1,
-    }
 }
 
 /// Doom's sight rule over every line of the level, without the tree.

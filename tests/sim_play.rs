@@ -30,16 +30,6 @@ pub fn player_mo(g: &SimGame) -> MobjId {
     g.sim.player(g.sim.console).expect("a player in the game").mo
 }
 
-/// Gives the player `health` (its record and its body, which Doom's damage
-/// both lowers).
-pub fn set_health(g: &mut SimGame, health: i32) {
-    let console = g.sim.console;
-    let p = g.sim.players[console].as_mut().expect("a player in the game");
-    p.health = health;
-    let mo = p.mo;
-    g.sim.mo_mut(mo).health = health;
-}
-
 /// Puts the player at `pos` on the floor there, facing `angle` degrees, at
 /// rest, as a teleporter does without its fog and freeze (Doom's
 /// `P_TeleportMove`, which telefrags what stands there). Panics if the spot
@@ -164,4 +154,62 @@ pub fn assert_drawn_as_they_stand(g: &SimGame) {
     drawn.sort_by(|a, b| a.0.cmp(&b.0));
     want.sort_by(|a, b| a.0.cmp(&b.0));
     assert_eq!(drawn, want);
+}
+
+/// Puts the player at `at` facing `angle` degrees, still, feet on the
+/// floor, use released (the start of a scenario): Doom's `P_TeleportMove`,
+/// then the floor and ceiling `P_CheckPosition` finds there
+/// (P_TeleportMove takes the sector's alone, so a body overhanging a ledge
+/// would stand in the air until it moved), without the fog or the 18-tic
+/// hold. Use is released as a tic without it leaves it (G_PlayerReborn
+/// holds use down at a level's start so that nothing is used on tic 0).
+pub fn stand(g: &mut SimGame, at: DVec2, angle: f64) {
+    let mo = player_mo(g);
+    let (x, y) = (Fixed::from_f64(at.x), Fixed::from_f64(at.y));
+    assert!(collision::teleport_move(&mut g.sim, mo, x, y), "could not stand the player at {at}");
+    collision::check_position(&mut g.sim, mo, x, y);
+    let (floorz, ceilingz) = (g.sim.tm.floorz, g.sim.tm.ceilingz);
+    let m = g.sim.mo_mut(mo);
+    (m.floorz, m.ceilingz) = (floorz, ceilingz);
+    m.z = m.floorz;
+    (m.momx, m.momy, m.momz) = (Fixed::ZERO, Fixed::ZERO, Fixed::ZERO);
+    m.angle = Angle::from_degrees(angle);
+    m.reactiontime = 0;
+    let console = g.sim.console;
+    g.sim.players[console].as_mut().expect("a player in the game").usedown = false;
+}
+
+/// The thinker a sector's `specialdata` names, unless removed (a RON
+/// map's sector `s` is the simulation's sector `s`).
+pub fn mover(g: &SimGame, s: usize) -> Option<&sightline::sim::ThinkerKind> {
+    let id = g.sim.level.sectors[s].specialdata?;
+    let t = g.sim.thinker(id);
+    (t.status != sightline::sim::think::Status::Removed).then_some(&t.kind)
+}
+
+/// What a door thinker (`vldoor_t`) is doing, by its `direction`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DoorState {
+    /// 1: going up.
+    Opening,
+    /// 0: at the top, counting down `topcountdown`.
+    Open,
+    /// -1: going down.
+    Closing,
+    /// 2: a raise-in-5-minutes door's first wait.
+    Waiting,
+}
+
+/// What the door on sector `s` is doing; `None` when no door is at work
+/// there (it is shut, or open for good), as Doom finds it.
+pub fn door(g: &SimGame, s: usize) -> Option<DoorState> {
+    match mover(g, s)? {
+        sightline::sim::ThinkerKind::Door(d) => Some(match d.direction {
+            1 => DoorState::Opening,
+            0 => DoorState::Open,
+            -1 => DoorState::Closing,
+            _ => DoorState::Waiting,
+        }),
+        _ => None,
+    }
 }

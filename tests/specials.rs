@@ -19,7 +19,7 @@ use std::path::PathBuf;
 use glam::DVec2;
 use sightline::actors::KeyForm;
 use sightline::autopilot::observe::Observe;
-use sightline::fixed::{Angle, DoomRandom, Fixed, RNDTABLE};
+use sightline::fixed::{DoomRandom, RNDTABLE};
 use sightline::level::Level;
 use sightline::map::special::{Damage, KeyColour, LightEffect, SectorSpecial, Suit};
 use sightline::play::events::{Event, Origin};
@@ -30,6 +30,7 @@ use sightline::sim::game::SimGame;
 use sightline::sim::plats::PlatStatus;
 use sightline::sim::think::Status;
 use sightline::sim::ThinkerKind;
+use sightline_tests::sim_play::{self, door, DoorState};
 use sightline_tests::{load, root};
 
 // ---------------------------------------------------------------------------
@@ -75,15 +76,6 @@ fn console_mut(g: &mut SimGame) -> &mut sightline::sim::Player {
     g.sim.players[n].as_mut().expect("a player")
 }
 
-/// Sets the player's health, in the player record and the body (Doom
-/// keeps both).
-fn set_health(g: &mut SimGame, health: i32) {
-    let p = console_mut(g);
-    p.health = health;
-    let mo = p.mo;
-    g.sim.mo_mut(mo).health = health;
-}
-
 /// Doom's `pw_ironfeet` (doomdef.h's powertype_t order).
 const IRONFEET: usize = 3;
 
@@ -117,24 +109,9 @@ fn press_use(g: &mut SimGame) -> Vec<Event> {
 }
 
 /// Puts the player at (x, y) facing `angle`, still, feet on the floor, use
-/// released (the start of a scenario): Doom's `P_TeleportMove`, then the
-/// floor and ceiling `P_CheckPosition` finds there (P_TeleportMove takes
-/// the sector's alone, so a body overhanging a ledge would stand in the
-/// air until it moved), without the fog or the 18-tick hold.
+/// released ([`sim_play::stand`]).
 fn stand(g: &mut SimGame, x: f64, y: f64, angle: f64) {
-    use sightline::sim::collision::{check_position, teleport_move};
-    let mo = console(g).mo;
-    let (x, y) = (Fixed::from_f64(x), Fixed::from_f64(y));
-    assert!(teleport_move(&mut g.sim, mo, x, y), "could not stand at ({x:?}, {y:?})");
-    check_position(&mut g.sim, mo, x, y);
-    let (floorz, ceilingz) = (g.sim.tm.floorz, g.sim.tm.ceilingz);
-    let m = g.sim.mo_mut(mo);
-    (m.floorz, m.ceilingz) = (floorz, ceilingz);
-    m.z = m.floorz;
-    (m.momx, m.momy, m.momz) = (Fixed(0), Fixed(0), Fixed(0));
-    m.angle = Angle::from_degrees(angle);
-    m.reactiontime = 0;
-    console_mut(g).usedown = false;
+    sim_play::stand(g, DVec2::new(x, y), angle);
 }
 
 /// Where the player's body is now (also right after [`stand`]).
@@ -185,39 +162,6 @@ fn line_tagged(g: &SimGame, tag: u16) -> usize {
 /// Is a floor or ceiling mover (door, lift, floor, ceiling) at work on `s`?
 fn moving(g: &SimGame, s: usize) -> bool {
     Observe::is_busy(g, s)
-}
-
-/// The thinker a sector's `specialdata` names (RON sector `s` is the
-/// simulation's sector `s`).
-fn mover(g: &SimGame, s: usize) -> Option<&ThinkerKind> {
-    let id = g.sim.level.sectors[s].specialdata?;
-    let t = g.sim.thinker(id);
-    (t.status != Status::Removed).then_some(&t.kind)
-}
-
-/// What a door thinker (`vldoor_t`) is doing, by its `direction`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum DoorState {
-    /// 1: going up.
-    Opening,
-    /// 0: at the top, counting down `topcountdown`.
-    Open,
-    /// -1: going down.
-    Closing,
-    /// 2: a raise-in-5-minutes door's first wait.
-    Waiting,
-}
-
-fn door(g: &SimGame, s: usize) -> Option<DoorState> {
-    match mover(g, s)? {
-        ThinkerKind::Door(d) => Some(match d.direction {
-            1 => DoorState::Opening,
-            0 => DoorState::Open,
-            -1 => DoorState::Closing,
-            _ => DoorState::Waiting,
-        }),
-        _ => None,
-    }
 }
 
 /// What a lift (`plat_t`) is doing; `Waiting` with its count of ticks left.
@@ -894,7 +838,7 @@ fn a_slow_crusher_slows_to_an_eighth_while_crushing_hurts_every_4th_tick_and_rev
     let mut g = game("ceilings");
     let s = tagged(&g, 4);
     // Enough health to live through it, so the body stays in the way.
-    set_health(&mut g, 100_000);
+    g.set_health(100_000);
     stand_in_bay(&mut g, 3, 90.0);
     // 1 a tick while the body fits (128 -> 56), the step to 55 kept (it
     // crushes), then an eighth (Doom's CEILSPEED / 8) down to floor + 8,
@@ -1276,7 +1220,7 @@ fn a_radiation_suit_shields_from_nukage_leaks_on_20_floors_and_not_on_the_exit_f
     stand(&mut g, 264.0, 128.0, 0.0);
     until(&mut g, WALK, 20, |g| player(&g).z == -8.0);
     console_mut(&mut g).powers[IRONFEET] = 1_000_000;
-    set_health(&mut g, 100_000);
+    g.set_health(100_000);
     // P_PlayerInSpecialSector draws P_Random every tick on it (the first
     // draw of the tick: nothing else here draws), and hurts through the
     // suit on a biting tick (leveltime % 32 == 0) when it is below 5. The

@@ -21,8 +21,6 @@ pub mod syncdump;
 pub mod vanilla;
 pub mod world;
 
-use player::HEIGHT;
-
 pub use demo::{Demo, DemoError};
 pub use input::TickInput;
 pub use player::Player;
@@ -34,18 +32,6 @@ pub const TICRATE: u32 = 35;
 pub const DEFAULT_SKILL: u8 = 3;
 /// How far ahead of the body's centre the player can use a line (Doom's `USERANGE`, 64).
 pub const USE_RANGE: f64 = 64.0;
-/// How far a shot reaches (Doom's `MISSILERANGE`, 2048).
-pub const SHOT_RANGE: f64 = 2048.0;
-/// A shot leaves the body this far above the feet (Doom: half the height plus 8).
-pub const SHOT_HEIGHT: f64 = HEIGHT / 2.0 + 8.0;
-
-#[derive(Debug, thiserror::Error, PartialEq)]
-pub enum PlayError {
-    #[error("{map}: ({x}, {y}) is not inside any sector (in a hole, outside the map, or on a one-sided wall)")]
-    Outside { map: String, x: f64, y: f64 },
-    #[error("skill {0} is not 1 to 5")]
-    Skill(u8),
-}
 
 /// How a game is set up.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]

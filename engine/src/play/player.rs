@@ -18,39 +18,16 @@ pub const HEIGHT: f64 = 56.0;
 /// The highest step the body climbs without jumping (Doom: 24).
 pub const MAX_STEP: f64 = 24.0;
 
-/// Thrust per tick while walking forward, in units per tick per tick: Doom's
-/// `forwardmove` 25 times `2048 / 65536`. With [`FRICTION`] the top speed is
-/// `thrust / (1 - friction)` = 8.33 units per tick (292 units per second).
-pub const WALK_THRUST: f64 = 25.0 / 32.0;
-/// Running doubles it (Doom's 50): 16.7 units per tick at top speed.
+/// Thrust per tick while running forward, in units per tick per tick:
+/// Doom's `forwardmove` 50 times `2048 / 65536`. With [`FRICTION`] the top
+/// speed is `thrust / (1 - friction)` = 16.7 units per tick.
 pub const RUN_THRUST: f64 = 50.0 / 32.0;
-/// Strafing is a little weaker (Doom's `sidemove` 24 and 40).
-pub const WALK_STRAFE: f64 = 24.0 / 32.0;
-pub const RUN_STRAFE: f64 = 40.0 / 32.0;
 /// Velocity kept per tick on the ground (Doom's `FRICTION` 0xe800 / 0x10000).
 /// The top speed is reached to 90% in about 23 ticks (two thirds of a second),
 /// and a running player stops within about 8 units of coasting per tick.
 pub const FRICTION: f64 = 0.90625;
-/// Below this speed with no thrust the body stops dead (Doom's `STOPSPEED`,
-/// 1/16 unit per tick), so friction does not leave it creeping forever.
-pub const STOP_SPEED: f64 = 1.0 / 16.0;
-/// Speed limit in units per tick (Doom's `MAXMOVE`, 30). It must stay below
-/// `2 * RADIUS`: a body that ends every tick at least `RADIUS` from every
-/// wall then cannot have jumped across one (the straight line between two
-/// such positions, shorter than `2 * RADIUS`, cannot reach a wall).
-pub const MAX_SPEED: f64 = 30.0;
-/// Downward acceleration, units per tick per tick (Doom's `GRAVITY`, 1).
-/// Falling 96 units takes 13 ticks.
-pub const GRAVITY: f64 = 1.0;
-/// Landing faster than this (units per tick) squats the eye (Doom: 8).
-pub const SQUAT_SPEED: f64 = 8.0;
-
-const _: () = assert!(MAX_SPEED < 2.0 * RADIUS);
-
 /// Health at the start (Doom's 100).
 pub const START_HEALTH: i32 = 100;
-/// A dead player's eye sinks to this height above the floor (Doom's 6).
-pub const DEAD_EYE: f64 = 6.0;
 
 /// A key the player holds.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, serde::Serialize, serde::Deserialize)]
@@ -130,10 +107,6 @@ pub struct Player {
     pub damage_count: i32,
     pub bonus_count: i32,
 }
-
-/// The weapon layer and the flash layer of [`Player::psprites`].
-pub const WEAPON_LAYER: usize = 0;
-pub const FLASH_LAYER: usize = 1;
 
 /// A sprite drawn on the screen rather than in the world: the weapon or
 /// its flash (Doom's `pspdef_t`). `sx`, `sy` place its origin on Doom's

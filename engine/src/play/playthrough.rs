@@ -6,7 +6,7 @@
 //! so a demo recorded across several maps replays exactly, headless too.
 
 use crate::bsp::BuildOptions;
-use crate::campaign::{open, Campaign, CampaignError, MapRef, Opened};
+use crate::campaign::{open, Campaign, CampaignError, MapRef};
 use crate::sim::game::{SimGame, SimGameError};
 
 use super::world::Exit;
@@ -52,7 +52,6 @@ pub struct Playthrough {
     pub phase: Phase,
     /// Ticks run since the playthrough began, over every map and intermission.
     pub ticks: u64,
-    options: GameOptions,
     build: BuildOptions,
     /// The last tick's use or fire, to act on presses only.
     held: bool,
@@ -65,8 +64,8 @@ impl Playthrough {
         let map = map.unwrap_or_else(|| campaign.first());
         let opened = open(&map, &build)?;
         let map = opened.map.clone();
-        let game = start(opened, options)?;
-        Ok(Playthrough { campaign, map, game, phase: Phase::Playing, ticks: 0, options, build, held: false })
+        let game = SimGame::new(opened, options)?;
+        Ok(Playthrough { campaign, map, game, phase: Phase::Playing, ticks: 0, build, held: false })
     }
 
     /// Starts on a command-line map: a WAD, `WAD:MAP`, a campaign file or a map.
@@ -80,7 +79,7 @@ impl Playthrough {
     }
 
     pub fn options(&self) -> GameOptions {
-        self.options
+        self.game.options()
     }
 
     /// The last tick held use or fire (a save keeps it: the next press is
@@ -91,9 +90,8 @@ impl Playthrough {
 
     /// A playthrough of `campaign` resumed on `map` with `game` (a loaded save).
     pub(super) fn resume(campaign: Campaign, map: MapRef, game: SimGame, ticks: u64, held: bool) -> Playthrough {
-        let options = game.options();
         let build = BuildOptions::default();
-        Playthrough { campaign, map, game, phase: Phase::Playing, ticks, options, build, held }
+        Playthrough { campaign, map, game, phase: Phase::Playing, ticks, build, held }
     }
 
     /// One tick: the game's, or the intermission's. Loading the next map can
@@ -136,7 +134,7 @@ impl Playthrough {
     fn enter(&mut self, map: MapRef) -> Result<(), PlaythroughError> {
         let opened = open(&map, &self.build)?;
         let map = opened.map.clone();
-        let game = SimGame::next_level(opened, self.options, &self.game)?;
+        let game = SimGame::next_level(opened, self.options(), &self.game)?;
         self.map = map;
         self.game = game;
         self.phase = Phase::Playing;
@@ -149,7 +147,7 @@ impl Playthrough {
     /// error the playthrough is untouched.
     pub fn reload(&mut self) -> Result<bool, PlaythroughError> {
         let opened = open(&self.map, &self.build)?;
-        let mut game = start(opened, self.options)?;
+        let mut game = SimGame::new(opened, self.options())?;
         let p = self.game.player();
         let kept = game.place_player(p.pos, p.angle);
         self.game = game;
@@ -161,13 +159,8 @@ impl Playthrough {
     fn restart(&mut self) -> Result<(), PlaythroughError> {
         let map = self.map.clone();
         let opened = open(&map, &self.build)?;
-        self.game = start(opened, self.options)?;
+        self.game = SimGame::new(opened, self.options())?;
         self.phase = Phase::Playing;
         Ok(())
     }
-}
-
-/// A new game on `opened`.
-fn start(opened: Opened, options: GameOptions) -> Result<SimGame, PlaythroughError> {
-    Ok(SimGame::new(opened, options)?)
 }

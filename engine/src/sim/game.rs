@@ -217,10 +217,13 @@ impl SimGame {
         }
         let Some(mo) = self.sim.player(self.sim.console).map(|p| p.mo) else { return false };
         let (x, y) = (crate::fixed::Fixed::from_f64(pos.x), crate::fixed::Fixed::from_f64(pos.y));
-        if !super::collision::check_position(&mut self.sim, mo, x, y) {
+        // Asked of a copy: `P_CheckPosition` picks up what it touches and
+        // leaves `p_map.c`'s globals set, and this is no move of the game's.
+        let mut probe = self.sim.clone();
+        if !super::collision::check_position(&mut probe, mo, x, y) {
             return false;
         }
-        let (floorz, ceilingz) = (self.sim.tm.floorz, self.sim.tm.ceilingz);
+        let (floorz, ceilingz) = (probe.tm.floorz, probe.tm.ceilingz);
         if ceilingz - floorz < self.sim.mo(mo).height {
             return false;
         }

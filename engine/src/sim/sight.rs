@@ -23,7 +23,7 @@ struct Trace {
 /// integers, and it says "on" for exact ties. Its horizontal case compares
 /// `x` with the line's `y` (a typo in Doom, kept under vanilla rules since
 /// it decides sight: `typo`; Sightline's rules compare `y`).
-fn divline_side(x: Fixed, y: Fixed, node: &Divline, typo: bool) -> u8 {
+pub fn divline_side(x: Fixed, y: Fixed, node: &Divline, typo: bool) -> u8 {
     if node.dx.0 == 0 {
         if x == node.x {
             return 2;
