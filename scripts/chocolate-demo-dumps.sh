@@ -82,27 +82,34 @@ echo "built $binary (chocolate-doom source $source_version, $((SECONDS - start))
 
 echo "== dumps into $outdir"
 mkdir -p "$outdir" "$scratch/home" "$scratch/run"
+
+# dump IWAD DEMO OUT NAME: plays DEMO (a lump name, or a file's path) of
+# IWAD in the patched Chocolate, its tic dump to OUT; sets $timed to the
+# gametics it reports. -timedemo ends the program through I_Error at the
+# demo's end (exit status 255), after printing "timed N gametics". A scratch
+# HOME keeps any user config out; the cwd is a scratch directory as
+# Chocolate looks for <lump>.lmp there first.
+dump() {
+    local iwad=$1 demo=$2 out=$3 name=$4 status=0
+    rm -f "$out.tmp"
+    (cd "$scratch/run" && env -u XDG_DATA_HOME -u XDG_CONFIG_HOME \
+        HOME="$scratch/home" SDL_VIDEODRIVER=dummy SDL_AUDIODRIVER=dummy \
+        CHOCOLATE_TIC_DUMP="$out.tmp" \
+        timeout 600 "$binary" -iwad "$wads/$iwad.wad" -timedemo "$demo" \
+        -nogui -nosound -nomusic -nodraw) >"$scratch/run/$name.log" 2>&1 || status=$?
+    timed="$(sed -n 's/^timed \([0-9]*\) gametics.*/\1/p' "$scratch/run/$name.log")"
+    if [ -z "$timed" ] || [ ! -s "$out.tmp" ]; then
+        cat "$scratch/run/$name.log" >&2
+        echo "$name: no timedemo report or no dump (exit status $status)" >&2
+        exit 1
+    fi
+    mv "$out.tmp" "$out"
+}
+
 for iwad in freedoom1 freedoom2; do
     for lump in DEMO1 DEMO2 DEMO3 DEMO4; do
         out="$outdir/$iwad-$lump.txt"
-        rm -f "$out.tmp"
-        # -timedemo ends the program through I_Error at the demo's end
-        # (exit status 255), after printing "timed N gametics". A scratch
-        # HOME keeps any user config out; the cwd is a scratch directory as
-        # Chocolate looks for <lump>.lmp there first.
-        status=0
-        (cd "$scratch/run" && env -u XDG_DATA_HOME -u XDG_CONFIG_HOME \
-            HOME="$scratch/home" SDL_VIDEODRIVER=dummy SDL_AUDIODRIVER=dummy \
-            CHOCOLATE_TIC_DUMP="$out.tmp" \
-            timeout 600 "$binary" -iwad "$wads/$iwad.wad" -timedemo "$lump" \
-            -nogui -nosound -nomusic -nodraw) >"$scratch/run/$iwad-$lump.log" 2>&1 || status=$?
-        timed="$(sed -n 's/^timed \([0-9]*\) gametics.*/\1/p' "$scratch/run/$iwad-$lump.log")"
-        if [ -z "$timed" ] || [ ! -s "$out.tmp" ]; then
-            cat "$scratch/run/$iwad-$lump.log" >&2
-            echo "$iwad $lump: no timedemo report or no dump (exit status $status)" >&2
-            exit 1
-        fi
-        mv "$out.tmp" "$out"
+        dump "$iwad" "$lump" "$out" "$iwad-$lump"
         tics="$(grep -vc '^#' "$out")"
         read -r first _ < <(grep -v '^#' "$out" | head -1)
         read -r last _ < <(tail -1 "$out")
@@ -113,5 +120,20 @@ for iwad in freedoom1 freedoom2; do
             echo "  note: $((timed - tics)) of the $timed tics played were not level tics (intermission or finale)"
         fi
     done
+done
+# Our own recordings kept beside the dumps (a game across an intermission,
+# recorded by `sightline autoplay --levels N --record`), each with its IWAD
+# named in its file name (<iwad>-<what>.lmp). Chocolate looks for a demo in
+# the cwd first and adds it as a lump named after the file, so each plays as
+# a copy named sldemo.lmp.
+for lmp in "$repo"/tests/fixtures/demo-dumps/*.lmp; do
+    [ -e "$lmp" ] || continue
+    name="$(basename "$lmp" .lmp)"
+    iwad="${name%%-*}"
+    out="$outdir/$name.txt"
+    cp "$lmp" "$scratch/run/sldemo.lmp"
+    dump "$iwad" "$scratch/run/sldemo.lmp" "$out" "$name"
+    tics="$(grep -vc '^#' "$out")"
+    echo "$name: $tics level tics dumped of $timed gametics ($((timed - tics)) between levels); $(du -k "$out" | cut -f1) KiB"
 done
 echo "chocolate-doom source $source_version, freedoom $(dpkg-query -W -f='${Version}' freedoom); $((SECONDS - start)) s in all"

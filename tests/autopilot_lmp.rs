@@ -120,3 +120,70 @@ fn freedoom2_exits_play_to_the_same_intermission_in_chocolate_doom() {
     let exits = rows.iter().filter(|r| r.exited).count();
     assert!(exits >= FREEDOOM2_EXITS, "the autopilot exited {exits} of freedoom2's first nine maps");
 }
+
+/// A game across an intermission, recorded as the window records one: the
+/// autopilot exits freedoom1's E1M1 (monsters off), the intermission is
+/// pressed through at irregular times (a press while the tallies count, use
+/// held, a press on the finished tallies, one on the episode's map), the
+/// autopilot exits E1M2 too, and Chocolate Doom plays the one demo through
+/// both levels: its statdump gives both our intermissions. A tic's
+/// difference in how long our intermission lasted would start E1M2 out of
+/// step, and the bot's inputs would not reach its exit in Chocolate.
+#[test]
+#[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
+fn a_game_recorded_across_an_intermission_plays_on_in_chocolate_doom() {
+    use sightline::play::playthrough::{Phase, Playthrough};
+    if !chocolate::present_or_skip("a_game_recorded_across_an_intermission_plays_on_in_chocolate_doom") {
+        return;
+    }
+    let path = freedoom_wads::path("freedoom1.wad");
+    let options = GameOptions { skill: 3, seed: 0, no_monsters: true };
+    let map = MapRef::Wad { wads: vec![path.clone()], map: Some("E1M1".into()) };
+    let mut play = Playthrough::of(&map, options).unwrap_or_else(|e| panic!("{e}"));
+    let mut carry = 0.0;
+    let mut inputs = Vec::new();
+    let mut ours = Vec::new();
+    for level in ["E1M1", "E1M2"] {
+        assert_eq!(play.map.short_name(), level);
+        let (outcome, _) =
+            autopilot::run_through(&mut play, 42_000, |i| vanilla::as_recorded(&i, &mut carry), |_, _| true).unwrap();
+        assert!(outcome.exit.is_some(), "{level}: the autopilot did not exit");
+        inputs.extend(outcome.inputs);
+        let Phase::Intermission { stats, .. } = &play.phase else { panic!("{level}: no intermission") };
+        ours.push(*stats);
+        // Through the intermission: idle while the tallies count, a press
+        // (fire), fire held, use pressed, idle on the episode's map, use.
+        let press = |k: usize| TickInput {
+            fire: (40..46).contains(&k),
+            use_line: k == 50 || k == 51 || k == 95,
+            ..TickInput::default()
+        };
+        let mut k = 0;
+        while play.phase != Phase::Playing {
+            let input = press(k);
+            play.tick(&input).unwrap();
+            inputs.push(input);
+            k += 1;
+            assert!(k < 2000, "{level}: the intermission did not end");
+        }
+        // The tic that loaded E1M2 was played there too; the bot goes on
+        // from the next.
+        assert_eq!(k, 96 + 10 + 1, "{level}: Doom 1's intermission, pressed through");
+        if level == "E1M2" {
+            break;
+        }
+    }
+    let demo = vanilla::demo_of("E1M1", options, &inputs).unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let lmp = dir.path().join("two-levels.lmp");
+    demo.save(&lmp).unwrap();
+    let played = chocolate::play(&path, &lmp).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(played.levels.len(), 2, "Chocolate finished {} levels", played.levels.len());
+    for (level, stats) in played.levels.iter().zip(&ours) {
+        let p = &level.players[0];
+        let tally = |(found, total): (u32, u32)| Tally::of(found as i32, total as i32);
+        let theirs = (p.kills, p.items, p.secrets, level.time);
+        let mine = (tally(stats.kills), tally(stats.items), tally(stats.secrets), Clock::from_tics(stats.ticks as i32));
+        assert_eq!(mine, theirs, "{}: our intermission (left) against Chocolate Doom's statdump", level.level);
+    }
+}

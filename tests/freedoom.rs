@@ -446,8 +446,9 @@ fn map10_poses_and_play_on_two_sided_lines() {
 #[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
 fn freedoom1_plays_from_the_wad_through_exits_and_intermissions() {
     use sightline::campaign::MapRef;
-    use sightline::play::playthrough::{Phase, Playthrough, INTERMISSION_MIN};
+    use sightline::play::playthrough::{Phase, Playthrough};
     use sightline::play::{Exit, GameOptions};
+    use sightline::sim::intermission::Stage;
 
     let wad = wad_path("freedoom1.wad");
     let options = GameOptions::default();
@@ -486,16 +487,33 @@ fn freedoom1_plays_from_the_wad_through_exits_and_intermissions() {
         };
         assert_eq!((ended, to.short_name().as_str()), (exit, next));
         assert!(stats.kills.1 > 0 && stats.items.1 > 0, "no tallies: {stats:?}");
-        // Held or pressed too soon, the intermission stays; then a press goes on.
-        for _ in 0..INTERMISSION_MIN / 2 - 1 {
+        // Use still held from the switch is no press: the tallies count on.
+        for _ in 0..10 {
             play.tick(&press).unwrap();
+        }
+        let stage = |play: &Playthrough| match &play.phase {
+            Phase::Intermission { wi, .. } => Some(wi.stage),
+            _ => None,
+        };
+        assert!(matches!(stage(&play), Some(Stage::Tallies { step: 1, .. })), "{:?}", stage(&play));
+        // A press shows the tallies finished, the next the episode's map,
+        // the next its last ten tics (Doom 1's intermission).
+        let finished = |s: Option<Stage>| matches!(s, Some(Stage::Tallies { step: 10, .. }));
+        let next_location = |s| s == Some(Stage::NextLocation { left: 140 });
+        let closing = |s| s == Some(Stage::Closing { left: 10 });
+        for wanted in [&finished as &dyn Fn(Option<Stage>) -> bool, &next_location, &closing] {
+            play.tick(&TickInput::default()).unwrap();
+            play.tick(&press).unwrap();
+            assert!(wanted(stage(&play)), "{:?}", stage(&play));
+        }
+        // The next level loads on the tic after the last, and plays it.
+        for _ in 0..10 {
             play.tick(&TickInput::default()).unwrap();
         }
-        assert!(matches!(play.phase, Phase::Intermission { .. }));
-        while matches!(play.phase, Phase::Intermission { ticks, .. } if ticks + 1 < INTERMISSION_MIN) {
-            play.tick(&TickInput::default()).unwrap();
-        }
-        play.tick(&press).unwrap();
+        assert_eq!(stage(&play), Some(Stage::Done));
+        let before = play.game.sim.gametic;
+        play.tick(&TickInput::default()).unwrap();
+        assert_eq!((play.game.ticks(), play.game.sim.gametic), (1, before + 1));
         assert_eq!((play.phase.clone(), play.map.short_name()), (Phase::Playing, next.to_string()));
         assert_eq!(play.game.player().health, 100);
     }

@@ -275,7 +275,9 @@ fn a_campaign_file_plays_its_maps_in_order() {
 
 /// Death and rebirth: a player who dies (here in the slime, health set low)
 /// cannot move, its eye sinks to the floor, and use restarts the map from
-/// its start with full health.
+/// its start with full health: use marks the player reborn that tic
+/// (`P_DeathThink`), and the next tic reloads the map and plays its first
+/// tic (`G_DoReborn`).
 #[test]
 fn a_dead_player_restarts_the_map_with_use() {
     let map = MapRef::File(map_path("machinery.ron"));
@@ -295,5 +297,7 @@ fn a_dead_player_restarts_the_map_with_use() {
     assert!(p.pos.distance(at) < 1.0, "a dead player walked");
     assert_eq!(play.game.view(1.0).z, p.z + 6.0, "the eye sinks to 6 above the feet");
     play.tick(&TickInput { use_line: true, ..Default::default() }).unwrap();
-    assert_eq!((play.game.player().pos, play.game.player().health, play.game.ticks()), (start, 100, 0));
+    assert!(play.game.player().dead() && play.game.reborn());
+    play.tick(&TickInput::default()).unwrap();
+    assert_eq!((play.game.player().pos, play.game.player().health, play.game.ticks()), (start, 100, 1));
 }

@@ -128,11 +128,12 @@ fn truncated_flipped_and_foreign_saves_are_errors_naming_the_file() {
     let mut other = bytes.clone();
     other[MAGIC.len()] = VERSION + 1;
     assert!(matches!(refused(&other, "version"), SaveError::Version { found, .. } if found == VERSION + 1));
-    // Versions 1 and 2, which could hold the f64 game: refused, saying so.
-    for old in [1, 2] {
+    // Versions 1 and 2, which could hold the f64 game, and 3, which kept
+    // the held buttons apart: refused, saying so.
+    for old in [1, 2, 3] {
         other[MAGIC.len()] = old;
         let e = refused(&other, "an older version");
-        let says = e.to_string().contains(&format!("version {old}, this build reads version 3"));
+        let says = e.to_string().contains(&format!("version {old}, this build reads version {VERSION}"));
         assert!(matches!(e, SaveError::Version { found, .. } if found == old) && says, "{e}");
     }
     let mut longer = bytes.clone();

@@ -8,7 +8,7 @@ use serde_json::json;
 use sightline::autopilot::{self, Point};
 use sightline::campaign::MapRef;
 use sightline::play::playthrough::{Phase, Playthrough};
-use sightline::play::{Exit, GameOptions, Stats, TickInput, TICRATE};
+use sightline::play::{vanilla, Exit, GameOptions, Stats, TickInput, TICRATE};
 use sightline::render::{RenderOptions, Renderer};
 
 use crate::cli::AutoplayArgs;
@@ -16,6 +16,8 @@ use crate::replay::Capture;
 
 /// How a run ended, whichever game it was played on.
 struct Run {
+    /// The map it ended on (the last of `--levels`).
+    map: MapRef,
     outcome: autopilot::Outcome,
     bot: autopilot::Autopilot,
     stats: Stats,
@@ -31,13 +33,14 @@ pub fn run(args: &AutoplayArgs) -> Result<()> {
     let started = std::time::Instant::now();
     let run = play(args, &map, options)?;
     let seconds = started.elapsed().as_secs_f64();
-    report(args, &map, run, seconds);
+    report(args, run, seconds);
     Ok(())
 }
 
 /// The autopilot on one level of a playthrough, capturing frames if asked.
 fn play(args: &AutoplayArgs, map: &MapRef, options: GameOptions) -> Result<Run> {
     let mut play = Playthrough::of(map, options).with_context(|| format!("{}: cannot start the game", map.label()))?;
+    let first = play.map.clone();
     let mut capture = match (args.capture_every, &args.output) {
         (Some(every), Some(dir)) => {
             let renderer = Renderer::default_for(play.game.level());
@@ -49,18 +52,43 @@ fn play(args: &AutoplayArgs, map: &MapRef, options: GameOptions) -> Result<Run> 
         _ => None,
     };
     let mut failed = None;
-    let (outcome, bot) = autopilot::run(&mut play, args.max_ticks, |play, tick| {
-        if let Some(c) = &mut capture {
-            if tick.is_multiple_of(c.every) && failed.is_none() {
-                failed = c.frame(play, tick).err();
+    let lmp = args.record.as_deref().is_some_and(crate::replay_lmp::is_lmp_path);
+    let mut carry = 0.0;
+    // Recording to a .lmp, the game is fed its inputs as the file keeps them.
+    let mut as_kept = |input: TickInput| if lmp { vanilla::as_recorded(&input, &mut carry) } else { input };
+    let mut inputs = Vec::new();
+    let mut level = 1;
+    let (outcome, bot) = loop {
+        let before = inputs.len() as u64;
+        let (outcome, bot) = autopilot::run_through(&mut play, args.max_ticks, &mut as_kept, |play, tick| {
+            if let Some(c) = &mut capture {
+                if (before + tick).is_multiple_of(c.every) && failed.is_none() {
+                    failed = c.frame(play, before + tick).err();
+                }
             }
+            failed.is_none()
+        })?;
+        inputs.extend(outcome.inputs.iter().copied());
+        if outcome.exit.is_none() || level == args.levels || failed.is_some() {
+            break (outcome, bot);
         }
-        failed.is_none()
-    })?;
+        println!("{}: exited after {} ticks", play.map.short_name(), outcome.inputs.len());
+        // Through the intermission, pressing use every other tic as the
+        // window's autopilot does; the next level loads on the tic after.
+        while matches!(play.phase, Phase::Intermission { .. }) {
+            let input = TickInput { use_line: inputs.len().is_multiple_of(2), ..TickInput::default() };
+            play.tick(&input)?;
+            inputs.push(input);
+        }
+        if play.phase != Phase::Playing {
+            break (outcome, bot);
+        }
+        level += 1;
+    };
     if let Some(e) = failed {
         return Err(e);
     }
-    let ticks = outcome.inputs.len() as u64;
+    let ticks = inputs.len() as u64;
     if let Some(c) = &mut capture {
         if !ticks.is_multiple_of(c.every) {
             c.frame(&play, ticks)?;
@@ -69,11 +97,10 @@ fn play(args: &AutoplayArgs, map: &MapRef, options: GameOptions) -> Result<Run> 
     if let Some(path) = &args.record {
         // Doom completes a level at the start of the tic after the exit:
         // one more (idle) tic takes a demo's player to the intermission.
-        let mut inputs = outcome.inputs.clone();
-        if outcome.exit.is_some() && crate::replay_lmp::is_lmp_path(path) {
+        if outcome.exit.is_some() && lmp {
             inputs.push(TickInput::default());
         }
-        crate::replay_lmp::save_recording(path, &play.map, options, inputs)?;
+        crate::replay_lmp::save_recording(path, &first, options, inputs)?;
     }
     let stats = match &play.phase {
         Phase::Intermission { stats, .. } | Phase::Finished { stats } => *stats,
@@ -81,11 +108,11 @@ fn play(args: &AutoplayArgs, map: &MapRef, options: GameOptions) -> Result<Run> 
     };
     let player = play.game.player();
     let captured = capture.map(|c| (c.written, c.dir.clone()));
-    Ok(Run { outcome, bot, stats, health: player.health, pos: player.pos, captured })
+    Ok(Run { map: play.map.clone(), outcome, bot, stats, health: player.health, pos: player.pos, captured })
 }
 
-fn report(args: &AutoplayArgs, map: &MapRef, run: Run, seconds: f64) {
-    let Run { outcome, bot, stats, health, pos, captured } = run;
+fn report(args: &AutoplayArgs, run: Run, seconds: f64) {
+    let Run { map, outcome, bot, stats, health, pos, captured } = run;
     if std::env::var_os("SIGHTLINE_AUTOPILOT_LOG").is_some() {
         for line in &bot.log {
             eprintln!("{line}");

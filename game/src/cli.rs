@@ -383,6 +383,10 @@ pub struct AutoplayArgs {
     /// Give up after this many ticks (35 a second; default 20 minutes).
     #[arg(long, default_value_t = 42_000)]
     pub max_ticks: u64,
+    /// Play on through this many levels of the campaign, pressing through
+    /// each intermission (`--record` keeps them all in one demo).
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..))]
+    pub levels: u32,
     /// Record the run as a demo (`sightline replay` plays it back).
     #[arg(long)]
     pub record: Option<PathBuf>,

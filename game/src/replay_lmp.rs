@@ -15,13 +15,13 @@ use sightline::bsp::BuildOptions;
 use sightline::campaign::MapRef;
 use sightline::level::write_atomic;
 use sightline::play::demo::Demo;
-use sightline::play::lmp::Ticcmd;
 use sightline::play::lmp::VanillaDemo;
 use sightline::play::syncdump::{compare, SyncDump};
 use sightline::play::vanilla::{demo_of, open_demo};
 use sightline::play::{GameOptions, TickInput};
 use sightline::render::{render_frame, Frame, RenderOptions};
-use sightline::sim::{self, Sim, MAXPLAYERS};
+use sightline::sim::demo::DemoGame;
+use sightline::sim::{self, Sim};
 use sightline::Framebuffer;
 
 use crate::cli::ReplayArgs;
@@ -63,13 +63,15 @@ pub fn save_recording(path: &Path, map: &MapRef, options: GameOptions, inputs: V
 }
 
 /// A Doom demo played on the simulation with Doom's arithmetic, for the
-/// window: the game, the demo, where the next tic is, and how the game is
-/// drawn on the converted map the window renders.
+/// window: the game (across levels), the demo, where the next tic is, and
+/// how the game is drawn on the converted map the window renders.
 pub struct VanillaRun {
-    pub game: Sim,
+    pub game: DemoGame,
     pub demo: VanillaDemo,
     pub next: usize,
     pub scene: sim::draw::Scene,
+    /// The map the window shows (the game may have gone on to the next).
+    pub shown: MapRef,
 }
 
 impl VanillaRun {
@@ -79,20 +81,36 @@ impl VanillaRun {
         let (map, _) = source.game()?;
         let wad = source.wad()?;
         let table = sim::demo::table_with_patches(&wad, ActorTable::active(), deh).map_err(|e| anyhow!("{e}"))?;
-        let game = sim::demo::start(&wad, &source.demo, table).map_err(|e| anyhow!("{spec}: {e}"))?;
+        let sim = sim::demo::start(&wad, &source.demo, table).map_err(|e| anyhow!("{spec}: {e}"))?;
+        let game = DemoGame::new(std::sync::Arc::new(wad), sim);
         let opened = sightline::campaign::open(&map, &BuildOptions::default())?;
         let scene = sim::draw::Scene::new(opened.links.unwrap_or_default());
-        Ok((map, VanillaRun { game, demo: source.demo, next: 0, scene }))
+        Ok((map.clone(), VanillaRun { game, demo: source.demo, next: 0, scene, shown: map }))
     }
 
-    /// Runs the next tic, if the demo has one.
-    pub fn tick(&mut self) -> bool {
+    /// Runs the next tic, if the demo has one (`Ok(false)` when it has run
+    /// out); a next map the WAD lacks is an error.
+    pub fn tick(&mut self) -> Result<bool> {
         if self.next >= self.demo.tics() {
-            return false;
+            return Ok(false);
         }
-        self.game.tick(&commands(&self.demo, self.next));
+        self.game.tick(&sim::demo::commands(&self.demo, self.next)).map_err(|e| anyhow!("{e}"))?;
         self.next += 1;
-        true
+        Ok(true)
+    }
+
+    /// The map the game has gone on to, when it is not the one shown.
+    pub fn moved_to(&self) -> Option<MapRef> {
+        let MapRef::Wad { wads, map: Some(name) } = &self.shown else { return None };
+        let now = &self.game.sim.level.name;
+        (!name.eq_ignore_ascii_case(now)).then(|| MapRef::Wad { wads: wads.clone(), map: Some(now.clone()) })
+    }
+
+    /// Shows `map` from now on (the window has opened it), drawn through
+    /// `links`.
+    pub fn show(&mut self, map: MapRef, links: sightline::wad::import::Links) {
+        self.scene = sim::draw::Scene::new(links);
+        self.shown = map;
     }
 }
 
@@ -105,9 +123,10 @@ pub fn run(args: &ReplayArgs) -> Result<()> {
     let (map, _) = source.game()?;
     let wad = source.wad()?;
     let table = sim::demo::table_with_patches(&wad, ActorTable::active(), &args.deh).map_err(|e| anyhow!("{e}"))?;
-    let mut game =
-        sim::demo::start_as(&wad, &source.demo, table, args.gameversion).map_err(|e| anyhow!("{spec}: {e}"))?;
+    let sim = sim::demo::start_as(&wad, &source.demo, table, args.gameversion).map_err(|e| anyhow!("{spec}: {e}"))?;
+    let mut game = DemoGame::new(std::sync::Arc::new(wad), sim);
     let reference = args.check_against.as_ref().map(|p| SyncDump::load(p)).transpose()?;
+    let mut lines = reference.as_ref().map(|dump| dump.tics.iter());
     let mut frames = match (args.capture_every, args.timedemo) {
         (None, false) => None,
         _ => Some(Frames::open(&map, args)?),
@@ -118,12 +137,13 @@ pub fn run(args: &ReplayArgs) -> Result<()> {
         f.tic(&game, 0, tics == 0)?;
     }
     for t in 0..tics {
-        game.tick(&commands(&source.demo, t));
-        if let Some(dump) = &reference {
-            let theirs = dump.tics.get(t).ok_or_else(|| {
-                anyhow!("{spec}: the reference ends after {} tics, the demo has {tics}", dump.tics.len())
-            })?;
-            let diffs = compare(&game.tic_state(), theirs);
+        game.tick(&sim::demo::commands(&source.demo, t)).map_err(|e| anyhow!("{spec}: at tic {}: {e}", t + 1))?;
+        if let Some(lines) = lines.as_mut().filter(|_| game.on_level()) {
+            // The reference holds the level tics alone.
+            let theirs = lines
+                .next()
+                .ok_or_else(|| anyhow!("{spec}: the reference ends before the demo's tic {} (a level tic)", t + 1))?;
+            let diffs = compare(&game.sim.tic_state(), theirs);
             if !diffs.is_empty() {
                 let fields: Vec<String> = diffs.iter().map(|d| format!("\n  {d}")).collect();
                 bail!("{spec}: in sync for {t} of {tics} tics; out of sync at tic {}:{}", t + 1, fields.concat());
@@ -154,10 +174,10 @@ pub fn run(args: &ReplayArgs) -> Result<()> {
         }
     }
     if args.json {
-        println!("{}", final_json(&game, tics));
+        println!("{}", final_json(&game.sim, tics));
     } else if !args.timedemo {
         let h = &source.demo.header;
-        println!("{spec}: {} skill {}, {tics} tics played", game.level.name, h.skill + 1);
+        println!("{spec}: {} skill {}, {tics} tics played", game.sim.level.name, h.skill + 1);
     }
     Ok(())
 }
@@ -166,6 +186,8 @@ pub fn run(args: &ReplayArgs) -> Result<()> {
 /// written as PNGs,
 /// or (`--timedemo`) every tic rendered and not kept.
 struct Frames {
+    /// The map drawn (the demo's level, or the one it went on to).
+    map: MapRef,
     level: sightline::level::Level,
     scene: sim::draw::Scene,
     options: RenderOptions,
@@ -187,6 +209,7 @@ impl Frames {
             std::fs::create_dir_all(&dir).with_context(|| format!("{}: cannot create the directory", dir.display()))?;
         }
         Ok(Frames {
+            map: map.clone(),
             level: opened.level,
             scene: sim::draw::Scene::new(links),
             options: RenderOptions { renderer, threads: args.threads, ..Default::default() },
@@ -201,10 +224,20 @@ impl Frames {
 
     /// Renders the state after `tic` tics, and writes it when it is one to
     /// keep (every `--capture-every`th, and the `last`).
-    fn tic(&mut self, game: &Sim, tic: u64, last: bool) -> Result<()> {
+    fn tic(&mut self, game: &DemoGame, tic: u64, last: bool) -> Result<()> {
         let keep = self.every.is_some_and(|every| tic.is_multiple_of(every) || last);
-        if self.every.is_some() && !keep {
+        if (self.every.is_some() && !keep) || !game.on_level() {
             return Ok(());
+        }
+        let game = &game.sim;
+        if let MapRef::Wad { wads, map: Some(name) } = &self.map {
+            if !name.eq_ignore_ascii_case(&game.level.name) {
+                // The demo went on to the next level: draw that one.
+                let next = MapRef::Wad { wads: wads.clone(), map: Some(game.level.name.clone()) };
+                let opened = sightline::campaign::open(&next, &BuildOptions::default())?;
+                (self.map, self.level) = (next, opened.level);
+                self.scene = sim::draw::Scene::new(opened.links.unwrap_or_default());
+            }
         }
         let Some(view) = self.scene.view(game) else { return Ok(()) };
         self.scene.draw(game, &mut self.level);
@@ -216,16 +249,6 @@ impl Frames {
         }
         Ok(())
     }
-}
-
-/// Tic `t`'s commands by player number.
-fn commands(demo: &VanillaDemo, t: usize) -> [Option<Ticcmd>; MAXPLAYERS] {
-    let mut cmds = [None; MAXPLAYERS];
-    let players = (0..MAXPLAYERS).filter(|&n| demo.header.in_game[n]);
-    for (k, n) in players.enumerate() {
-        cmds[n] = demo.tic(t).get(k).copied();
-    }
-    cmds
 }
 
 /// The game's state at the demo's end: the tics played, each player's

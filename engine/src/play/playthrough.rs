@@ -1,33 +1,32 @@
 //! A playthrough: one map after another, as a person plays a campaign.
-//! Levels end at an exit; an intermission shows the level's tallies until
-//! the player presses use or fire; then the next map of the [`Campaign`]
-//! loads. A dead player's use restarts the map. Driven by the same
-//! [`TickInput`]s as a [`SimGame`] (the intermission's presses included),
-//! so a demo recorded across several maps replays exactly, headless too.
+//! Levels end at an exit; the intermission shows the level's tallies,
+//! timed as Doom times it (`sim::intermission`: a press shows the tallies
+//! at once, the next goes on); then the next map of the [`Campaign`]
+//! loads. A dead player's use reloads the map (Doom's reborn). Driven by the
+//! same [`TickInput`]s as a [`SimGame`] (the intermission's presses
+//! included), tic for tic as Doom runs a demo, so a game recorded across
+//! several maps replays exactly, headless too, and in Chocolate Doom.
 
 use crate::bsp::BuildOptions;
 use crate::campaign::{open, Campaign, CampaignError, MapRef};
 use crate::sim::game::{SimGame, SimGameError};
+use crate::sim::intermission::Intermission;
 
 use super::world::Exit;
 use super::{GameOptions, Stats, TickInput};
-
-/// Ticks an intermission shows before a press can end it (1 s, so a key
-/// still held from the exit switch does not skip it).
-pub const INTERMISSION_MIN: u32 = 35;
 
 /// What the playthrough is showing.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Phase {
     Playing,
-    /// The level ended: its tallies, and what comes next (`None`: the
-    /// campaign is over).
+    /// The level ended: its tallies, what comes next (`None`: the
+    /// campaign is over), and Doom's intermission counting them.
     Intermission {
         map: String,
         stats: Stats,
         exit: Exit,
         next: Option<MapRef>,
-        ticks: u32,
+        wi: Box<Intermission>,
     },
     /// The last map is done.
     Finished {
@@ -53,8 +52,6 @@ pub struct Playthrough {
     /// Ticks run since the playthrough began, over every map and intermission.
     pub ticks: u64,
     build: BuildOptions,
-    /// The last tick's use or fire, to act on presses only.
-    held: bool,
 }
 
 impl Playthrough {
@@ -65,7 +62,7 @@ impl Playthrough {
         let opened = open(&map, &build)?;
         let map = opened.map.clone();
         let game = SimGame::new(opened, options)?;
-        Ok(Playthrough { campaign, map, game, phase: Phase::Playing, ticks: 0, build, held: false })
+        Ok(Playthrough { campaign, map, game, phase: Phase::Playing, ticks: 0, build })
     }
 
     /// Starts on a command-line map: a WAD, `WAD:MAP`, a campaign file or a map.
@@ -82,55 +79,51 @@ impl Playthrough {
         self.game.options()
     }
 
-    /// The last tick held use or fire (a save keeps it: the next press is
-    /// told from a held key the same way after loading).
-    pub(super) fn held(&self) -> bool {
-        self.held
-    }
-
     /// A playthrough of `campaign` resumed on `map` with `game` (a loaded save).
-    pub(super) fn resume(campaign: Campaign, map: MapRef, game: SimGame, ticks: u64, held: bool) -> Playthrough {
+    pub(super) fn resume(campaign: Campaign, map: MapRef, game: SimGame, ticks: u64) -> Playthrough {
         let build = BuildOptions::default();
-        Playthrough { campaign, map, game, phase: Phase::Playing, ticks, build, held }
+        Playthrough { campaign, map, game, phase: Phase::Playing, ticks, build }
     }
 
-    /// One tick: the game's, or the intermission's. Loading the next map can
-    /// fail (a file changed or vanished); the error says which, and the
-    /// playthrough stays in its intermission.
+    /// One tick, in `G_Ticker`'s order: a reborn player's level reloaded,
+    /// or the next level loaded when the intermission has ended; then the
+    /// game's tic, or the intermission's. Loading a map can fail (a file
+    /// changed or vanished); the error says which, and the playthrough
+    /// stays where it was.
     pub fn tick(&mut self, input: &TickInput) -> Result<(), PlaythroughError> {
+        if let Phase::Intermission { wi, next, stats, .. } = &self.phase {
+            if wi.done() {
+                match next.clone() {
+                    Some(next) => self.enter(next)?,
+                    None => self.phase = Phase::Finished { stats: *stats },
+                }
+            }
+        } else if self.phase == Phase::Playing && self.game.reborn() {
+            self.restart()?;
+        }
         self.ticks += 1;
-        let pressed = (input.use_line || input.fire) && !self.held;
-        self.held = input.use_line || input.fire;
         match &mut self.phase {
             Phase::Playing => {
-                if self.game.player().dead() && pressed {
-                    return self.restart();
-                }
                 self.game.tick(input);
                 if let Some(exit) = self.game.exit() {
+                    let stats = self.game.stats();
                     let next = self.campaign.next(&self.map, exit);
                     let map = self.map.short_name();
-                    self.phase = Phase::Intermission { map, stats: self.game.stats(), exit, next, ticks: 0 };
-                    // The press that ended the level does not end the intermission.
-                    self.held = true;
+                    self.phase = match self.game.complete() {
+                        Some(wi) => Phase::Intermission { map, stats, exit, next, wi: Box::new(wi) },
+                        // Doom 1's ExM8: the episode's end, no intermission.
+                        None => Phase::Finished { stats },
+                    };
                 }
             }
-            Phase::Intermission { ticks, next, stats, .. } => {
-                *ticks += 1;
-                if pressed && *ticks >= INTERMISSION_MIN {
-                    match next.clone() {
-                        Some(next) => self.enter(next)?,
-                        None => self.phase = Phase::Finished { stats: *stats },
-                    }
-                }
-            }
+            Phase::Intermission { wi, .. } => self.game.tick_between(wi, input),
             Phase::Finished { .. } => {}
         }
         Ok(())
     }
 
     /// Loads `map` and plays it; the player keeps what Doom's
-    /// `G_PlayerFinishLevel` lets through (not its keys).
+    /// `G_PlayerFinishLevel` lets through (not its keys or powers).
     fn enter(&mut self, map: MapRef) -> Result<(), PlaythroughError> {
         let opened = open(&map, &self.build)?;
         let map = opened.map.clone();
@@ -155,12 +148,11 @@ impl Playthrough {
         Ok(kept)
     }
 
-    /// The current map from its start, with a fresh player (Doom's reborn).
+    /// The current map from its start, with a fresh player (Doom's
+    /// reborn: the random index and tic count go on).
     fn restart(&mut self) -> Result<(), PlaythroughError> {
-        let map = self.map.clone();
-        let opened = open(&map, &self.build)?;
-        self.game = SimGame::new(opened, self.options())?;
-        self.phase = Phase::Playing;
+        let opened = open(&self.map, &self.build)?;
+        self.game = SimGame::next_level(opened, self.options(), &self.game)?;
         Ok(())
     }
 }

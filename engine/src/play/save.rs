@@ -47,7 +47,7 @@ pub const MAGIC: &[u8] = b"SIGHTLINE-SAVE\n";
 /// Bumped whenever the saved state's meaning changes (a field renamed, or
 /// the same field meaning something else). 2: the level's game may be the
 /// simulation with Doom's arithmetic. 3: it is (the f64 game is gone).
-pub const VERSION: u8 = 3;
+pub const VERSION: u8 = 4;
 
 #[derive(Debug, thiserror::Error)]
 pub enum SaveError {
@@ -82,8 +82,6 @@ pub struct SaveInfo {
     /// Ticks since the playthrough began, and since this map began.
     pub playthrough_ticks: u64,
     pub level_ticks: u64,
-    /// The playthrough's last tick held use or fire.
-    held: bool,
     /// CRC-32 of the map as opened (before play).
     map_fingerprint: u32,
 }
@@ -108,7 +106,6 @@ impl Playthrough {
             options: self.options(),
             playthrough_ticks: self.ticks,
             level_ticks: self.game.ticks(),
-            held: self.held(),
             map_fingerprint,
         };
         let mut body = encode(&info);
@@ -160,7 +157,7 @@ impl Playthrough {
         if game.ticks() != info.level_ticks {
             return Err(corrupt("the header and the game's state disagree".into()));
         }
-        Ok(Playthrough::resume(info.campaign, map, game, info.playthrough_ticks, info.held))
+        Ok(Playthrough::resume(info.campaign, map, game, info.playthrough_ticks))
     }
 }
 

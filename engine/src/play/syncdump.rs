@@ -180,6 +180,9 @@ pub fn compare(ours: &TicState, theirs: &TicState) -> Vec<FieldDiff> {
             diffs.push(FieldDiff { field, ours: a, theirs: b });
         }
     };
+    // The game's tic count runs on through intermissions: it checks how
+    // long each lasted.
+    check("gametic".into(), ours.gametic.to_string(), theirs.gametic.to_string());
     if let (Some(a), Some(b)) = (ours.leveltime, theirs.leveltime) {
         check("leveltime".into(), a.to_string(), b.to_string());
     }

@@ -8,11 +8,14 @@ use std::sync::Arc;
 
 use crate::actors::dehacked::Dehacked;
 
+use super::intermission::{self, Intermission};
 use super::setup::Players;
 use super::{GameMode, GameVersion, Rules, Sim, MAXPLAYERS};
 use crate::actors::ActorTable;
-use crate::play::lmp::VanillaDemo;
+use crate::campaign::next_doom_map;
+use crate::play::lmp::{Ticcmd, VanillaDemo};
 use crate::play::syncdump::{compare, FieldDiff, SyncDump};
+use crate::play::world::Exit;
 use crate::wad::Wad;
 
 /// What the IWAD is (`D_IdentifyVersion`): Doom II's maps make it
@@ -108,6 +111,95 @@ pub fn start_as(
     Sim::new(wad, &map, rules, players, table).map_err(|e| e.to_string())
 }
 
+/// A demo's game from tic to tic across levels, as `G_Ticker` runs it: a
+/// reborn player first (a lone player's level reloaded, a netgame's
+/// player respawned), then the game's actions (a level ended last tic: its
+/// intermission; an intermission over: the next level loaded from the
+/// WAD), then the tic itself, on the level or between levels.
+pub struct DemoGame {
+    pub sim: Sim,
+    wad: Arc<Wad>,
+    /// Between levels: the intermission and the map after it (`None`:
+    /// the game ends after it).
+    pub between: Option<(Intermission, Option<String>)>,
+    /// The game has ended (Doom 1's ExM8, Doom II's MAP30, a campaign's
+    /// last map): later tics only count.
+    pub over: bool,
+}
+
+impl DemoGame {
+    pub fn new(wad: Arc<Wad>, sim: Sim) -> DemoGame {
+        DemoGame { sim, wad, between: None, over: false }
+    }
+
+    /// The last tic was a level's (what a reference dump holds a line for).
+    pub fn on_level(&self) -> bool {
+        self.between.is_none() && !self.over
+    }
+
+    /// One tic of every player's command. A next map the WAD lacks, or an
+    /// intermission in a game of several players (this engine times it for
+    /// one), is an error naming it.
+    pub fn tick(&mut self, cmds: &[Option<Ticcmd>; MAXPLAYERS]) -> Result<(), String> {
+        if self.on_level() {
+            self.actions()?;
+        } else if let Some((wi, next)) = &self.between {
+            if wi.done() {
+                match next.clone() {
+                    Some(name) => {
+                        self.sim = self.sim.next_level_of(&self.wad, &name).map_err(|e| e.to_string())?;
+                        self.between = None;
+                    }
+                    None => self.over = true,
+                }
+            }
+        }
+        match &mut self.between {
+            _ if self.over => self.sim.gametic += 1,
+            Some((wi, _)) => self.sim.tick_between(wi, cmds),
+            None => self.sim.tick(cmds),
+        }
+        Ok(())
+    }
+
+    /// On a level: reborn players, and the level's end (`G_DoCompleted`).
+    fn actions(&mut self) -> Result<(), String> {
+        for n in 0..MAXPLAYERS {
+            if self.sim.player(n).is_none_or(|p| p.playerstate != super::PlayerState::Reborn) {
+                continue;
+            }
+            if self.sim.rules.netgame {
+                self.sim.respawn_in_netgame(n);
+            } else {
+                let name = self.sim.level.name.clone();
+                self.sim = self.sim.next_level_of(&self.wad, &name).map_err(|e| e.to_string())?;
+                return Ok(());
+            }
+        }
+        let Some(secret) = self.sim.exit else { return Ok(()) };
+        for p in self.sim.players.iter_mut().flatten() {
+            intermission::finish_level(p);
+        }
+        let name = self.sim.level.name.clone();
+        if intermission::ends_game(self.sim.rules.mode, &name) {
+            self.over = true;
+            return Ok(());
+        }
+        if self.sim.rules.netgame {
+            return Err(format!(
+                "the demo goes on past {name}'s end into an intermission of several players, which this engine does not time (it times one player's)"
+            ));
+        }
+        let exit = if secret { Exit::Secret } else { Exit::Normal };
+        let next = next_doom_map(&name, exit, |m| self.wad.find(m).is_some());
+        let p = self.sim.player(self.sim.console).ok_or("the demo's console player is not in the game")?;
+        let totals = (self.sim.total_kills, self.sim.total_items, self.sim.total_secrets);
+        let tallies = Intermission::tallies_of(p, totals, self.sim.leveltime, &name);
+        self.between = Some((Intermission::start(self.sim.rules.mode, &name, secret, tallies), next));
+        Ok(())
+    }
+}
+
 /// How far a demo kept in step with its reference.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SyncReport {
@@ -119,24 +211,38 @@ pub struct SyncReport {
     pub first_difference: Option<(usize, Vec<FieldDiff>)>,
 }
 
-/// Plays `demo` on `sim`, comparing every tic with `dump`; stops at the
-/// first difference.
-pub fn check(sim: &mut Sim, demo: &VanillaDemo, dump: &SyncDump) -> SyncReport {
+/// Tic `t`'s commands of `demo` by player number.
+pub fn commands(demo: &VanillaDemo, t: usize) -> [Option<Ticcmd>; MAXPLAYERS] {
+    let mut cmds = [None; MAXPLAYERS];
+    let players = (0..MAXPLAYERS).filter(|&n| demo.header.in_game[n]);
+    for (k, n) in players.enumerate() {
+        cmds[n] = demo.tic(t).get(k).copied();
+    }
+    cmds
+}
+
+/// Plays `demo` on `game`, comparing every level tic with the next line
+/// of `dump` (which holds the level tics alone: the gametic in each line
+/// checks how long every intermission lasted); stops at the first
+/// difference.
+pub fn check(game: &mut DemoGame, demo: &VanillaDemo, dump: &SyncDump) -> SyncReport {
     let tics = demo.tics();
-    let in_game: Vec<usize> = (0..MAXPLAYERS).filter(|&n| demo.header.in_game[n]).collect();
+    let mut lines = dump.tics.iter();
     for t in 0..tics {
-        let mut cmds = [None; MAXPLAYERS];
-        for (k, &n) in in_game.iter().enumerate() {
-            cmds[n] = demo.tic(t).get(k).copied();
+        let differ = |why: Vec<FieldDiff>| SyncReport { tics, in_sync: t, first_difference: Some((t + 1, why)) };
+        if let Err(e) = game.tick(&commands(demo, t)) {
+            return differ(vec![FieldDiff { field: "game".into(), ours: e, theirs: "played on".into() }]);
         }
-        sim.tick(&cmds);
-        let Some(theirs) = dump.tics.get(t) else {
+        if !game.on_level() {
+            continue;
+        }
+        let Some(theirs) = lines.next() else {
             let why = FieldDiff { field: "tics".into(), ours: tics.to_string(), theirs: dump.tics.len().to_string() };
-            return SyncReport { tics, in_sync: t, first_difference: Some((t + 1, vec![why])) };
+            return differ(vec![why]);
         };
-        let diffs = compare(&sim.tic_state(), theirs);
+        let diffs = compare(&game.sim.tic_state(), theirs);
         if !diffs.is_empty() {
-            return SyncReport { tics, in_sync: t, first_difference: Some((t + 1, diffs)) };
+            return differ(diffs);
         }
     }
     SyncReport { tics, in_sync: tics, first_difference: None }

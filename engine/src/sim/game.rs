@@ -17,6 +17,7 @@ use std::borrow::Cow;
 use glam::DVec2;
 
 use super::draw::Scene;
+use super::intermission::{self, Intermission};
 use super::setup::Players;
 use super::{demo, from_map, Compat, MobjId, PlayerState, Rules, Sim, SimEvent};
 use crate::actors::{sounds, ActorTable, KeyForm};
@@ -87,6 +88,17 @@ impl SimGame {
         options: GameOptions,
         table: std::sync::Arc<ActorTable>,
     ) -> Result<SimGame, SimGameError> {
+        SimGame::begin(opened, options, table, None)
+    }
+
+    /// A game on `opened`: a new one, or `from`'s going on there (its
+    /// players, random index and tic count, [`Sim::next_level`]).
+    fn begin(
+        opened: Opened,
+        options: GameOptions,
+        table: std::sync::Arc<ActorTable>,
+        from: Option<&Sim>,
+    ) -> Result<SimGame, SimGameError> {
         let label = opened.map.label();
         let error = |what: String| SimGameError::Start { map: label.clone(), what };
         let fingerprint = crate::play::save::map_fingerprint(&opened.level);
@@ -98,11 +110,17 @@ impl SimGame {
         let (sim, scene) = match (&opened.map, opened.links) {
             (MapRef::Wad { wads, map: Some(name) }, Some(links)) => {
                 let wad = crate::campaign::stack(wads).map_err(|e| error(e.to_string()))?;
-                let table = demo::table_for(&wad, &table).map_err(&error)?;
-                let mode = demo::game_mode(&wad);
-                let rules =
-                    Rules { no_monsters: options.no_monsters, ..Rules::single(skill, demo::game_version(mode), mode) };
-                let sim = Sim::new(&wad, name, rules, players, table).map_err(|e| error(e.to_string()))?;
+                let sim = match from {
+                    Some(from) => from.next_level_of(&wad, name),
+                    None => {
+                        let table = demo::table_for(&wad, &table).map_err(&error)?;
+                        let mode = demo::game_mode(&wad);
+                        let version = demo::game_version(mode);
+                        let rules = Rules { no_monsters: options.no_monsters, ..Rules::single(skill, version, mode) };
+                        Sim::new(&wad, name, rules, players, table)
+                    }
+                };
+                let sim = sim.map_err(|e| error(e.to_string()))?;
                 (sim, Scene::new(links))
             }
             _ => {
@@ -113,14 +131,21 @@ impl SimGame {
                     no_monsters: options.no_monsters,
                     ..Rules::single(skill, super::GameVersion::Doom19, super::GameMode::Commercial)
                 };
-                let mut sim = from_map::sim_on_map(level, rules, players, table);
-                // Doom's generator is one table read in turn: a seed moves
-                // `P_Random`'s and `M_Random`'s cursors on from where the
-                // level's setup left them. (A WAD's map does not move them,
-                // as vanilla does not and its demos need.)
-                let [p, m, ..] = options.seed.to_le_bytes();
-                let (p0, m0) = (sim.rng.p_index(), sim.rng.m_index());
-                sim.rng = crate::fixed::DoomRandom::from_indices(p0.wrapping_add(p), m0.wrapping_add(m));
+                let mut sim = match from {
+                    Some(from) => from.next_level(level, |_| {}),
+                    None => {
+                        let mut sim = from_map::sim_on_map(level, rules, players, table);
+                        // Doom's generator is one table read in turn: a seed
+                        // moves `P_Random`'s and `M_Random`'s cursors on
+                        // from where the level's setup left them. (A WAD's
+                        // map does not move them, as vanilla does not and
+                        // its demos need.)
+                        let [p, m, ..] = options.seed.to_le_bytes();
+                        let (p0, m0) = (sim.rng.p_index(), sim.rng.m_index());
+                        sim.rng = crate::fixed::DoomRandom::from_indices(p0.wrapping_add(p), m0.wrapping_add(m));
+                        sim
+                    }
+                };
                 // Raise-to-texture floors measure the map's own textures.
                 let textures = &opened.level.materials.textures;
                 let heights = sim.level.names.iter().filter_map(|name| {
@@ -152,29 +177,47 @@ impl SimGame {
         Ok(game)
     }
 
-    /// A game on the next map of a campaign: the player keeps what Doom's
-    /// `G_PlayerFinishLevel` lets through (health, armour, weapons,
-    /// ammunition, the backpack), not keys or powers.
+    /// The game going on to the next map of a campaign, or to its own map
+    /// again for a player reborn (`G_DoLoadLevel`): the players as the last
+    /// level and the intermission left them (Doom's `G_PlayerFinishLevel`
+    /// took their keys and powers as the level ended), the random index and
+    /// the tic count carried on, as vanilla carries them.
     pub fn next_level(opened: Opened, options: GameOptions, from: &SimGame) -> Result<SimGame, SimGameError> {
-        let mut game = SimGame::new(opened, options)?;
-        let console = game.sim.console;
-        let (Some(old), Some(new)) = (from.sim.player(from.sim.console), game.sim.players[console].as_mut()) else {
-            return Ok(game);
-        };
-        new.health = old.health.max(1);
-        new.armorpoints = old.armorpoints;
-        new.armortype = old.armortype;
-        new.weaponowned = old.weaponowned;
-        new.ammo = old.ammo;
-        new.maxammo = old.maxammo;
-        new.backpack = old.backpack;
-        new.readyweapon = old.readyweapon;
-        let (mo, health) = (new.mo, new.health);
-        game.sim.mo_mut(mo).health = health;
-        super::weapons::setup_psprites(&mut game.sim, console);
-        game.refresh();
-        game.before = game.after;
-        Ok(game)
+        let table = from.sim.info.table.clone();
+        SimGame::begin(opened, options, table, Some(&from.sim))
+    }
+
+    /// The console player died and pressed use (`PST_REBORN`): the game
+    /// reloads its level on the next tic.
+    pub fn reborn(&self) -> bool {
+        self.sim.player(self.sim.console).is_some_and(|p| p.playerstate == PlayerState::Reborn)
+    }
+
+    /// The level has ended: `G_DoCompleted` for the console player (keys
+    /// and powers taken) and the intermission, or `None` where Doom ends
+    /// the game without one (Doom 1's ExM8).
+    pub fn complete(&mut self) -> Option<Intermission> {
+        let secret = self.sim.exit?;
+        for p in self.sim.players.iter_mut().flatten() {
+            intermission::finish_level(p);
+        }
+        let name = self.sim.level.name.clone();
+        if intermission::ends_game(self.sim.rules.mode, &name) {
+            return None;
+        }
+        let p = self.sim.player(self.sim.console)?;
+        let totals = (self.sim.total_kills, self.sim.total_items, self.sim.total_secrets);
+        let tallies = Intermission::tallies_of(p, totals, self.sim.leveltime, &name);
+        Some(Intermission::start(self.sim.rules.mode, &name, secret, tallies))
+    }
+
+    /// One tic of the intermission `wi` from the player's input.
+    pub fn tick_between(&mut self, wi: &mut Intermission, input: &TickInput) {
+        self.events.clear();
+        let cmd = vanilla::command_of(input, &mut self.carry);
+        self.sim.tick_between(wi, &[Some(cmd), None, None, None]);
+        // The tallies' ticks and thumps, heard as the player's own.
+        self.events.extend(wi.sounds.iter().map(|&sound| Event::Sound { sound, origin: Origin::Player }));
     }
 
     /// The game's whole state as bytes (what a save holds): the part of a

@@ -34,6 +34,7 @@
 //! | `specials.rs` | `p_spec.c` | line and sector specials, animations |
 //! | `doors.rs`, `plats.rs`, `floors.rs`, `ceilings.rs`, `lights.rs`, `switches.rs`, `teleport.rs` | `p_doors.c` .. `p_telept.c` | the movers |
 //! | `generalized.rs` | Boom's `p_genlin.c` | a RON map's specials no vanilla number says, on the same movers |
+//! | `intermission.rs` | `g_game.c` (`G_DoCompleted`, `G_WorldDone`), `wi_stuff.c`, `f_finale.c` (the skip) | between levels, timed as Doom times it |
 //! | `demo.rs` | `g_game.c` (`G_DoPlayDemo`) | a demo's game, checked against a dump |
 //! | `game.rs` | `g_game.c` (`G_InitNew`, `G_Ticker`) | a game for a person or the autopilot: input in, the game read out |
 //! | `draw.rs` | | the simulation drawn by the renderer |
@@ -56,6 +57,7 @@ pub mod generalized;
 pub mod hitscan;
 pub mod info;
 pub mod interaction;
+pub mod intermission;
 pub mod level;
 pub mod lights;
 pub mod maputl;

@@ -25,6 +25,15 @@ const MTF_NOTSINGLE: u16 = 16;
 /// Doom's `VIEWHEIGHT`.
 pub const VIEWHEIGHT: Fixed = Fixed(41 << 16);
 
+/// What a game takes into a level: its players, the random index and the
+/// tic count.
+struct Carried {
+    players: [Option<Player>; MAXPLAYERS],
+    console: usize,
+    rng: DoomRandom,
+    gametic: u32,
+}
+
 /// The players in a new game.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Players {
@@ -57,6 +66,49 @@ impl Sim {
         before_specials: impl FnOnce(&mut Sim),
     ) -> Sim {
         let info = Arc::new(Info::new(table, rules.fast_monsters()));
+        let mut made: [Option<Player>; MAXPLAYERS] = Default::default();
+        for (n, &playing) in players.in_game.iter().enumerate() {
+            if playing {
+                made[n] = Some(Player::reborn(&info, [0; MAXPLAYERS], (0, 0, 0)));
+            }
+        }
+        // G_InitNew clears both random indices.
+        let carried = Carried { players: made, console: players.console, rng: DoomRandom::new(), gametic: 0 };
+        Sim::begin(level, rules, info, carried, before_specials)
+    }
+
+    /// The game going on to `level` (`G_DoWorldDone`, or a lone player's
+    /// `G_DoReborn`, both through `G_DoLoadLevel`): the same rules and
+    /// actors, the players as this level left them (a dead one reborn; the
+    /// level's tallies and frags cleared), and the random index and tic
+    /// count where they are, as vanilla keeps them.
+    pub fn next_level(&self, level: Level, before_specials: impl FnOnce(&mut Sim)) -> Sim {
+        let mut players = self.players.clone();
+        for p in players.iter_mut().flatten() {
+            if p.playerstate == PlayerState::Dead {
+                p.playerstate = PlayerState::Reborn;
+            }
+            p.frags = [0; MAXPLAYERS];
+            (p.killcount, p.itemcount, p.secretcount) = (0, 0, 0);
+        }
+        let carried = Carried { players, console: self.console, rng: self.rng, gametic: self.gametic };
+        Sim::begin(level, self.rules, self.info.clone(), carried, before_specials)
+    }
+
+    /// [`Sim::next_level`] on map `name` of `wad`.
+    pub fn next_level_of(&self, wad: &Wad, name: &str) -> Result<Sim, LevelError> {
+        let level = Level::load(wad, name)?;
+        Ok(self.next_level(level, |sim| specials::set_texture_heights(sim, wad)))
+    }
+
+    /// `P_SetupLevel` with the players made or carried.
+    fn begin(
+        level: Level,
+        rules: Rules,
+        info: Arc<Info>,
+        carried: Carried,
+        before_specials: impl FnOnce(&mut Sim),
+    ) -> Sim {
         let cells = (level.blockmap.width * level.blockmap.height) as usize;
         let lines = level.lines.len();
         let mut sim = Sim {
@@ -64,13 +116,12 @@ impl Sim {
             rules,
             mobjs: Vec::new(),
             thinkers: Vec::new(),
-            players: Default::default(),
-            console: players.console,
+            players: carried.players,
+            console: carried.console,
             starts: Default::default(),
             deathmatch_starts: Vec::new(),
-            // G_InitNew clears both random indices.
-            rng: DoomRandom::new(),
-            gametic: 0,
+            rng: carried.rng,
+            gametic: carried.gametic,
             leveltime: 0,
             blocklinks: vec![Vec::new(); cells],
             validcount: 0,
@@ -88,10 +139,10 @@ impl Sim {
             textures_changed: 0,
             level,
         };
-        for (n, &playing) in players.in_game.iter().enumerate() {
-            if playing {
-                sim.players[n] = Some(Player::reborn(&sim.info, [0; MAXPLAYERS], (0, 0, 0)));
-            }
+        // P_SetupLevel: the console player's eye at 1 until the first tic
+        // (no teleport sound for the level's first spawns).
+        if let Some(p) = sim.players[sim.console].as_mut() {
+            p.viewz = Fixed(1);
         }
         sim.spawn_things();
         if sim.rules.deathmatch != 0 {
@@ -222,6 +273,31 @@ impl Sim {
             }
         }
         super::weapons::setup_psprites(self, n);
+    }
+
+    /// `G_DoReborn` in a netgame: player `n`'s body is left as a corpse
+    /// and a new one spawns at a deathmatch start (deathmatch), else at
+    /// the player's own start if it is clear, else at the first other
+    /// player's start that is, else at its own start anyway.
+    pub fn respawn_in_netgame(&mut self, n: usize) {
+        let Some(body) = self.players[n].as_ref().map(|p| p.mo) else { return };
+        self.mo_mut(body).player = None;
+        if self.rules.deathmatch != 0 {
+            self.deathmatch_respawn_player(n, Some(body));
+            return;
+        }
+        let own = self.starts[n].clone();
+        let others = (0..MAXPLAYERS).filter_map(|i| self.starts[i].clone());
+        for spot in own.iter().cloned().chain(others.collect::<Vec<_>>()) {
+            if collision::check_spot(self, n, Some(body), &spot) {
+                // Another's start, taken as this player's.
+                self.spawn_player(&WadThing { kind: n as u16 + 1, ..spot });
+                return;
+            }
+        }
+        if let Some(start) = own {
+            self.spawn_player(&start);
+        }
     }
 
     /// `G_DeathMatchSpawnPlayer`: up to 20 random deathmatch starts (a

@@ -8,9 +8,11 @@ use std::path::Path;
 
 use anyhow::{bail, Context, Result};
 use sightline::autopilot::Autopilot;
+use sightline::campaign::MapRef;
 use sightline::play::events::Event;
 use sightline::play::playthrough::{Phase, Playthrough};
-use sightline::play::TickInput;
+use sightline::play::{Exit, GameOptions, TickInput};
+use sightline::sim::demo::DemoGame;
 use sightline::View;
 
 use super::input::Controls;
@@ -59,8 +61,8 @@ impl Session {
     /// A Doom demo on the simulation with Doom's arithmetic; `play` is a
     /// playthrough of the demo's map, whose level shows it.
     pub fn vanilla(mut play: Playthrough, mut run: VanillaRun) -> Session {
-        let view = run.scene.view(&run.game).unwrap_or_else(|| play.game.view(1.0));
-        run.scene.draw(&run.game, play.game.level_mut());
+        let view = run.scene.view(&run.game.sim).unwrap_or_else(|| play.game.view(1.0));
+        run.scene.draw(&run.game.sim, play.game.level_mut());
         Session::with(play, Source::Vanilla(Box::new(run), view, view), false)
     }
 
@@ -107,17 +109,42 @@ impl Session {
     pub fn run(&mut self, ticks: u32) {
         if let Source::Vanilla(run, before, after) = &mut self.source {
             for _ in 0..ticks {
-                if !run.tick() {
-                    if !self.finished {
-                        self.finished = true;
-                        println!("demo finished after {} tics", run.next);
+                match run.tick() {
+                    Ok(true) => {}
+                    Ok(false) => {
+                        if !self.finished {
+                            self.finished = true;
+                            println!("demo finished after {} tics", run.next);
+                        }
+                        return;
                     }
-                    return;
+                    Err(e) => {
+                        self.error.get_or_insert(e);
+                        return;
+                    }
                 }
-                run.scene.draw(&run.game, self.play.game.level_mut());
-                show_status(&run.game, self.play.game.player_mut());
+                if let Some(map) = run.moved_to() {
+                    // The demo went on to the next level: the window shows it.
+                    match show_map(&map, self.play.options()) {
+                        Ok((play, links)) => {
+                            self.play = play;
+                            run.show(map, links);
+                        }
+                        Err(e) => {
+                            self.error.get_or_insert(e);
+                            return;
+                        }
+                    }
+                }
+                self.play.phase = vanilla_phase(&run.game, &run.shown);
+                let game = &run.game.sim;
+                run.scene.draw(game, self.play.game.level_mut());
+                show_status(game, self.play.game.player_mut());
                 *before = *after;
-                *after = run.scene.view(&run.game).unwrap_or(*after);
+                *after = run.scene.view(game).unwrap_or(*after);
+                if self.play.phase != Phase::Playing {
+                    *before = *after;
+                }
             }
             return;
         }
@@ -228,12 +255,48 @@ fn autopilot_input(bot: &mut Option<Box<Autopilot>>, play: &Playthrough) -> Tick
     let game = &play.game;
     if play.phase != Phase::Playing || game.player().dead() {
         *bot = None;
-        return TickInput { use_line: play.ticks % 2 == 0, ..TickInput::default() };
+        return TickInput { use_line: play.ticks.is_multiple_of(2), ..TickInput::default() };
     }
     if game.ticks() == 0 {
         *bot = None;
     }
     bot.get_or_insert_with(|| Box::new(Autopilot::new(game))).tick(game)
+}
+
+/// A playthrough of `map`, only to show a Doom demo's game on, and how
+/// the simulation's level maps onto it.
+fn show_map(map: &MapRef, options: GameOptions) -> Result<(Playthrough, sightline::wad::import::Links)> {
+    let opened = sightline::campaign::open(map, &sightline::bsp::BuildOptions::default())?;
+    let links = opened.links.unwrap_or_default();
+    Ok((Playthrough::of(map, options)?, links))
+}
+
+/// What the window shows of a Doom demo's game: the level, or the
+/// intermission with its tallies, or the end.
+fn vanilla_phase(game: &DemoGame, shown: &MapRef) -> Phase {
+    let sim = &game.sim;
+    let p = sim.player(sim.console);
+    let count = |f: fn(&sightline::sim::Player) -> i32| p.map_or(0, f).max(0) as u32;
+    let stats = sightline::play::Stats {
+        kills: (count(|p| p.killcount), sim.total_kills.max(0) as u32),
+        items: (count(|p| p.itemcount), sim.total_items.max(0) as u32),
+        secrets: (count(|p| p.secretcount), sim.total_secrets.max(0) as u32),
+        ticks: u64::from(sim.leveltime),
+    };
+    match &game.between {
+        _ if game.over => Phase::Finished { stats },
+        None => Phase::Playing,
+        Some((wi, next)) => Phase::Intermission {
+            map: shown.short_name(),
+            stats,
+            exit: if sim.exit == Some(true) { Exit::Secret } else { Exit::Normal },
+            next: next.as_ref().map(|n| match shown {
+                MapRef::Wad { wads, .. } => MapRef::Wad { wads: wads.clone(), map: Some(n.clone()) },
+                other => other.clone(),
+            }),
+            wi: Box::new(wi.clone()),
+        },
+    }
 }
 
 /// The status bar's figures from the simulation's console player (the

@@ -1,0 +1,360 @@
+//! Between two levels, as Doom times it (`G_DoCompleted`, `wi_stuff.c`'s
+//! ticker for one player, `G_WorldDone`, and the skip of `f_finale.c`'s text
+//! screens). A demo goes on reading commands through an intermission, and
+//! how many tics the intermission lasts depends on when the player presses
+//! fire or use; a demo that goes on to the next level stays in sync only if
+//! this counts exactly as Doom counts. The screens themselves are the front
+//! end's to draw: this keeps the figures shown ([`Intermission::shown`]) and
+//! the sounds Doom plays ([`Intermission::sounds`]).
+//!
+//! The stages, for one player:
+//!
+//! 1. The tallies count up (`StatCount`): a pause of 35 tics, kills 2% a
+//!    tic, a pause, items, a pause, secrets, a pause, then the time and the
+//!    par 3 seconds a tic, then the finished tallies wait. A press while they
+//!    count shows them finished at once; a press once they are finished goes
+//!    on.
+//! 2. Doom 1 only: the episode's map with the next level marked
+//!    (`ShowNextLoc`), 140 tics or until a press.
+//! 3. Ten tics more (`NoState`); then the next level loads, on the tic after.
+//! 4. Doom II after MAP06, MAP11, MAP20 and MAP30 (and MAP15's and MAP31's
+//!    secret exits): a text screen, until any button after 50 tics.
+//!
+//! A press is a button going down: the player's `attackdown` and `usedown`
+//! carry over from the level (use held on the exit switch does not skip the
+//! tallies) and on into the next level, as in Doom.
+
+use super::{GameMode, Player, Sim, MAXPLAYERS};
+use crate::play::lmp::{buttons, Ticcmd};
+
+const TICRATE: i32 = 35;
+
+/// doom.exe's par times in seconds by episode and map (`pars` in g_game.c).
+/// Chocolate Doom reads no BEX `[PARS]`, so neither does a vanilla game.
+const PARS: [[i32; 10]; 4] = [
+    [0; 10],
+    [0, 30, 75, 120, 90, 165, 180, 180, 30, 165],
+    [0, 90, 90, 90, 120, 90, 360, 240, 30, 170],
+    [0, 90, 45, 90, 150, 90, 90, 165, 30, 135],
+];
+
+/// Doom II's par times in seconds, MAP01 to MAP32 (`cpars`).
+const CPARS: [i32; 32] = [
+    30, 90, 120, 120, 90, 150, 120, 120, 270, 90, 210, 150, 150, 150, 210, 150, 420, 150, 210, 150, 240, 150, 180, 150,
+    150, 300, 330, 420, 300, 180, 120, 30,
+];
+
+/// Ticks the episode's map shows the next level (`SHOWNEXTLOCDELAY`).
+const SHOW_NEXT_LOC: i32 = 4 * TICRATE;
+/// The last tics before the next level (`WI_initNoState`).
+const NO_STATE: i32 = 10;
+/// Tics a Doom II text screen shows before a button skips it (`F_Ticker`).
+const TEXT_MIN: i32 = 50;
+
+/// What the intermission counts for the player (`wbplayerstruct_t` and
+/// the level's totals of `wbstartstruct_t`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub struct Tallies {
+    pub kills: i32,
+    pub items: i32,
+    pub secrets: i32,
+    /// The level's totals, at least 1 each (`WI_initVariables`).
+    pub max_kills: i32,
+    pub max_items: i32,
+    pub max_secrets: i32,
+    /// The level's time and its par, in tics.
+    pub time: i32,
+    pub par: i32,
+}
+
+/// The figures on screen while the tallies count (`cnt_kills`, ...):
+/// percentages and seconds, -1 before they first show.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub struct Shown {
+    pub kills: i32,
+    pub items: i32,
+    pub secrets: i32,
+    pub time: i32,
+    pub par: i32,
+}
+
+/// Where the intermission is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum Stage {
+    /// The tallies count (`StatCount`); `step` is `sp_state`, 1 to 10, and
+    /// `pause` counts down the odd steps.
+    Tallies { step: u8, pause: i32 },
+    /// Doom 1's episode map (`ShowNextLoc`), `left` tics to go.
+    NextLocation { left: i32 },
+    /// The last tics (`NoState`).
+    Closing { left: i32 },
+    /// A Doom II text screen (`GS_FINALE`), shown for `shown` tics.
+    Text { shown: i32 },
+    /// The next level loads on the next tic (`ga_worlddone`).
+    Done,
+}
+
+/// An intermission in progress.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Intermission {
+    pub tallies: Tallies,
+    pub shown: Shown,
+    pub stage: Stage,
+    /// A press came this stage (`acceleratestage`).
+    accelerate: bool,
+    /// Tics since the intermission began (`bcnt`).
+    pub tics: u32,
+    commercial: bool,
+    /// A text screen follows the tallies (`G_WorldDone`'s finales).
+    text_after: bool,
+    /// Doom's sound names played on the last tic (`pistol`, `barexp`,
+    /// `sgcock`).
+    pub sounds: Vec<&'static str>,
+}
+
+/// `G_PlayerFinishLevel`: what a player does not take to the next level
+/// (powers, keys, a flash or a tint on the screen).
+pub fn finish_level(player: &mut Player) {
+    player.powers = [0; super::NUMPOWERS];
+    player.cards = [false; super::NUMCARDS];
+    player.extralight = 0;
+    player.fixedcolormap = 0;
+    player.damagecount = 0;
+    player.bonuscount = 0;
+}
+
+/// The par time of map `name` in seconds, as doom.exe knows it (0 for a
+/// name that is neither ExMy nor MAPnn). Episode 4 has no pars and reads
+/// past its table into Doom II's, as vanilla does.
+pub fn par_seconds(name: &str) -> i32 {
+    match map_number(name) {
+        Some((Some(e @ 1..=3), m)) => PARS[e as usize].get(m as usize).copied().unwrap_or(0),
+        Some((Some(_), m)) => CPARS.get(m as usize).copied().unwrap_or(0),
+        Some((None, m)) => CPARS.get((m as usize).wrapping_sub(1)).copied().unwrap_or(0),
+        None => 0,
+    }
+}
+
+/// `(episode, map)` of ExMy, `(None, map)` of MAPnn.
+fn map_number(name: &str) -> Option<(Option<u32>, u32)> {
+    let name = name.to_ascii_uppercase();
+    let b = name.as_bytes();
+    if b.len() == 4 && b[0] == b'E' && b[2] == b'M' && b[1].is_ascii_digit() && b[3].is_ascii_digit() {
+        return Some((Some(u32::from(b[1] - b'0')), u32::from(b[3] - b'0')));
+    }
+    Some((None, name.strip_prefix("MAP")?.parse().ok()?))
+}
+
+/// Whether Doom ends the game at map `name` instead of showing an
+/// intermission (`G_DoCompleted`'s `ga_victory`: ExM8 in Doom 1).
+pub fn ends_game(mode: GameMode, name: &str) -> bool {
+    mode != GameMode::Commercial && matches!(map_number(name), Some((_, 8)))
+}
+
+impl Intermission {
+    /// `G_DoCompleted` and `WI_Start` for one player, on map `name` of a
+    /// `mode` game, ended by the secret exit or not, with the player's
+    /// tallies, the level's totals and its time in tics.
+    pub fn start(mode: GameMode, name: &str, secret: bool, tallies: Tallies) -> Intermission {
+        let commercial = mode == GameMode::Commercial;
+        let text_after = commercial
+            && match map_number(name) {
+                Some((None, 6 | 11 | 20 | 30)) => true,
+                Some((None, 15 | 31)) => secret,
+                _ => false,
+            };
+        let tallies = Tallies {
+            max_kills: tallies.max_kills.max(1),
+            max_items: tallies.max_items.max(1),
+            max_secrets: tallies.max_secrets.max(1),
+            ..tallies
+        };
+        Intermission {
+            tallies,
+            shown: Shown { kills: -1, items: -1, secrets: -1, time: -1, par: -1 },
+            stage: Stage::Tallies { step: 1, pause: TICRATE },
+            accelerate: false,
+            tics: 0,
+            commercial,
+            text_after,
+            sounds: Vec::new(),
+        }
+    }
+
+    /// The tallies of `player` on a level with these totals, `leveltime`
+    /// tics long, named `name`.
+    pub fn tallies_of(player: &Player, totals: (i32, i32, i32), leveltime: u32, name: &str) -> Tallies {
+        Tallies {
+            kills: player.killcount,
+            items: player.itemcount,
+            secrets: player.secretcount,
+            max_kills: totals.0,
+            max_items: totals.1,
+            max_secrets: totals.2,
+            time: leveltime as i32,
+            par: par_seconds(name) * TICRATE,
+        }
+    }
+
+    /// The next level loads on the next tic.
+    pub fn done(&self) -> bool {
+        self.stage == Stage::Done
+    }
+
+    /// One tic (`G_Ticker` in `GS_INTERMISSION` or `GS_FINALE`): each
+    /// player in the game takes its command, then the screen's ticker runs.
+    pub fn tick(&mut self, players: &mut [Option<Player>; MAXPLAYERS], cmds: &[Option<Ticcmd>; MAXPLAYERS]) {
+        self.sounds.clear();
+        for (player, cmd) in players.iter_mut().zip(cmds) {
+            if let (Some(p), Some(cmd)) = (player, cmd) {
+                p.cmd = *cmd;
+            }
+        }
+        match self.stage {
+            Stage::Done => {}
+            Stage::Text { shown } => {
+                // `F_Ticker`: any button of anyone's, once 50 tics have shown.
+                let pressed = players.iter().flatten().any(|p| p.cmd.buttons != 0);
+                self.stage = if shown > TEXT_MIN && pressed { Stage::Done } else { Stage::Text { shown: shown + 1 } };
+            }
+            _ => {
+                self.tics += 1;
+                self.check_for_accelerate(players);
+                self.update();
+            }
+        }
+    }
+
+    /// `WI_checkForAccelerate`: a button going down, by anyone.
+    fn check_for_accelerate(&mut self, players: &mut [Option<Player>; MAXPLAYERS]) {
+        for p in players.iter_mut().flatten() {
+            let attack = p.cmd.buttons & buttons::ATTACK != 0;
+            let use_ = p.cmd.buttons & buttons::USE != 0;
+            if attack && !p.attackdown {
+                self.accelerate = true;
+            }
+            if use_ && !p.usedown {
+                self.accelerate = true;
+            }
+            p.attackdown = attack;
+            p.usedown = use_;
+        }
+    }
+
+    fn update(&mut self) {
+        match self.stage {
+            Stage::Tallies { step, pause } => self.update_tallies(step, pause),
+            Stage::NextLocation { left } => {
+                // `WI_updateShowNextLoc`.
+                if left - 1 == 0 || self.accelerate {
+                    self.close();
+                } else {
+                    self.stage = Stage::NextLocation { left: left - 1 };
+                }
+            }
+            Stage::Closing { left } => {
+                // `WI_updateNoState`, then `G_WorldDone`.
+                if left - 1 == 0 {
+                    self.stage = if self.text_after { Stage::Text { shown: 0 } } else { Stage::Done };
+                } else {
+                    self.stage = Stage::Closing { left: left - 1 };
+                }
+            }
+            Stage::Text { .. } | Stage::Done => {}
+        }
+    }
+
+    /// `WI_initNoState`.
+    fn close(&mut self) {
+        self.accelerate = false;
+        self.stage = Stage::Closing { left: NO_STATE };
+    }
+
+    /// `WI_updateStats`: one player's tallies counting up.
+    fn update_tallies(&mut self, mut step: u8, mut pause: i32) {
+        let t = self.tallies;
+        let (kills, items, secrets) =
+            (t.kills * 100 / t.max_kills, t.items * 100 / t.max_items, t.secrets * 100 / t.max_secrets);
+        let (time, par) = (t.time / TICRATE, t.par / TICRATE);
+        let tick_sound = self.tics & 3 == 0;
+        if self.accelerate && step != 10 {
+            self.accelerate = false;
+            self.shown = Shown { kills, items, secrets, time, par };
+            self.sounds.push("barexp");
+            step = 10;
+        }
+        let s = &mut self.shown;
+        let counted = |shown: &mut i32, to: i32, sounds: &mut Vec<&'static str>| {
+            *shown += 2;
+            if tick_sound {
+                sounds.push("pistol");
+            }
+            let reached = *shown >= to;
+            if reached {
+                *shown = to;
+                sounds.push("barexp");
+            }
+            reached
+        };
+        match step {
+            2 | 4 | 6 => {
+                let (shown, to) = match step {
+                    2 => (&mut s.kills, kills),
+                    4 => (&mut s.items, items),
+                    _ => (&mut s.secrets, secrets),
+                };
+                if counted(shown, to, &mut self.sounds) {
+                    step += 1;
+                }
+            }
+            8 => {
+                if tick_sound {
+                    self.sounds.push("pistol");
+                }
+                s.time = (s.time + 3).min(time);
+                s.par += 3;
+                if s.par >= par {
+                    s.par = par;
+                    if s.time >= time {
+                        self.sounds.push("barexp");
+                        step += 1;
+                    }
+                }
+            }
+            10 => {
+                if self.accelerate {
+                    self.sounds.push("sgcock");
+                    if self.commercial {
+                        self.close();
+                    } else {
+                        self.accelerate = false;
+                        self.stage = Stage::NextLocation { left: SHOW_NEXT_LOC };
+                    }
+                    return;
+                }
+            }
+            _ => {
+                // The odd steps pause between the tallies.
+                pause -= 1;
+                if pause == 0 {
+                    step += 1;
+                    pause = TICRATE;
+                }
+            }
+        }
+        self.stage = Stage::Tallies { step, pause };
+    }
+}
+
+impl Sim {
+    /// One tic between levels: the intermission (or text screen) takes the
+    /// players' commands, and the game's tic count goes on.
+    pub fn tick_between(&mut self, wi: &mut Intermission, cmds: &[Option<Ticcmd>; MAXPLAYERS]) {
+        wi.tick(&mut self.players, cmds);
+        self.gametic += 1;
+    }
+}
+
+#[cfg(test)]
+#[path = "intermission_tests.rs"]
+mod tests;
