@@ -125,34 +125,48 @@ impl Hud {
 /// intermission: kills, items, secrets, time); at the end of a campaign, its
 /// last tallies. Nothing while playing.
 pub fn draw_phase(fb: &mut Framebuffer, phase: &Phase) {
-    let (title, stats, next) = match phase {
+    let (title, stats, next, shown) = match phase {
         Phase::Playing => return,
-        Phase::Intermission { map, stats, next, .. } => {
+        Phase::Intermission { map, stats, next, wi, .. } => {
             let next = match next {
                 Some(m) => format!("Entering {}", m.short_name()),
                 None => "The end of the campaign".to_string(),
             };
-            (format!("{map} finished"), stats, next)
+            (format!("{map} finished"), stats, next, Some(wi.shown))
         }
-        Phase::Finished { stats } => ("The end".to_string(), stats, "Thanks for playing".to_string()),
+        Phase::Finished { stats } => ("The end".to_string(), stats, "Thanks for playing".to_string(), None),
     };
     for p in &mut fb.pixels {
         // A quarter of the brightness: the text reads over any scene.
         let [r, g, b, _] = p.to_le_bytes();
         *p = rgb(r / 4, g / 4, b / 4);
     }
-    let seconds = stats.ticks / u64::from(TICRATE);
-    let tally = |name: &str, (found, total): (u32, u32)| {
-        let percent = if total == 0 { 100 } else { found * 100 / total };
+    // Doom's intermission counts the percentages and the time up (`shown`,
+    // -1 before a line's count begins); the end of a campaign shows them.
+    let seconds = match shown {
+        Some(s) if s.time < 0 => None,
+        Some(s) => Some(s.time as u64),
+        None => Some(stats.ticks / u64::from(TICRATE)),
+    };
+    let tally = |name: &str, (found, total): (u32, u32), counted: Option<i32>| {
+        let percent = match counted {
+            Some(p) if p < 0 => return format!("{name:<8}"),
+            Some(p) => p as u32,
+            None if total == 0 => 100,
+            None => found * 100 / total,
+        };
         format!("{name:<8}{found:>4} / {total:<4} {percent:>3}%")
     };
     let lines = [
         title,
         String::new(),
-        tally("Kills", stats.kills),
-        tally("Items", stats.items),
-        tally("Secrets", stats.secrets),
-        format!("{:<8}{:>4}:{:02}", "Time", seconds / 60, seconds % 60),
+        tally("Kills", stats.kills, shown.map(|s| s.kills)),
+        tally("Items", stats.items, shown.map(|s| s.items)),
+        tally("Secrets", stats.secrets, shown.map(|s| s.secrets)),
+        match seconds {
+            Some(t) => format!("{:<8}{:>4}:{:02}", "Time", t / 60, t % 60),
+            None => "Time".to_string(),
+        },
         String::new(),
         next,
         "Press use or fire".to_string(),
@@ -193,6 +207,47 @@ mod tests {
         let (ms, fps, render) = hud.shown.unwrap();
         assert!((ms - 20.0).abs() < 1e-9 && (fps - 50.0).abs() < 1e-9 && (render - 2.0).abs() < 1e-9);
         hud.draw(&mut Framebuffer::new(3, 3), "map", "bsp");
+    }
+
+    /// The intermission shows the tallies as Doom counts them up: a line
+    /// whose count has not begun shows only its name, and the counted
+    /// frame differs from the finished one.
+    #[test]
+    fn the_intermission_counts_up_on_screen() {
+        use sightline::play::Stats;
+        use sightline::sim::intermission::{Intermission, Tallies};
+        use sightline::sim::GameMode;
+        let tallies = Tallies { kills: 3, max_kills: 4, items: 1, max_items: 2, time: 35 * 70, ..Tallies::default() };
+        let mut wi = Intermission::start(GameMode::Commercial, "MAP01", false, tallies);
+        let stats = Stats { kills: (3, 4), items: (1, 2), secrets: (0, 0), ticks: 35 * 70 };
+        let white = |wi: &Intermission| {
+            let phase = Phase::Intermission {
+                map: "MAP01".into(),
+                stats,
+                exit: sightline::play::Exit::Normal,
+                next: None,
+                wi: Box::new(wi.clone()),
+            };
+            let mut fb = Framebuffer::new(320, 200);
+            draw_phase(&mut fb, &phase);
+            if let Some(dir) = std::env::var_os("SIGHTLINE_HUD_PNG") {
+                let path = std::path::Path::new(&dir).join(format!("intermission-{}.png", wi.tics));
+                std::fs::write(path, fb.to_png()).unwrap();
+            }
+            fb.pixels.iter().filter(|&&p| p == rgb(255, 255, 255)).count()
+        };
+        let mut players = [None, None, None, None];
+        let mut count = |wi: &mut Intermission, tics: u32| {
+            for _ in 0..tics {
+                wi.tick(&mut players, &[None; 4]);
+            }
+        };
+        let before = white(&wi);
+        count(&mut wi, 40);
+        let counting = white(&wi);
+        count(&mut wi, 300);
+        let finished = white(&wi);
+        assert!(before < counting && counting < finished, "{before} {counting} {finished}");
     }
 }
 
