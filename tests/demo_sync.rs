@@ -89,6 +89,32 @@ fn a_demo_across_an_intermission_stays_in_sync() {
     assert_eq!((game.sim.level.name.as_str(), report.tics, dump.tics.len()), ("E1M2", 8447, 8431));
 }
 
+/// Netgames against Chocolate Doom: four players of seeded random commands
+/// (`scripts/random-demo.py`), co-op on freedoom1's E1M1 at skill 5 (12
+/// deaths, each a player's use and a rebirth at a start) and deathmatch on
+/// freedoom2's MAP07 (34 deaths, each rebirth at a random deathmatch start,
+/// frags), 3,000 tics each, every player compared every tic.
+#[test]
+#[cfg_attr(freedoom_missing, ignore = "Freedoom's IWADs are missing: apt-get install freedoom")]
+fn four_player_coop_and_deathmatch_stay_in_sync() {
+    let fixtures = Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/demo-dumps");
+    for (iwad, name) in [("freedoom1", "freedoom1-random-coop4"), ("freedoom2", "freedoom2-random-dm4")] {
+        let wad = Wad::open(&freedoom_wads::path(&format!("{iwad}.wad"))).expect("the IWAD opens");
+        let bytes = std::fs::read(fixtures.join(format!("{name}.lmp"))).expect("the demo is there");
+        let demo = VanillaDemo::from_bytes(&bytes, name).expect("the demo reads");
+        assert_eq!(demo.header.players(), 4, "{name}");
+        let dump = SyncDump::load(&fixtures.join(format!("{name}.txt"))).expect("the dump reads");
+        let table = demo::table_for(&wad, ActorTable::doom()).expect("DEHACKED applies");
+        let sim = demo::start(&wad, &demo, table).expect("starts");
+        let report = demo::check(&mut demo::DemoGame::new(std::sync::Arc::new(wad), sim), &demo, &dump);
+        if let Some((tic, diffs)) = &report.first_difference {
+            let fields: Vec<String> = diffs.iter().take(6).map(ToString::to_string).collect();
+            panic!("{name}: in sync {} of {} tics; tic {tic}: {}", report.in_sync, report.tics, fields.join("; "));
+        }
+        assert_eq!(report.in_sync, 3000, "{name}");
+    }
+}
+
 /// The tic (from 1) whose `P_Random` draws first read entry `index`,
 /// from the dump's cursor after each tic (the cursor before tic 1 is the
 /// one level set-up left, which `demo::start` reproduces).
