@@ -62,31 +62,38 @@ fn freedoom_demos_stay_in_sync() {
     assert!(short.is_empty(), "{}", short.join("\n"));
 }
 
-/// A game across an intermission, on the level tics Chocolate Doom dumped
-/// (`freedoom1-autopilot-e1m1-e1m2`: the autopilot at skill 2, E1M1 to its
-/// exit, the intermission pressed through, E1M2 until it dies; recorded
-/// by `sightline autoplay --levels 3 --record`). Each line's gametic counts
-/// the intermission's tics, so a tic too many or too few there shows on
-/// E1M2's first tic; the player, the random index and every body carried
-/// into E1M2 are compared from there on.
+/// Games across an intermission, on the level tics Chocolate Doom dumped.
+/// `freedoom1-autopilot-e1m1-e1m2`: the autopilot at skill 2, E1M1 to its
+/// exit, the intermission pressed through, E1M2 until it dies (recorded by
+/// `sightline autoplay --levels 3 --record`). `freedoom1-coop-e1m1-e1m2`: a
+/// co-op game of two, the first player's commands the autopilot's E1M1 run
+/// without monsters, the second idle, then the netgame's intermission
+/// (fire held by one, use by the other, the episode map left to time out)
+/// and 100 tics of E1M2. Each line's gametic counts the intermission's
+/// tics, so a tic too many or too few there shows on E1M2's first tic; the
+/// players, the random index and every body carried into E1M2 are compared
+/// from there on.
 #[test]
 #[cfg_attr(freedoom_missing, ignore = "Freedoom's IWADs are missing: apt-get install freedoom")]
-fn a_demo_across_an_intermission_stays_in_sync() {
+fn demos_across_an_intermission_stay_in_sync() {
     let fixtures = Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/demo-dumps");
-    let wad = Wad::open(&freedoom_wads::path("freedoom1.wad")).expect("the IWAD opens");
-    let bytes = std::fs::read(fixtures.join("freedoom1-autopilot-e1m1-e1m2.lmp")).expect("the demo is there");
-    let demo = VanillaDemo::from_bytes(&bytes, "freedoom1-autopilot-e1m1-e1m2.lmp").expect("the demo reads");
-    let dump = SyncDump::load(&fixtures.join("freedoom1-autopilot-e1m1-e1m2.txt")).expect("the dump reads");
-    let table = demo::table_for(&wad, ActorTable::doom()).expect("DEHACKED applies");
-    let sim = demo::start(&wad, &demo, table).expect("starts");
-    let mut game = demo::DemoGame::new(std::sync::Arc::new(wad), sim);
-    let report = demo::check(&mut game, &demo, &dump);
-    if let Some((tic, diffs)) = &report.first_difference {
-        let fields: Vec<String> = diffs.iter().take(6).map(ToString::to_string).collect();
-        panic!("in sync {} of {} tics; tic {tic}: {}", report.in_sync, report.tics, fields.join("; "));
+    for (name, tics, lines) in [("freedoom1-autopilot-e1m1-e1m2", 8447, 8431), ("freedoom1-coop-e1m1-e1m2", 1993, 1697)]
+    {
+        let wad = Wad::open(&freedoom_wads::path("freedoom1.wad")).expect("the IWAD opens");
+        let bytes = std::fs::read(fixtures.join(format!("{name}.lmp"))).expect("the demo is there");
+        let demo = VanillaDemo::from_bytes(&bytes, name).expect("the demo reads");
+        let dump = SyncDump::load(&fixtures.join(format!("{name}.txt"))).expect("the dump reads");
+        let table = demo::table_for(&wad, ActorTable::doom()).expect("DEHACKED applies");
+        let sim = demo::start(&wad, &demo, table).expect("starts");
+        let mut game = demo::DemoGame::new(std::sync::Arc::new(wad), sim);
+        let report = demo::check(&mut game, &demo, &dump);
+        if let Some((tic, diffs)) = &report.first_difference {
+            let fields: Vec<String> = diffs.iter().take(6).map(ToString::to_string).collect();
+            panic!("{name}: in sync {} of {} tics; tic {tic}: {}", report.in_sync, report.tics, fields.join("; "));
+        }
+        // Both levels were played, and the intermission between them.
+        assert_eq!((game.sim.level.name.as_str(), report.tics, dump.tics.len()), ("E1M2", tics, lines), "{name}");
     }
-    // Both levels were played, and the intermission between them.
-    assert_eq!((game.sim.level.name.as_str(), report.tics, dump.tics.len()), ("E1M2", 8447, 8431));
 }
 
 /// Netgames against Chocolate Doom: four players of seeded random commands

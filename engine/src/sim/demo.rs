@@ -125,11 +125,14 @@ pub struct DemoGame {
     /// The game has ended (Doom 1's ExM8, Doom II's MAP30, a campaign's
     /// last map): later tics only count.
     pub over: bool,
+    /// A netgame's intermission has counted frags (vanilla's `dofrags`,
+    /// never cleared).
+    counted_frags: bool,
 }
 
 impl DemoGame {
     pub fn new(wad: Arc<Wad>, sim: Sim) -> DemoGame {
-        DemoGame { sim, wad, between: None, over: false }
+        DemoGame { sim, wad, between: None, over: false, counted_frags: false }
     }
 
     /// The last tic was a level's (what a reference dump holds a line for).
@@ -137,9 +140,8 @@ impl DemoGame {
         self.between.is_none() && !self.over
     }
 
-    /// One tic of every player's command. A next map the WAD lacks, or an
-    /// intermission in a game of several players (this engine times it for
-    /// one), is an error naming it.
+    /// One tic of every player's command. A next map the WAD lacks is an
+    /// error naming it.
     pub fn tick(&mut self, cmds: &[Option<Ticcmd>; MAXPLAYERS]) -> Result<(), String> {
         if self.on_level() {
             self.actions()?;
@@ -185,17 +187,18 @@ impl DemoGame {
             self.over = true;
             return Ok(());
         }
-        if self.sim.rules.netgame {
-            return Err(format!(
-                "the demo goes on past {name}'s end into an intermission of several players, which this engine does not time (it times one player's)"
-            ));
-        }
         let exit = if secret { Exit::Secret } else { Exit::Normal };
         let next = next_doom_map(&name, exit, |m| self.wad.find(m).is_some());
         let p = self.sim.player(self.sim.console).ok_or("the demo's console player is not in the game")?;
         let totals = (self.sim.total_kills, self.sim.total_items, self.sim.total_secrets);
         let tallies = Intermission::tallies_of(p, totals, self.sim.leveltime, &name);
-        self.between = Some((Intermission::start(self.sim.rules.mode, &name, secret, tallies), next));
+        let mut wi = Intermission::start(self.sim.rules.mode, &name, secret, tallies);
+        if self.sim.rules.netgame {
+            let deathmatch = self.sim.rules.deathmatch != 0;
+            wi = wi.for_netgame(&self.sim.players, totals, deathmatch, self.counted_frags);
+            self.counted_frags = wi.counted_frags();
+        }
+        self.between = Some((wi, next));
         Ok(())
     }
 }

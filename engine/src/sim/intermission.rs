@@ -94,12 +94,39 @@ pub enum Stage {
     Done,
 }
 
+/// A netgame's counting (`WI_updateNetgameStats`, and in deathmatch
+/// `WI_updateDeathmatchStats`): every player's at once.
+#[derive(Clone, Debug, PartialEq)]
+struct Net {
+    deathmatch: bool,
+    /// Co-op counts frags too (`dofrags`: someone has some, in this or an
+    /// earlier intermission of the game, since vanilla never clears it).
+    frags: bool,
+    players: [Option<NetPlayer>; MAXPLAYERS],
+}
+
+/// One player's figures in a netgame's intermission.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct NetPlayer {
+    /// Kills, items and secrets: the percentages to reach, and shown.
+    target: [i32; 3],
+    count: [i32; 3],
+    /// Frags of each other player (`frags[j]`), the sum (`WI_fragSum`),
+    /// and shown: co-op's sum, deathmatch's table.
+    frags: [i32; MAXPLAYERS],
+    frag_sum: i32,
+    count_frags: i32,
+    table: [i32; MAXPLAYERS],
+}
+
 /// An intermission in progress.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Intermission {
     pub tallies: Tallies,
     pub shown: Shown,
     pub stage: Stage,
+    /// A netgame's counting, else one player's.
+    net: Option<Box<Net>>,
     /// A press came this stage (`acceleratestage`).
     accelerate: bool,
     /// Tics since the intermission began (`bcnt`).
@@ -173,12 +200,49 @@ impl Intermission {
             tallies,
             shown: Shown { kills: -1, items: -1, secrets: -1, time: -1, par: -1 },
             stage: Stage::Tallies { step: 1, pause: TICRATE },
+            net: None,
             accelerate: false,
             tics: 0,
             commercial,
             text_after,
             sounds: Vec::new(),
         }
+    }
+
+    /// This intermission for a netgame of `players` (`WI_initNetgameStats`
+    /// or `WI_initDeathmatchStats`), on a level with these totals; `frags`
+    /// is whether an earlier intermission of the game counted frags.
+    pub fn for_netgame(
+        mut self,
+        players: &[Option<Player>; MAXPLAYERS],
+        totals: (i32, i32, i32),
+        deathmatch: bool,
+        frags: bool,
+    ) -> Intermission {
+        let (k, i, s) = (totals.0.max(1), totals.1.max(1), totals.2.max(1));
+        let in_game: Vec<usize> = (0..MAXPLAYERS).filter(|&n| players[n].is_some()).collect();
+        let mut net = Net { deathmatch, frags, players: [None; MAXPLAYERS] };
+        for (n, p) in players.iter().enumerate() {
+            let Some(p) = p else { continue };
+            let others: i32 = in_game.iter().filter(|&&j| j != n).map(|&j| p.frags[j]).sum();
+            let frag_sum = others - p.frags[n];
+            net.frags |= frag_sum != 0;
+            net.players[n] = Some(NetPlayer {
+                target: [p.killcount * 100 / k, p.itemcount * 100 / i, p.secretcount * 100 / s],
+                count: [0; 3],
+                frags: p.frags,
+                frag_sum,
+                count_frags: 0,
+                table: [0; MAXPLAYERS],
+            });
+        }
+        self.net = Some(Box::new(net));
+        self
+    }
+
+    /// A netgame's intermission counted frags (the next one will too).
+    pub fn counted_frags(&self) -> bool {
+        self.net.as_ref().is_some_and(|n| n.frags)
     }
 
     /// The tallies of `player` on a level with these totals, `leveltime`
@@ -243,7 +307,11 @@ impl Intermission {
 
     fn update(&mut self) {
         match self.stage {
-            Stage::Tallies { step, pause } => self.update_tallies(step, pause),
+            Stage::Tallies { step, pause } => match self.net.as_ref().map(|n| n.deathmatch) {
+                None => self.update_tallies(step, pause),
+                Some(false) => self.update_netgame(step, pause),
+                Some(true) => self.update_deathmatch(step, pause),
+            },
             Stage::NextLocation { left } => {
                 // `WI_updateShowNextLoc`.
                 if left - 1 == 0 || self.accelerate {
@@ -323,26 +391,128 @@ impl Intermission {
             }
             10 => {
                 if self.accelerate {
-                    self.sounds.push("sgcock");
-                    if self.commercial {
-                        self.close();
-                    } else {
-                        self.accelerate = false;
-                        self.stage = Stage::NextLocation { left: SHOW_NEXT_LOC };
-                    }
+                    self.go_on("sgcock");
                     return;
                 }
             }
-            _ => {
-                // The odd steps pause between the tallies.
-                pause -= 1;
-                if pause == 0 {
-                    step += 1;
-                    pause = TICRATE;
-                }
-            }
+            _ => (step, pause) = paused(step, pause),
         }
         self.stage = Stage::Tallies { step, pause };
+    }
+
+    /// The tallies shown, a press goes on: Doom 1's episode map, Doom II's
+    /// last tics.
+    fn go_on(&mut self, sound: &'static str) {
+        self.sounds.push(sound);
+        if self.commercial {
+            self.close();
+        } else {
+            self.accelerate = false;
+            self.stage = Stage::NextLocation { left: SHOW_NEXT_LOC };
+        }
+    }
+
+    /// `WI_updateNetgameStats`: every player's kills, items, secrets (and
+    /// frags, when anyone has some) counting together.
+    fn update_netgame(&mut self, mut step: u8, mut pause: i32) {
+        let tick_sound = self.tics & 3 == 0;
+        let Some(net) = self.net.as_deref_mut() else { return };
+        let players = net.players.iter_mut().flatten();
+        if self.accelerate && step != 10 {
+            self.accelerate = false;
+            for p in players {
+                p.count = p.target;
+                if net.frags {
+                    p.count_frags = p.frag_sum;
+                }
+            }
+            self.sounds.push("barexp");
+            step = 10;
+        } else if matches!(step, 2 | 4 | 6 | 8) {
+            if tick_sound {
+                self.sounds.push("pistol");
+            }
+            let mut ticking = false;
+            for p in players {
+                let (count, to) = match step {
+                    8 => (&mut p.count_frags, p.frag_sum),
+                    _ => (&mut p.count[usize::from(step / 2 - 1)], p.target[usize::from(step / 2 - 1)]),
+                };
+                *count += if step == 8 { 1 } else { 2 };
+                if *count >= to {
+                    *count = to;
+                } else {
+                    ticking = true;
+                }
+            }
+            if !ticking {
+                self.sounds.push(if step == 8 { "pldeth" } else { "barexp" });
+                // Past the frags when no one has any.
+                step += if step == 6 && !net.frags { 3 } else { 1 };
+            }
+        } else if step == 10 {
+            if self.accelerate {
+                self.go_on("sgcock");
+                return;
+            }
+        } else {
+            (step, pause) = paused(step, pause);
+        }
+        self.stage = Stage::Tallies { step, pause };
+    }
+
+    /// `WI_updateDeathmatchStats`: the frags table counting, each entry one
+    /// a tic towards its figure (held within -99 to 99, so a figure past
+    /// them counts for ever, as in vanilla, until a press).
+    fn update_deathmatch(&mut self, mut step: u8, mut pause: i32) {
+        let tick_sound = self.tics & 3 == 0;
+        let Some(net) = self.net.as_deref_mut() else { return };
+        let in_game: Vec<usize> = (0..MAXPLAYERS).filter(|&n| net.players[n].is_some()).collect();
+        let players = net.players.iter_mut().flatten();
+        if self.accelerate && step != 4 {
+            self.accelerate = false;
+            for p in players {
+                for &j in &in_game {
+                    p.table[j] = p.frags[j];
+                }
+            }
+            self.sounds.push("barexp");
+            step = 4;
+        } else if step == 2 {
+            if tick_sound {
+                self.sounds.push("pistol");
+            }
+            let mut ticking = false;
+            for p in players {
+                for &j in &in_game {
+                    if p.table[j] != p.frags[j] {
+                        p.table[j] = (p.table[j] + if p.frags[j] < 0 { -1 } else { 1 }).clamp(-99, 99);
+                        ticking = true;
+                    }
+                }
+            }
+            if !ticking {
+                self.sounds.push("barexp");
+                step += 1;
+            }
+        } else if step == 4 {
+            if self.accelerate {
+                self.go_on("slop");
+                return;
+            }
+        } else {
+            (step, pause) = paused(step, pause);
+        }
+        self.stage = Stage::Tallies { step, pause };
+    }
+}
+
+/// An odd step: a pause of a second between two counts.
+fn paused(step: u8, pause: i32) -> (u8, i32) {
+    if pause - 1 == 0 {
+        (step + 1, TICRATE)
+    } else {
+        (step, pause - 1)
     }
 }
 

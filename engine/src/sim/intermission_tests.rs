@@ -147,3 +147,44 @@ fn par_times_are_doom_exes() {
     assert!(ends_game(GameMode::Retail, "E2M8") && !ends_game(GameMode::Commercial, "MAP08"));
     assert!(!ends_game(GameMode::Retail, "E1M9"));
 }
+
+#[test]
+fn deathmatch_counts_the_frags_table_one_a_tic_and_a_figure_past_99_never_ends() {
+    let mut a = player();
+    let mut b = player();
+    a.frags = [0, 3, 0, 0];
+    b.frags = [-2, 0, 0, 0];
+    let players = [Some(a.clone()), Some(b.clone()), None, None];
+    let start = || Intermission::start(GameMode::Commercial, "MAP01", false, Tallies::default());
+    let mut between = Between { wi: start().for_netgame(&players, (0, 0, 0), true, false), players };
+    // A pause, three tics of counting (the largest figure), a pause.
+    let counted = |wi: &Intermission| matches!(wi.stage, Stage::Tallies { step: 4, .. });
+    assert_eq!(between.idle_until(1000, counted), 35 + 3 + 1 + 35);
+    // 120 frags: the table stops at 99 and counts on until a press.
+    a.frags = [0, 120, 0, 0];
+    let players = [Some(a), Some(b), None, None];
+    let mut between = Between { wi: start().for_netgame(&players, (0, 0, 0), true, false), players };
+    assert_eq!(between.idle_until(1000, counted), 1000);
+    between.tic(buttons::ATTACK);
+    assert!(counted(&between.wi));
+}
+
+#[test]
+fn coop_counts_everyone_together_and_frags_only_when_someone_has_some() {
+    let (mut a, mut b) = (player(), player());
+    (a.killcount, b.killcount) = (10, 2);
+    let players = [Some(a.clone()), Some(b.clone()), None, None];
+    let start = || Intermission::start(GameMode::Commercial, "MAP01", false, Tallies::default());
+    let done = |wi: &Intermission| matches!(wi.stage, Stage::Tallies { step: 10, .. });
+    // Kills to 50% (25 tics, the slower player's), items and secrets one
+    // tic each from 0, four pauses, no frags.
+    let mut between = Between { wi: start().for_netgame(&players, (20, 0, 0), false, false), players: players.clone() };
+    assert_eq!(between.idle_until(1000, done), 4 * 35 + 25 + 1 + 1);
+    assert!(!between.wi.counted_frags());
+    // A frag, or an earlier intermission's, counts the frags too.
+    a.frags[1] = 2;
+    let players = [Some(a), Some(b), None, None];
+    let mut between = Between { wi: start().for_netgame(&players, (20, 0, 0), false, false), players };
+    assert_eq!(between.idle_until(1000, done), 5 * 35 + 25 + 1 + 1 + 2);
+    assert!(between.wi.counted_frags());
+}
