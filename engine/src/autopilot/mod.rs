@@ -1446,8 +1446,9 @@ pub fn run_through(
         if !each(play, tick) {
             break;
         }
-        if let Phase::Intermission { exit, .. } = play.phase {
-            outcome.exit = Some(exit);
+        if play.phase != Phase::Playing {
+            // The intermission, or the end of the game (Doom 1's ExM8).
+            outcome.exit = play.game.exit();
             break;
         }
         if play.game.player().dead() {

@@ -181,11 +181,12 @@ impl Scene {
     }
 
     /// The console player's eye (`viewz`, or the body's height plus the
-    /// view height before the first tic has set it).
+    /// view height before the level's first tic has set it: `P_SetupLevel`
+    /// leaves it at 1, a level gone on to at the last level's height).
     pub fn view(&self, sim: &Sim) -> Option<View> {
         let p = sim.player(sim.console)?;
         let m = sim.mo(p.mo);
-        let z = if p.viewz.0 != 0 { p.viewz } else { m.z + p.viewheight };
+        let z = if sim.leveltime > 0 { p.viewz } else { m.z + p.viewheight };
         Some(View::new(DVec2::new(m.x.to_f64(), m.y.to_f64()), z.to_f64(), m.angle.to_degrees()))
     }
 }
