@@ -11,9 +11,10 @@ use crate::actors::{ActorFlag, Category};
 use crate::play::TickInput;
 
 impl Autopilot {
-    /// The enemy to shoot, if one is in sight: the angle to it and the
-    /// weapon number to hold.
-    pub(super) fn fight(&mut self, game: &dyn Observe) -> Option<(f64, u8, f64)> {
+    /// The enemy to shoot, if one is in sight: the angle to it, the
+    /// weapon number to hold, how far it is, and how near to let it come
+    /// (see [`keep_off`]).
+    pub(super) fn fight(&mut self, game: &dyn Observe) -> Option<(f64, u8, f64, f64)> {
         let player = game.player();
         let (seen, table) = (game.seen(), game.table());
         let compiled = &game.level().compiled;
@@ -92,7 +93,7 @@ impl Autopilot {
         if weapon == 1 && d > MELEE_REACH + table.actors[seen[i].kind].radius {
             return None;
         }
-        Some((to.y.atan2(to.x).to_degrees(), weapon, d))
+        Some((to.y.atan2(to.x).to_degrees(), weapon, d, keep_off(&table.actors[seen[i].kind])))
     }
 
     /// Is a live barrel close in front, near a shot fired facing `angle`
@@ -204,6 +205,19 @@ pub(super) fn tap_now(game: &dyn Observe) -> bool {
         state = table.state(s).next;
     }
     false
+}
+
+/// How near a body fighting `def` lets it come before backing off: a
+/// monster with no missile attack (a demon, a spectre) hurts only in
+/// reach of its bite (Doom's `P_CheckMeleeRange`: 44 units plus the
+/// body's radius), and walks at 5 units a tick against a back-pedalling
+/// body's 16, so keeping well off it wins; others, a little.
+fn keep_off(def: &crate::actors::ActorDef) -> f64 {
+    if def.label("Missile").is_none() {
+        256.0
+    } else {
+        192.0
+    }
 }
 
 /// Closer than this a rocket's blast reaches the shooter.

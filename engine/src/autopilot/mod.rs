@@ -478,7 +478,14 @@ impl Autopilot {
             && (player.health < RETREAT_HEALTH || self.in_sight >= CROWD || self.barrel_near);
         // Never stand on a floor that hurts.
         let hurting = self.on_hurting_floor(game);
-        let stand = !retreat && !endless && !hurting && fight.is_some_and(|f| f.1 != 1) && self.fighting < STAND_TICKS;
+        // A biter close in is backed off from even while going on: the
+        // route may lead straight into it.
+        let biter_close = fight.is_some_and(|f| f.3 > 192.0 && f.2 < f.3 / 2.0);
+        let stand = !retreat
+            && !endless
+            && !hurting
+            && fight.is_some_and(|f| f.1 != 1)
+            && (self.fighting < STAND_TICKS || biter_close);
         let back = retreat.then(|| self.fall_back(player.pos)).flatten();
         self.mode = if back.is_some() {
             "retreat"
@@ -503,7 +510,7 @@ impl Autopilot {
             input.turn = turn_to(player.angle, angle) as f32;
             self.aim = Some((angle, until));
         }
-        if let Some((angle, weapon, _)) = fight {
+        if let Some((angle, weapon, _, _)) = fight {
             // Face the enemy and fire, moving the way the route wanted.
             let wanted = player.angle + f64::from(input.turn);
             let move_dir = if input.forward != 0 || input.strafe != 0 {
@@ -538,7 +545,7 @@ impl Autopilot {
             }
             if stand {
                 input.strafe = if (now / 24).is_multiple_of(2) { 1 } else { -1 };
-                input.forward = if fight.is_some_and(|f| f.2 < 192.0) { -1 } else { 0 };
+                input.forward = if fight.is_some_and(|f| f.2 < f.3) { -1 } else { 0 };
                 input.run = true;
                 self.keep_footing(game, &mut input);
             } else if let Some(dir) = move_dir {
