@@ -828,7 +828,7 @@ impl Autopilot {
     /// of the kind [`Self::wastable`] says, whose sectors are busy?
     fn would_waste(game: &dyn Observe, map: &crate::map::Map, id: LineId) -> bool {
         let (line, _, _, special) = line_of(map, id);
-        special.is_some_and(|s| Self::wastable(&s)) && game.special(line).is_some() && Self::targets_busy(game, id)
+        special.is_some_and(Self::wastable) && game.special(line).is_some() && Self::targets_busy(game, id)
     }
 
     /// Is `special` one a crossing spends for nothing while its sectors
