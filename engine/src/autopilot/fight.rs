@@ -8,11 +8,13 @@ use glam::DVec2;
 use super::sight::{self, Body};
 use super::{plan, Autopilot, Observe, BARREL_BLAST, BARREL_CLEARANCE, CROWD, FIGHT_RANGE, MELEE_REACH};
 use crate::actors::{ActorFlag, Category};
+use crate::play::TickInput;
 
 impl Autopilot {
-    /// The enemy to shoot, if one is in sight: the angle to it and the
-    /// weapon number to hold.
-    pub(super) fn fight(&mut self, game: &dyn Observe) -> Option<(f64, u8, f64)> {
+    /// The enemy to shoot, if one is in sight: the angle to it, the
+    /// weapon number to hold, how far it is, and how near to let it come
+    /// (see [`keep_off`]).
+    pub(super) fn fight(&mut self, game: &dyn Observe) -> Option<(f64, u8, f64, f64)> {
         let player = game.player();
         let (seen, table) = (game.seen(), game.table());
         let compiled = &game.level().compiled;
@@ -91,7 +93,7 @@ impl Autopilot {
         if weapon == 1 && d > MELEE_REACH + table.actors[seen[i].kind].radius {
             return None;
         }
-        Some((to.y.atan2(to.x).to_degrees(), weapon, d))
+        Some((to.y.atan2(to.x).to_degrees(), weapon, d, keep_off(&table.actors[seen[i].kind])))
     }
 
     /// Is a live barrel close in front, near a shot fired facing `angle`
@@ -112,6 +114,109 @@ impl Autopilot {
                 && p.dot(dir) > 0.0
                 && (p - dir * p.dot(dir)).length() < 32.0
         })
+    }
+}
+
+impl Autopilot {
+    /// A barrel shot dead goes off some ticks later (its death states end
+    /// in `A_Explode`: 128 damage at its centre, less one a unit out to
+    /// 128): within reach of it, run straight away, whatever the fight
+    /// wanted (E1M3: a barrel beside an imp, set off by the imp's own
+    /// fireball, took the bot from 67 health and blue armour in one tick).
+    /// True when the body is running.
+    pub(super) fn flee_blast(&self, game: &dyn Observe, input: &mut TickInput) -> bool {
+        let player = game.player();
+        let (seen, table) = (game.seen(), game.table());
+        let mut push = DVec2::ZERO;
+        for b in seen.iter() {
+            if b.removed || b.health > 0 || table.actors[b.kind].name != "barrel" {
+                continue;
+            }
+            let away = player.pos - b.pos;
+            if away.length() < BARREL_BLAST {
+                push += away.normalize_or(DVec2::X) * (BARREL_BLAST - away.length());
+            }
+        }
+        if push == DVec2::ZERO {
+            return false;
+        }
+        // Of the eight ways the keys move the body, the one most away
+        // from the blast where the body keeps its footing; else straight
+        // away, off a ledge if need be (a drop is survived, the blast may
+        // not be).
+        let facing = (player.angle + f64::from(input.turn)).to_radians();
+        let (ahead, right) = (DVec2::from_angle(facing), DVec2::new(facing.sin(), -facing.cos()));
+        let away = push.normalize();
+        let mut ways: Vec<(f64, i8, i8)> = [(1, 0), (1, 1), (0, 1), (-1, 1), (-1, 0), (-1, -1), (0, -1), (1, -1)]
+            .into_iter()
+            .map(|(f, s): (i8, i8)| ((ahead * f64::from(f) + right * f64::from(s)).normalize().dot(away), f, s))
+            .filter(|w| w.0 > 0.3)
+            .collect();
+        ways.sort_by(|a, b| b.0.total_cmp(&a.0));
+        let footed = ways.iter().find(|&&(_, forward, strafe)| {
+            let mut try_it = TickInput { forward, strafe, ..*input };
+            self.keep_footing(game, &mut try_it);
+            (try_it.forward, try_it.strafe) == (forward, strafe)
+        });
+        let Some(&(_, forward, strafe)) = footed.or(ways.first()) else { return false };
+        let run = TickInput { forward, strafe, run: true, ..*input };
+        *input = run;
+        true
+    }
+}
+
+/// Would a trigger held this tick be read by the weapon's `A_ReFire`,
+/// with a weapon whose shot is accurate only when not fired again with
+/// the trigger held (the pistol's and chaingun's, Doom's `refire`)? Then
+/// letting go for this one tick keeps every shot true: a held pistol
+/// spreads its bullets over 11 degrees (`P_GunShot`'s `<<18`), enough to
+/// miss a zombie at 300 units half the time, and tapping costs one tick a
+/// shot (the ready state's).
+pub(super) fn tap_now(game: &dyn Observe) -> bool {
+    let player = game.player();
+    let table = game.table();
+    let name =
+        |s: crate::actors::StateId| table.state(s).action.as_ref().map(|a| crate::actors::actions::spec(a.action).name);
+    let Some(weapon) = player.ready_weapon else { return false };
+    let def = &table.actors[weapon];
+    // The first few states of its fire sequence say which kind it is.
+    let mut state = def.label("Fire");
+    let mut accurate_first = false;
+    for _ in 0..8 {
+        let Some(s) = state else { break };
+        accurate_first |= matches!(name(s), Some("A_FirePistol" | "A_FireCGun"));
+        state = table.state(s).next;
+    }
+    let psp = &player.psprites[0];
+    if !accurate_first || psp.tics != 1 {
+        return false;
+    }
+    // The states entered this tick: the next, and those after it that
+    // last no time.
+    let mut state = psp.state.and_then(|s| table.state(s).next);
+    for _ in 0..4 {
+        let Some(s) = state else { break };
+        if name(s) == Some("A_ReFire") {
+            return true;
+        }
+        if table.state(s).tics != 0 {
+            break;
+        }
+        state = table.state(s).next;
+    }
+    false
+}
+
+/// How near a body fighting `def` lets it come before backing off: a
+/// monster with no missile attack (a demon, a spectre) hurts only in
+/// reach of its bite (Doom's `P_CheckMeleeRange`: 44 units plus the
+/// body's radius), and walks at 5 units a tick against a back-pedalling
+/// body's 16, so keeping well off it wins; others, a little.
+fn keep_off(def: &crate::actors::ActorDef) -> f64 {
+    if def.label("Missile").is_none() {
+        256.0
+    } else {
+        192.0
     }
 }
 
@@ -178,4 +283,42 @@ pub(super) fn weapon_for(game: &dyn Observe, fire: Fire) -> u8 {
         }
     }
     best.1
+}
+
+impl Autopilot {
+    /// With `SIGHTLINE_FIGHT_TRACE` set: each tick the body is hurt, its
+    /// health, where it is, and who made a sound (an attack's) this tick.
+    pub(super) fn trace_hurt(&self, game: &dyn Observe, before: i32, mode: &str) {
+        if std::env::var_os("SIGHTLINE_FIGHT_TRACE").is_none() {
+            return;
+        }
+        let player = game.player();
+        if player.health >= before {
+            return;
+        }
+        let (seen, table) = (game.seen(), game.table());
+        let mut who = Vec::new();
+        for e in game.events() {
+            if let crate::play::events::Event::Sound {
+                sound,
+                origin: crate::play::events::Origin::Actor { index, .. },
+            } = e
+            {
+                if let Some(a) = seen.get(*index as usize) {
+                    who.push(format!("{sound}:{}@{:.0}", table.actors[a.kind].name, a.pos.distance(player.pos)));
+                }
+            }
+        }
+        eprintln!(
+            "hurt tick {} hp {}->{} armor {} at ({:.0},{:.0}) {mode} sight {} [{}]",
+            game.ticks(),
+            before,
+            player.health,
+            player.armor,
+            player.pos.x,
+            player.pos.y,
+            self.in_sight,
+            who.join(" ")
+        );
+    }
 }

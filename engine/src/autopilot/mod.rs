@@ -30,6 +30,7 @@ pub mod observe;
 pub mod plan;
 pub mod sectors;
 pub mod sight;
+mod supplies;
 
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -312,8 +313,8 @@ pub struct Autopilot {
     firing: bool,
     /// Live monsters in sight last tick (counted up to [`CROWD`]).
     in_sight: u32,
-    /// Health was under [`LOW_HEALTH`] last tick.
-    low_health: bool,
+    /// How badly health and ammunition were needed last tick.
+    need: (supplies::Need, supplies::Need),
     /// Cells to keep off where a search can, and to go carefully on: those
     /// within a body and a cell of a teleport line (a body that cuts a bend
     /// past a line's end is sent elsewhere, E2M9; unless the route takes
@@ -323,6 +324,9 @@ pub struct Autopilot {
     /// Where the body has been, a point every [`TRAIL_STEP`] units, the
     /// newest last: the way back out of a fight going badly.
     trail: Vec<DVec2>,
+    /// Health last tick, and what the body did then (for the trace).
+    last_health: i32,
+    mode: &'static str,
 }
 
 impl Autopilot {
@@ -377,11 +381,13 @@ impl Autopilot {
             rechoose: false,
             trail: vec![game.player().pos],
             wary,
-            low_health: false,
+            need: (supplies::Need::None, supplies::Need::None),
             in_sight: 0,
             barrel_near: false,
             creeping: std::cell::Cell::new(false),
             firing: false,
+            last_health: game.player().health,
+            mode: "",
         }
     }
 
@@ -411,6 +417,8 @@ impl Autopilot {
         if player.dead() || game.exit().is_some() {
             return TickInput::default();
         }
+        self.trace_hurt(game, self.last_health, self.mode);
+        self.last_health = player.health;
         self.note_crossings(game);
         if self.last_pos.distance(player.pos) > 64.0 {
             self.note_teleport(game);
@@ -430,12 +438,14 @@ impl Autopilot {
             self.rechoose = true;
             self.mech.locate_doors(&self.nav, &game.level().compiled.map, Some(&Self::keys_held(game)));
         }
-        // Health falling under the mark: look for some before going on.
-        let low = player.health < LOW_HEALTH;
-        if low && !self.low_health && self.active.as_ref().is_none_or(|a| a.purpose != Purpose::Supplies) {
+        // Health or ammunition falling short: look for some before going on.
+        let need = supplies::need(game);
+        if (need.0 > self.need.0 || need.1 > self.need.1)
+            && self.active.as_ref().is_none_or(|a| a.purpose != Purpose::Supplies)
+        {
             self.rechoose = true;
         }
-        self.low_health = low;
+        self.need = need;
         // Running at a gap, the body must keep its line: no fighting.
         let leaping = self.active.as_ref().and_then(|a| a.leap).is_some_and(|l| l.running());
         let riding = self.riding();
@@ -468,8 +478,24 @@ impl Autopilot {
             && (player.health < RETREAT_HEALTH || self.in_sight >= CROWD || self.barrel_near);
         // Never stand on a floor that hurts.
         let hurting = self.on_hurting_floor(game);
-        let stand = !retreat && !endless && !hurting && fight.is_some_and(|f| f.1 != 1) && self.fighting < STAND_TICKS;
+        // A biter close in is backed off from even while going on: the
+        // route may lead straight into it.
+        let biter_close = fight.is_some_and(|f| f.3 > 192.0 && f.2 < f.3 / 2.0);
+        let stand = !retreat
+            && !endless
+            && !hurting
+            && fight.is_some_and(|f| f.1 != 1)
+            && (self.fighting < STAND_TICKS || biter_close);
         let back = retreat.then(|| self.fall_back(player.pos)).flatten();
+        self.mode = if back.is_some() {
+            "retreat"
+        } else if stand {
+            "stand"
+        } else if fight.is_some() {
+            "fight-on"
+        } else {
+            "follow"
+        };
         let mut input = if let Some(back) = back {
             self.drive_to(game, back, false)
         } else if stand || (matches!(self.status, Status::Stuck { .. }) && now < self.next_replan) {
@@ -484,7 +510,7 @@ impl Autopilot {
             input.turn = turn_to(player.angle, angle) as f32;
             self.aim = Some((angle, until));
         }
-        if let Some((angle, weapon, _)) = fight {
+        if let Some((angle, weapon, _, _)) = fight {
             // Face the enemy and fire, moving the way the route wanted.
             let wanted = player.angle + f64::from(input.turn);
             let move_dir = if input.forward != 0 || input.strafe != 0 {
@@ -509,7 +535,8 @@ impl Autopilot {
             // the enemy closes in bursts in the bot's face).
             input.fire = player.pending_weapon.is_none()
                 && slot_of(game, player.ready_weapon) == Some(weapon)
-                && !self.barrel_ahead(game, angle);
+                && !self.barrel_ahead(game, angle)
+                && !fight::tap_now(game);
             if input.fire && held.is_none() {
                 // The shot leaves some ticks after the trigger (Doom's
                 // rocket launcher: 8; the pistol and shotgun: 3-4): keep
@@ -518,7 +545,7 @@ impl Autopilot {
             }
             if stand {
                 input.strafe = if (now / 24).is_multiple_of(2) { 1 } else { -1 };
-                input.forward = if fight.is_some_and(|f| f.2 < 192.0) { -1 } else { 0 };
+                input.forward = if fight.is_some_and(|f| f.2 < f.3) { -1 } else { 0 };
                 input.run = true;
                 self.keep_footing(game, &mut input);
             } else if let Some(dir) = move_dir {
@@ -621,6 +648,9 @@ impl Autopilot {
                 let away = if across.dot(rel - v * t) >= 0.0 { across } else { -across };
                 threat = Some((t, away));
             }
+        }
+        if self.flee_blast(game, input) {
+            return;
         }
         let Some((_, away)) = threat else { return };
         let facing = (player.angle + f64::from(input.turn)).to_radians();
@@ -807,7 +837,7 @@ impl Autopilot {
     /// of the kind [`Self::wastable`] says, whose sectors are busy?
     fn would_waste(game: &dyn Observe, map: &crate::map::Map, id: LineId) -> bool {
         let (line, _, _, special) = line_of(map, id);
-        special.is_some_and(|s| Self::wastable(&s)) && game.special(line).is_some() && Self::targets_busy(game, id)
+        special.is_some_and(Self::wastable) && game.special(line).is_some() && Self::targets_busy(game, id)
     }
 
     /// Is `special` one a crossing spends for nothing while its sectors
@@ -1101,11 +1131,15 @@ impl Autopilot {
         let active = |goal, purpose, route| Active::new(goal, purpose, route, game.ticks());
 
         // Supplies first when they are short and monsters are about.
-        if let Some((goal, targets)) = self.supplies(game) {
-            if let Some(route) = self.search.run(&world, start, Some(&targets)) {
-                if route.cost < 1200 {
-                    return Some(active(goal, Purpose::Supplies, route));
-                }
+        for tier in self.supplies(game) {
+            let Some(route) = self.search.run(&world, start, Some(&tier.targets)) else { continue };
+            if route.cost >= tier.max_cost {
+                continue;
+            }
+            let end = nav.centre_of(*route.cells.last().unwrap_or(&start));
+            let nearest = tier.things.iter().min_by(|a, b| a.1.distance(end).total_cmp(&b.1.distance(end)));
+            if let Some(&(i, pos)) = nearest {
+                return Some(active(Goal::Touch(pos, i), Purpose::Supplies, route));
             }
         }
         // The exit: the normal one if it can be reached, else the secret one.
@@ -1333,43 +1367,6 @@ impl Autopilot {
             }
         }
         best
-    }
-
-    /// Health or ammunition to fetch, when monsters are about and it is short.
-    fn supplies(&self, game: &dyn Observe) -> Option<(Goal, Targets)> {
-        let player = game.player();
-        let (seen, table) = (game.seen(), game.table());
-        // Floors that hurt take health too; ammo matters only with monsters.
-        // A boss brain spits monsters for as long as it lives (even with
-        // none placed): health and armour are worth fetching sooner.
-        let endless = !brain::live(game).is_empty();
-        let low_health = player.health < if endless { 100 } else { LOW_HEALTH };
-        let monsters = game.stats().kills.1 > 0 || endless;
-        let low_ammo = monsters && player.ammo[0] < 20 && player.ammo[1] < 4;
-        let owned = |name: &str| player.weapons.iter().any(|&w| table.actors[w].name == name);
-        let mut best: Option<(f64, u32, DVec2)> = None;
-        for (i, a) in seen.iter().enumerate() {
-            let def = &table.actors[a.kind];
-            if a.removed || !def.has(ActorFlag::Special) || self.unreachable.contains(&(i as u32)) {
-                continue;
-            }
-            let Some(pickup) = &def.pickup else { continue };
-            // With monsters about, a weapon it lacks or better armour than
-            // it wears is worth a short detour too.
-            let (useful, range) = pickup.give.iter().fold((false, 0.0f64), |(u, r), g| match g {
-                Give::Health { .. } if low_health && player.health < 100 => (true, r.max(1500.0)),
-                Give::Ammo { .. } if low_ammo => (true, r.max(1500.0)),
-                Give::Weapon(name) if monsters && !owned(name) => (true, r.max(768.0)),
-                Give::Armor { points, .. } if monsters && player.armor < *points => (true, r.max(768.0)),
-                _ => (u, r),
-            });
-            let d = a.pos.distance(player.pos);
-            if useful && d < range && best.is_none_or(|b| d < b.0) {
-                best = Some((d, i as u32, a.pos));
-            }
-        }
-        let (_, i, pos) = best?;
-        Some((Goal::Touch(pos, i), self.touch_targets(&game.level().compiled.map, pos, i)))
     }
 
     /// The cells thing `i` at `p` is picked up from (`plan::touch_cells`),
