@@ -752,16 +752,7 @@ impl Autopilot {
             if a.removed || !a.solid || def.has(ActorFlag::CountKill) || (a.pos == me.pos && a.z == me.z) {
                 continue;
             }
-            // Doom blocks a body whose box overlaps the thing's (PIT_CheckThing:
-            // both radii along each axis), and P_SlideMove slides along lines
-            // only, never round a thing. A cell is blocked when the body
-            // stands in the thing's box anywhere within a quarter cell of the
-            // cell's centre: a wall's margin (`nav::CLEAR`, 7.5) let routes
-            // squeeze between a torch and a pillar 16 units apart (Freedoom
-            // MAP29's start room, where the bot stood at the gap for its whole
-            // run), while the full reach closed MAP17's way between barrels,
-            // which a body a little off its cells' centres takes.
-            let reach = def.radius + RADIUS - CELL / 4.0;
+            let reach = def.radius + nav::CLEAR;
             let r = (reach / CELL).ceil() as i32;
             let Some(c) = self.nav.cell_at(a.pos) else { continue };
             let (cx, cy) = ((c as usize % self.nav.width) as i32, (c as usize / self.nav.width) as i32);
