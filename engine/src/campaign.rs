@@ -44,6 +44,15 @@ pub enum CampaignError {
 }
 
 impl MapRef {
+    /// Map `name` of the same WADs (a Doom demo gone on to its next
+    /// level); a file's map has no others and stays itself.
+    pub fn in_same_wads(&self, name: &str) -> MapRef {
+        match self {
+            MapRef::Wad { wads, .. } => MapRef::Wad { wads: wads.clone(), map: Some(name.to_string()) },
+            other => other.clone(),
+        }
+    }
+
     /// A map as a person names it on the command line: `PATH` (a RON or
     /// compiled map), `WAD` (its first map) or `WAD:MAP`. `iwad` goes under
     /// a WAD (a PWAD needs its IWAD's art). A name is a WAD when it ends in
@@ -327,31 +336,33 @@ pub fn is_campaign_file(path: &Path) -> bool {
 /// and MAP32 return to MAP16. A map the WAD lacks ends the campaign; a
 /// secret exit with nowhere secret to go is a normal one.
 pub fn next_doom_map(current: &str, exit: Exit, exists: impl Fn(&str) -> bool) -> Option<String> {
-    let name = current.to_ascii_uppercase();
-    let next = if let Some((e, m)) = episode_map(&name) {
-        match (m, exit) {
+    let next = match doom_map_number(current)? {
+        (Some(e), m) => match (m, exit) {
             (9, _) => format!("E{e}M{}", [4, 6, 7, 3].get(e.wrapping_sub(1) as usize).copied().unwrap_or(3)),
             (_, Exit::Secret) if exists(&format!("E{e}M9")) => format!("E{e}M9"),
             (8, _) => return None,
             (m, _) => format!("E{e}M{}", m + 1),
-        }
-    } else {
-        let n: u32 = name.strip_prefix("MAP")?.parse().ok()?;
-        match (n, exit) {
+        },
+        (None, n) => match (n, exit) {
             (15, Exit::Secret) if exists("MAP31") => "MAP31".into(),
             (31, Exit::Secret) if exists("MAP32") => "MAP32".into(),
             (31 | 32, _) => "MAP16".into(),
             (30, _) => return None,
             (n, _) => format!("MAP{:02}", n + 1),
-        }
+        },
     };
     exists(&next).then_some(next)
 }
 
-fn episode_map(name: &str) -> Option<(u32, u32)> {
+/// A Doom map's numbers from its name (any case): `(Some(episode), map)`
+/// for ExMy, `(None, map)` for MAPnn, `None` for any other name.
+pub fn doom_map_number(name: &str) -> Option<(Option<u32>, u32)> {
+    let name = name.to_ascii_uppercase();
     let b = name.as_bytes();
-    (b.len() == 4 && b[0] == b'E' && b[2] == b'M' && b[1].is_ascii_digit() && b[3].is_ascii_digit())
-        .then(|| (u32::from(b[1] - b'0'), u32::from(b[3] - b'0')))
+    if b.len() == 4 && b[0] == b'E' && b[2] == b'M' && b[1].is_ascii_digit() && b[3].is_ascii_digit() {
+        return Some((Some(u32::from(b[1] - b'0')), u32::from(b[3] - b'0')));
+    }
+    Some((None, name.strip_prefix("MAP")?.parse().ok()?))
 }
 
 #[cfg(test)]

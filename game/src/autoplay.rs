@@ -76,7 +76,7 @@ fn play(args: &AutoplayArgs, map: &MapRef, options: GameOptions) -> Result<Run> 
         // Through the intermission, pressing use every other tic as the
         // window's autopilot does; the next level loads on the tic after.
         while matches!(play.phase, Phase::Intermission { .. }) {
-            let input = TickInput { use_line: inputs.len().is_multiple_of(2), ..TickInput::default() };
+            let input = autopilot::press_on(inputs.len() as u64);
             play.tick(&input)?;
             inputs.push(input);
         }

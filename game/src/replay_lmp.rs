@@ -16,11 +16,11 @@ use sightline::campaign::MapRef;
 use sightline::level::write_atomic;
 use sightline::play::demo::Demo;
 use sightline::play::lmp::VanillaDemo;
-use sightline::play::syncdump::{compare, SyncDump};
+use sightline::play::syncdump::SyncDump;
 use sightline::play::vanilla::{demo_of, open_demo};
 use sightline::play::{GameOptions, TickInput};
 use sightline::render::{render_frame, Frame, RenderOptions};
-use sightline::sim::demo::DemoGame;
+use sightline::sim::demo::{DemoGame, SyncCheck};
 use sightline::sim::{self, Sim};
 use sightline::Framebuffer;
 
@@ -101,9 +101,7 @@ impl VanillaRun {
 
     /// The map the game has gone on to, when it is not the one shown.
     pub fn moved_to(&self) -> Option<MapRef> {
-        let MapRef::Wad { wads, map: Some(name) } = &self.shown else { return None };
-        let now = &self.game.sim.level.name;
-        (!name.eq_ignore_ascii_case(now)).then(|| MapRef::Wad { wads: wads.clone(), map: Some(now.clone()) })
+        moved_to(&self.shown, &self.game.sim.level.name)
     }
 
     /// Shows `map` from now on (the window has opened it), drawn through
@@ -126,7 +124,7 @@ pub fn run(args: &ReplayArgs) -> Result<()> {
     let sim = sim::demo::start_as(&wad, &source.demo, table, args.gameversion).map_err(|e| anyhow!("{spec}: {e}"))?;
     let mut game = DemoGame::new(std::sync::Arc::new(wad), sim);
     let reference = args.check_against.as_ref().map(|p| SyncDump::load(p)).transpose()?;
-    let mut lines = reference.as_ref().map(|dump| dump.tics.iter());
+    let mut sync = reference.as_ref().map(SyncCheck::new);
     let mut frames = match (args.capture_every, args.timedemo) {
         (None, false) => None,
         _ => Some(Frames::open(&map, args)?),
@@ -138,16 +136,15 @@ pub fn run(args: &ReplayArgs) -> Result<()> {
     }
     for t in 0..tics {
         game.tick(&sim::demo::commands(&source.demo, t)).map_err(|e| anyhow!("{spec}: at tic {}: {e}", t + 1))?;
-        if let Some(lines) = lines.as_mut().filter(|_| game.on_level()) {
+        let diffs = match sync.as_mut().map(|s| s.tic(&game)) {
+            None => Vec::new(),
+            Some(Some(diffs)) => diffs,
             // The reference holds the level tics alone.
-            let theirs = lines
-                .next()
-                .ok_or_else(|| anyhow!("{spec}: the reference ends before the demo's tic {} (a level tic)", t + 1))?;
-            let diffs = compare(&game.sim.tic_state(), theirs);
-            if !diffs.is_empty() {
-                let fields: Vec<String> = diffs.iter().map(|d| format!("\n  {d}")).collect();
-                bail!("{spec}: in sync for {t} of {tics} tics; out of sync at tic {}:{}", t + 1, fields.concat());
-            }
+            Some(None) => bail!("{spec}: the reference ends before the demo's tic {} (a level tic)", t + 1),
+        };
+        if !diffs.is_empty() {
+            let fields: Vec<String> = diffs.iter().map(|d| format!("\n  {d}")).collect();
+            bail!("{spec}: in sync for {t} of {tics} tics; out of sync at tic {}:{}", t + 1, fields.concat());
         }
         if let Some(f) = &mut frames {
             f.tic(&game, t as u64 + 1, t + 1 == tics)?;
@@ -230,14 +227,11 @@ impl Frames {
             return Ok(());
         }
         let game = &game.sim;
-        if let MapRef::Wad { wads, map: Some(name) } = &self.map {
-            if !name.eq_ignore_ascii_case(&game.level.name) {
-                // The demo went on to the next level: draw that one.
-                let next = MapRef::Wad { wads: wads.clone(), map: Some(game.level.name.clone()) };
-                let opened = sightline::campaign::open(&next, &BuildOptions::default())?;
-                (self.map, self.level) = (next, opened.level);
-                self.scene = sim::draw::Scene::new(opened.links.unwrap_or_default());
-            }
+        if let Some(next) = moved_to(&self.map, &game.level.name) {
+            // The demo went on to the next level: draw that one.
+            let opened = sightline::campaign::open(&next, &BuildOptions::default())?;
+            (self.map, self.level) = (next, opened.level);
+            self.scene = sim::draw::Scene::new(opened.links.unwrap_or_default());
         }
         let Some(view) = self.scene.view(game) else { return Ok(()) };
         self.scene.draw(game, &mut self.level);
@@ -249,6 +243,12 @@ impl Frames {
         }
         Ok(())
     }
+}
+
+/// The WAD map a demo's game is on, `level`, when it is not `shown`.
+fn moved_to(shown: &MapRef, level: &str) -> Option<MapRef> {
+    let MapRef::Wad { map: Some(name), .. } = shown else { return None };
+    (!name.eq_ignore_ascii_case(level)).then(|| shown.in_same_wads(level))
 }
 
 /// The game's state at the demo's end: the tics played, each player's

@@ -1413,6 +1413,13 @@ pub struct Outcome {
     pub inputs: Vec<TickInput>,
 }
 
+/// The autopilot's input between levels (or dead): use pressed every
+/// other tick, `tick` counting, so each press is a new one and the
+/// intermission goes on as fast as Doom lets it.
+pub fn press_on(tick: u64) -> TickInput {
+    TickInput { use_line: tick.is_multiple_of(2), ..TickInput::default() }
+}
+
 /// Plays `play`'s current level with a new autopilot until it exits, the
 /// player dies, the bot has been stuck a minute, `max_ticks` have run, or
 /// `each` (called after every tick with the tick number) says stop.

@@ -8,13 +8,13 @@ use std::sync::Arc;
 
 use crate::actors::dehacked::Dehacked;
 
-use super::intermission::{self, Intermission};
+use super::intermission::Intermission;
 use super::setup::Players;
 use super::{GameMode, GameVersion, Rules, Sim, MAXPLAYERS};
 use crate::actors::ActorTable;
 use crate::campaign::next_doom_map;
 use crate::play::lmp::{Ticcmd, VanillaDemo};
-use crate::play::syncdump::{compare, FieldDiff, SyncDump};
+use crate::play::syncdump::{compare, FieldDiff, SyncDump, TicState};
 use crate::play::world::Exit;
 use crate::wad::Wad;
 
@@ -179,25 +179,14 @@ impl DemoGame {
             }
         }
         let Some(secret) = self.sim.exit else { return Ok(()) };
-        for p in self.sim.players.iter_mut().flatten() {
-            intermission::finish_level(p);
-        }
         let name = self.sim.level.name.clone();
-        if intermission::ends_game(self.sim.rules.mode, &name) {
+        let Some(wi) = self.sim.complete_level(self.counted_frags) else {
             self.over = true;
             return Ok(());
-        }
+        };
+        self.counted_frags = wi.counted_frags();
         let exit = if secret { Exit::Secret } else { Exit::Normal };
         let next = next_doom_map(&name, exit, |m| self.wad.find(m).is_some());
-        let p = self.sim.player(self.sim.console).ok_or("the demo's console player is not in the game")?;
-        let totals = (self.sim.total_kills, self.sim.total_items, self.sim.total_secrets);
-        let tallies = Intermission::tallies_of(p, totals, self.sim.leveltime, &name);
-        let mut wi = Intermission::start(self.sim.rules.mode, &name, secret, tallies);
-        if self.sim.rules.netgame {
-            let deathmatch = self.sim.rules.deathmatch != 0;
-            wi = wi.for_netgame(&self.sim.players, totals, deathmatch, self.counted_frags);
-            self.counted_frags = wi.counted_frags();
-        }
         self.between = Some((wi, next));
         Ok(())
     }
@@ -224,26 +213,48 @@ pub fn commands(demo: &VanillaDemo, t: usize) -> [Option<Ticcmd>; MAXPLAYERS] {
     cmds
 }
 
-/// Plays `demo` on `game`, comparing every level tic with the next line
-/// of `dump` (which holds the level tics alone: the gametic in each line
-/// checks how long every intermission lasted); stops at the first
-/// difference.
+/// A demo's game held to a reference dump, which has a line for each
+/// level tic alone (the gametic in each line checks how long every
+/// intermission lasted).
+pub struct SyncCheck<'a> {
+    lines: std::slice::Iter<'a, TicState>,
+    total: usize,
+}
+
+impl<'a> SyncCheck<'a> {
+    pub fn new(dump: &'a SyncDump) -> SyncCheck<'a> {
+        SyncCheck { lines: dump.tics.iter(), total: dump.tics.len() }
+    }
+
+    /// After a tic of `game`: how it differs from the dump's next line, if
+    /// it was a level tic (nothing between levels); `None` when the dump
+    /// has no line left for it.
+    pub fn tic(&mut self, game: &DemoGame) -> Option<Vec<FieldDiff>> {
+        if !game.on_level() {
+            return Some(Vec::new());
+        }
+        Some(compare(&game.sim.tic_state(), self.lines.next()?))
+    }
+
+    /// The dump's level tics.
+    pub fn lines(&self) -> usize {
+        self.total
+    }
+}
+
+/// Plays `demo` on `game`, comparing every level tic with `dump`; stops
+/// at the first difference.
 pub fn check(game: &mut DemoGame, demo: &VanillaDemo, dump: &SyncDump) -> SyncReport {
     let tics = demo.tics();
-    let mut lines = dump.tics.iter();
+    let mut sync = SyncCheck::new(dump);
     for t in 0..tics {
         let differ = |why: Vec<FieldDiff>| SyncReport { tics, in_sync: t, first_difference: Some((t + 1, why)) };
         if let Err(e) = game.tick(&commands(demo, t)) {
             return differ(vec![FieldDiff { field: "game".into(), ours: e, theirs: "played on".into() }]);
         }
-        if !game.on_level() {
-            continue;
-        }
-        let Some(theirs) = lines.next() else {
-            let why = FieldDiff { field: "tics".into(), ours: tics.to_string(), theirs: dump.tics.len().to_string() };
-            return differ(vec![why]);
-        };
-        let diffs = compare(&game.sim.tic_state(), theirs);
+        let diffs = sync.tic(game).unwrap_or_else(|| {
+            vec![FieldDiff { field: "tics".into(), ours: tics.to_string(), theirs: sync.lines().to_string() }]
+        });
         if !diffs.is_empty() {
             return differ(diffs);
         }

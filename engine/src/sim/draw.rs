@@ -36,6 +36,11 @@ impl Scene {
         Scene { links, sides: Vec::new(), flats: Vec::new(), changes: None }
     }
 
+    /// How the simulation's level maps onto the converted one.
+    pub fn links(&self) -> &Links {
+        &self.links
+    }
+
     /// A scene on a map the simulation numbers as the renderer does (a RON
     /// map through `from_map`): sectors and lines are their own, and its
     /// trigger lines follow its lines.

@@ -17,7 +17,7 @@ use std::borrow::Cow;
 use glam::DVec2;
 
 use super::draw::Scene;
-use super::intermission::{self, Intermission};
+use super::intermission::Intermission;
 use super::setup::Players;
 use super::{demo, from_map, Compat, MobjId, PlayerState, Rules, Sim, SimEvent};
 use crate::actors::{sounds, ActorTable, KeyForm};
@@ -193,22 +193,10 @@ impl SimGame {
         self.sim.player(self.sim.console).is_some_and(|p| p.playerstate == PlayerState::Reborn)
     }
 
-    /// The level has ended: `G_DoCompleted` for the console player (keys
-    /// and powers taken) and the intermission, or `None` where Doom ends
-    /// the game without one (Doom 1's ExM8).
+    /// The level has ended: `G_DoCompleted` and the intermission, or
+    /// `None` where Doom ends the game without one (Doom 1's ExM8).
     pub fn complete(&mut self) -> Option<Intermission> {
-        let secret = self.sim.exit?;
-        for p in self.sim.players.iter_mut().flatten() {
-            intermission::finish_level(p);
-        }
-        let name = self.sim.level.name.clone();
-        if intermission::ends_game(self.sim.rules.mode, &name) {
-            return None;
-        }
-        let p = self.sim.player(self.sim.console)?;
-        let totals = (self.sim.total_kills, self.sim.total_items, self.sim.total_secrets);
-        let tallies = Intermission::tallies_of(p, totals, self.sim.leveltime, &name);
-        Some(Intermission::start(self.sim.rules.mode, &name, secret, tallies))
+        self.sim.complete_level(false)
     }
 
     /// One tic of the intermission `wi` from the player's input.
@@ -293,6 +281,11 @@ impl SimGame {
         let mo = p.mo;
         self.sim.mo_mut(mo).health = health;
         self.refresh_player();
+    }
+
+    /// How the simulation's level maps onto the converted one drawn.
+    pub fn links(&self) -> &crate::wad::import::Links {
+        self.scene.links()
     }
 
     /// The level to draw into (a Doom demo played elsewhere is drawn here).
@@ -526,20 +519,25 @@ impl SimGame {
 
     /// The console player's tallies and the level's totals.
     pub fn stats(&self) -> Stats {
-        let p = self.sim.player(self.sim.console);
-        let count = |f: fn(&super::Player) -> i32| p.map_or(0, f).max(0) as u32;
-        let total = |n: i32| n.max(0) as u32;
-        Stats {
-            kills: (count(|p| p.killcount), total(self.sim.total_kills)),
-            items: (count(|p| p.itemcount), total(self.sim.total_items)),
-            secrets: (count(|p| p.secretcount), total(self.sim.total_secrets)),
-            ticks: u64::from(self.sim.leveltime),
-        }
+        stats_of(&self.sim)
     }
 
     /// How the level ended, once it has.
     pub fn exit(&self) -> Option<Exit> {
         self.sim.exit.map(|secret| if secret { Exit::Secret } else { Exit::Normal })
+    }
+}
+
+/// `sim`'s console player's tallies and the level's totals and time.
+pub fn stats_of(sim: &Sim) -> Stats {
+    let p = sim.player(sim.console);
+    let count = |f: fn(&super::Player) -> i32| p.map_or(0, f).max(0) as u32;
+    let total = |n: i32| n.max(0) as u32;
+    Stats {
+        kills: (count(|p| p.killcount), total(sim.total_kills)),
+        items: (count(|p| p.itemcount), total(sim.total_items)),
+        secrets: (count(|p| p.secretcount), total(sim.total_secrets)),
+        ticks: u64::from(sim.leveltime),
     }
 }
 

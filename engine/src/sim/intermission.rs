@@ -25,6 +25,7 @@
 //! tallies) and on into the next level, as in Doom.
 
 use super::{GameMode, Player, Sim, MAXPLAYERS};
+use crate::campaign::doom_map_number;
 use crate::play::lmp::{buttons, Ticcmd};
 
 const TICRATE: i32 = 35;
@@ -154,7 +155,7 @@ pub fn finish_level(player: &mut Player) {
 /// name that is neither ExMy nor MAPnn). Episode 4 has no pars and reads
 /// past its table into Doom II's, as vanilla does.
 pub fn par_seconds(name: &str) -> i32 {
-    match map_number(name) {
+    match doom_map_number(name) {
         Some((Some(e @ 1..=3), m)) => PARS[e as usize].get(m as usize).copied().unwrap_or(0),
         Some((Some(_), m)) => CPARS.get(m as usize).copied().unwrap_or(0),
         Some((None, m)) => CPARS.get((m as usize).wrapping_sub(1)).copied().unwrap_or(0),
@@ -162,20 +163,10 @@ pub fn par_seconds(name: &str) -> i32 {
     }
 }
 
-/// `(episode, map)` of ExMy, `(None, map)` of MAPnn.
-fn map_number(name: &str) -> Option<(Option<u32>, u32)> {
-    let name = name.to_ascii_uppercase();
-    let b = name.as_bytes();
-    if b.len() == 4 && b[0] == b'E' && b[2] == b'M' && b[1].is_ascii_digit() && b[3].is_ascii_digit() {
-        return Some((Some(u32::from(b[1] - b'0')), u32::from(b[3] - b'0')));
-    }
-    Some((None, name.strip_prefix("MAP")?.parse().ok()?))
-}
-
 /// Whether Doom ends the game at map `name` instead of showing an
 /// intermission (`G_DoCompleted`'s `ga_victory`: ExM8 in Doom 1).
 pub fn ends_game(mode: GameMode, name: &str) -> bool {
-    mode != GameMode::Commercial && matches!(map_number(name), Some((_, 8)))
+    mode != GameMode::Commercial && matches!(doom_map_number(name), Some((_, 8)))
 }
 
 impl Intermission {
@@ -185,7 +176,7 @@ impl Intermission {
     pub fn start(mode: GameMode, name: &str, secret: bool, tallies: Tallies) -> Intermission {
         let commercial = mode == GameMode::Commercial;
         let text_after = commercial
-            && match map_number(name) {
+            && match doom_map_number(name) {
                 Some((None, 6 | 11 | 20 | 30)) => true,
                 Some((None, 15 | 31)) => secret,
                 _ => false,
@@ -247,7 +238,7 @@ impl Intermission {
 
     /// The tallies of `player` on a level with these totals, `leveltime`
     /// tics long, named `name`.
-    pub fn tallies_of(player: &Player, totals: (i32, i32, i32), leveltime: u32, name: &str) -> Tallies {
+    fn tallies_of(player: &Player, totals: (i32, i32, i32), leveltime: u32, name: &str) -> Tallies {
         Tallies {
             kills: player.killcount,
             items: player.itemcount,
@@ -517,6 +508,29 @@ fn paused(step: u8, pause: i32) -> (u8, i32) {
 }
 
 impl Sim {
+    /// The level has ended (`G_DoCompleted`): every player's keys and powers
+    /// taken, and the intermission, for one player or a netgame's (`frags`:
+    /// an earlier intermission of the game counted frags); or `None` where
+    /// Doom ends the game without one (Doom 1's ExM8), or the level has not
+    /// ended.
+    pub fn complete_level(&mut self, frags: bool) -> Option<Intermission> {
+        let secret = self.exit?;
+        for p in self.players.iter_mut().flatten() {
+            finish_level(p);
+        }
+        let name = &self.level.name;
+        if ends_game(self.rules.mode, name) {
+            return None;
+        }
+        let totals = (self.total_kills, self.total_items, self.total_secrets);
+        let tallies = Intermission::tallies_of(self.player(self.console)?, totals, self.leveltime, name);
+        let wi = Intermission::start(self.rules.mode, name, secret, tallies);
+        Some(match self.rules.netgame {
+            true => wi.for_netgame(&self.players, totals, self.rules.deathmatch != 0, frags),
+            false => wi,
+        })
+    }
+
     /// One tic between levels: the intermission (or text screen) takes the
     /// players' commands, and the game's tic count goes on.
     pub fn tick_between(&mut self, wi: &mut Intermission, cmds: &[Option<Ticcmd>; MAXPLAYERS]) {

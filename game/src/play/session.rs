@@ -255,7 +255,7 @@ fn autopilot_input(bot: &mut Option<Box<Autopilot>>, play: &Playthrough) -> Tick
     let game = &play.game;
     if play.phase != Phase::Playing || game.player().dead() {
         *bot = None;
-        return TickInput { use_line: play.ticks.is_multiple_of(2), ..TickInput::default() };
+        return sightline::autopilot::press_on(play.ticks);
     }
     if game.ticks() == 0 {
         *bot = None;
@@ -266,23 +266,16 @@ fn autopilot_input(bot: &mut Option<Box<Autopilot>>, play: &Playthrough) -> Tick
 /// A playthrough of `map`, only to show a Doom demo's game on, and how
 /// the simulation's level maps onto it.
 fn show_map(map: &MapRef, options: GameOptions) -> Result<(Playthrough, sightline::wad::import::Links)> {
-    let opened = sightline::campaign::open(map, &sightline::bsp::BuildOptions::default())?;
-    let links = opened.links.unwrap_or_default();
-    Ok((Playthrough::of(map, options)?, links))
+    let play = Playthrough::of(map, options)?;
+    let links = play.game.links().clone();
+    Ok((play, links))
 }
 
 /// What the window shows of a Doom demo's game: the level, or the
 /// intermission with its tallies, or the end.
 fn vanilla_phase(game: &DemoGame, shown: &MapRef) -> Phase {
     let sim = &game.sim;
-    let p = sim.player(sim.console);
-    let count = |f: fn(&sightline::sim::Player) -> i32| p.map_or(0, f).max(0) as u32;
-    let stats = sightline::play::Stats {
-        kills: (count(|p| p.killcount), sim.total_kills.max(0) as u32),
-        items: (count(|p| p.itemcount), sim.total_items.max(0) as u32),
-        secrets: (count(|p| p.secretcount), sim.total_secrets.max(0) as u32),
-        ticks: u64::from(sim.leveltime),
-    };
+    let stats = sightline::sim::game::stats_of(sim);
     match &game.between {
         _ if game.over => Phase::Finished { stats },
         None => Phase::Playing,
@@ -290,10 +283,7 @@ fn vanilla_phase(game: &DemoGame, shown: &MapRef) -> Phase {
             map: shown.short_name(),
             stats,
             exit: if sim.exit == Some(true) { Exit::Secret } else { Exit::Normal },
-            next: next.as_ref().map(|n| match shown {
-                MapRef::Wad { wads, .. } => MapRef::Wad { wads: wads.clone(), map: Some(n.clone()) },
-                other => other.clone(),
-            }),
+            next: next.as_ref().map(|n| shown.in_same_wads(n)),
             wi: Box::new(wi.clone()),
         },
     }
