@@ -111,6 +111,12 @@ impl Wad {
                 available: self.map_names().join(" "),
             });
         };
+        if self.lumps.get(marker + 1).is_some_and(|l| l.name == super::udmf::TEXTMAP) {
+            return Err(self.error(
+                &format!("{upper}/{}", super::udmf::TEXTMAP),
+                "a UDMF map: Doom-format records are asked for, and UDMF maps are read by Wad::udmf",
+            ));
+        }
         // A map's lumps are the run of known map lump names after its marker.
         let lump = |wanted: &str| -> Result<(&[u8], String), WadError> {
             let label = format!("{upper}/{wanted}");

@@ -16,6 +16,9 @@ pub mod import;
 pub mod level;
 pub mod library;
 pub mod specials;
+pub mod udmf;
+#[cfg(test)]
+mod udmf_tests;
 
 use std::path::Path;
 
@@ -135,12 +138,15 @@ impl Wad {
     }
 
     /// The names of the maps, in directory order: a map is a marker lump
-    /// followed directly by THINGS (Doom's own test in P_SetupLevel is the
-    /// name alone; looking at the next lump also finds maps with odd names).
+    /// followed directly by THINGS, or by TEXTMAP for a UDMF map (Doom's own
+    /// test in P_SetupLevel is the name alone; looking at the next lump also
+    /// finds maps with odd names).
     pub fn map_names(&self) -> Vec<String> {
         self.lumps
             .windows(2)
-            .filter(|w| w[1].name == "THINGS" && !level::MAP_LUMPS.contains(&w[0].name.as_str()))
+            .filter(|w| {
+                (w[1].name == "THINGS" || w[1].name == udmf::TEXTMAP) && !level::MAP_LUMPS.contains(&w[0].name.as_str())
+            })
             .map(|w| w[0].name.clone())
             .collect()
     }
