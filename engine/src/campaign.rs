@@ -152,8 +152,9 @@ pub fn open(map: &MapRef, options: &BuildOptions) -> Result<Opened, CampaignErro
                 })?,
             };
             let art = Arc::new(WadArt::new(wad)?);
-            let raw = art.wad.map(&name)?;
-            let converted = convert(&art.wad, &raw, &art.art)?;
+            let records = art.wad.map_records(&name)?;
+            let mut converted = convert(&art.wad, &records.map, &art.art)?;
+            converted.report.unsupported_specials.extend(records.unread);
             let label = format!("{}:{name}", art.wad.path);
             let checked = validate(&converted.source)
                 .map_err(|problems| LevelError::Map(MapError::Invalid { path: label.clone(), problems }))?;

@@ -42,8 +42,9 @@ pub fn run(args: &ImportArgs) -> Result<()> {
 }
 
 fn import_one(args: &ImportArgs, wad: &Wad, art: &Art, name: &str) -> Result<Converted> {
-    let raw = wad.map(name)?;
-    let c = convert(wad, &raw, art)?;
+    let records = wad.map_records(name)?;
+    let mut c = convert(wad, &records.map, art)?;
+    c.report.unsupported_specials.extend(records.unread);
     let path = args.output.join(format!("{}.ron", name.to_ascii_lowercase()));
     let label = path.display().to_string();
     // Check before writing: an imported map that our validator or

@@ -417,7 +417,9 @@ fn from_records(map: &WadMap) -> Level {
         }
     };
     let fixed = |v: i16| Fixed::from_int(v.into());
-    let vertices: Vec<(Fixed, Fixed)> = map.vertices.iter().map(|&(x, y)| (fixed(x), fixed(y))).collect();
+    // Whole 16-bit numbers in Doom's format: exact.
+    let vertices: Vec<(Fixed, Fixed)> =
+        map.vertices.iter().map(|&(x, y)| (Fixed::from_f64(x), Fixed::from_f64(y))).collect();
     let sectors = map
         .sectors
         .iter()

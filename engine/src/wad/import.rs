@@ -159,7 +159,8 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
     let mut sprites = BTreeSet::new();
 
     // Vertices: only those lines use, one per position.
-    let mut vertex_of_position: HashMap<(i16, i16), usize> = HashMap::new();
+    // Keyed by the coordinates' bits (`+ 0.0` makes -0 the same as 0).
+    let mut vertex_of_position: HashMap<(u64, u64), usize> = HashMap::new();
     let mut vertices = Vec::new();
     let mut vertex_map = vec![usize::MAX; map.vertices.len()];
     let mut merged = 0;
@@ -171,9 +172,9 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
             }
             let p = map.vertices[v];
             let next = vertices.len();
-            let id = *vertex_of_position.entry(p).or_insert(next);
+            let id = *vertex_of_position.entry(((p.0 + 0.0).to_bits(), (p.1 + 0.0).to_bits())).or_insert(next);
             if id == next {
-                vertices.push((f64::from(p.0), f64::from(p.1)));
+                vertices.push(p);
             } else {
                 merged += 1;
             }
@@ -282,13 +283,18 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
                 if name == "-" || name.is_empty() || art.null_texture.as_deref() == Some(name) {
                     return Ok(None);
                 }
-                if !art.textures.contains_key(name) {
+                // A flat on a wall, as ZDoom allows (the art library
+                // draws either kind on either surface).
+                if art.textures.contains_key(name) {
+                    walls.insert(name.to_string());
+                } else if art.flats.contains_key(name) {
+                    flats.insert(name.to_string());
+                } else {
                     return Err(wad.error(
                         &format!("{}/SIDEDEFS", map.name),
-                        format!("linedef {i} {which} side {part} texture {name:?} is not in TEXTURE1 or TEXTURE2"),
+                        format!("linedef {i} {which} side {part} texture {name:?} is not in TEXTURE1 or TEXTURE2 (nor a flat)"),
                     ));
                 }
-                walls.insert(name.to_string());
                 Ok(Some(name.to_string()))
             };
             Ok(SideSource {
@@ -383,13 +389,17 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
             if name == SKY_FLAT {
                 return Ok(Some(SKY.to_string()));
             }
-            if !art.flats.contains_key(name) {
+            // A wall texture on a floor, as ZDoom allows.
+            if art.flats.contains_key(name) {
+                flats.insert(name.to_string());
+            } else if art.textures.contains_key(name) {
+                walls.insert(name.to_string());
+            } else {
                 return Err(wad.error(
                     &format!("{}/SECTORS", map.name),
-                    format!("sector {i} {which} flat {name:?} is not between F_START and F_END"),
+                    format!("sector {i} {which} flat {name:?} is not between F_START and F_END (nor a wall texture)"),
                 ));
             }
-            flats.insert(name.to_string());
             Ok(Some(name.to_string()))
         };
         let ceiling = if s.ceiling < s.floor {
@@ -424,7 +434,8 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
     }
     apply_deferred(map, &deferred, &line_of_linedef, &sector_map, &mut lines, &mut sectors, &mut report);
 
-    let things = convert_things(map, art, &mut sprites, &mut report)?;
+    let things = convert_things(map, art, &mut sprites, &mut report, &mut repairs)
+        .map_err(|message| wad.error(&format!("{}/THINGS", map.name), message))?;
     let uses_sky =
         sectors.iter().any(|s| [&s.floor_texture, &s.ceiling_texture].iter().any(|t| t.as_deref() == Some(SKY)));
     let sky = uses_sky.then(|| sky_of(&map.name).to_string());
@@ -500,7 +511,7 @@ fn apply_deferred(
                 let (a, b) = (map.vertices[usize::from(l.v1)], map.vertices[usize::from(l.v2)]);
                 // Boom's carry: the line's vector / 32, times 3/32 per tick.
                 let k = 3.0 / 1024.0;
-                let carry = Scroll { x: f64::from(b.0 - a.0) * k, y: f64::from(b.1 - a.1) * k };
+                let carry = Scroll { x: (b.0 - a.0) * k, y: (b.1 - a.1) * k };
                 for s in tagged_sectors(l.tag) {
                     sectors[s].carry = Some(carry);
                 }
@@ -554,7 +565,8 @@ fn convert_things(
     art: &Art,
     sprites: &mut BTreeSet<String>,
     report: &mut Report,
-) -> Result<Vec<ThingSource>, WadError> {
+    repairs: &mut Vec<String>,
+) -> Result<Vec<ThingSource>, String> {
     const EASY: u16 = 0x0001;
     const MEDIUM: u16 = 0x0002;
     const HARD: u16 = 0x0004;
@@ -562,6 +574,7 @@ fn convert_things(
     const MULTIPLAYER: u16 = 0x0010;
     const NOT_DEATHMATCH: u16 = 0x0020;
     const NOT_COOP: u16 = 0x0040;
+    const DEATHMATCH_START: u16 = 11;
     let types = ActorTable::active();
     let mut things = Vec::new();
     for (i, t) in map.things.iter().enumerate() {
@@ -597,11 +610,17 @@ fn convert_things(
         }
     }
     if !things.first().is_some_and(|t| t.kind == crate::map::PLAYER_START) {
-        return Err(WadError::Lump {
-            path: String::new(),
-            lump: format!("{}/THINGS", map.name),
-            message: "no player 1 start (thing type 1)".into(),
-        });
+        // A deathmatch map (ViZDoom's cig and multi_duel) may have only
+        // deathmatch starts: the first one stands in, as a deathmatch
+        // game would put the player there.
+        let deathmatch = types.by_doomednum(DEATHMATCH_START).map(|t| t.name.clone());
+        let Some(first) = things.iter().find(|t| Some(&t.kind) == deathmatch.as_ref()) else {
+            return Err("no player 1 start (thing type 1) and no deathmatch start (type 11)".into());
+        };
+        let start = ThingSource { kind: crate::map::PLAYER_START.to_string(), ..first.clone() };
+        repairs
+            .push(format!("no player 1 start: the first deathmatch start, at ({}, {}), stands in", start.x, start.y));
+        things.insert(0, start);
     }
     Ok(things)
 }

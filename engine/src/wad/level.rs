@@ -76,7 +76,9 @@ pub struct WadMap {
     pub things: Vec<WadThing>,
     pub lines: Vec<WadLine>,
     pub sides: Vec<WadSide>,
-    pub vertices: Vec<(i16, i16)>,
+    /// Map units: whole numbers within 16 bits in Doom's format (VERTEXES),
+    /// any value in a UDMF map.
+    pub vertices: Vec<(f64, f64)>,
     pub sectors: Vec<WadSector>,
 }
 
@@ -114,7 +116,7 @@ impl Wad {
         if self.lumps.get(marker + 1).is_some_and(|l| l.name == super::udmf::TEXTMAP) {
             return Err(self.error(
                 &format!("{upper}/{}", super::udmf::TEXTMAP),
-                "a UDMF map: Doom-format records are asked for, and UDMF maps are read by Wad::udmf",
+                "a UDMF map, with no Doom-format records (UDMF maps can be drawn, imported and checked; the game does not play them yet)",
             ));
         }
         // A map's lumps are the run of known map lump names after its marker.
@@ -128,7 +130,7 @@ impl Wad {
             found.map(|b| (b, label.clone())).ok_or_else(|| self.missing(&label, ""))
         };
         let (bytes, label) = lump("VERTEXES")?;
-        let vertices = records(self, &label, bytes, 4, |b| Ok((i16_at(b, 0), i16_at(b, 2))))?;
+        let vertices = records(self, &label, bytes, 4, |b| Ok((f64::from(i16_at(b, 0)), f64::from(i16_at(b, 2)))))?;
         let (bytes, label) = lump("SECTORS")?;
         let sectors = records(self, &label, bytes, 26, |b| {
             Ok(WadSector {

@@ -17,6 +17,7 @@ pub mod level;
 pub mod library;
 pub mod specials;
 pub mod udmf;
+pub mod udmf_records;
 #[cfg(test)]
 mod udmf_tests;
 
