@@ -29,6 +29,7 @@ pub mod map;
 pub mod materials;
 pub mod play;
 pub mod render;
+pub mod scenario;
 pub mod screen;
 pub mod sim;
 pub mod sound;
