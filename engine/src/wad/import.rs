@@ -244,6 +244,7 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
         }
     }
     let mut built: Vec<Built> = Vec::new();
+    let mut dropped_twins: Vec<(usize, LineSource, usize)> = Vec::new();
     let mut trigger_lines: Vec<(TriggerLineSource, usize)> = Vec::new();
     let mut seen_ends: HashMap<(usize, usize), usize> = HashMap::new();
     for (i, l) in map.lines.iter().enumerate() {
@@ -338,8 +339,25 @@ pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError
                     built[k].line = merged;
                     built[k].linedefs.push(i);
                 }
-                None => repairs.push(format!("dropped linedef {i}: it has the same end points as another line")),
+                None => {
+                    repairs.push(format!("dropped linedef {i}: it has the same end points as another line"));
+                    dropped_twins.push((k, line, i));
+                }
             },
+        }
+    }
+    // Two one-sided lines over each other, facing opposite ways into the
+    // same sector: one of them faces out of it (an editor's leftover, which
+    // ZDoom never looks at). Keep the one that closes the sector's outline.
+    for (k, line, i) in dropped_twins {
+        if !closes_outline(&built, k, &built[k].line) && closes_outline(&built, k, &line) {
+            let dropped = format!("dropped linedef {i}: it has the same end points as another line");
+            repairs.retain(|r| *r != dropped);
+            repairs.push(format!(
+                "kept linedef {i} instead of linedef {}: it has the same end points and closes sector {}'s outline",
+                built[k].linedefs[0], line.front.sector
+            ));
+            built[k] = Built { line, linedefs: vec![i] };
         }
     }
 
@@ -742,6 +760,29 @@ fn reassign_misplaced_lines(source: &mut MapSource, repairs: &mut Vec<String>) {
 /// edges both ways along the line is on both sides, so those cancel. What is
 /// left, at most one edge each way, is the line. `None` when more is left
 /// (then no single line says the same).
+/// Does `line`, standing in `built[k]`'s place, leave each sector it borders
+/// with as many outline edges leaving each of its ends as arriving there?
+fn closes_outline(built: &[Built], k: usize, line: &LineSource) -> bool {
+    // The directed outline edges of a line: the front side's sector runs
+    // from -> to, the back side's to -> from.
+    let edges = |l: &LineSource| {
+        let back = l.back.as_ref().map(|b| (b.sector, l.to, l.from));
+        [Some((l.front.sector, l.from, l.to)), back].into_iter().flatten()
+    };
+    edges(line).all(|(sector, _, _)| {
+        [line.from, line.to].iter().all(|&v| {
+            let mut balance = 0i64;
+            let others = built.iter().enumerate().filter(|&(j, _)| j != k).map(|(_, b)| &b.line);
+            for (s, from, to) in others.chain([line]).flat_map(edges) {
+                if s == sector {
+                    balance += i64::from(to == v) - i64::from(from == v);
+                }
+            }
+            balance == 0
+        })
+    })
+}
+
 fn merge(a: &LineSource, b: &LineSource) -> Option<LineSource> {
     // (side, runs from the lower-numbered end to the higher)
     let mut edges: Vec<(SideSource, bool)> = Vec::new();
