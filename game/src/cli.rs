@@ -52,8 +52,13 @@ pub enum Command {
 
 #[derive(Args)]
 pub struct ImportArgs {
-    /// The WAD file (an IWAD such as freedoom1.wad, or a PWAD with its own art).
+    /// The WAD file (an IWAD such as freedoom1.wad, or a PWAD with its own art
+    /// or with `--iwad`).
     pub wad: PathBuf,
+    /// The IWAD under a PWAD whose maps use the IWAD's art (`--iwad
+    /// freedoom2.wad basic.wad`).
+    #[arg(long)]
+    pub iwad: Option<PathBuf>,
     /// The map to import (E1M4, MAP07), or `all`.
     #[arg(long)]
     pub map: String,

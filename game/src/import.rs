@@ -10,10 +10,15 @@ use sightline::wad::Wad;
 use crate::cli::ImportArgs;
 
 pub fn run(args: &ImportArgs) -> Result<()> {
-    let wad = Wad::open(&args.wad)?;
+    let pwad = Wad::open(&args.wad)?;
+    // `all`: the given WAD's maps, not its IWAD's.
     let names = match args.map.as_str() {
-        "all" | "ALL" => wad.map_names(),
+        "all" | "ALL" => pwad.map_names(),
         one => vec![one.to_ascii_uppercase()],
+    };
+    let wad = match &args.iwad {
+        Some(iwad) => Wad::stack(vec![Wad::open(iwad)?, pwad]),
+        None => pwad,
     };
     if names.is_empty() {
         anyhow::bail!("{}: has no maps", wad.path);

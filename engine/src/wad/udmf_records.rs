@@ -135,11 +135,13 @@ impl UdmfMap {
         let mut things = Vec::with_capacity(self.things.len());
         for (i, t) in self.things.iter().enumerate() {
             let what = |field: &str| format!("thing {i}: {field}");
-            if !doom && (t.special != 0 || t.id != 0) {
+            if !doom && t.special != 0 {
                 unread.push(format!(
-                    "thing {i}: id {} and ZDoom special {} with arguments {:?} (not read yet)",
+                    "thing {i}: id {}, ZDoom special {} with arguments {:?} (not read yet)",
                     t.id, t.special, t.args
                 ));
+            } else if !doom && t.id != 0 {
+                unread.push(format!("thing {i}: id {} (not read yet)", t.id));
             }
             let g = t.flags;
             let bits = [
