@@ -237,3 +237,62 @@ mod fuzz {
         }
     }
 }
+
+mod records {
+    use super::{parse, ROOM};
+
+    /// UDMF's flags become Doom's bits: skills 1 and 4 give easy and hard,
+    /// single player only gives Boom's not-deathmatch and not-co-op bits;
+    /// the zdoom special and the thing's id are listed as not read.
+    #[test]
+    fn a_zdoom_room_becomes_doom_records() {
+        let records = parse(ROOM.as_bytes()).unwrap().to_records("map01").unwrap();
+        let map = &records.map;
+        assert_eq!(map.name, "MAP01");
+        assert_eq!(map.vertices[0], (-448.0, 256.0));
+        assert_eq!((map.things[0].x, map.things[0].y, map.things[0].kind), (-384, 32, 1));
+        assert_eq!(map.things[0].flags, 1 | 4 | 32 | 64);
+        assert_eq!((map.lines[1].special, map.lines[1].tag), (0, 0));
+        assert_eq!((map.lines[2].flags, map.lines[2].left), (4, Some(3)));
+        assert_eq!((map.sides[2].upper.as_str(), map.sides[1].x_offset), ("STONE", 16));
+        assert_eq!(
+            records.unread,
+            [
+                "linedef 1: ZDoom line special 80 with arguments [3, 0, 7, 0, 0] (not translated yet)",
+                "thing 0: id 1 (not read yet)"
+            ]
+        );
+    }
+
+    /// In the doom namespace a special is Doom's number and arg0 its tag.
+    #[test]
+    fn the_doom_namespace_keeps_doom_specials_and_tags() {
+        let text = ROOM.replace("\"zdoom\"", "\"doom\"");
+        let records = parse(text.as_bytes()).unwrap().to_records("E1M1").unwrap();
+        assert_eq!((records.map.lines[1].special, records.map.lines[1].tag), (80, 3));
+        assert!(records.unread.is_empty(), "{:?}", records.unread);
+    }
+
+    /// What Doom's 16-bit records cannot hold is refused, naming the record.
+    #[test]
+    fn values_past_doom_s_fields_are_refused() {
+        let cases = [
+            (
+                "heightceiling = 104;",
+                "heightceiling = 40000;",
+                "sector 0: heightceiling = 40000 does not fit Doom's 16-bit field (-32768 to 32767)",
+            ),
+            (
+                "offsetx = 16;",
+                "offsetx = -40000;",
+                "sidedef 1: offsetx = -40000 does not fit Doom's 16-bit field (-32768 to 32767)",
+            ),
+            ("type = 1;", "type = 70000;", "thing 0: type = 70000 does not fit Doom's 16-bit field (0 to 65535)"),
+            ("x = -384.000;", "x = 40000.4;", "thing 0: x = 40000 does not fit Doom's 16-bit field (-32768 to 32767)"),
+        ];
+        for (from, to, want) in cases {
+            let text = ROOM.replace(from, to);
+            assert_eq!(parse(text.as_bytes()).unwrap().to_records("MAP01").unwrap_err(), want);
+        }
+    }
+}
