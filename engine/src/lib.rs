@@ -12,9 +12,13 @@
 //! `level` ties the first steps together: it opens either a source or a compiled
 //! map and hands back a [`CompiledMap`](bsp::CompiledMap) ready to render.
 //!
+//! `acs` loads and runs ZDoom's map scripts (BEHAVIOR lumps) behind a `Host`
+//! trait the simulation will implement.
+//!
 //! `play` runs a level as a game: a fixed 35 Hz simulation (movement,
 //! collision, doors) from per-tick inputs, which demos record and replay.
 
+pub mod acs;
 pub mod actors;
 pub mod autopilot;
 pub mod bsp;
