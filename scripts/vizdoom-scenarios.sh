@@ -14,7 +14,7 @@ dir=${1:-target/vizdoom/scenarios}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-pip download vizdoom==1.3.2 --no-deps --only-binary=:all: -d "$tmp" >&2
+python3 -m pip download vizdoom==1.3.2 --no-deps --only-binary=:all: -d "$tmp" >&2
 wheel=$(find "$tmp" -name 'vizdoom-1.3.2-*.whl' | head -n 1)
 if [[ -z $wheel ]]; then
     echo "vizdoom-scenarios.sh: pip fetched no vizdoom 1.3.2 wheel for this Python" >&2
