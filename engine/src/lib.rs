@@ -15,6 +15,9 @@
 //! `acs` loads and runs ZDoom's map scripts (BEHAVIOR lumps) behind a `Host`
 //! trait the simulation will implement.
 //!
+//! `decorate` reads ZDoom's actor definitions (DECORATE lumps) into a syntax
+//! tree; nothing maps it onto the actor table yet.
+//!
 //! `play` runs a level as a game: a fixed 35 Hz simulation (movement,
 //! collision, doors) from per-tick inputs, which demos record and replay.
 
@@ -23,6 +26,7 @@ pub mod actors;
 pub mod autopilot;
 pub mod bsp;
 pub mod campaign;
+pub mod decorate;
 pub mod envelope;
 pub mod fixed;
 pub mod framebuffer;
