@@ -42,6 +42,7 @@ pub mod screen;
 pub mod sim;
 pub mod sound;
 pub mod study;
+pub mod text_cursor;
 pub mod texture;
 pub mod tour;
 pub mod wad;

@@ -257,7 +257,7 @@ proptest! {
 /// is refused without a panic (when the fixtures are present).
 #[test]
 fn truncated_and_altered_shipped_lumps_never_panic() {
-    let Some(dir) = super::scenario_tests::shipped_dir() else { return };
+    let Some(dir) = crate::scenario::shipped_dir() else { return };
     for file in ["basic.wad", "defend_the_center.wad", "deathmatch.wad", "basic_notifications.wad"] {
         let wad = crate::wad::Wad::open(&dir.join(file)).unwrap_or_else(|e| panic!("{e}"));
         let index = behavior_for_map(&wad, "MAP01").expect("BEHAVIOR");

@@ -3,7 +3,6 @@
 //! scripts for a minute of game time without a warning.
 
 use std::collections::BTreeSet;
-use std::path::PathBuf;
 
 use super::record::{HostCall, RecordingHost};
 use super::*;
@@ -30,23 +29,6 @@ const WADS: [&str; 18] = [
     "take_cover.wad",
 ];
 
-/// Where ViZDoom's scenarios are (as `scenario::cfg_tests` looks), or `None`
-/// with a note when they are absent and not required.
-pub(super) fn shipped_dir() -> Option<PathBuf> {
-    let dir = std::env::var_os("SIGHTLINE_VIZDOOM_DIR")
-        .map_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../target/vizdoom/scenarios"), PathBuf::from);
-    if dir.join("basic.wad").is_file() {
-        return Some(dir);
-    }
-    let missing = format!("{} holds no basic.wad", dir.display());
-    let fetch = "scripts/vizdoom-scenarios.sh fetches them, or set SIGHTLINE_VIZDOOM_DIR";
-    if std::env::var_os("SIGHTLINE_REQUIRE_VIZDOOM").is_some_and(|v| !v.is_empty() && v != "0") {
-        panic!("SIGHTLINE_REQUIRE_VIZDOOM is set but ViZDoom's scenario files are not here ({missing}); {fetch}");
-    }
-    eprintln!("skipped: ViZDoom's scenario files are not here ({missing}); {fetch}");
-    None
-}
-
 /// Every map's module in the WAD, with its label.
 fn modules(dir: &std::path::Path, file: &str) -> Vec<(String, Module, i32)> {
     let wad = Wad::open(&dir.join(file)).unwrap_or_else(|e| panic!("{e}"));
@@ -63,7 +45,7 @@ fn modules(dir: &std::path::Path, file: &str) -> Vec<(String, Module, i32)> {
 
 #[test]
 fn the_last_behavior_of_a_udmf_map_is_the_one_zdoom_runs() {
-    let Some(dir) = shipped_dir() else { return };
+    let Some(dir) = crate::scenario::shipped_dir() else { return };
     for file in ["defend_the_center.wad", "health_gathering.wad"] {
         let wad = Wad::open(&dir.join(file)).unwrap_or_else(|e| panic!("{e}"));
         let all: Vec<usize> = (0..wad.lumps.len()).filter(|&i| wad.lumps[i].name == "BEHAVIOR").collect();
@@ -80,7 +62,7 @@ fn the_last_behavior_of_a_udmf_map_is_the_one_zdoom_runs() {
 
 #[test]
 fn every_scenario_module_loads_and_runs_2100_tics() {
-    let Some(dir) = shipped_dir() else { return };
+    let Some(dir) = crate::scenario::shipped_dir() else { return };
     let mut pcodes_used = BTreeSet::new();
     let mut functions_used = BTreeSet::new();
     let mut specials_used = BTreeSet::new();
@@ -115,7 +97,7 @@ fn every_scenario_module_loads_and_runs_2100_tics() {
 /// Clip count drops (its SCRIPTS source: `reward = reward - 5.0`).
 #[test]
 fn basic_wad_script_3_charges_five_per_shot() {
-    let Some(dir) = shipped_dir() else { return };
+    let Some(dir) = crate::scenario::shipped_dir() else { return };
     let (_, module, level) = modules(&dir, "basic.wad").remove(0);
     let mut host = RecordingHost::default();
     host.inventory.insert("Clip".into(), 50);

@@ -3,6 +3,7 @@
 //! line its duration is). Comments are dropped here.
 
 use super::{At, DecorateError};
+use crate::text_cursor::Cursor;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(super) enum Kind {
@@ -57,61 +58,30 @@ const PAIRS: [&str; 9] = ["::", "==", "!=", "<=", ">=", "&&", "||", "<<", ">>"];
 
 struct Lexer<'a> {
     text: &'a str,
-    bytes: &'a [u8],
-    pos: usize,
-    line: usize,
-    line_start: usize,
+    cur: Cursor<'a>,
 }
 
 impl Lexer<'_> {
     fn at(&self) -> At {
-        At { line: self.line, column: self.pos - self.line_start + 1 }
+        self.cur.at()
     }
 
     fn peek(&self, ahead: usize) -> Option<u8> {
-        self.bytes.get(self.pos + ahead).copied()
+        self.cur.peek(ahead)
     }
 
     fn bump(&mut self) {
-        if self.peek(0) == Some(b'\n') {
-            self.line += 1;
-            self.line_start = self.pos + 1;
-        }
-        self.pos += 1;
+        self.cur.bump();
     }
 
     /// Skips blanks and comments; an unclosed `/*` is an error where it opened.
     fn skip_blanks(&mut self) -> Result<(), DecorateError> {
-        loop {
-            match (self.peek(0), self.peek(1)) {
-                (Some(b), _) if b.is_ascii_whitespace() => self.bump(),
-                (Some(b'/'), Some(b'/')) => {
-                    while self.peek(0).is_some_and(|b| b != b'\n') {
-                        self.bump();
-                    }
-                }
-                (Some(b'/'), Some(b'*')) => {
-                    let at = self.at();
-                    self.pos += 2;
-                    loop {
-                        match (self.peek(0), self.peek(1)) {
-                            (Some(b'*'), Some(b'/')) => {
-                                self.pos += 2;
-                                break;
-                            }
-                            (Some(_), _) => self.bump(),
-                            (None, _) => return Err(DecorateError::UnterminatedComment { at }),
-                        }
-                    }
-                }
-                _ => return Ok(()),
-            }
-        }
+        self.cur.skip_blanks().map_err(|at| DecorateError::UnterminatedComment { at })
     }
 
     fn string(&mut self, at: At) -> Result<Token, DecorateError> {
-        self.pos += 1;
-        let start = self.pos;
+        self.cur.pos += 1;
+        let start = self.cur.pos;
         loop {
             match self.peek(0) {
                 None => return Err(DecorateError::UnterminatedString { at }),
@@ -124,31 +94,31 @@ impl Lexer<'_> {
             }
         }
         // Both ends are ASCII quotes, so the slice falls on character boundaries.
-        let text = self.text[start..self.pos].to_string();
-        self.pos += 1;
-        Ok(Token { kind: Kind::Str, text, at, end_line: self.line })
+        let text = self.text[start..self.cur.pos].to_string();
+        self.cur.pos += 1;
+        Ok(Token { kind: Kind::Str, text, at, end_line: self.cur.line() })
     }
 
     /// A run of letters, digits and underscores, with a decimal fraction if
     /// it is all digits and a `.` and digit follow.
     fn word_or_number(&mut self, at: At) -> Result<Token, DecorateError> {
-        let start = self.pos;
+        let start = self.cur.pos;
         let is_word_byte = |b: u8| b.is_ascii_alphanumeric() || b == b'_';
         while self.peek(0).is_some_and(is_word_byte) {
-            self.pos += 1;
+            self.cur.pos += 1;
         }
-        let all_digits = self.bytes[start..self.pos].iter().all(u8::is_ascii_digit);
+        let all_digits = self.cur.bytes[start..self.cur.pos].iter().all(u8::is_ascii_digit);
         // `.5` starts a number too.
-        let fraction = (all_digits || start == self.pos)
+        let fraction = (all_digits || start == self.cur.pos)
             && self.peek(0) == Some(b'.')
             && self.peek(1).is_some_and(|b| b.is_ascii_digit());
         if fraction {
-            self.pos += 1;
+            self.cur.pos += 1;
             while self.peek(0).is_some_and(|b| b.is_ascii_digit()) {
-                self.pos += 1;
+                self.cur.pos += 1;
             }
         }
-        let text = self.text[start..self.pos].to_string();
+        let text = self.text[start..self.cur.pos].to_string();
         let starts_with_digit = text.starts_with(|c: char| c.is_ascii_digit() || c == '.');
         let kind = if fraction {
             text.parse::<f64>().map_err(|_| DecorateError::BadNumber { at, text: text.clone() })?;
@@ -162,14 +132,14 @@ impl Lexer<'_> {
         } else {
             Kind::Word
         };
-        Ok(Token { kind, text, at, end_line: self.line })
+        Ok(Token { kind, text, at, end_line: self.cur.line() })
     }
 
     fn token(&mut self) -> Result<Token, DecorateError> {
         self.skip_blanks()?;
         let at = self.at();
         let Some(b) = self.peek(0) else {
-            return Ok(Token { kind: Kind::Eof, text: String::new(), at, end_line: self.line });
+            return Ok(Token { kind: Kind::Eof, text: String::new(), at, end_line: self.cur.line() });
         };
         if b == b'"' {
             return self.string(at);
@@ -179,19 +149,19 @@ impl Lexer<'_> {
             return self.word_or_number(at);
         }
         if !b.is_ascii_punctuation() {
-            let ch = self.text[self.pos..].chars().next().unwrap_or('\u{fffd}');
+            let ch = self.text[self.cur.pos..].chars().next().unwrap_or('\u{fffd}');
             return Err(DecorateError::BadCharacter { at, ch });
         }
-        let pair = self.text.get(self.pos..self.pos + 2).filter(|pair| PAIRS.contains(pair));
+        let pair = self.text.get(self.cur.pos..self.cur.pos + 2).filter(|pair| PAIRS.contains(pair));
         let text = pair.map_or_else(|| char::from(b).to_string(), str::to_string);
-        self.pos += text.len();
-        Ok(Token { kind: Kind::Punct, text, at, end_line: self.line })
+        self.cur.pos += text.len();
+        Ok(Token { kind: Kind::Punct, text, at, end_line: self.cur.line() })
     }
 }
 
 /// The tokens of `text`, ending with one `Eof` token.
 pub(super) fn tokens(text: &str) -> Result<Vec<Token>, DecorateError> {
-    let mut lexer = Lexer { text, bytes: text.as_bytes(), pos: 0, line: 1, line_start: 0 };
+    let mut lexer = Lexer { text, cur: Cursor::new(text.as_bytes()) };
     let mut tokens = Vec::new();
     loop {
         let token = lexer.token()?;

@@ -32,18 +32,7 @@ use std::fmt;
 
 pub use parse::{parse, parse_lump};
 
-/// A place in the text: 1-based line and column (columns count bytes).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct At {
-    pub line: usize,
-    pub column: usize,
-}
-
-impl fmt::Display for At {
-    fn fmt(&self, f: &mut fmt::Formatter) -> fmt::Result {
-        write!(f, "line {}, column {}", self.line, self.column)
-    }
-}
+pub use crate::text_cursor::At;
 
 /// What can go wrong reading DECORATE text; each names where.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

@@ -1,5 +1,4 @@
 use super::*;
-use std::path::PathBuf;
 
 const ROCKET: &str = r#####"
 // A weapon, after rocket_basic.wad's.
@@ -204,23 +203,6 @@ mod fuzz {
     }
 }
 
-/// ViZDoom's scenario directory: from `SIGHTLINE_VIZDOOM_DIR`, else the default
-/// that scripts/vizdoom-scenarios.sh fills (as `shipped_dir` in scenario's tests).
-fn shipped_dir() -> Option<PathBuf> {
-    let dir = std::env::var_os("SIGHTLINE_VIZDOOM_DIR")
-        .map_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../target/vizdoom/scenarios"), PathBuf::from);
-    if dir.join("basic.cfg").is_file() {
-        return Some(dir.canonicalize().unwrap_or(dir));
-    }
-    let missing = format!("{} holds no basic.cfg", dir.display());
-    let fetch = "scripts/vizdoom-scenarios.sh fetches them, or set SIGHTLINE_VIZDOOM_DIR";
-    if std::env::var_os("SIGHTLINE_REQUIRE_VIZDOOM").is_some_and(|v| !v.is_empty() && v != "0") {
-        panic!("SIGHTLINE_REQUIRE_VIZDOOM is set but ViZDoom's scenario files are not here ({missing}); {fetch}");
-    }
-    eprintln!("skipped: ViZDoom's scenario files are not here ({missing}); {fetch}");
-    None
-}
-
 const WITH_DECORATE: [&str; 6] = [
     "cig.wad",
     "cig_with_unknown.wad",
@@ -238,7 +220,7 @@ fn decorate_of(dir: &std::path::Path, name: &str) -> Decorate {
 
 #[test]
 fn every_shipped_decorate_lump_parses() {
-    let Some(dir) = shipped_dir() else { return };
+    let Some(dir) = crate::scenario::shipped_dir() else { return };
     for name in WITH_DECORATE {
         assert!(decorate_of(&dir, name).actors().count() > 0, "{name}");
     }

@@ -389,30 +389,9 @@ const SHIPPED: [&str; 23] = [
     "take_cover.cfg",
 ];
 
-/// The shipped scenarios' folder (`SIGHTLINE_VIZDOOM_DIR`, or where
-/// `scripts/vizdoom-scenarios.sh` puts them by default, as
-/// `tests/vizdoom.rs` looks), or `None` (with a note) when the test is to
-/// be skipped. `SIGHTLINE_REQUIRE_VIZDOOM=1` turns the skip into a failure,
-/// for runs that must cover them (`.ci/run`).
-fn shipped_dir() -> Option<PathBuf> {
-    let dir = std::env::var_os("SIGHTLINE_VIZDOOM_DIR")
-        .map_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../target/vizdoom/scenarios"), PathBuf::from);
-    if dir.join("basic.cfg").is_file() {
-        // Resolved paths come back without the default's `..`.
-        return Some(dir.canonicalize().unwrap_or(dir));
-    }
-    let missing = format!("{} holds no basic.cfg", dir.display());
-    let fetch = "scripts/vizdoom-scenarios.sh fetches them, or set SIGHTLINE_VIZDOOM_DIR";
-    if std::env::var_os("SIGHTLINE_REQUIRE_VIZDOOM").is_some_and(|v| !v.is_empty() && v != "0") {
-        panic!("SIGHTLINE_REQUIRE_VIZDOOM is set but ViZDoom's scenario files are not here ({missing}); {fetch}");
-    }
-    eprintln!("skipped: ViZDoom's scenario files are not here ({missing}); {fetch}");
-    None
-}
-
 #[test]
 fn every_shipped_scenario_cfg_parses() {
-    let Some(dir) = shipped_dir() else { return };
+    let Some(dir) = crate::scenario::shipped_dir() else { return };
     for name in SHIPPED {
         let cfg = ScenarioConfig::load(dir.join(name)).unwrap_or_else(|e| panic!("{e}"));
         // ViZDoom's own test_scenario_configs checks this of every file.

@@ -11,3 +11,26 @@ mod names;
 pub use cfg::{key_names, CfgError, Problem, KEY_COUNT};
 pub use config::{AutomapOptions, Outputs, RenderFlags, Rewards, ScenarioConfig};
 pub use names::{AutomapMode, Button, GameVariable, Mode, SamplingRate, ScreenFormat, ScreenResolution, RESOLUTIONS};
+
+/// For the tests that read ViZDoom's shipped scenarios (the `.cfg` reader's,
+/// ACS's, DECORATE's): their folder, `SIGHTLINE_VIZDOOM_DIR` or where
+/// `scripts/vizdoom-scenarios.sh` puts them by default (as
+/// `tests/vizdoom.rs` looks), canonical so resolved paths compare equal; or
+/// `None` with a note when they are absent. `SIGHTLINE_REQUIRE_VIZDOOM`
+/// (`.ci/run`) turns their absence into a failure.
+#[cfg(test)]
+pub(crate) fn shipped_dir() -> Option<std::path::PathBuf> {
+    use std::path::PathBuf;
+    let dir = std::env::var_os("SIGHTLINE_VIZDOOM_DIR")
+        .map_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../target/vizdoom/scenarios"), PathBuf::from);
+    if dir.join("basic.cfg").is_file() && dir.join("basic.wad").is_file() {
+        return Some(dir.canonicalize().unwrap_or(dir));
+    }
+    let missing = format!("{} holds no basic.cfg and basic.wad", dir.display());
+    let fetch = "scripts/vizdoom-scenarios.sh fetches them, or set SIGHTLINE_VIZDOOM_DIR";
+    if std::env::var_os("SIGHTLINE_REQUIRE_VIZDOOM").is_some_and(|v| !v.is_empty() && v != "0") {
+        panic!("SIGHTLINE_REQUIRE_VIZDOOM is set but ViZDoom's scenario files are not here ({missing}); {fetch}");
+    }
+    eprintln!("skipped: ViZDoom's scenario files are not here ({missing}); {fetch}");
+    None
+}

@@ -23,20 +23,9 @@
 //! a Hexen-style special with five arguments and an `id` of its own.
 
 use std::collections::BTreeMap;
-use std::fmt;
 
-/// A place in the text: 1-based line and column (columns count bytes).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct At {
-    pub line: usize,
-    pub column: usize,
-}
-
-impl fmt::Display for At {
-    fn fmt(&self, f: &mut fmt::Formatter) -> fmt::Result {
-        write!(f, "line {}, column {}", self.line, self.column)
-    }
-}
+pub use crate::text_cursor::At;
+use crate::text_cursor::Cursor;
 
 /// What is wrong with a TEXTMAP, and where.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
@@ -120,71 +109,19 @@ impl Token {
 }
 
 struct Lexer<'a> {
-    text: &'a [u8],
-    pos: usize,
-    at: At,
+    text: Cursor<'a>,
 }
 
 impl<'a> Lexer<'a> {
     fn new(text: &'a [u8]) -> Self {
-        Lexer { text, pos: 0, at: At { line: 1, column: 1 } }
-    }
-
-    fn peek(&self, ahead: usize) -> Option<u8> {
-        self.text.get(self.pos + ahead).copied()
-    }
-
-    fn bump(&mut self) -> Option<u8> {
-        let c = self.peek(0)?;
-        self.pos += 1;
-        if c == b'\n' {
-            self.at = At { line: self.at.line + 1, column: 1 };
-        } else {
-            self.at.column += 1;
-        }
-        Some(c)
-    }
-
-    /// Skips whitespace and comments.
-    fn skip(&mut self) -> Result<(), UdmfError> {
-        loop {
-            match (self.peek(0), self.peek(1)) {
-                (Some(c), _) if c.is_ascii_whitespace() => {
-                    self.bump();
-                }
-                (Some(b'/'), Some(b'/')) => {
-                    while self.peek(0).is_some_and(|c| c != b'\n') {
-                        self.bump();
-                    }
-                }
-                (Some(b'/'), Some(b'*')) => {
-                    let start = self.at;
-                    self.bump();
-                    self.bump();
-                    loop {
-                        match (self.peek(0), self.peek(1)) {
-                            (Some(b'*'), Some(b'/')) => {
-                                self.bump();
-                                self.bump();
-                                break;
-                            }
-                            (Some(_), _) => {
-                                self.bump();
-                            }
-                            (None, _) => return error(start, "a /* comment is never closed"),
-                        }
-                    }
-                }
-                _ => return Ok(()),
-            }
-        }
+        Lexer { text: Cursor::new(text) }
     }
 
     /// The next token and where it starts.
     fn next(&mut self) -> Result<(Token, At), UdmfError> {
-        self.skip()?;
-        let at = self.at;
-        let Some(c) = self.peek(0) else { return Ok((Token::End, at)) };
+        self.text.skip_blanks().or_else(|at| error(at, "a /* comment is never closed"))?;
+        let at = self.text.at();
+        let Some(c) = self.text.peek(0) else { return Ok((Token::End, at)) };
         let token = match c {
             b'{' => Token::Open,
             b'}' => Token::Close,
@@ -212,27 +149,23 @@ impl<'a> Lexer<'a> {
                 return error(at, format!("unexpected character {shown}"));
             }
         };
-        self.bump();
+        self.text.bump();
         Ok((token, at))
     }
 
     /// The longest run of bytes from here that `keep`, as text.
     fn run(&mut self, keep: impl Fn(u8) -> bool) -> String {
-        let start = self.pos;
-        while self.peek(0).is_some_and(&keep) {
-            self.bump();
-        }
-        String::from_utf8_lossy(&self.text[start..self.pos]).into_owned()
+        String::from_utf8_lossy(self.text.run(keep)).into_owned()
     }
 
     /// A quoted string from its opening quote; `\x` stands for `x`.
     fn string(&mut self, at: At) -> Result<String, UdmfError> {
-        self.bump();
+        self.text.bump();
         let mut bytes = Vec::new();
         loop {
-            match self.bump() {
+            match self.text.bump() {
                 Some(b'"') => return Ok(String::from_utf8_lossy(&bytes).into_owned()),
-                Some(b'\\') => match self.bump() {
+                Some(b'\\') => match self.text.bump() {
                     Some(c) => bytes.push(c),
                     None => return error(at, "a string is never closed (no '\"' before the end)"),
                 },
