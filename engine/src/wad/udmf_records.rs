@@ -56,6 +56,11 @@ fn unsigned(what: &str, value: i64) -> Result<u16, String> {
     u16::try_from(value).map_err(|_| format!("{what} = {value} does not fit Doom's 16-bit field (0 to 65535)"))
 }
 
+/// The bits whose flag is set, or'ed together.
+fn set_bits(bits: &[(bool, u16)]) -> u16 {
+    bits.iter().filter(|(on, _)| *on).fold(0, |acc, (_, bit)| acc | bit)
+}
+
 impl UdmfMap {
     /// The map as Doom-format records, named `name`.
     pub fn to_records(&self, name: &str) -> Result<Records, String> {
@@ -125,7 +130,7 @@ impl UdmfMap {
             lines.push(WadLine {
                 v1: unsigned(&what("v1"), l.v1 as i64)?,
                 v2: unsigned(&what("v2"), l.v2 as i64)?,
-                flags: bits.iter().filter(|(on, _)| *on).fold(0, |acc, (_, bit)| acc | bit),
+                flags: set_bits(&bits),
                 special,
                 tag,
                 right: Some(unsigned(&what("sidefront"), l.front as i64)?),
@@ -160,7 +165,7 @@ impl UdmfMap {
                 y: short(&what("y"), t.y.round() as i64)?,
                 angle: t.angle.rem_euclid(360) as i16,
                 kind: unsigned(&what("type"), t.kind)?,
-                flags: bits.iter().filter(|(on, _)| *on).fold(0, |acc, (_, bit)| acc | bit),
+                flags: set_bits(&bits),
             });
         }
         let map = WadMap { name: name.to_ascii_uppercase(), things, lines, sides, vertices, sectors };
