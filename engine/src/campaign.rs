@@ -18,7 +18,7 @@ use crate::map::MapError;
 use crate::materials::Materials;
 use crate::play::world::Exit;
 use crate::texture::Library;
-use crate::wad::import::{convert, Report};
+use crate::wad::import::Report;
 use crate::wad::library::WadArt;
 use crate::wad::{Wad, WadError};
 
@@ -153,8 +153,7 @@ pub fn open(map: &MapRef, options: &BuildOptions) -> Result<Opened, CampaignErro
             };
             let art = Arc::new(WadArt::new(wad)?);
             let records = art.wad.map_records(&name)?;
-            let mut converted = convert(&art.wad, &records.map, &art.art)?;
-            converted.report.unsupported_specials.extend(records.unread);
+            let converted = crate::wad::import::convert_records(&art.wad, &records, &art.art)?;
             let label = format!("{}:{name}", art.wad.path);
             let checked = validate(&converted.source)
                 .map_err(|problems| LevelError::Map(MapError::Invalid { path: label.clone(), problems }))?;

@@ -28,6 +28,9 @@ struct Run {
 }
 
 pub fn run(args: &AutoplayArgs) -> Result<()> {
+    if crate::scenario::is_cfg(&args.map) {
+        return crate::scenario::autoplay(args);
+    }
     let map = MapRef::parse(&args.map, args.iwad.as_deref());
     let options = GameOptions { skill: args.skill, seed: args.seed, no_monsters: args.no_monsters };
     let started = std::time::Instant::now();

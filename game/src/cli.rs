@@ -370,7 +370,8 @@ pub struct ReplayArgs {
 
 #[derive(Args)]
 pub struct AutoplayArgs {
-    /// A RON map, a compiled map or `WAD:MAP`.
+    /// A RON map, a compiled map, `WAD:MAP`, or a ViZDoom scenario's
+    /// `.cfg` (played by `--policy` for `--episodes` episodes).
     pub map: String,
     /// The IWAD under a PWAD map.
     #[arg(long)]
@@ -410,6 +411,21 @@ pub struct AutoplayArgs {
     /// Print the outcome as one JSON object.
     #[arg(long)]
     pub json: bool,
+    /// A scenario `.cfg`: episodes to play.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..))]
+    pub episodes: u32,
+    /// A scenario `.cfg`: who presses the buttons. `random`: each tic one of
+    /// the `.cfg`'s buttons, or none, uniformly, from a generator seeded
+    /// with `--seed`; `idle`: nothing is pressed.
+    #[arg(long, value_enum, default_value_t = Policy::Random)]
+    pub policy: Policy,
+}
+
+/// Who plays a scenario in `sightline autoplay SCENARIO.cfg`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Policy {
+    Random,
+    Idle,
 }
 
 #[derive(Args)]

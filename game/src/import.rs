@@ -4,7 +4,7 @@ use anyhow::{Context, Result};
 use sightline::bsp::{build, BuildOptions};
 use sightline::map::validate::validate;
 use sightline::map::MapError;
-use sightline::wad::import::{convert, write_art, Art, Converted};
+use sightline::wad::import::{convert_records, write_art, Art, Converted};
 use sightline::wad::Wad;
 
 use crate::cli::ImportArgs;
@@ -48,8 +48,7 @@ pub fn run(args: &ImportArgs) -> Result<()> {
 
 fn import_one(args: &ImportArgs, wad: &Wad, art: &Art, name: &str) -> Result<Converted> {
     let records = wad.map_records(name)?;
-    let mut c = convert(wad, &records.map, art)?;
-    c.report.unsupported_specials.extend(records.unread);
+    let c = convert_records(wad, &records, art)?;
     let path = args.output.join(format!("{}.ron", name.to_ascii_lowercase()));
     let label = path.display().to_string();
     // Check before writing: an imported map that our validator or

@@ -14,6 +14,7 @@ mod play;
 mod replay;
 mod replay_lmp;
 mod report;
+mod scenario;
 mod suite;
 
 use std::process::ExitCode;

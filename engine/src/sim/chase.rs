@@ -52,7 +52,7 @@ pub fn p_move(sim: &mut Sim, id: MobjId) -> bool {
     if dir >= 8 {
         return false;
     }
-    let speed = sim.info.things[actor.kind].speed;
+    let speed = sim.walk_speed(id);
     let (tryx, tryy) = step(actor.x, actor.y, speed, dir);
     if !collision::try_move(sim, id, tryx, tryy) {
         let actor = sim.mo(id);

@@ -118,6 +118,7 @@ fn room(floor1: i32, ceiling1: i32) -> Level {
         names: vec!["-".into()],
         things: Vec::new(),
         generalized: Default::default(),
+        thing_fields: Vec::new(),
     }
 }
 

@@ -104,7 +104,8 @@ impl Scene {
         self.draw_textures(sim, level);
         let viewer = sim.player(sim.console).map(|p| p.mo);
         let table = &sim.info.table;
-        let things = sim.live_mobjs().filter(|&id| Some(id) != viewer).filter_map(|id| {
+        let drawn = sim.live_mobjs().filter(|&id| Some(id) != viewer && !sim.invisible(id));
+        let things = drawn.filter_map(|id| {
             let m = sim.mo(id);
             let state = table.state(m.state?);
             let views =

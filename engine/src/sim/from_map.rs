@@ -155,6 +155,7 @@ pub fn level_and_report(compiled: &CompiledMap, table: &ActorTable) -> Result<Fr
         names: c.names,
         things,
         generalized,
+        thing_fields: Vec::new(),
     };
     // Every line here has a front side (the map's lines always do).
     level.group_lines().map_err(|what| FromMapError::Unsupported {
@@ -165,6 +166,36 @@ pub fn level_and_report(compiled: &CompiledMap, table: &ActorTable) -> Result<Fr
     // Nothing rejected: every sight check is traced (correct, only slower).
     level.reject = vec![0; (level.sectors.len() * level.sectors.len()).div_ceil(8)];
     Ok(FromMap { level, report: c.report })
+}
+
+/// A UDMF map as a level: the geometry of its compiled conversion (our own
+/// tree and blockmap: ZNODES are not read), and its things as the map
+/// stores them (`records`, one for each of `udmf`'s things, in order) with
+/// their ZDoom thing ids, specials and arguments. A map with only
+/// deathmatch starts (ViZDoom's `cig`, `multi_duel`) gets player 1's
+/// start at the first of them, as the importer gives its converted map.
+pub fn level_from_udmf(
+    compiled: &CompiledMap,
+    table: &ActorTable,
+    udmf: &crate::wad::udmf::UdmfMap,
+    records: &crate::wad::level::WadMap,
+) -> Result<Level, FromMapError> {
+    let mut level = level_from_map(compiled, table)?;
+    level.things = records.things.clone();
+    level.thing_fields = udmf
+        .things
+        .iter()
+        .map(|t| {
+            let int = |v: i64| v.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32;
+            super::zdoom::ThingFields { tid: int(t.id), special: int(t.special), args: t.args.map(int) }
+        })
+        .collect();
+    if !level.things.iter().any(|t| t.kind == 1) {
+        if let Some(dm) = level.things.iter().find(|t| t.kind == 11).cloned() {
+            level.things.push(WadThing { kind: 1, ..dm });
+        }
+    }
+    Ok(level)
 }
 
 /// The conversion's state: the name table being filled and the report.

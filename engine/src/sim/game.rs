@@ -32,6 +32,7 @@ use crate::play::player::{Key, PSprite};
 use crate::play::world::{Exit, SpecialLine};
 use crate::play::{vanilla, GameOptions, Player, Stats, TickInput};
 use crate::render::View;
+use crate::scenario::Scripts;
 
 use super::mobj::mf;
 
@@ -62,6 +63,8 @@ pub struct SimGame {
     /// The converted map's fingerprint as opened, before play (a save
     /// names the map by it: `play::save::map_fingerprint`).
     fingerprint: u32,
+    /// A ZDoom map's ACS scripts, run after each tic.
+    scripts: Option<Box<Scripts>>,
 }
 
 impl SimGame {
@@ -107,7 +110,21 @@ impl SimGame {
         }
         let skill = options.skill - 1;
         let players = Players { in_game: [true, false, false, false], console: 0 };
+        let mut scripts = None;
+        let udmf = match &opened.map {
+            MapRef::Wad { wads, map: Some(name) } => {
+                let wad = crate::campaign::stack(wads).map_err(|e| error(e.to_string()))?;
+                wad.is_udmf(name).then_some((wad, name.clone()))
+            }
+            _ => None,
+        };
         let (sim, scene) = match (&opened.map, opened.links) {
+            _ if udmf.is_some() => {
+                let Some((wad, name)) = udmf else { unreachable!() };
+                let (sim, loaded) = zdoom_sim(&wad, &name, &opened.level, &options, table, from).map_err(&error)?;
+                scripts = loaded;
+                (sim, Scene::identity(&opened.level.compiled.map))
+            }
             (MapRef::Wad { wads, map: Some(name) }, Some(links)) => {
                 let wad = crate::campaign::stack(wads).map_err(|e| error(e.to_string()))?;
                 let sim = match from {
@@ -146,13 +163,7 @@ impl SimGame {
                         sim
                     }
                 };
-                // Raise-to-texture floors measure the map's own textures.
-                let textures = &opened.level.materials.textures;
-                let heights = sim.level.names.iter().filter_map(|name| {
-                    let id = textures.find(name, crate::texture::TextureKind::Wall)?;
-                    Some((name.clone(), crate::fixed::Fixed::from_int(textures.get(id).height as i32)))
-                });
-                sim.spec.texture_heights = heights.collect();
+                measure_textures(&mut sim, &opened.level);
                 (sim, Scene::identity(&compiled.map))
             }
         };
@@ -170,6 +181,7 @@ impl SimGame {
             commands: Vec::new(),
             carry: 0.0,
             fingerprint,
+            scripts,
         };
         game.level.show_skill(options.skill);
         game.refresh();
@@ -315,11 +327,19 @@ impl SimGame {
         self.before = self.after;
         self.commands.push(cmd);
         self.sim.tick(&[Some(cmd), None, None, None]);
+        if let Some(scripts) = self.scripts.as_mut() {
+            scripts.tick(&mut self.sim);
+        }
         self.refresh();
         if self.after.pos.distance(self.before.pos) > 64.0 {
             // A teleport: do not draw the way between.
             self.before = self.after;
         }
+    }
+
+    /// A ZDoom map's scripts (`None` on other maps, or a map without any).
+    pub fn scripts(&self) -> Option<&Scripts> {
+        self.scripts.as_deref()
     }
 
     /// The fingerprint of the map as opened, before play.
@@ -721,4 +741,51 @@ mod tests {
         assert_eq!(player.pos, DVec2::new(m.x.to_f64(), m.y.to_f64()));
         assert_eq!(player.health, 100);
     }
+}
+
+/// A game on UDMF map `name` of `wad` (opened as `level`): the level built
+/// from its compiled conversion with its things' ZDoom fields
+/// ([`from_map::level_from_udmf`]), played by Sightline's rules as Doom II
+/// 1.9, with its DECORATE actors on `table`, and its ACS scripts started
+/// (their generator seeded from the game's seed).
+fn zdoom_sim(
+    wad: &crate::wad::Wad,
+    name: &str,
+    level: &Level,
+    options: &GameOptions,
+    table: std::sync::Arc<ActorTable>,
+    from: Option<&Sim>,
+) -> Result<(Sim, Option<Box<Scripts>>), String> {
+    let records = wad.map_records(name).map_err(|e| e.to_string())?;
+    let udmf = wad.udmf(name).map_err(|e| e.to_string())?;
+    let table = crate::scenario::actor_table(wad, &table)?;
+    let sim_level =
+        from_map::level_from_udmf(&level.compiled, &table, &udmf, &records.map).map_err(|e| e.to_string())?;
+    let skill = options.skill.saturating_sub(1);
+    let rules = Rules {
+        compat: Compat::Sightline,
+        no_monsters: options.no_monsters,
+        ..Rules::single(skill, super::GameVersion::Doom19, super::GameMode::Commercial)
+    };
+    let players = Players { in_game: [true, false, false, false], console: 0 };
+    let mut sim = match from {
+        Some(from) => from.next_level(sim_level, |_| {}),
+        None => from_map::sim_on_map(sim_level, rules, players, table),
+    };
+    measure_textures(&mut sim, level);
+    let mut scripts = Scripts::load(wad, name, options.seed).map_err(|e| e.to_string())?.map(Box::new);
+    if let Some(s) = scripts.as_mut() {
+        s.begin(&sim);
+    }
+    Ok((sim, scripts))
+}
+
+/// Raise-to-texture floors measure the converted map's own textures.
+fn measure_textures(sim: &mut Sim, level: &Level) {
+    let textures = &level.materials.textures;
+    let heights = sim.level.names.iter().filter_map(|name| {
+        let id = textures.find(name, crate::texture::TextureKind::Wall)?;
+        Some((name.clone(), crate::fixed::Fixed::from_int(textures.get(id).height as i32)))
+    });
+    sim.spec.texture_heights = heights.collect();
 }

@@ -75,6 +75,7 @@ pub fn kill_mobj(sim: &mut Sim, source: Option<MobjId>, target: MobjId) {
     let (spawnhealth, death, xdeath) = (info.spawnhealth, info.deathstate, info.xdeathstate);
     let gibbed = sim.mo(target).health < -spawnhealth && xdeath.is_some();
     sim.set_mobj_state(target, if gibbed { xdeath } else { death });
+    sim.fire_thing_special(target, source);
     let r = sim.p_random() & 3;
     let mo = sim.mo_mut(target);
     mo.tics -= r;
@@ -114,6 +115,11 @@ pub fn damage_mobj(sim: &mut Sim, target: MobjId, inflictor: Option<MobjId>, sou
         // Half damage in trainer mode.
         damage >>= 1;
     }
+    let scaled = sim.scaled_damage(target, damage);
+    if scaled <= 0 && damage > 0 {
+        return; // a damage factor of 0 (ZDoom: no pain, no thrust)
+    }
+    damage = scaled;
     if let Some(inflictor) = inflictor {
         thrust_away(sim, target, inflictor, source, damage);
     }
@@ -138,6 +144,9 @@ pub fn damage_mobj(sim: &mut Sim, target: MobjId, inflictor: Option<MobjId>, sou
     }
     sim.mo_mut(target).reactiontime = 0;
     let Some(source) = source else { return };
+    if sim.mo(source).player.is_some() && sim.ignores_players(target) {
+        return;
+    }
     let vile_target = sim.is(target, mt::VILE);
     // Every version we play is 1.5 or later, where a monster does not
     // turn on itself; an arch-vile is never chased, and always chases.

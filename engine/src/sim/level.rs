@@ -251,6 +251,9 @@ pub struct Level {
     /// WAD's map): what the negative line and sector specials name, and the
     /// scrolls and conveyors ([`super::generalized`]).
     pub generalized: super::generalized::Generalized,
+    /// A ZDoom map's thing ids, specials and arguments, by thing (empty
+    /// for Doom's maps and RON maps).
+    pub thing_fields: Vec<super::zdoom::ThingFields>,
 }
 
 #[derive(Debug, thiserror::Error)]
@@ -464,6 +467,7 @@ fn from_records(map: &WadMap) -> Level {
         names,
         things: map.things.clone(),
         generalized: Default::default(),
+        thing_fields: Vec::new(),
     }
 }
 

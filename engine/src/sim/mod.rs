@@ -40,6 +40,7 @@
 //! | `draw.rs` | | the simulation drawn by the renderer |
 //! | `state.rs` | the patch in `scripts/chocolate-dump.patch` | a tic's state for the reference dumps |
 //! | `save.rs` | `p_saveg.c`, `g_game.c` (`G_DoSaveGame`) | saved games that continue bit for bit |
+//! | `zdoom.rs` | ZDoom's `AActor` fields | thing ids, thing specials and script-set properties (ViZDoom's scenarios) |
 
 pub mod actions;
 pub mod attacks;
@@ -77,6 +78,7 @@ pub mod think;
 pub mod user;
 pub mod vile;
 pub mod weapons;
+pub mod zdoom;
 
 use std::sync::Arc;
 
@@ -310,6 +312,9 @@ pub struct Sim {
     /// their flat): what draws the game looks at textures again only when
     /// it moved. Not game state: a loaded game starts it at 0.
     pub textures_changed: u32,
+    /// Thing ids, thing specials and script-set properties of a ZDoom
+    /// map's bodies (empty on Doom's maps).
+    pub zdoom: zdoom::Zdoom,
 }
 
 impl Sim {

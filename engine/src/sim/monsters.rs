@@ -208,7 +208,7 @@ pub fn check_missile_range(sim: &mut Sim, id: MobjId) -> bool {
 /// sight and, unless `allaround`, in front or within melee range becomes
 /// the target.
 pub fn look_for_players(sim: &mut Sim, id: MobjId, allaround: bool) -> bool {
-    if sim.players.iter().all(Option::is_none) {
+    if sim.players.iter().all(Option::is_none) || sim.ignores_players(id) {
         return false; // Doom would loop for ever
     }
     let mut c = 0;
@@ -248,6 +248,9 @@ pub fn look_for_players(sim: &mut Sim, id: MobjId, allaround: bool) -> bool {
 fn look(sim: &mut Sim, id: MobjId) {
     sim.mo_mut(id).threshold = 0; // any shot will wake it
     let heard = sim.level.sectors[sim.sector_of(id)].soundtarget;
+    // A monster that ignores the players (ZDoom's Thing_Hate) does not
+    // hear them either.
+    let heard = heard.filter(|&t| !(sim.mo(t).player.is_some() && sim.ignores_players(id)));
     let mut seen = false;
     if let Some(targ) = heard.filter(|&t| sim.mo(t).has(mf::SHOOTABLE)) {
         sim.mo_mut(id).target = Some(targ);

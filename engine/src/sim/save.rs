@@ -78,8 +78,9 @@ pub const MAGIC: &[u8] = b"SIGHTLINE-SIMS\n";
 /// Bumped whenever the saved state's meaning changes. 2: the movers
 /// carry their parameters (a door's wait shut, a floor's change on
 /// arrival, a ceiling's starting speed) and the level its generalized
-/// specials, which the map's fingerprint covers.
-pub const VERSION: u8 = 2;
+/// specials, which the map's fingerprint covers. 3: the bodies' ZDoom
+/// fields (thing ids and specials, script-set properties).
+pub const VERSION: u8 = 3;
 
 #[derive(Debug, thiserror::Error)]
 pub enum SaveError {
@@ -257,6 +258,7 @@ struct SimState {
     total_items: i32,
     total_secrets: i32,
     exit: Option<bool>,
+    zdoom: super::zdoom::Zdoom,
 }
 
 /// The save's description and state of `sim`.
@@ -290,6 +292,7 @@ fn split(sim: &Sim) -> (SaveInfo, SimState) {
         total_items: sim.total_items,
         total_secrets: sim.total_secrets,
         exit: sim.exit,
+        zdoom: sim.zdoom.clone(),
     };
     (header, state)
 }
@@ -326,6 +329,7 @@ fn join(header: &SaveInfo, state: SimState, mut level: Level, info: Arc<Info>) -
         exit: state.exit,
         events: Vec::new(),
         textures_changed: 0,
+        zdoom: state.zdoom,
     }
 }
 

@@ -137,6 +137,7 @@ impl Sim {
             exit: None,
             events: Vec::new(),
             textures_changed: 0,
+            zdoom: Default::default(),
             level,
         };
         // P_SetupLevel: the console player's eye at 1 until the first tic
@@ -162,11 +163,17 @@ impl Sim {
     /// `break`, which Chocolate Doom keeps).
     fn spawn_things(&mut self) {
         let things = self.level.things.clone();
-        for thing in &things {
+        for (i, thing) in things.iter().enumerate() {
             if self.rules.mode != super::GameMode::Commercial && DOOM2_ONLY.contains(&thing.kind) {
                 break;
             }
+            let first = self.mobjs.len();
             self.spawn_map_thing(thing);
+            if let Some(fields) = self.level.thing_fields.get(i).filter(|f| !f.is_none()) {
+                for id in first..self.mobjs.len() {
+                    fields.put(self.zdoom.entry(super::MobjId(id as u32)));
+                }
+            }
         }
     }
 

@@ -87,6 +87,7 @@ fn corridor(sectors: &[(i32, i32, i16)]) -> Level {
         names: vec!["-".into(), "FLAT1".into(), "FLAT2".into()],
         things: Vec::new(),
         generalized: Default::default(),
+        thing_fields: Vec::new(),
     }
 }
 

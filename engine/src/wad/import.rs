@@ -151,6 +151,20 @@ enum Deferred {
 
 /// Converts one map. Texture, flat and sprite names are checked against
 /// `art`, so every name the map uses can be written by [`write_art`].
+/// [`convert`] on a map's records in either format (`Wad::map_records`):
+/// what the records could not say is reported, and a UDMF map's ZDoom
+/// sector specials are put on the sectors they became.
+pub fn convert_records(wad: &Wad, records: &super::udmf_records::Records, art: &Art) -> Result<Converted, WadError> {
+    let mut converted = convert(wad, &records.map, art)?;
+    converted.report.unsupported_specials.extend(records.unread.iter().cloned());
+    for &(i, special) in &records.sector_specials {
+        if let Some(j) = converted.links.sectors.get(i).copied().flatten() {
+            converted.source.sectors[j].special = special;
+        }
+    }
+    Ok(converted)
+}
+
 pub fn convert(wad: &Wad, map: &WadMap, art: &Art) -> Result<Converted, WadError> {
     let mut repairs = Vec::new();
     let mut report = Report::default();

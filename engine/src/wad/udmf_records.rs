@@ -10,21 +10,33 @@
 //! In the `doom` namespace a line's special is Doom's number and its tag is
 //! `arg0`, and a sector's special and tag (`id`) are Doom's.
 //!
-//! What does not yet: the `zdoom` namespace's Hexen-style specials (lines
-//! with their five arguments, sectors, things) and thing ids. Each is
+//! The `zdoom` namespace's sector specials are ZDoom's Hexen-style numbers:
+//! those with a Doom meaning (Doom's types moved up by 64, the lava floors,
+//! instant death, and the damage and secret bits 256-1024) become the map
+//! model's [`SectorSpecial`] in [`Records::sector_specials`], which the
+//! caller puts on the converted sectors; a thing's id, special and
+//! arguments do not fit Doom's records and are read by the game from the
+//! [`UdmfMap`] itself (`sim::from_map::level_from_udmf`).
+//!
+//! What does not yet: the `zdoom` namespace's line specials with their five
+//! arguments, and the other sector specials (phased lights, ...). Each is
 //! listed in [`Records::unread`], never dropped silently. A value Doom's
 //! 16-bit records cannot hold (a height or offset past ±32767, a thing
 //! type past 65535) is refused, naming the record.
 
 use super::level::{flags, WadLine, WadMap, WadSector, WadSide, WadThing};
 use super::udmf::{Namespace, UdmfMap};
+use crate::map::special::{Damage, SectorSpecial, Suit};
 
 /// A UDMF map's Doom-format records and what they leave out.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Records {
     pub map: WadMap,
-    /// One line for each special (or thing id) the records cannot say.
+    /// One line for each special the records cannot say.
     pub unread: Vec<String>,
+    /// A ZDoom sector special's meaning, by sector, for the sectors whose
+    /// special Doom's numbers cannot say (the records hold 0 there).
+    pub sector_specials: Vec<(usize, SectorSpecial)>,
 }
 
 /// Thing option bits (`MTF_*`): Doom's skills and ambush, its not-in-single
@@ -66,6 +78,7 @@ impl UdmfMap {
     pub fn to_records(&self, name: &str) -> Result<Records, String> {
         let doom = self.namespace == Namespace::Doom;
         let mut unread = Vec::new();
+        let mut sector_specials = Vec::new();
         let vertices = self.vertices.iter().map(|v| (v.x, v.y)).collect();
         let mut sectors = Vec::with_capacity(self.sectors.len());
         for (i, s) in self.sectors.iter().enumerate() {
@@ -74,7 +87,10 @@ impl UdmfMap {
                 (_, 0) => 0,
                 (true, n) => short(&what("special"), n)?,
                 (false, n) => {
-                    unread.push(format!("sector {i}: ZDoom sector special {n} (not translated yet)"));
+                    match zdoom_sector_special(n) {
+                        Some(special) => sector_specials.push((i, special)),
+                        None => unread.push(format!("sector {i}: ZDoom sector special {n} (not translated yet)")),
+                    }
                     0
                 }
             };
@@ -140,14 +156,6 @@ impl UdmfMap {
         let mut things = Vec::with_capacity(self.things.len());
         for (i, t) in self.things.iter().enumerate() {
             let what = |field: &str| format!("thing {i}: {field}");
-            if !doom && t.special != 0 {
-                unread.push(format!(
-                    "thing {i}: id {}, ZDoom special {} with arguments {:?} (not read yet)",
-                    t.id, t.special, t.args
-                ));
-            } else if !doom && t.id != 0 {
-                unread.push(format!("thing {i}: id {} (not read yet)", t.id));
-            }
             let g = t.flags;
             let bits = [
                 (g.skills[0] || g.skills[1], mtf::EASY),
@@ -169,7 +177,7 @@ impl UdmfMap {
             });
         }
         let map = WadMap { name: name.to_ascii_uppercase(), things, lines, sides, vertices, sectors };
-        Ok(Records { map, unread })
+        Ok(Records { map, unread, sector_specials })
     }
 }
 
@@ -187,7 +195,45 @@ impl super::Wad {
         if self.is_udmf(name) {
             self.udmf_records(name)
         } else {
-            Ok(Records { map: self.map(name)?, unread: Vec::new() })
+            Ok(Records { map: self.map(name)?, unread: Vec::new(), sector_specials: Vec::new() })
         }
     }
+}
+
+/// ZDoom's sector special `n` (Hexen numbering, as the `zdoom` namespace
+/// keeps it) in the map model, when it says something Doom's rules do (as
+/// ViZDoom's ZDoom 2.8 sets them up, `P_SpawnSpecials`; see
+/// `docs/zdoom-facts.md`): Doom's types 1-17 moved up by 64, the lava
+/// floors (82: 5, 83: 8 damage every 32 tics, through a suit), instant
+/// death (115: a million every tic), and the bits over the low byte (256,
+/// 512, 768: Boom's 5, 10 and 20 damage every 32 tics; 1024: a secret).
+/// `None` for the rest.
+pub fn zdoom_sector_special(n: i64) -> Option<SectorSpecial> {
+    let low = n & 0xff;
+    let mut special = match low {
+        0 => SectorSpecial::default(),
+        65..=81 => super::specials::sector_special((low - 64) as i16).ok()?,
+        82 | 83 => {
+            let amount = if low == 82 { 5 } else { 8 };
+            let damage = Damage { amount, every: 32, exit_below: 0, suit: Suit::Useless };
+            SectorSpecial { damage: Some(damage), ..SectorSpecial::default() }
+        }
+        115 => {
+            let damage = Damage { amount: 1_000_000, every: 1, exit_below: 0, suit: Suit::Useless };
+            SectorSpecial { damage: Some(damage), ..SectorSpecial::default() }
+        }
+        _ => return None,
+    };
+    let amount = match n & 0x300 {
+        0x100 => Some(5),
+        0x200 => Some(10),
+        0x300 => Some(20),
+        _ => None,
+    };
+    if let Some(amount) = amount {
+        let suit = if amount >= 20 { Suit::Leaks } else { Suit::Shields };
+        special.damage = Some(Damage { amount, every: 32, exit_below: 0, suit });
+    }
+    special.secret |= n & 0x400 != 0;
+    (n & !0x7ff == 0).then_some(special)
 }

@@ -205,6 +205,7 @@ pub fn touch_special_thing(sim: &mut Sim, special: MobjId, toucher: MobjId) {
             p.itemcount += 1;
         }
     }
+    sim.fire_thing_special(special, Some(toucher));
     sim.remove_mobj(special);
     if let Some(p) = sim.players[n].as_mut() {
         p.bonuscount += BONUSADD;

@@ -1,0 +1,220 @@
+//! A ViZDoom scenario played: [`Episode`] opens a `.cfg`'s WAD on the IWAD,
+//! starts a game on its map at its skill, lets the first
+//! `episode_start_time` tics pass without input, then takes one action a
+//! tic and scores it as ViZDoom does (`docs/zdoom-facts.md`, 7):
+//!
+//! - each action earns the change in ACS global 0 (16.16, so divided by
+//!   65536) plus `living_reward`;
+//! - the episode ends on the tic the player dies (that action still
+//!   counts, and `death_penalty` is subtracted once), one action after the
+//!   map is left (`Exit_Normal` ends the level at the start of the next
+//!   tic, as `G_ExitLevel` does), or after `episode_timeout` actions;
+//! - ACS global 1 (health_gathering's shaping reward) is read out, never
+//!   added.
+//!
+//! An action is the pressed buttons of the `.cfg`'s `available_buttons`,
+//! turned into Doom's command as ZDoom's input does with "always run" off
+//! (ViZDoom's default): forward and back 25, strafe 24 (50 and 40 with
+//! SPEED held), a turn of 320 (of 65536) for the first five tics a turn
+//! button is held, then 640 (1280 with SPEED).
+
+use std::path::{Path, PathBuf};
+
+use super::{Button, ScenarioConfig};
+use crate::bsp::BuildOptions;
+use crate::campaign::{self, MapRef};
+use crate::play::lmp::{buttons, Ticcmd};
+use crate::play::GameOptions;
+use crate::sim::game::SimGame;
+
+/// How an episode ended.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum End {
+    /// The map was left (`Exit_Normal`).
+    Exit,
+    /// The player died.
+    Death,
+    /// `episode_timeout` actions were played.
+    Timeout,
+}
+
+/// Tics a turn button turns slowly (ZDoom's `SLOWTURNTICS` less one: ViZDoom
+/// measures the fast turn from the sixth held tic).
+const SLOW_TURN_TICS: u32 = 5;
+
+/// One episode of a scenario.
+pub struct Episode {
+    pub game: SimGame,
+    pub config: ScenarioConfig,
+    /// Actions taken so far.
+    pub actions: u32,
+    /// The reward summed over the actions taken.
+    pub total_reward: f64,
+    end: Option<End>,
+    /// Global 0 after the last action (16.16).
+    reward_global: i32,
+    /// The level was left on the last action: one more ends the episode.
+    leaving: bool,
+    /// Tics a turn button has been held.
+    turn_held: u32,
+}
+
+/// What went wrong starting a scenario.
+#[derive(Debug, thiserror::Error)]
+pub enum ScenarioError {
+    #[error("{cfg}: no doom_scenario_path: which WAD holds the scenario's map?")]
+    NoWad { cfg: String },
+    #[error("{0}")]
+    Open(String),
+}
+
+impl Episode {
+    /// A new episode of `config` (its WAD on `iwad`, else on the `.cfg`'s
+    /// `doom_game_path`, else on `freedoom2.wad` where Doom ports look),
+    /// its random generators seeded with `seed`. The start time's tics
+    /// are played with no input.
+    pub fn new(config: &ScenarioConfig, iwad: Option<&Path>, seed: u64) -> Result<Episode, ScenarioError> {
+        let label = config.base_dir.display().to_string();
+        let wad = config.scenario_wad().ok_or(ScenarioError::NoWad { cfg: label })?;
+        let iwad = iwad.map(Path::to_path_buf).or_else(|| config.game_wad()).unwrap_or_else(|| {
+            let dirs = campaign::wad_dirs();
+            campaign::find_wad(&PathBuf::from("freedoom2.wad"), &dirs)
+        });
+        let map = MapRef::Wad { wads: vec![iwad, wad], map: Some(config.doom_map.clone()) };
+        let opened = campaign::open(&map, &BuildOptions::default()).map_err(|e| ScenarioError::Open(e.to_string()))?;
+        let skill = config.doom_skill.clamp(1, 5) as u8;
+        let options = GameOptions { skill, seed, no_monsters: false };
+        let game = SimGame::new(opened, options).map_err(|e| ScenarioError::Open(e.to_string()))?;
+        let mut episode = Episode {
+            game,
+            config: config.clone(),
+            actions: 0,
+            total_reward: 0.0,
+            end: None,
+            reward_global: 0,
+            leaving: false,
+            turn_held: 0,
+        };
+        for _ in 0..config.episode_start_time {
+            episode.game.command(Ticcmd::default());
+        }
+        episode.reward_global = episode.global(0);
+        Ok(episode)
+    }
+
+    /// ACS global variable `i` (16.16 where the scenario keeps a reward).
+    pub fn global(&self, i: usize) -> i32 {
+        self.game.scripts().map_or(0, |s| s.global(i))
+    }
+
+    /// How the episode ended, once it has.
+    pub fn end(&self) -> Option<End> {
+        self.end
+    }
+
+    /// One action: `pressed[i]` for the `.cfg`'s `available_buttons[i]`
+    /// (delta buttons take their value: degrees for turns, units for
+    /// moves). Returns the action's reward (0 once the episode is over).
+    pub fn step(&mut self, pressed: &[f64]) -> f64 {
+        if self.end.is_some() {
+            return 0.0;
+        }
+        let rewards = self.config.rewards;
+        let mut reward = rewards.living;
+        self.actions += 1;
+        if self.leaving {
+            self.end = Some(End::Exit);
+        } else {
+            let cmd = self.command(pressed);
+            self.game.command(cmd);
+            let global = self.global(0);
+            reward += f64::from(global.wrapping_sub(self.reward_global)) / 65536.0;
+            self.reward_global = global;
+            if self.game.player().health <= 0 {
+                reward -= rewards.death_penalty;
+                self.end = Some(End::Death);
+            } else if self.game.sim.exit.is_some() {
+                self.leaving = true;
+            }
+        }
+        if self.end.is_none() && self.config.episode_timeout > 0 && self.actions >= self.config.episode_timeout {
+            self.end = Some(End::Timeout);
+        }
+        self.total_reward += reward;
+        reward
+    }
+
+    /// Doom's command for the pressed buttons.
+    fn command(&mut self, pressed: &[f64]) -> Ticcmd {
+        let held = |b: Button| {
+            let i = self.config.available_buttons.iter().position(|&x| x == b);
+            i.and_then(|i| pressed.get(i)).copied().unwrap_or(0.0)
+        };
+        let on = |b: Button| held(b) != 0.0;
+        let speed = on(Button::Speed);
+        let (walk, strafe) = if speed { (50.0, 40.0) } else { (25.0, 24.0) };
+        let mut forward = 0.0;
+        let mut side = 0.0;
+        forward += if on(Button::MoveForward) { walk } else { 0.0 };
+        forward -= if on(Button::MoveBackward) { walk } else { 0.0 };
+        side += if on(Button::MoveRight) { strafe } else { 0.0 };
+        side -= if on(Button::MoveLeft) { strafe } else { 0.0 };
+        forward += held(Button::MoveForwardBackwardDelta);
+        side += held(Button::MoveLeftRightDelta);
+        let turning = on(Button::TurnLeft) != on(Button::TurnRight);
+        self.turn_held = if turning { self.turn_held + 1 } else { 0 };
+        let rate = if speed {
+            1280.0
+        } else if self.turn_held <= SLOW_TURN_TICS {
+            320.0
+        } else {
+            640.0
+        };
+        let mut turn = 0.0;
+        turn += if on(Button::TurnLeft) { rate } else { 0.0 };
+        turn -= if on(Button::TurnRight) { rate } else { 0.0 };
+        // Delta turns are degrees, positive to the right.
+        turn -= (held(Button::TurnLeftRightDelta) * 32768.0 / 180.0).floor();
+        let mut bits = 0;
+        if on(Button::Attack) {
+            bits |= buttons::ATTACK;
+        }
+        if on(Button::Use) {
+            bits |= buttons::USE;
+        }
+        let clamp8 = |v: f64| v.clamp(-127.0, 127.0) as i8;
+        Ticcmd {
+            forward: clamp8(forward),
+            side: clamp8(side),
+            turn: turn.clamp(-32768.0, 32767.0) as i16,
+            buttons: bits,
+        }
+    }
+}
+
+/// The comparison's random policy (`scripts/vizdoom-compare.py` plays the
+/// same in ViZDoom): each tic one of the `.cfg`'s buttons pressed alone, or
+/// none, each with the same chance, from a generator seeded apart from the
+/// game's.
+pub struct RandomPolicy {
+    rng: rand::rngs::ChaCha8Rng,
+}
+
+impl RandomPolicy {
+    pub fn new(seed: u64) -> RandomPolicy {
+        use rand::SeedableRng;
+        RandomPolicy { rng: rand::rngs::ChaCha8Rng::seed_from_u64(seed) }
+    }
+
+    /// The next action for `buttons` buttons.
+    pub fn action(&mut self, buttons: usize) -> Vec<f64> {
+        use rand::RngExt;
+        let mut pressed = vec![0.0; buttons];
+        let pick = self.rng.random_range(0..=buttons);
+        if let Some(b) = pressed.get_mut(pick) {
+            *b = 1.0;
+        }
+        pressed
+    }
+}
