@@ -476,6 +476,8 @@ impl ActorTable {
     /// Actor files (RON, our format) layered on this resolved table: the
     /// table's actors keep their indices; the files' actors may be
     /// `based_on` them or replace them.
+    // Errors are made once, when a table is refused (as in `load.rs`).
+    #[allow(clippy::result_large_err)]
     pub fn extend(&self, files: &[(&str, &str)]) -> Result<ActorTable, ActorTableError> {
         let parsed = files
             .iter()
@@ -486,6 +488,7 @@ impl ActorTable {
 
     /// As [`ActorTable::extend`], with the sources already built (the
     /// DECORATE builder writes them).
+    #[allow(clippy::result_large_err)]
     pub fn extend_with(&self, files: Vec<(source::TableSource, String)>) -> Result<ActorTable, ActorTableError> {
         load::extend(self, files)
     }

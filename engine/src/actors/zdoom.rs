@@ -298,6 +298,8 @@ pub fn sound(table: &ActorTable, name: &str) -> Option<usize> {
 }
 
 /// `base` with ZDoom's base classes layered on it.
+// Errors are made once, when a table is refused (as in `load.rs`).
+#[allow(clippy::result_large_err)]
 pub fn with_bases(base: &ActorTable) -> Result<ActorTable, ActorTableError> {
     base.extend(&[(ZDOOM_ACTORS, ZDOOM_ACTORS_PATH)])
 }
