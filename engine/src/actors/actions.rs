@@ -70,6 +70,18 @@ const fn int(name: &'static str, default: i64) -> ArgSpec {
     ArgSpec { name, kind: ArgKind::Int, default: Some(Default::Int(default)) }
 }
 
+const fn sound(name: &'static str, default: &'static str) -> ArgSpec {
+    ArgSpec { name, kind: ArgKind::Sound, default: Some(Default::Name(default)) }
+}
+
+const fn state(name: &'static str) -> ArgSpec {
+    ArgSpec { name, kind: ArgKind::State, default: None }
+}
+
+const fn required_actor(name: &'static str) -> ArgSpec {
+    ArgSpec { name, kind: ArgKind::Actor, default: None }
+}
+
 macro_rules! registry {
     ($($name:literal [$($arg:expr),*] $doc:literal;)*) => {
         /// Every action, in a fixed order ([`ActionId`] indexes it).
@@ -156,6 +168,26 @@ registry! {
     "A_BFGsound" [] "The BFG's charging sound.";
     "A_FireBFG" [actor("missile", "bfg_ball")] "Fire the BFG ball.";
     "A_BFGSpray" [actor("spray", "bfg_spray")] "Forty tracers from the shooter when the ball hits.";
+    "A_FireCustomMissile" [required_actor("missile")] "Fire the named missile from the player (ZDoom's; one round of the weapon's ammunition).";
+    // ZDoom's scripted marines (sim/marines.rs), and the body actions their
+    // states use.
+    "A_NoBlocking" [] "Stop being solid (ZDoom's name for A_Fall; nothing is dropped).";
+    "A_MarineLook" [] "The chainsaw's idle sound if it wields one, then A_Look.";
+    "A_MarineChase" [] "The chainsaw's idle sound if it wields one, then A_Chase.";
+    "A_MarineNoise" [] "The chainsaw's idle sound if it wields one.";
+    "A_M_Punch" [int("multiplier", 1)] "A punch of 2 to 20 times the multiplier (10 for berserk).";
+    "A_M_Saw" [sound("fullsound", "sawful"), sound("hitsound", "sawhit"), int("damage", 2)] "The chainsaw in melee range: damage times 1 to 10, the body turned to the victim.";
+    "A_M_SawRefire" [] "Back to See unless the target is alive and in melee range.";
+    "A_M_Refire" [int("ignoremissile", 0), state("jumpto")] "Keep firing while the target lives and is seen (look for another most of the time), else jump.";
+    "A_M_CheckAttack" [] "Face the target, or skip the attack when there is none.";
+    "A_M_FirePistol" [int("accurate", 1)] "One bullet of 5 to 15 (spread unless accurate).";
+    "A_M_FireCGun" [int("accurate", 1)] "One chaingun bullet of 5 to 15 (spread unless accurate).";
+    "A_M_FireShotgun" [] "Seven pellets of 5 to 15.";
+    "A_M_FireShotgun2" [] "Twenty pellets of 5 to 15, spread wide.";
+    "A_M_FireMissile" [actor("missile", "rocket_projectile")] "Punch in melee range, else fire a rocket.";
+    "A_M_FirePlasma" [actor("missile", "plasma_bolt")] "Fire a plasma bolt.";
+    "A_M_BFGSound" [] "The BFG's charging sound.";
+    "A_M_FireBFG" [actor("missile", "bfg_ball")] "Fire the BFG ball.";
 }
 
 /// The action of that name (case-insensitive, as DECORATE is).

@@ -55,18 +55,48 @@ struct Written {
 }
 
 pub fn load(files: &[(&str, &str)]) -> Result<ActorTable, ActorTableError> {
-    let mut sprites: Vec<String> = Vec::new();
+    let parsed = files
+        .iter()
+        .map(|&(text, path)| Ok((parse_source(text, path)?, path.to_string())))
+        .collect::<Result<Vec<_>, ActorTableError>>()?;
+    layer(None, parsed)
+}
+
+/// One actor file's RON, read but not resolved.
+pub fn parse_source(text: &str, path: &str) -> Result<TableSource, ActorTableError> {
+    // Optional fields are written bare (`drop: "clip"`), as in maps.
+    let options = ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
+    options.from_str(text).map_err(|e| ActorTableError::Syntax {
+        path: path.to_string(),
+        line: e.span.start.line,
+        col: e.span.start.col,
+        message: e.code.to_string(),
+    })
+}
+
+/// `files` layered on a table already resolved: its actors, states and
+/// sprites keep their indices, and the files' actors may be `based_on` or
+/// replace them (DECORATE's lumps and ZDoom's base classes go in this way).
+pub fn extend(base: &ActorTable, files: Vec<(TableSource, String)>) -> Result<ActorTable, ActorTableError> {
+    layer(Some(base), files)
+}
+
+/// Where an actor of the base table came from, in errors.
+const BASE_PATH: &str = "(the table extended)";
+
+fn layer(base: Option<&ActorTable>, files: Vec<(TableSource, String)>) -> Result<ActorTable, ActorTableError> {
+    let mut sprites: Vec<String> = base.map_or_else(Vec::new, |b| b.sprites.clone());
     let mut written: Vec<Written> = Vec::new();
     let mut by_name: HashMap<String, usize> = HashMap::new();
-    for &(text, path) in files {
-        // Optional fields are written bare (`drop: "clip"`), as in maps.
-        let options = ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
-        let table: TableSource = options.from_str(text).map_err(|e| ActorTableError::Syntax {
-            path: path.to_string(),
-            line: e.span.start.line,
-            col: e.span.start.col,
-            message: e.code.to_string(),
-        })?;
+    for def in base.iter().flat_map(|b| &b.actors) {
+        by_name.insert(def.name.clone(), written.len());
+        let source = ActorSource { name: def.name.clone(), ..ActorSource::default() };
+        written.push(Written { source, path: BASE_PATH.to_string() });
+    }
+    let base_count = written.len();
+    let mut overridden = vec![false; base_count];
+    for (table, path) in files {
+        let path = path.as_str();
         for sprite in table.sprites {
             if sprite.len() != 4 || !sprite.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
                 return Err(ActorTableError::Sprite { path: path.to_string(), sprite });
@@ -98,7 +128,12 @@ pub fn load(files: &[(&str, &str)]) -> Result<ActorTable, ActorTableError> {
             }
             let entry = Written { source, path: path.to_string() };
             match by_name.get(&entry.source.name) {
-                Some(&i) => written[i] = entry,
+                Some(&i) => {
+                    if i < base_count {
+                        overridden[i] = true;
+                    }
+                    written[i] = entry;
+                }
                 None => {
                     by_name.insert(entry.source.name.clone(), written.len());
                     written.push(entry);
@@ -106,7 +141,10 @@ pub fn load(files: &[(&str, &str)]) -> Result<ActorTable, ActorTableError> {
             }
         }
     }
-    let sounds: Vec<String> = super::sounds::doom().iter().map(|s| s.name.clone()).collect();
+    let sounds: Vec<String> = match base {
+        Some(b) => b.sounds.clone(),
+        None => super::sounds::doom().iter().map(|s| s.name.clone()).collect(),
+    };
     let mut resolver = Resolver {
         written: &written,
         by_name: &by_name,
@@ -114,8 +152,16 @@ pub fn load(files: &[(&str, &str)]) -> Result<ActorTable, ActorTableError> {
         sounds: &sounds,
         merged: vec![None; written.len()],
         actors: vec![None; written.len()],
-        states: Vec::new(),
+        states: base.map_or_else(Vec::new, |b| b.states.clone()),
     };
+    // The base's actors stand resolved, unless a file replaced them.
+    for (i, def) in base.iter().flat_map(|b| b.actors.iter().map(move |d| (b, d))).enumerate() {
+        if !overridden[i] {
+            let (table, def) = def;
+            resolver.merged[i] = Some(source_of(table, i, def));
+            resolver.actors[i] = Some(def.clone());
+        }
+    }
     for i in 0..written.len() {
         resolver.resolve(i, &mut Vec::new())?;
     }
@@ -208,6 +254,10 @@ impl Resolver<'_> {
             source = inherit(source, &parent_source);
             let parent_def = self.actors[p].as_ref().expect("resolved");
             labels = parent_def.labels.clone();
+            // `goto Super::Label`: the parent's state, even when the child
+            // defines a label of the same name (DECORATE's scope).
+            let supers: Vec<(String, StateId)> = labels.iter().map(|(l, s)| (format!("{SUPER}{l}"), *s)).collect();
+            labels.extend(supers);
             flags = parent_def.flags;
         }
         if let Some(list) = &w.source.flags {
@@ -222,6 +272,7 @@ impl Resolver<'_> {
         if let Some(text) = &w.source.states {
             self.add_states(i, text, &mut labels)?;
         }
+        labels.retain(|(l, _)| !l.starts_with(SUPER));
         let def = self.define(i, &source, flags, labels)?;
         self.merged[i] = Some(source);
         self.actors[i] = Some(def);
@@ -350,6 +401,7 @@ impl Resolver<'_> {
         let mut own: Vec<(String, u32)> = Vec::new();
         let mut waiting: Vec<String> = Vec::new();
         let mut aliases: Vec<(String, usize)> = Vec::new();
+        let mut removed: Vec<String> = Vec::new();
         let mut label_start: Option<u32> = None;
         let mut current = String::from("(no label)");
         let mut closed = true;
@@ -422,11 +474,18 @@ impl Resolver<'_> {
                                 }
                                 continue;
                             }
+                            // `Missile: stop`: DECORATE's way of saying the
+                            // actor has no such state (an inherited label
+                            // is dropped).
+                            EntryKind::Stop => {
+                                removed.append(&mut waiting);
+                                continue;
+                            }
                             _ => {
                                 return Err(state_error(
                                     k,
                                     &current,
-                                    "a label needs a state before `loop`, `stop` or `wait`".into(),
+                                    "a label needs a state before `loop` or `wait`".into(),
                                 ))
                             }
                         }
@@ -490,6 +549,7 @@ impl Resolver<'_> {
             let id = target(&resolved, label, *offset).map_err(|m| state_error(*k, name, m))?;
             set(&mut resolved, name, id);
         }
+        resolved.retain(|(l, _)| !removed.iter().any(|r| r.eq_ignore_ascii_case(l)));
         for (n, p) in made.iter().enumerate() {
             let id = base + n as u32;
             let next = match &p.next {
@@ -604,6 +664,43 @@ impl Resolver<'_> {
         }
         let (_, s) = inherited.iter().find(|(l, _)| l.eq_ignore_ascii_case(label))?;
         s.0.checked_add(offset).filter(|&id| id < base).map(StateId)
+    }
+}
+
+/// The prefix under which a child's state text sees its parent's labels.
+const SUPER: &str = "Super::";
+
+/// A resolved actor as a source its children can inherit from: the
+/// properties only (flags and labels are taken from the definition).
+fn source_of(table: &ActorTable, index: usize, def: &ActorDef) -> ActorSource {
+    let sound = |s: Option<usize>| s.and_then(|i| table.sounds.get(i).cloned());
+    let name = |a: Option<usize>| a.and_then(|i| table.actors.get(i)).map(|a| a.name.clone());
+    ActorSource {
+        name: def.name.clone(),
+        doomednum: def.doomednum,
+        category: Some(def.category),
+        health: Some(def.health),
+        reaction_time: Some(def.reaction_time),
+        pain_chance: Some(def.pain_chance),
+        speed: Some(def.speed),
+        fast_speed: def.fast_speed,
+        radius: Some(def.radius),
+        height: Some(def.height),
+        mass: Some(def.mass),
+        damage: Some(def.damage),
+        sounds: Some(SoundsSource {
+            see: sound(def.sounds.see),
+            attack: sound(def.sounds.attack),
+            pain: sound(def.sounds.pain),
+            death: sound(def.sounds.death),
+            active: sound(def.sounds.active),
+        }),
+        // A species of its own stays the child's own.
+        species: name(Some(def.species).filter(|&s| s != index)),
+        drop: name(def.drop),
+        pickup: def.pickup.clone(),
+        weapon: def.weapon.clone(),
+        ..ActorSource::default()
     }
 }
 

@@ -16,7 +16,9 @@
 //! - `states.rs`: the state text of one actor, parsed into entries;
 //! - `actions.rs`: the registry of actions (names and argument types);
 //! - `sounds.rs`: the sound names actors may use (`engine/data/sounds.ron`);
-//! - `load.rs`: resolving and checking a table into an [`ActorTable`].
+//! - `load.rs`: resolving and checking a table into an [`ActorTable`];
+//! - `zdoom.rs`: ZDoom's class names for the table's actors, and ZDoom's
+//!   own base classes (`engine/data/zdoom_actors.ron`) for DECORATE.
 
 pub mod actions;
 pub mod dehacked;
@@ -26,6 +28,7 @@ pub mod source;
 pub mod states;
 #[cfg(test)]
 mod tests;
+pub mod zdoom;
 
 use std::collections::HashMap;
 use std::sync::{Arc, OnceLock};
@@ -468,6 +471,26 @@ impl ActorTable {
     /// Parses, layers (later files add or replace actors) and checks tables.
     pub fn parse(files: &[(&str, &str)]) -> Result<ActorTable, ActorTableError> {
         load::load(files)
+    }
+
+    /// Actor files (RON, our format) layered on this resolved table: the
+    /// table's actors keep their indices; the files' actors may be
+    /// `based_on` them or replace them.
+    // Errors are made once, when a table is refused (as in `load.rs`).
+    #[allow(clippy::result_large_err)]
+    pub fn extend(&self, files: &[(&str, &str)]) -> Result<ActorTable, ActorTableError> {
+        let parsed = files
+            .iter()
+            .map(|&(text, path)| Ok((load::parse_source(text, path)?, path.to_string())))
+            .collect::<Result<Vec<_>, ActorTableError>>()?;
+        load::extend(self, parsed)
+    }
+
+    /// As [`ActorTable::extend`], with the sources already built (the
+    /// DECORATE builder writes them).
+    #[allow(clippy::result_large_err)]
+    pub fn extend_with(&self, files: Vec<(source::TableSource, String)>) -> Result<ActorTable, ActorTableError> {
+        load::extend(self, files)
     }
 
     pub fn index(&self, name: &str) -> Option<usize> {

@@ -35,8 +35,8 @@ fn the_shipped_table_adds_sightline_s_own_roster() {
 fn the_shipped_table_loads_with_doom_s_roster() {
     let t = &ActorTable::parse(&[(DOOM_TABLE, DOOM_TABLE_PATH)]).unwrap();
     // Every thing of Doom and Doom II, the player, missiles and effects, the
-    // nine weapons.
-    assert_eq!(t.actors.len(), 146);
+    // nine weapons; and ZDoom's two map markers (MapSpot, PatrolPoint).
+    assert_eq!(t.actors.len(), 148);
     // Doom's 967 states less S_NULL and six unused, with the states that
     // Doom's actors share (the weapons' light-done, the pistol's flash...)
     // written once for each actor that uses them.
@@ -230,7 +230,7 @@ fn each_load_error_names_the_file_actor_and_state() {
         ),
         (
             r#"Actor(name: "a", states: "Spawn:\n loop")"#,
-            "mod.ron: actor a, state Spawn (states line 2: `loop`): a label needs a state before `loop`, `stop` or `wait`",
+            "mod.ron: actor a, state Spawn (states line 2: `loop`): a label needs a state before `loop` or `wait`",
         ),
         (
             r#"Actor(name: "a", states: "Spawn:\n POSS A 4\n loop\nDeath:")"#,

@@ -1,6 +1,7 @@
 //! DECORATE, ZDoom's text lump that defines actors: [`parse`] reads the text
-//! into a syntax tree, [`Decorate`], that the actor table will later map onto
-//! its own states and actions (not done yet).
+//! into a syntax tree, [`Decorate`]; [`build::apply`] maps the trees onto the
+//! actor table (its own states, flags and actions), listing what it leaves
+//! out.
 //!
 //! What the parser reads, after the ZDoom wiki's DECORATE pages:
 //! - `//` and `/* */` comments, keywords in any case;
@@ -23,6 +24,9 @@
 //! on the line that started them (after a comma a value may follow on the
 //! next line), since nothing else ends them.
 
+pub mod build;
+#[cfg(test)]
+mod build_tests;
 mod lex;
 mod parse;
 #[cfg(test)]
@@ -30,6 +34,7 @@ mod parse_tests;
 
 use std::fmt;
 
+pub use build::{apply, Built, DecorateBuildError};
 pub use parse::{parse, parse_lump};
 
 pub use crate::text_cursor::At;

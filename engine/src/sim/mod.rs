@@ -62,6 +62,7 @@ pub mod intermission;
 pub mod level;
 pub mod lights;
 pub mod maputl;
+pub mod marines;
 pub mod mobj;
 pub mod monsters;
 pub mod movement;

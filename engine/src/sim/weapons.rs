@@ -74,6 +74,9 @@ pub fn action(sim: &mut Sim, player: usize, psp: usize, name: &str, call: &Actio
         "A_FireShotgun2" => fire_shotgun2(sim, player),
         "A_FireCGun" => fire_cgun(sim, player, psp),
         "A_FireMissile" => fire_missile(sim, player, missile_arg(sim, call, mt::ROCKET), 1),
+        // ZDoom's: the named missile, one round (ZDoom spends the weapon's
+        // AmmoUse; rocket_basic's launcher uses 1).
+        "A_FireCustomMissile" => fire_missile(sim, player, missile_arg(sim, call, mt::ROCKET), 1),
         "A_FireBFG" => fire_missile(sim, player, missile_arg(sim, call, mt::BFG), BFG_CELLS_PER_SHOT),
         "A_FirePlasma" => fire_plasma(sim, player, missile_arg(sim, call, mt::PLASMA)),
         "A_BFGsound" => body_sound(sim, player, "bfg"),

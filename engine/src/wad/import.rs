@@ -611,7 +611,15 @@ fn convert_things(
     let mut things = Vec::new();
     for (i, t) in map.things.iter().enumerate() {
         let Some(ty) = types.by_doomednum(t.kind) else {
-            report.unknown_things.push(format!("thing {i}: type {} at ({}, {})", t.kind, t.x, t.y));
+            // ZDoom's things we know and do not read are named.
+            let known = crate::actors::zdoom::unread_thing(t.kind).map(|n| format!(" (ZDoom's {n}, not read)"));
+            report.unknown_things.push(format!(
+                "thing {i}: type {}{} at ({}, {})",
+                t.kind,
+                known.unwrap_or_default(),
+                t.x,
+                t.y
+            ));
             continue;
         };
         if let Some(lump) = types.first_frame(ty).and_then(|stem| find_sprite(art, &stem)) {
