@@ -109,6 +109,7 @@ impl MapRef {
 }
 
 /// A map opened for play, and what its conversion had to say (WAD maps).
+#[derive(Clone)]
 pub struct Opened {
     pub level: Level,
     /// The map actually opened (a WAD's first map made explicit).
@@ -119,6 +120,10 @@ pub struct Opened {
     /// For a WAD map, where its sectors and linedefs went in the converted
     /// map.
     pub links: Option<crate::wad::import::Links>,
+    /// For a WAD map, the WADs as one (what the game reads besides the
+    /// converted map: a Doom map's lumps, a ZDoom map's scripts), so a game
+    /// started again on the same map does not read them again.
+    pub wad: Option<Arc<WadArt>>,
 }
 
 impl Opened {
@@ -126,7 +131,7 @@ impl Opened {
     /// as if opened from the file `label`.
     pub fn of_level(level: Level, label: &str) -> Opened {
         let map = MapRef::File(PathBuf::from(label));
-        Opened { level, map, repairs: Vec::new(), report: None, links: None }
+        Opened { level, map, repairs: Vec::new(), report: None, links: None, wad: None }
     }
 }
 
@@ -140,6 +145,7 @@ pub fn open(map: &MapRef, options: &BuildOptions) -> Result<Opened, CampaignErro
             repairs: Vec::new(),
             report: None,
             links: None,
+            wad: None,
         }),
         MapRef::Wad { wads, map: name } => {
             let wad = stack(wads)?;
@@ -159,7 +165,7 @@ pub fn open(map: &MapRef, options: &BuildOptions) -> Result<Opened, CampaignErro
                 .map_err(|problems| LevelError::Map(MapError::Invalid { path: label.clone(), problems }))?;
             let compiled =
                 build(&checked, options).map_err(|error| LevelError::Compile { path: label.clone(), error })?;
-            let library = Library { dirs: Vec::new(), wad: Some(art) };
+            let library = Library { dirs: Vec::new(), wad: Some(art.clone()) };
             let materials = Materials::resolve_in(&compiled.map, &library, &label).map_err(LevelError::from)?;
             Ok(Opened {
                 level: Level::new(compiled, materials),
@@ -167,6 +173,7 @@ pub fn open(map: &MapRef, options: &BuildOptions) -> Result<Opened, CampaignErro
                 repairs: converted.repairs,
                 report: Some(converted.report),
                 links: Some(converted.links),
+                wad: Some(art),
             })
         }
     }

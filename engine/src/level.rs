@@ -29,6 +29,7 @@ pub enum LevelError {
 /// A map ready to render: its geometry and BSP, its materials, and the
 /// state play changes and the renderers draw (sector heights and light in
 /// `compiled.map`, the tick, which things are there).
+#[derive(Clone)]
 pub struct Level {
     pub compiled: CompiledMap,
     pub materials: Materials,
@@ -94,7 +95,7 @@ impl DrawnThing {
 }
 
 /// A grid map's faces and doors, for the ray-caster.
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 pub struct GridLevel {
     pub faces: FaceLines,
     /// How far each door (in [`FaceLines::doors`] order) has slid open, 0..=1.

@@ -26,7 +26,7 @@ pub struct SectorTextures {
     pub ceiling: Option<TextureId>,
 }
 
-#[derive(Default)]
+#[derive(Clone, Default)]
 pub struct Materials {
     pub textures: TextureSet,
     /// Per line: `[front, back]` (the back is empty on one-sided lines).

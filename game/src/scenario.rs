@@ -5,7 +5,7 @@
 
 use anyhow::{Context, Result};
 use serde_json::json;
-use sightline::scenario::{Episode, RandomPolicy, ScenarioConfig};
+use sightline::scenario::{RandomPolicy, Scenario, ScenarioConfig};
 
 use crate::cli::{AutoplayArgs, Policy};
 
@@ -23,10 +23,12 @@ pub fn autoplay(args: &AutoplayArgs) -> Result<()> {
     let started = std::time::Instant::now();
     let mut episodes = Vec::new();
     let buttons = config.available_buttons.len();
+    let scenario = Scenario::open(&config, args.iwad.as_deref())
+        .with_context(|| format!("{}: cannot open the scenario", args.map))?;
     for k in 0..u64::from(args.episodes) {
         let seed = args.seed.wrapping_add(k);
-        let mut episode = Episode::new(&config, args.iwad.as_deref(), seed)
-            .with_context(|| format!("{}: cannot start the scenario", args.map))?;
+        let mut episode =
+            scenario.episode(seed).with_context(|| format!("{}: cannot start the scenario", args.map))?;
         let mut policy = RandomPolicy::new(seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ 0x5eed);
         let limit = args.max_ticks;
         while episode.end().is_none() && u64::from(episode.actions) < limit {

@@ -157,7 +157,7 @@ fn entry_face(grid: &Grid, prev: DVec2, p: DVec2, from: (i64, i64), to: (i64, i6
 /// Per cell, a lower bound on the distance from any point in it to any
 /// solid cell: `(k - 1) * cell_size` with `k` the Chebyshev distance in
 /// cells to the nearest wall or door cell (0 for those, 1 beside one).
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 pub struct DistanceField {
     rings: Vec<u32>,
 }

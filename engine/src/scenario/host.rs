@@ -116,33 +116,14 @@ const AMMO: [(&str, usize); 8] = [
     ("RocketBox", 3),
 ];
 
-/// ZDoom's class names for the actors the scenarios spawn by name, where
-/// they differ from ours by more than case and underscores.
-const CLASSES: [(&str, &str); 12] = [
-    ("DoomImp", "imp"),
-    ("ZombieMan", "zombieman"),
-    ("ShotgunGuy", "shotgun_guy"),
-    ("ChaingunGuy", "heavy_weapon_dude"),
-    ("BaronOfHell", "baron_of_hell"),
-    ("HellKnight", "hell_knight"),
-    ("LostSoul", "lost_soul"),
-    ("Fatso", "mancubus"),
-    ("SpiderMastermind", "spiderdemon"),
-    ("Archvile", "arch_vile"),
-    ("Stimpack", "stimpack"),
-    ("ClipBox", "box_of_bullets"),
-];
-
-/// The actor kind of ZDoom class `class`.
-pub fn class_kind(sim: &Sim, class: &str) -> Option<usize> {
-    let table = &sim.info.table;
-    let plain = |name: &str| name.chars().filter(|&c| c != '_').collect::<String>().to_ascii_lowercase();
-    let wanted = plain(class);
-    let ours = CLASSES.iter().find(|(z, _)| z.eq_ignore_ascii_case(class)).map(|(_, o)| *o);
-    if let Some(name) = ours {
-        return table.index(name);
+/// ZDoom's ammunition factor for the skill (`SKILLP_AmmoFactor`): double
+/// on the easiest skill and on Nightmare.
+fn ammo_factor(sim: &Sim) -> i32 {
+    if sim.rules.skill == 0 || sim.rules.skill == crate::sim::Rules::NIGHTMARE {
+        2
+    } else {
+        1
     }
-    table.actors.iter().position(|a| plain(&a.name) == wanted)
 }
 
 /// The VM's view of one game: the simulation, the scripts' own random
@@ -194,11 +175,7 @@ impl SimHost<'_> {
 
     /// ZDoom's ammunition factor for the skill (`SKILLP_AmmoFactor`).
     fn ammo_factor(&self) -> i32 {
-        if self.sim.rules.skill == 0 || self.sim.rules.skill == crate::sim::Rules::NIGHTMARE {
-            2
-        } else {
-            1
-        }
+        ammo_factor(self.sim)
     }
 
     fn give(&mut self, n: usize, item: &str, amount: i32) {
@@ -236,7 +213,60 @@ impl SimHost<'_> {
             pickups::give_body(self.sim, n, h * amount);
             return;
         }
+        if let Some(w) = self.custom_weapon(item) {
+            let name = WEAPONS.iter().find(|&&(_, n, _)| n == w).map_or("Pistol", |&(name, ..)| name);
+            let kind = crate::actors::zdoom::find(&self.sim.info.table, item);
+            let pickup = kind.and_then(|k| self.sim.info.table.actors[k].pickup.clone());
+            let ammo_give = pickup.iter().flat_map(|p| p.give.iter()).find_map(|g| match g {
+                crate::actors::Give::Ammo(_, n) => Some(*n),
+                _ => None,
+            });
+            let before = self.sim.player(n).map(|p| p.ammo);
+            let factor = ammo_factor(self.sim);
+            self.give(n, name, 1);
+            // The weapon's own ammunition instead of Doom's weapon's.
+            if let (Some(before), Some(give), Some(p)) = (before, ammo_give, self.sim.players[n].as_mut()) {
+                for a in 0..p.ammo.len() {
+                    if p.ammo[a] != before[a] {
+                        p.ammo[a] = (before[a] + give * factor).min(p.maxammo[a]);
+                    }
+                }
+            }
+            return;
+        }
         self.unsupported(format!("GiveInventory(\"{item}\") (not an item this game knows)"));
+    }
+
+    /// A DECORATE weapon (`CustomRocketLauncher`): the player holds Doom's
+    /// nine weapons, so it takes the place of Doom's weapon with the same
+    /// ammunition (the rocket launcher for rockets, the pistol for
+    /// bullets, ...) in this game's weapon table, its states and actions
+    /// its own. Returns that weapon's number.
+    fn custom_weapon(&mut self, item: &str) -> Option<usize> {
+        let table = self.sim.info.table.clone();
+        let kind = crate::actors::zdoom::find(&table, item)?;
+        let def = &table.actors[kind];
+        let weapon = def.weapon.as_ref()?;
+        let w = match weapon.ammo {
+            Some(crate::actors::AmmoKind::Bullets) => wp::PISTOL,
+            Some(crate::actors::AmmoKind::Shells) => wp::SHOTGUN,
+            Some(crate::actors::AmmoKind::Rockets) => wp::MISSILE,
+            Some(crate::actors::AmmoKind::Cells) => wp::PLASMA,
+            None => wp::FIST,
+        };
+        let info = std::sync::Arc::make_mut(&mut self.sim.info);
+        let slot = info.weapons.get_mut(w)?;
+        let ammo = slot.as_ref().and_then(|s| s.ammo);
+        *slot = Some(crate::sim::info::WeaponInfo {
+            actor: kind,
+            ammo,
+            upstate: def.label("Select"),
+            downstate: def.label("Deselect"),
+            readystate: def.label("Ready"),
+            atkstate: def.label("Fire"),
+            flashstate: def.label("Flash"),
+        });
+        Some(w)
     }
 
     fn take(&mut self, n: usize, item: &str, amount: i32) {
@@ -280,7 +310,7 @@ impl SimHost<'_> {
 
     /// ACS `Spawn`: the thing at (x, y, z), or nothing where it does not fit.
     fn spawn(&mut self, class: &str, x: i32, y: i32, z: i32, tid: i32, angle: i32) -> i32 {
-        let Some(kind) = class_kind(self.sim, class) else {
+        let Some(kind) = crate::actors::zdoom::find(&self.sim.info.table, class) else {
             self.unsupported(format!("Spawn(\"{class}\") (no such actor)"));
             return 0;
         };

@@ -14,17 +14,28 @@ pub mod scripts;
 pub use cfg::{key_names, CfgError, Problem, KEY_COUNT};
 pub use config::{AutomapOptions, Outputs, RenderFlags, Rewards, ScenarioConfig};
 pub use names::{AutomapMode, Button, GameVariable, Mode, SamplingRate, ScreenFormat, ScreenResolution, RESOLUTIONS};
-pub use run::{End, Episode, RandomPolicy, ScenarioError};
+pub use run::{End, Episode, RandomPolicy, Scenario, ScenarioError};
 pub use scripts::Scripts;
 
 /// The actor table a ZDoom WAD plays with: `base` with the WAD's DECORATE
-/// lumps applied.
+/// lumps applied (`decorate::apply`, on ZDoom's base classes); a WAD
+/// without DECORATE plays with `base` itself. What the lumps say that the
+/// table cannot hold is in the second value, one line each.
 pub fn actor_table(
     wad: &crate::wad::Wad,
     base: &std::sync::Arc<crate::actors::ActorTable>,
-) -> Result<std::sync::Arc<crate::actors::ActorTable>, String> {
-    let _ = wad;
-    Ok(base.clone())
+) -> Result<(std::sync::Arc<crate::actors::ActorTable>, Vec<String>), String> {
+    let mut lumps = Vec::new();
+    for i in (0..wad.lumps.len()).filter(|&i| wad.lumps[i].name == "DECORATE") {
+        let label = format!("{}:DECORATE", wad.path);
+        let parsed = crate::decorate::parse_lump(wad.bytes(i)).map_err(|e| format!("{label}: {e}"))?;
+        lumps.push((label, parsed));
+    }
+    if lumps.is_empty() {
+        return Ok((base.clone(), Vec::new()));
+    }
+    let built = crate::decorate::apply(&lumps, base).map_err(|e| e.to_string())?;
+    Ok((std::sync::Arc::new(built.table), built.unread))
 }
 
 /// For the tests that read ViZDoom's shipped scenarios (the `.cfg` reader's,

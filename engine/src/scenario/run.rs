@@ -22,7 +22,7 @@ use std::path::{Path, PathBuf};
 
 use super::{Button, ScenarioConfig};
 use crate::bsp::BuildOptions;
-use crate::campaign::{self, MapRef};
+use crate::campaign::{self, MapRef, Opened};
 use crate::play::lmp::{buttons, Ticcmd};
 use crate::play::GameOptions;
 use crate::sim::game::SimGame;
@@ -69,12 +69,17 @@ pub enum ScenarioError {
     Open(String),
 }
 
-impl Episode {
-    /// A new episode of `config` (its WAD on `iwad`, else on the `.cfg`'s
-    /// `doom_game_path`, else on `freedoom2.wad` where Doom ports look),
-    /// its random generators seeded with `seed`. The start time's tics
-    /// are played with no input.
-    pub fn new(config: &ScenarioConfig, iwad: Option<&Path>, seed: u64) -> Result<Episode, ScenarioError> {
+/// A scenario opened once: its `.cfg` and its map converted and compiled,
+/// so each episode starts from a copy.
+pub struct Scenario {
+    pub config: ScenarioConfig,
+    opened: Opened,
+}
+
+impl Scenario {
+    /// `config`'s WAD on `iwad`, else on the `.cfg`'s `doom_game_path`,
+    /// else on `freedoom2.wad` where Doom ports look for it.
+    pub fn open(config: &ScenarioConfig, iwad: Option<&Path>) -> Result<Scenario, ScenarioError> {
         let label = config.base_dir.display().to_string();
         let wad = config.scenario_wad().ok_or(ScenarioError::NoWad { cfg: label })?;
         let iwad = iwad.map(Path::to_path_buf).or_else(|| config.game_wad()).unwrap_or_else(|| {
@@ -83,12 +88,18 @@ impl Episode {
         });
         let map = MapRef::Wad { wads: vec![iwad, wad], map: Some(config.doom_map.clone()) };
         let opened = campaign::open(&map, &BuildOptions::default()).map_err(|e| ScenarioError::Open(e.to_string()))?;
-        let skill = config.doom_skill.clamp(1, 5) as u8;
+        Ok(Scenario { config: config.clone(), opened })
+    }
+
+    /// A new episode, its random generators seeded with `seed`, after the
+    /// start time's tics played with no input.
+    pub fn episode(&self, seed: u64) -> Result<Episode, ScenarioError> {
+        let skill = self.config.doom_skill.clamp(1, 5) as u8;
         let options = GameOptions { skill, seed, no_monsters: false };
-        let game = SimGame::new(opened, options).map_err(|e| ScenarioError::Open(e.to_string()))?;
+        let game = SimGame::new(self.opened.clone(), options).map_err(|e| ScenarioError::Open(e.to_string()))?;
         let mut episode = Episode {
             game,
-            config: config.clone(),
+            config: self.config.clone(),
             actions: 0,
             total_reward: 0.0,
             end: None,
@@ -96,13 +107,15 @@ impl Episode {
             leaving: false,
             turn_held: 0,
         };
-        for _ in 0..config.episode_start_time {
+        for _ in 0..self.config.episode_start_time {
             episode.game.command(Ticcmd::default());
         }
         episode.reward_global = episode.global(0);
         Ok(episode)
     }
+}
 
+impl Episode {
     /// ACS global variable `i` (16.16 where the scenario keeps a reward).
     pub fn global(&self, i: usize) -> i32 {
         self.game.scripts().map_or(0, |s| s.global(i))

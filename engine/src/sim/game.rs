@@ -111,22 +111,29 @@ impl SimGame {
         let skill = options.skill - 1;
         let players = Players { in_game: [true, false, false, false], console: 0 };
         let mut scripts = None;
-        let udmf = match &opened.map {
-            MapRef::Wad { wads, map: Some(name) } => {
-                let wad = crate::campaign::stack(wads).map_err(|e| error(e.to_string()))?;
-                wad.is_udmf(name).then_some((wad, name.clone()))
+        // The WADs as opened (read again only for a map opened otherwise).
+        let read;
+        let stacked = match (&opened.map, &opened.wad) {
+            (MapRef::Wad { .. }, Some(art)) => Some(&art.wad),
+            (MapRef::Wad { wads, .. }, None) => {
+                read = crate::campaign::stack(wads).map_err(|e| error(e.to_string()))?;
+                Some(&read)
             }
+            _ => None,
+        };
+        let udmf = match (&opened.map, &stacked) {
+            (MapRef::Wad { map: Some(name), .. }, Some(wad)) if wad.is_udmf(name) => Some((wad, name.clone())),
             _ => None,
         };
         let (sim, scene) = match (&opened.map, opened.links) {
             _ if udmf.is_some() => {
                 let Some((wad, name)) = udmf else { unreachable!() };
-                let (sim, loaded) = zdoom_sim(&wad, &name, &opened.level, &options, table, from).map_err(&error)?;
+                let (sim, loaded) = zdoom_sim(wad, &name, &opened.level, &options, table, from).map_err(&error)?;
                 scripts = loaded;
                 (sim, Scene::identity(&opened.level.compiled.map))
             }
-            (MapRef::Wad { wads, map: Some(name) }, Some(links)) => {
-                let wad = crate::campaign::stack(wads).map_err(|e| error(e.to_string()))?;
+            (MapRef::Wad { map: Some(name), .. }, Some(links)) => {
+                let Some(wad) = stacked else { unreachable!("a WAD map's WADs are stacked above") };
                 let sim = match from {
                     Some(from) => from.next_level_of(&wad, name),
                     None => {
@@ -758,7 +765,7 @@ fn zdoom_sim(
 ) -> Result<(Sim, Option<Box<Scripts>>), String> {
     let records = wad.map_records(name).map_err(|e| e.to_string())?;
     let udmf = wad.udmf(name).map_err(|e| e.to_string())?;
-    let table = crate::scenario::actor_table(wad, &table)?;
+    let (table, _unread) = crate::scenario::actor_table(wad, &table)?;
     let sim_level =
         from_map::level_from_udmf(&level.compiled, &table, &udmf, &records.map).map_err(|e| e.to_string())?;
     let skill = options.skill.saturating_sub(1);

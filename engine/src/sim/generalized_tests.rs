@@ -105,6 +105,7 @@ fn sim_game(m: &MapSource) -> SimGame {
         repairs: Vec::new(),
         report: None,
         links: None,
+        wad: None,
     };
     let options = GameOptions { skill: 3, no_monsters: true, ..GameOptions::default() };
     SimGame::new(opened, options).unwrap_or_else(|e| panic!("{e}"))

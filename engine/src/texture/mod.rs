@@ -221,7 +221,7 @@ fn list_paths(paths: &[PathBuf]) -> String {
 /// belongs to one map (one list of directories). Names that lead to the same
 /// source (a wall and a flat both named SKY, or `brick` and `BRICK` when no
 /// file tells them apart) share one texture and one id.
-#[derive(Debug, Default)]
+#[derive(Clone, Debug, Default)]
 pub struct TextureSet {
     textures: Vec<Texture>,
     names: Vec<String>,

@@ -6,6 +6,7 @@
 
 use super::doubles_ammo;
 use crate::actors::dehacked::{doom_info, Strings};
+use crate::actors::AmmoKind;
 use crate::fixed::{Fixed, FRACUNIT};
 use crate::sim::mobj::mf;
 use crate::sim::user::pw;
@@ -185,7 +186,11 @@ pub fn touch_special_thing(sim: &mut Sim, special: MobjId, toucher: MobjId) {
     let sprite = usize::try_from(s.sprite).ok().and_then(|i| doom_info().sprites.get(i));
     let Some(sprite) = sprite.map(String::as_str) else { return };
     let dropped = s.has(mf::DROPPED);
+    let kind = s.kind;
     let taken = match sprite {
+        _ if sim.info.things[kind].mt.is_none() && sim.info.table.actors[kind].pickup.is_some() => {
+            take_as_table_says(sim, n, kind)
+        }
         "BKEY" | "YKEY" | "RKEY" | "BSKU" | "YSKU" | "RSKU" => {
             take_key(sim, n, sprite);
             if sim.rules.netgame {
@@ -218,6 +223,48 @@ pub fn touch_special_thing(sim: &mut Sim, special: MobjId, toucher: MobjId) {
         };
         sim.sound_named(None, name);
     }
+}
+
+/// An actor Doom never had (a DECORATE item): what its pickup data
+/// gives, its message shown as written. Only health and ammunition are
+/// given this way; any other gift leaves the item where it is.
+fn take_as_table_says(sim: &mut Sim, n: usize, kind: usize) -> Taken {
+    let table = sim.info.table.clone();
+    let pickup = table.actors[kind].pickup.as_ref()?;
+    let double = doubles_ammo(&sim.rules);
+    let p = sim.players[n].as_mut()?;
+    let mut gave = false;
+    for give in &pickup.give {
+        match *give {
+            crate::actors::Give::Health { amount, max } => {
+                if p.health < max {
+                    p.health = (p.health + amount).min(max);
+                    gave = true;
+                }
+            }
+            crate::actors::Give::Ammo(kind, count) => {
+                let ammo = match kind {
+                    AmmoKind::Bullets => am::CLIP,
+                    AmmoKind::Shells => am::SHELL,
+                    AmmoKind::Cells => am::CELL,
+                    AmmoKind::Rockets => am::MISL,
+                };
+                let count = if double { count * 2 } else { count };
+                if p.ammo[ammo] < p.maxammo[ammo] {
+                    p.ammo[ammo] = (p.ammo[ammo] + count).min(p.maxammo[ammo]);
+                    gave = true;
+                }
+            }
+            _ => return None,
+        }
+    }
+    if !gave && !pickup.always {
+        return None;
+    }
+    let (mo, health) = (p.mo, p.health);
+    p.message = Some(pickup.message.clone()).filter(|m| !m.is_empty());
+    sim.mo_mut(mo).health = health;
+    Some(("", Sound::ItemUp))
 }
 
 /// A key: its message the first time, then the card.
