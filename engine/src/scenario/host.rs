@@ -191,7 +191,10 @@ impl SimHost<'_> {
             if !p.weaponowned[w] {
                 p.weaponowned[w] = true;
                 if unarmed {
-                    p.pendingweapon = Some(w);
+                    // As A_Lower hands over a weapon: it becomes the ready
+                    // one, coming up from the bottom.
+                    p.readyweapon = w;
+                    p.pendingweapon = None;
                     weapons::bring_up_weapon(self.sim, n);
                 }
             }
@@ -587,11 +590,12 @@ impl Host for SimHost<'_> {
                         if !p.weaponowned[w] {
                             return 0;
                         }
-                        if p.readyweapon != w || p.psprites[0].state.is_none() {
+                        if p.psprites[0].state.is_none() {
+                            p.readyweapon = w;
+                            p.pendingweapon = None;
+                            weapons::bring_up_weapon(self.sim, n);
+                        } else if p.readyweapon != w {
                             p.pendingweapon = Some(w);
-                            if p.psprites[0].state.is_none() {
-                                weapons::bring_up_weapon(self.sim, n);
-                            }
                         }
                         1
                     }
