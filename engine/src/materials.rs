@@ -211,11 +211,24 @@ impl Materials {
     /// `None`, and the actor keeps the last frame it could show.
     fn add_sprite_views(&mut self, map: &Map, library: &Library) {
         let table = ActorTable::active();
-        let roots = map.things.iter().filter_map(|t| table.index(&t.kind));
+        let roots: Vec<usize> = map.things.iter().filter_map(|t| table.index(&t.kind)).collect();
+        self.add_actor_views(table, roots, library);
+    }
+
+    /// Resolves the views of `actors` of `table` and of what they bring
+    /// into play, with the effects every game makes and every weapon (a
+    /// game whose scripts spawn actors by name, or whose table is a mod's
+    /// with sprites of its own, adds its actors this way; the table's
+    /// sprites must extend the active table's, as a layered table's do).
+    pub fn add_actor_views(&mut self, table: &ActorTable, actors: Vec<usize>, library: &Library) {
         let effects = ["bullet_puff", "blood", "teleport_fog", "item_fog"].into_iter().filter_map(|n| table.index(n));
         let weapons: Vec<usize> = (0..table.actors.len()).filter(|&i| table.actors[i].weapon.is_some()).collect();
-        self.sprite_views = vec![None; table.sprites.len() * SPRITE_FRAMES];
-        self.screen_views = vec![None; table.sprites.len() * SPRITE_FRAMES];
+        let slots = table.sprites.len() * SPRITE_FRAMES;
+        if self.sprite_views.len() < slots {
+            self.sprite_views.resize(slots, None);
+            self.screen_views.resize(slots, None);
+        }
+        let roots = actors.into_iter();
         for &w in &weapons {
             for label in ["Ready", "Deselect", "Select", "Fire", "Flash"] {
                 let Some(start) = table.actors[w].label(label) else { continue };

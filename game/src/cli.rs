@@ -209,7 +209,8 @@ pub struct CaptureArgs {
 #[derive(Args)]
 pub struct PlayArgs {
     /// A RON map, a compiled map, a campaign file, a WAD (its first map,
-    /// then its episode) or `WAD:MAP`. Default: maps/outpost.ron.
+    /// then its episode), `WAD:MAP`, or a ViZDoom scenario's `.cfg` (its
+    /// map at its skill, the reward on the HUD). Default: maps/outpost.ron.
     pub map: Option<String>,
     /// The IWAD under a PWAD (`--iwad freedoom2.wad mymap.wad:MAP01`).
     #[arg(long)]

@@ -27,8 +27,7 @@ pub fn autoplay(args: &AutoplayArgs) -> Result<()> {
         .with_context(|| format!("{}: cannot open the scenario", args.map))?;
     for k in 0..u64::from(args.episodes) {
         let seed = args.seed.wrapping_add(k);
-        let mut episode =
-            scenario.episode(seed).with_context(|| format!("{}: cannot start the scenario", args.map))?;
+        let mut episode = scenario.episode(seed).with_context(|| format!("{}: cannot start the scenario", args.map))?;
         let mut policy = RandomPolicy::new(seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ 0x5eed);
         let limit = args.max_ticks;
         while episode.end().is_none() && u64::from(episode.actions) < limit {

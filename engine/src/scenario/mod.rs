@@ -14,7 +14,7 @@ pub mod scripts;
 pub use cfg::{key_names, CfgError, Problem, KEY_COUNT};
 pub use config::{AutomapOptions, Outputs, RenderFlags, Rewards, ScenarioConfig};
 pub use names::{AutomapMode, Button, GameVariable, Mode, SamplingRate, ScreenFormat, ScreenResolution, RESOLUTIONS};
-pub use run::{End, Episode, RandomPolicy, Scenario, ScenarioError};
+pub use run::{map_of, reward_so_far, End, Episode, RandomPolicy, Scenario, ScenarioError};
 pub use scripts::Scripts;
 
 /// The actor table a ZDoom WAD plays with: `base` with the WAD's DECORATE

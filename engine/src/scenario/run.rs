@@ -69,6 +69,30 @@ pub enum ScenarioError {
     Open(String),
 }
 
+/// The map a scenario plays: its `.cfg`'s `doom_map` in its WAD, over
+/// `iwad`, else over the `.cfg`'s `doom_game_path`, else over
+/// `freedoom2.wad` where Doom ports look for it.
+pub fn map_of(config: &ScenarioConfig, iwad: Option<&Path>) -> Result<MapRef, ScenarioError> {
+    let label = config.base_dir.display().to_string();
+    let wad = config.scenario_wad().ok_or(ScenarioError::NoWad { cfg: label })?;
+    let iwad = iwad.map(Path::to_path_buf).or_else(|| config.game_wad()).unwrap_or_else(|| {
+        let dirs = campaign::wad_dirs();
+        campaign::find_wad(&PathBuf::from("freedoom2.wad"), &dirs)
+    });
+    Ok(MapRef::Wad { wads: vec![iwad, wad], map: Some(config.doom_map.clone()) })
+}
+
+/// The reward ViZDoom would have paid so far in a game of `config` played
+/// freely (the window's HUD): ACS global 0, plus the living reward for each
+/// tic after the start time, less the death penalty once dead.
+pub fn reward_so_far(game: &SimGame, config: &ScenarioConfig) -> f64 {
+    let global = game.scripts().map_or(0, |s| s.global(0));
+    let tics = game.ticks().saturating_sub(u64::from(config.episode_start_time));
+    let dead = game.player().health <= 0;
+    let penalty = if dead { config.rewards.death_penalty } else { 0.0 };
+    f64::from(global) / 65536.0 + config.rewards.living * tics as f64 - penalty
+}
+
 /// A scenario opened once: its `.cfg` and its map converted and compiled,
 /// so each episode starts from a copy.
 pub struct Scenario {
@@ -80,13 +104,7 @@ impl Scenario {
     /// `config`'s WAD on `iwad`, else on the `.cfg`'s `doom_game_path`,
     /// else on `freedoom2.wad` where Doom ports look for it.
     pub fn open(config: &ScenarioConfig, iwad: Option<&Path>) -> Result<Scenario, ScenarioError> {
-        let label = config.base_dir.display().to_string();
-        let wad = config.scenario_wad().ok_or(ScenarioError::NoWad { cfg: label })?;
-        let iwad = iwad.map(Path::to_path_buf).or_else(|| config.game_wad()).unwrap_or_else(|| {
-            let dirs = campaign::wad_dirs();
-            campaign::find_wad(&PathBuf::from("freedoom2.wad"), &dirs)
-        });
-        let map = MapRef::Wad { wads: vec![iwad, wad], map: Some(config.doom_map.clone()) };
+        let map = map_of(config, iwad)?;
         let opened = campaign::open(&map, &BuildOptions::default()).map_err(|e| ScenarioError::Open(e.to_string()))?;
         Ok(Scenario { config: config.clone(), opened })
     }

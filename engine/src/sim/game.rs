@@ -20,7 +20,7 @@ use super::draw::Scene;
 use super::intermission::Intermission;
 use super::setup::Players;
 use super::{demo, from_map, Compat, MobjId, PlayerState, Rules, Sim, SimEvent};
-use crate::actors::{sounds, ActorTable, KeyForm};
+use crate::actors::{sounds, zdoom, ActorTable, KeyForm};
 use crate::autopilot::observe::{Observe, Seen};
 use crate::campaign::{MapRef, Opened};
 use crate::level::Level;
@@ -97,7 +97,7 @@ impl SimGame {
     /// A game on `opened`: a new one, or `from`'s going on there (its
     /// players, random index and tic count, [`Sim::next_level`]).
     fn begin(
-        opened: Opened,
+        mut opened: Opened,
         options: GameOptions,
         table: std::sync::Arc<ActorTable>,
         from: Option<&Sim>,
@@ -128,7 +128,9 @@ impl SimGame {
         let (sim, scene) = match (&opened.map, opened.links) {
             _ if udmf.is_some() => {
                 let Some((wad, name)) = udmf else { unreachable!() };
-                let (sim, loaded) = zdoom_sim(wad, &name, &opened.level, &options, table, from).map_err(&error)?;
+                let library = crate::texture::Library { dirs: Vec::new(), wad: opened.wad.clone() };
+                let (sim, loaded) =
+                    zdoom_sim(wad, &name, &mut opened.level, &library, &options, table, from).map_err(&error)?;
                 scripts = loaded;
                 (sim, Scene::identity(&opened.level.compiled.map))
             }
@@ -758,7 +760,8 @@ mod tests {
 fn zdoom_sim(
     wad: &crate::wad::Wad,
     name: &str,
-    level: &Level,
+    level: &mut Level,
+    library: &crate::texture::Library,
     options: &GameOptions,
     table: std::sync::Arc<ActorTable>,
     from: Option<&Sim>,
@@ -784,6 +787,12 @@ fn zdoom_sim(
     if let Some(s) = scripts.as_mut() {
         s.begin(&sim);
     }
+    // What the scripts may spawn by name, and the WAD's own actors, are
+    // drawn too (the map's things alone brought the others' art in).
+    let table = &sim.info.table;
+    let named = scripts.iter().flat_map(|s| s.vm.module.strings.iter()).filter_map(|s| zdoom::find(table, s));
+    let own = ActorTable::active().actors.len()..table.actors.len();
+    level.materials.add_actor_views(table, named.chain(own).collect(), library);
     Ok((sim, scripts))
 }
 

@@ -56,6 +56,8 @@ pub struct App {
     /// The map file, watched for edits (live reload), and when it was last looked at.
     watch: Option<sightline::play::reload::Watch>,
     watched: Instant,
+    /// A ViZDoom scenario being played: its reward is shown.
+    scenario: Option<sightline::scenario::ScenarioConfig>,
     /// What stopped the loop, if something went wrong.
     pub error: Option<anyhow::Error>,
 }
@@ -75,6 +77,8 @@ pub struct AppOptions {
     pub frame_limit: Option<u64>,
     pub hud: bool,
     pub save_dir: std::path::PathBuf,
+    /// A ViZDoom scenario being played: its reward is shown.
+    pub scenario: Option<sightline::scenario::ScenarioConfig>,
 }
 
 impl App {
@@ -105,6 +109,7 @@ impl App {
             watch,
             watched: Instant::now(),
             save_dir: options.save_dir,
+            scenario: options.scenario,
             prompt: None,
             error: None,
         }
@@ -149,6 +154,10 @@ impl App {
         let name = map_label(play);
         self.hud.draw(&mut self.fb, &name, self.options.renderer.name());
         self.hud.draw_status(&mut self.fb, play.game.player());
+        if let Some(config) = &self.scenario {
+            let reward = sightline::scenario::reward_so_far(&play.game, config);
+            self.hud.draw_reward(&mut self.fb, reward);
+        }
         super::hud::draw_phase(&mut self.fb, &play.phase);
 
         let Some(screen) = &mut self.screen else { return Ok(()) };

@@ -103,6 +103,15 @@ impl Hud {
         }
     }
 
+    /// A scenario's reward so far, at the top right (shown with the HUD
+    /// off too: it is the point of the scenario).
+    pub fn draw_reward(&self, fb: &mut Framebuffer, reward: f64) {
+        let scale = text_scale(fb);
+        let text = format!("REWARD {reward:.2}");
+        let x = fb.width.saturating_sub((text.len() + 4) * GLYPH * scale);
+        draw_text(fb, x, scale * 4, scale, &text);
+    }
+
     pub fn draw(&self, fb: &mut Framebuffer, map_name: &str, renderer: &str) {
         if !self.visible {
             return;

@@ -52,7 +52,15 @@ pub fn run(args: &PlayArgs) -> Result<()> {
         Some(path) => Some(Demo::load(path)?),
         None => None,
     };
+    let scenario = match &args.map {
+        Some(path) if crate::scenario::is_cfg(path) => Some(sightline::scenario::ScenarioConfig::load(path)?),
+        _ => None,
+    };
     let map = match (&args.map, &demo, &args.demo) {
+        (_, _, _) if scenario.is_some() => {
+            let Some(config) = &scenario else { unreachable!() };
+            sightline::scenario::map_of(config, args.iwad.as_deref())?
+        }
         (_, _, _) if vanilla.is_some() => vanilla
             .as_ref()
             .map(|(map, _)| map.clone())
@@ -61,9 +69,13 @@ pub fn run(args: &PlayArgs) -> Result<()> {
         (None, Some(demo), Some(demo_path)) => crate::replay::demo_map(&demo.map, demo_path),
         _ => MapRef::File(crate::capture::default_map_path()),
     };
-    let game_options = match &demo {
-        Some(demo) => demo.options(),
-        None => GameOptions { skill: args.skill, seed: args.seed, no_monsters: args.no_monsters },
+    let game_options = match (&demo, &scenario) {
+        (Some(demo), _) => demo.options(),
+        (None, Some(config)) => {
+            let skill = config.doom_skill.clamp(1, 5) as u8;
+            GameOptions { skill, seed: args.seed, no_monsters: args.no_monsters }
+        }
+        (None, None) => GameOptions { skill: args.skill, seed: args.seed, no_monsters: args.no_monsters },
     };
     let play = match &args.load {
         Some(save) => Playthrough::load(save)?,
@@ -107,6 +119,7 @@ pub fn run(args: &PlayArgs) -> Result<()> {
         frame_limit: args.frames,
         hud: !args.no_hud,
         save_dir: args.save_dir.clone().unwrap_or_else(saves::default_dir),
+        scenario,
     };
     let mut app = App::new(session, options);
     let ran = event_loop.run_app(&mut app);
