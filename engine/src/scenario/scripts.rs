@@ -66,6 +66,12 @@ impl Scripts {
         }
     }
 
+    /// A player respawned in a net game: the RESPAWN scripts start with
+    /// its new body.
+    pub fn respawned(&mut self, body: MobjId) {
+        self.vm.start_typed(ScriptKind::Respawn, Activator::Thing(u64::from(body.0)), true, 0);
+    }
+
     /// After the simulation's tic: the thing specials it set off, then
     /// every script.
     pub fn tick(&mut self, sim: &mut Sim) {

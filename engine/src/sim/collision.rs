@@ -473,7 +473,9 @@ const BODYQUESIZE: usize = 32;
 /// (`P_CheckPosition`); then it joins the body queue (the oldest of 32
 /// corpses is removed) and a teleport fog appears 20 units ahead of the
 /// spot, with Chocolate's emulation of vanilla's negative fine angles
-/// (a spot facing west or south-west reads `finetangent`).
+/// (a spot facing west or south-west reads `finetangent`, putting the fog
+/// thousands of units away) under vanilla's rules, and truly ahead under
+/// Sightline's.
 ///
 /// `sim.bodyque` holds every body queued this level, so its length is
 /// Doom's `bodyqueslot`.
@@ -493,7 +495,14 @@ pub fn check_spot(sim: &mut Sim, n: usize, body: Option<MobjId>, spot: &crate::w
     sim.bodyque.push(mo);
     let sector = sim.level.subsectors[point_in_subsector(&sim.level, x, y)].sector;
     let floor = sim.level.sectors[sector].floorheight;
-    let (xa, ya) = spawn_fog_offset(i32::from(spot.angle));
+    let (xa, ya) = match sim.rules.compat {
+        super::Compat::Vanilla => spawn_fog_offset(i32::from(spot.angle)),
+        // The fog 20 units ahead of the spot, whichever way it faces.
+        super::Compat::Sightline => {
+            let fine = (super::setup::thing_angle(spot).0 >> crate::fixed::ANGLETOFINESHIFT) as usize;
+            (crate::fixed::finecosine(fine).0, crate::fixed::finesine(fine).0)
+        }
+    };
     let fog = sim.kind_of(mt::TFOG);
     let fog = sim.spawn_mobj(x + Fixed(xa.wrapping_mul(20)), y + Fixed(ya.wrapping_mul(20)), floor, fog);
     // No sound on the first frame (Doom's `viewz != 1` test).

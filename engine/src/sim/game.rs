@@ -19,7 +19,7 @@ use glam::DVec2;
 use super::draw::Scene;
 use super::intermission::Intermission;
 use super::setup::Players;
-use super::{demo, from_map, Compat, MobjId, PlayerState, Rules, Sim, SimEvent};
+use super::{demo, from_map, Compat, MobjId, PlayerState, Rules, Sim, SimEvent, MAXPLAYERS};
 use crate::actors::{sounds, zdoom, ActorTable, KeyForm};
 use crate::autopilot::observe::{Observe, Seen};
 use crate::campaign::{MapRef, Opened};
@@ -91,7 +91,14 @@ impl SimGame {
         options: GameOptions,
         table: std::sync::Arc<ActorTable>,
     ) -> Result<SimGame, SimGameError> {
-        SimGame::begin(opened, options, table, None)
+        SimGame::begin(opened, options, table, None, Seats::SINGLE)
+    }
+
+    /// A net game of `seats.players` players (1 to 4), deathmatch or
+    /// co-operative, on `opened`; the console player is player 1.
+    /// [`SimGame::command_all`] feeds every player.
+    pub fn netgame(opened: Opened, options: GameOptions, seats: Seats) -> Result<SimGame, SimGameError> {
+        SimGame::begin(opened, options, ActorTable::active().clone(), None, seats)
     }
 
     /// A game on `opened`: a new one, or `from`'s going on there (its
@@ -101,6 +108,7 @@ impl SimGame {
         options: GameOptions,
         table: std::sync::Arc<ActorTable>,
         from: Option<&Sim>,
+        seats: Seats,
     ) -> Result<SimGame, SimGameError> {
         let label = opened.map.label();
         let error = |what: String| SimGameError::Start { map: label.clone(), what };
@@ -109,7 +117,10 @@ impl SimGame {
             return Err(error(format!("skill {} is not 1 to 5", options.skill)));
         }
         let skill = options.skill - 1;
-        let players = Players { in_game: [true, false, false, false], console: 0 };
+        if !(1..=MAXPLAYERS).contains(&seats.players) {
+            return Err(error(format!("{} players: a game holds 1 to {MAXPLAYERS}", seats.players)));
+        }
+        let players = seats.players();
         let mut scripts = None;
         // The WADs as opened (read again only for a map opened otherwise).
         let read;
@@ -130,7 +141,7 @@ impl SimGame {
                 let Some((wad, name)) = udmf else { unreachable!() };
                 let library = crate::texture::Library { dirs: Vec::new(), wad: opened.wad.clone() };
                 let (sim, loaded) =
-                    zdoom_sim(wad, &name, &mut opened.level, &library, &options, table, from).map_err(&error)?;
+                    zdoom_sim(wad, &name, &mut opened.level, &library, &options, table, from, seats).map_err(&error)?;
                 scripts = loaded;
                 (sim, Scene::identity(&opened.level.compiled.map))
             }
@@ -142,7 +153,8 @@ impl SimGame {
                         let table = demo::table_for(&wad, &table).map_err(&error)?;
                         let mode = demo::game_mode(&wad);
                         let version = demo::game_version(mode);
-                        let rules = Rules { no_monsters: options.no_monsters, ..Rules::single(skill, version, mode) };
+                        let rules = seats
+                            .rules(Rules { no_monsters: options.no_monsters, ..Rules::single(skill, version, mode) });
                         Sim::new(&wad, name, rules, players, table)
                     }
                 };
@@ -152,11 +164,11 @@ impl SimGame {
             _ => {
                 let compiled = &opened.level.compiled;
                 let level = from_map::level_from_map(compiled, &table).map_err(|e| error(e.to_string()))?;
-                let rules = Rules {
+                let rules = seats.rules(Rules {
                     compat: Compat::Sightline,
                     no_monsters: options.no_monsters,
                     ..Rules::single(skill, super::GameVersion::Doom19, super::GameMode::Commercial)
-                };
+                });
                 let mut sim = match from {
                     Some(from) => from.next_level(level, |_| {}),
                     None => {
@@ -205,7 +217,8 @@ impl SimGame {
     /// the tic count carried on, as vanilla carries them.
     pub fn next_level(opened: Opened, options: GameOptions, from: &SimGame) -> Result<SimGame, SimGameError> {
         let table = from.sim.info.table.clone();
-        SimGame::begin(opened, options, table, Some(&from.sim))
+        let seats = Seats { players: from.sim.players.iter().flatten().count(), deathmatch: from.sim.rules.deathmatch };
+        SimGame::begin(opened, options, table, Some(&from.sim), seats)
     }
 
     /// The console player died and pressed use (`PST_REBORN`): the game
@@ -329,13 +342,32 @@ impl SimGame {
     /// One tic from a Doom command. After the level has ended tics do
     /// nothing.
     pub fn command(&mut self, cmd: Ticcmd) {
+        self.command_all(&[Some(cmd), None, None, None]);
+    }
+
+    /// One tic of a net game: each player's command (`None`: as before).
+    /// A player reborn in a net game respawns first (`G_DoReborn`), and a
+    /// ZDoom map's RESPAWN scripts start for it. The console player's
+    /// commands are the ones kept.
+    pub fn command_all(&mut self, cmds: &[Option<Ticcmd>; MAXPLAYERS]) {
         self.events.clear();
         if self.sim.exit.is_some() {
             return;
         }
+        if self.sim.rules.netgame {
+            for n in 0..MAXPLAYERS {
+                if self.sim.player(n).is_some_and(|p| p.playerstate == PlayerState::Reborn) {
+                    self.sim.respawn_in_netgame(n);
+                    if let (Some(scripts), Some(p)) = (self.scripts.as_mut(), self.sim.player(n)) {
+                        scripts.respawned(p.mo);
+                    }
+                }
+            }
+        }
         self.before = self.after;
-        self.commands.push(cmd);
-        self.sim.tick(&[Some(cmd), None, None, None]);
+        let console = self.sim.console;
+        self.commands.push(cmds[console].unwrap_or_default());
+        self.sim.tick(cmds);
         if let Some(scripts) = self.scripts.as_mut() {
             scripts.tick(&mut self.sim);
         }
@@ -765,6 +797,7 @@ fn zdoom_sim(
     options: &GameOptions,
     table: std::sync::Arc<ActorTable>,
     from: Option<&Sim>,
+    seats: Seats,
 ) -> Result<(Sim, Option<Box<Scripts>>), String> {
     let records = wad.map_records(name).map_err(|e| e.to_string())?;
     let udmf = wad.udmf(name).map_err(|e| e.to_string())?;
@@ -772,12 +805,12 @@ fn zdoom_sim(
     let sim_level =
         from_map::level_from_udmf(&level.compiled, &table, &udmf, &records.map).map_err(|e| e.to_string())?;
     let skill = options.skill.saturating_sub(1);
-    let rules = Rules {
+    let rules = seats.rules(Rules {
         compat: Compat::Sightline,
         no_monsters: options.no_monsters,
         ..Rules::single(skill, super::GameVersion::Doom19, super::GameMode::Commercial)
-    };
-    let players = Players { in_game: [true, false, false, false], console: 0 };
+    });
+    let players = seats.players();
     let mut sim = match from {
         Some(from) => from.next_level(sim_level, |_| {}),
         None => from_map::sim_on_map(sim_level, rules, players, table),
@@ -804,4 +837,24 @@ fn measure_textures(sim: &mut Sim, level: &Level) {
         Some((name.clone(), crate::fixed::Fixed::from_int(textures.get(id).height as i32)))
     });
     sim.spec.texture_heights = heights.collect();
+}
+
+/// Who plays a game: how many players, and whether it is deathmatch.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Seats {
+    pub players: usize,
+    /// 0 co-operative, 1 deathmatch, 2 altdeath.
+    pub deathmatch: u8,
+}
+
+impl Seats {
+    pub const SINGLE: Seats = Seats { players: 1, deathmatch: 0 };
+
+    fn players(self) -> Players {
+        Players { in_game: std::array::from_fn(|n| n < self.players), console: 0 }
+    }
+
+    fn rules(self, rules: Rules) -> Rules {
+        Rules { deathmatch: self.deathmatch, netgame: self.players > 1 || self.deathmatch != 0, ..rules }
+    }
 }

@@ -110,7 +110,7 @@ pub fn xy_movement(sim: &mut Sim, id: MobjId) {
             xmove = Fixed::ZERO;
             ymove = Fixed::ZERO;
         }
-        if !collision::try_move(sim, id, ptryx, ptryy) {
+        if through_wall(sim, id, ptryx, ptryy) || !collision::try_move(sim, id, ptryx, ptryy) {
             if sim.mo(id).player.is_some() {
                 collision::slide_move(sim, id);
             } else if sim.mo(id).has(mf::MISSILE) {
@@ -121,6 +121,12 @@ pub fn xy_movement(sim: &mut Sim, id: MobjId) {
                     return;
                 }
                 explode_missile(sim, id);
+                if sim.rules.compat == super::Compat::Sightline {
+                    // Vanilla moves the exploded missile on by the rest of
+                    // its split step (its momentum is gone, the step's
+                    // remainder is not); under Sightline's rules it stays.
+                    break;
+                }
             } else {
                 let mo = sim.mo_mut(id);
                 mo.momx = Fixed::ZERO;
@@ -132,6 +138,32 @@ pub fn xy_movement(sim: &mut Sim, id: MobjId) {
         }
     }
     apply_friction(sim, id, player);
+}
+
+/// Under Sightline's rules, whether a missile too thin for its step
+/// would pass through a wall on it. Doom's (and ZDoom's) line checks test
+/// only the box where a move ends, so a missile narrower than half its step
+/// skips any line between (a DECORATE rocket of radius 0, rocket_basic's,
+/// leaves the map through the wall behind its target); here the step's
+/// path is traced and the first line it cannot pass stops it. Missiles
+/// pass blocking lines, as in Doom; a two-sided line stops one that does
+/// not fit its opening.
+fn through_wall(sim: &mut Sim, id: MobjId, x: Fixed, y: Fixed) -> bool {
+    let mo = sim.mo(id);
+    let step = (x - mo.x).abs().max((y - mo.y).abs());
+    if sim.rules.compat != super::Compat::Sightline || !mo.has(mf::MISSILE) || mo.radius.0 * 2 >= step.0 {
+        return false;
+    }
+    let (x1, y1, bottom, top) = (mo.x, mo.y, mo.z, mo.z + mo.height);
+    let mut blocked = false;
+    super::maputl::path_traverse(sim, x1, y1, x, y, super::maputl::PT_ADDLINES, |sim, hit, _| {
+        let super::maputl::Hit::Line(line) = hit.hit else { return true };
+        super::maputl::line_opening(sim, line);
+        let o = sim.tm.opening;
+        blocked = o.range <= Fixed::ZERO || bottom < o.bottom || top > o.top;
+        !blocked
+    });
+    blocked
 }
 
 fn clamp_move(m: Fixed) -> Fixed {
@@ -387,12 +419,14 @@ pub fn spawn_blood(sim: &mut Sim, x: Fixed, y: Fixed, z: Fixed, damage: i32) {
 /// fit there.
 pub fn check_missile_spawn(sim: &mut Sim, th: MobjId) {
     shorten_tics(sim, th);
+    let mo = sim.mo(th);
+    let thin = through_wall(sim, th, mo.x + (mo.momx >> 1), mo.y + (mo.momy >> 1));
     let mo = sim.mo_mut(th);
     mo.x += mo.momx >> 1;
     mo.y += mo.momy >> 1;
     mo.z += mo.momz >> 1;
     let (x, y) = (mo.x, mo.y);
-    if !collision::try_move(sim, th, x, y) {
+    if thin || !collision::try_move(sim, th, x, y) {
         explode_missile(sim, th);
     }
 }

@@ -341,7 +341,7 @@ impl Sim {
 
 /// A map thing's angle as Doom rounds it: down to a multiple of 45 degrees
 /// (C's division, towards zero), times `ANG45`, wrapping.
-fn thing_angle(thing: &WadThing) -> Angle {
+pub(super) fn thing_angle(thing: &WadThing) -> Angle {
     Angle(ANG45.0.wrapping_mul((i32::from(thing.angle) / 45) as u32))
 }
 

@@ -205,7 +205,8 @@ impl super::Wad {
 /// ViZDoom's ZDoom 2.8 sets them up, `P_SpawnSpecials`; see
 /// `docs/zdoom-facts.md`): Doom's types 1-17 moved up by 64, the lava
 /// floors (82: 5, 83: 8 damage every 32 tics, through a suit), instant
-/// death (115: a million every tic), and the bits over the low byte (256,
+/// death (115: ZDoom's million every tic, here the map model's
+/// most, 1000), and the bits over the low byte (256,
 /// 512, 768: Boom's 5, 10 and 20 damage every 32 tics; 1024: a secret).
 /// `None` for the rest.
 pub fn zdoom_sector_special(n: i64) -> Option<SectorSpecial> {
@@ -219,7 +220,9 @@ pub fn zdoom_sector_special(n: i64) -> Option<SectorSpecial> {
             SectorSpecial { damage: Some(damage), ..SectorSpecial::default() }
         }
         115 => {
-            let damage = Damage { amount: 1_000_000, every: 1, exit_below: 0, suit: Suit::Useless };
+            // ZDoom's million; the map model's most, 1000, kills as surely
+            // (god mode too, as Doom's telefrag does).
+            let damage = Damage { amount: 1000, every: 1, exit_below: 0, suit: Suit::Useless };
             SectorSpecial { damage: Some(damage), ..SectorSpecial::default() }
         }
         _ => return None,
