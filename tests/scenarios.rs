@@ -12,7 +12,7 @@ use rand::{RngExt, SeedableRng};
 use sightline::fixed::{point_to_angle2, Fixed};
 use sightline::play::lmp::{buttons, Ticcmd};
 use sightline::scenario::{Button, End, Episode, Scenario, ScenarioConfig};
-use sightline::sim::game::Seats;
+use sightline::sim::game::Setup;
 use sightline::sim::{MobjId, MAXPLAYERS};
 use sightline::wad::Wad;
 use sightline_tests::freedoom_wads;
@@ -96,16 +96,20 @@ fn every_scenario_runs_2100_tics_of_random_input_on_skill_5() {
     for wad in vizdoom::WADS {
         let mut config = cfg_for(&dir, wad);
         config.doom_skill = 5;
-        let seats = if MULTIPLAYER.contains(&wad) { Seats { players: 2, deathmatch: 1 } } else { Seats::SINGLE };
+        let setup = if MULTIPLAYER.contains(&wad) {
+            Setup { players: 2, deathmatch: 1, no_autoaim: false }
+        } else {
+            Setup::SINGLE
+        };
         for map in Wad::open(&dir.join(format!("{wad}.wad"))).unwrap().map_names() {
             config.doom_map = map.clone();
             let what = format!("{wad}.wad {map}");
             let scenario = open(&config);
-            let mut episode = scenario.episode_with(7, seats).unwrap_or_else(|e| panic!("{what}: {e}"));
+            let mut episode = scenario.episode_with(7, setup).unwrap_or_else(|e| panic!("{what}: {e}"));
             let mut rng = ChaCha8Rng::seed_from_u64(maps);
             for tic in 0..2100 {
                 let cmds: [Option<Ticcmd>; MAXPLAYERS] =
-                    std::array::from_fn(|n| (n < seats.players).then(|| random_command(&mut rng)));
+                    std::array::from_fn(|n| (n < setup.players).then(|| random_command(&mut rng)));
                 episode.game.command_all(&cmds);
                 if tic % 50 == 0 {
                     check_bodies(&episode, &what);

@@ -247,6 +247,13 @@ impl ScenarioConfig {
         self.doom_scenario_path.as_deref().map(|p| self.resolve(p))
     }
 
+    /// Whether `game_args` turn autoaim off (`+sv_noautoaim 1`, as
+    /// rocket_basic and predict_position do); the other ZDoom settings
+    /// they may give are not read.
+    pub fn no_autoaim(&self) -> bool {
+        self.game_args.windows(2).any(|w| w[0].eq_ignore_ascii_case("+sv_noautoaim") && w[1] != "0")
+    }
+
     /// `doom_game_path`, resolved.
     pub fn game_wad(&self) -> Option<PathBuf> {
         self.doom_game_path.as_deref().map(|p| self.resolve(p))

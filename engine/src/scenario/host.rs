@@ -10,7 +10,8 @@
 //!   (ZDoom's `DoGiveInv`): `ClipBox` 6 gives 6 bullets, not six boxes,
 //!   and Nightmare and the easiest skill double it as they double pickups;
 //!   a weapon gives its own ammunition (`Weapon.AmmoGive`) and comes up
-//!   only if the player holds none.
+//!   only if the player holds none (from the next tic, as ZDoom's player
+//!   brings a weapon up for an unarmed player when it next thinks).
 //! - `Spawn` places the thing at the height given (0: the floor, on these
 //!   maps at 0) and removes it again when it does not fit there
 //!   (`P_TestMobjLocation`), returning 0; a spawned pickup is `DROPPED`.
@@ -191,11 +192,8 @@ impl SimHost<'_> {
             if !p.weaponowned[w] {
                 p.weaponowned[w] = true;
                 if unarmed {
-                    // As A_Lower hands over a weapon: it becomes the ready
-                    // one, coming up from the bottom.
-                    p.readyweapon = w;
-                    p.pendingweapon = None;
-                    weapons::bring_up_weapon(self.sim, n);
+                    // It comes up from the next tic on (`Scripts::tick`).
+                    p.pendingweapon = Some(w);
                 }
             }
             return;
@@ -590,11 +588,7 @@ impl Host for SimHost<'_> {
                         if !p.weaponowned[w] {
                             return 0;
                         }
-                        if p.psprites[0].state.is_none() {
-                            p.readyweapon = w;
-                            p.pendingweapon = None;
-                            weapons::bring_up_weapon(self.sim, n);
-                        } else if p.readyweapon != w {
+                        if p.readyweapon != w || p.psprites[0].state.is_none() {
                             p.pendingweapon = Some(w);
                         }
                         1

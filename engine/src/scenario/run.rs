@@ -25,7 +25,7 @@ use crate::bsp::BuildOptions;
 use crate::campaign::{self, MapRef, Opened};
 use crate::play::lmp::{buttons, Ticcmd};
 use crate::play::GameOptions;
-use crate::sim::game::{Seats, SimGame};
+use crate::sim::game::{Setup, SimGame};
 
 /// How an episode ended.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
@@ -112,17 +112,17 @@ impl Scenario {
     /// A new episode, its random generators seeded with `seed`, after the
     /// start time's tics played with no input.
     pub fn episode(&self, seed: u64) -> Result<Episode, ScenarioError> {
-        self.episode_with(seed, Seats::SINGLE)
+        self.episode_with(seed, Setup { no_autoaim: self.config.no_autoaim(), ..Setup::SINGLE })
     }
 
-    /// [`Scenario::episode`] with `seats` players (a multiplayer scenario:
+    /// [`Scenario::episode`] with `setup` players (a multiplayer scenario:
     /// the others' commands go in through `Episode::game`'s
     /// `command_all`; [`Episode::step`] plays the first player's).
-    pub fn episode_with(&self, seed: u64, seats: Seats) -> Result<Episode, ScenarioError> {
+    pub fn episode_with(&self, seed: u64, setup: Setup) -> Result<Episode, ScenarioError> {
         let skill = self.config.doom_skill.clamp(1, 5) as u8;
         let options = GameOptions { skill, seed, no_monsters: false };
         let game =
-            SimGame::netgame(self.opened.clone(), options, seats).map_err(|e| ScenarioError::Open(e.to_string()))?;
+            SimGame::netgame(self.opened.clone(), options, setup).map_err(|e| ScenarioError::Open(e.to_string()))?;
         let mut episode = Episode {
             game,
             config: self.config.clone(),

@@ -75,6 +75,17 @@ impl Scripts {
     /// After the simulation's tic: the thing specials it set off, then
     /// every script.
     pub fn tick(&mut self, sim: &mut Sim) {
+        // A weapon given to an unarmed player last tic came up as the
+        // player thought this tic (ZDoom's `P_BringUpWeapon` for a player
+        // with no ready weapon): it becomes the ready one, rising.
+        for n in 0..MAXPLAYERS {
+            let Some(p) = sim.players[n].as_mut() else { continue };
+            if let (None, Some(w)) = (p.psprites[0].state, p.pendingweapon) {
+                p.readyweapon = w;
+                p.pendingweapon = None;
+                crate::sim::weapons::bring_up_weapon(sim, n);
+            }
+        }
         let fired = std::mem::take(&mut sim.zdoom.fired);
         for f in fired {
             self.run_special(sim, f);

@@ -91,14 +91,14 @@ impl SimGame {
         options: GameOptions,
         table: std::sync::Arc<ActorTable>,
     ) -> Result<SimGame, SimGameError> {
-        SimGame::begin(opened, options, table, None, Seats::SINGLE)
+        SimGame::begin(opened, options, table, None, Setup::SINGLE)
     }
 
-    /// A net game of `seats.players` players (1 to 4), deathmatch or
+    /// A net game of `setup.players` players (1 to 4), deathmatch or
     /// co-operative, on `opened`; the console player is player 1.
     /// [`SimGame::command_all`] feeds every player.
-    pub fn netgame(opened: Opened, options: GameOptions, seats: Seats) -> Result<SimGame, SimGameError> {
-        SimGame::begin(opened, options, ActorTable::active().clone(), None, seats)
+    pub fn netgame(opened: Opened, options: GameOptions, setup: Setup) -> Result<SimGame, SimGameError> {
+        SimGame::begin(opened, options, ActorTable::active().clone(), None, setup)
     }
 
     /// A game on `opened`: a new one, or `from`'s going on there (its
@@ -108,7 +108,7 @@ impl SimGame {
         options: GameOptions,
         table: std::sync::Arc<ActorTable>,
         from: Option<&Sim>,
-        seats: Seats,
+        setup: Setup,
     ) -> Result<SimGame, SimGameError> {
         let label = opened.map.label();
         let error = |what: String| SimGameError::Start { map: label.clone(), what };
@@ -117,10 +117,10 @@ impl SimGame {
             return Err(error(format!("skill {} is not 1 to 5", options.skill)));
         }
         let skill = options.skill - 1;
-        if !(1..=MAXPLAYERS).contains(&seats.players) {
-            return Err(error(format!("{} players: a game holds 1 to {MAXPLAYERS}", seats.players)));
+        if !(1..=MAXPLAYERS).contains(&setup.players) {
+            return Err(error(format!("{} players: a game holds 1 to {MAXPLAYERS}", setup.players)));
         }
-        let players = seats.players();
+        let players = setup.players();
         let mut scripts = None;
         // The WADs as opened (read again only for a map opened otherwise).
         let read;
@@ -141,7 +141,7 @@ impl SimGame {
                 let Some((wad, name)) = udmf else { unreachable!() };
                 let library = crate::texture::Library { dirs: Vec::new(), wad: opened.wad.clone() };
                 let (sim, loaded) =
-                    zdoom_sim(wad, &name, &mut opened.level, &library, &options, table, from, seats).map_err(&error)?;
+                    zdoom_sim(wad, &name, &mut opened.level, &library, &options, table, from, setup).map_err(&error)?;
                 scripts = loaded;
                 (sim, Scene::identity(&opened.level.compiled.map))
             }
@@ -153,7 +153,7 @@ impl SimGame {
                         let table = demo::table_for(&wad, &table).map_err(&error)?;
                         let mode = demo::game_mode(&wad);
                         let version = demo::game_version(mode);
-                        let rules = seats
+                        let rules = setup
                             .rules(Rules { no_monsters: options.no_monsters, ..Rules::single(skill, version, mode) });
                         Sim::new(&wad, name, rules, players, table)
                     }
@@ -164,7 +164,7 @@ impl SimGame {
             _ => {
                 let compiled = &opened.level.compiled;
                 let level = from_map::level_from_map(compiled, &table).map_err(|e| error(e.to_string()))?;
-                let rules = seats.rules(Rules {
+                let rules = setup.rules(Rules {
                     compat: Compat::Sightline,
                     no_monsters: options.no_monsters,
                     ..Rules::single(skill, super::GameVersion::Doom19, super::GameMode::Commercial)
@@ -217,8 +217,10 @@ impl SimGame {
     /// the tic count carried on, as vanilla carries them.
     pub fn next_level(opened: Opened, options: GameOptions, from: &SimGame) -> Result<SimGame, SimGameError> {
         let table = from.sim.info.table.clone();
-        let seats = Seats { players: from.sim.players.iter().flatten().count(), deathmatch: from.sim.rules.deathmatch };
-        SimGame::begin(opened, options, table, Some(&from.sim), seats)
+        let rules = from.sim.rules;
+        let players = from.sim.players.iter().flatten().count();
+        let setup = Setup { players, deathmatch: rules.deathmatch, no_autoaim: rules.no_autoaim };
+        SimGame::begin(opened, options, table, Some(&from.sim), setup)
     }
 
     /// The console player died and pressed use (`PST_REBORN`): the game
@@ -797,7 +799,7 @@ fn zdoom_sim(
     options: &GameOptions,
     table: std::sync::Arc<ActorTable>,
     from: Option<&Sim>,
-    seats: Seats,
+    setup: Setup,
 ) -> Result<(Sim, Option<Box<Scripts>>), String> {
     let records = wad.map_records(name).map_err(|e| e.to_string())?;
     let udmf = wad.udmf(name).map_err(|e| e.to_string())?;
@@ -805,12 +807,12 @@ fn zdoom_sim(
     let sim_level =
         from_map::level_from_udmf(&level.compiled, &table, &udmf, &records.map).map_err(|e| e.to_string())?;
     let skill = options.skill.saturating_sub(1);
-    let rules = seats.rules(Rules {
+    let rules = setup.rules(Rules {
         compat: Compat::Sightline,
         no_monsters: options.no_monsters,
         ..Rules::single(skill, super::GameVersion::Doom19, super::GameMode::Commercial)
     });
-    let players = seats.players();
+    let players = setup.players();
     let mut sim = match from {
         Some(from) => from.next_level(sim_level, |_| {}),
         None => from_map::sim_on_map(sim_level, rules, players, table),
@@ -839,22 +841,28 @@ fn measure_textures(sim: &mut Sim, level: &Level) {
     sim.spec.texture_heights = heights.collect();
 }
 
-/// Who plays a game: how many players, and whether it is deathmatch.
+/// How a game is set up beyond its skill: how many players, whether it is
+/// deathmatch, and the server settings a ViZDoom scenario's `game_args`
+/// give (`+sv_noautoaim 1`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Seats {
+pub struct Setup {
     pub players: usize,
     /// 0 co-operative, 1 deathmatch, 2 altdeath.
     pub deathmatch: u8,
+    /// Players' shots and missiles go where they face (ZDoom's
+    /// `sv_noautoaim`).
+    pub no_autoaim: bool,
 }
 
-impl Seats {
-    pub const SINGLE: Seats = Seats { players: 1, deathmatch: 0 };
+impl Setup {
+    pub const SINGLE: Setup = Setup { players: 1, deathmatch: 0, no_autoaim: false };
 
     fn players(self) -> Players {
         Players { in_game: std::array::from_fn(|n| n < self.players), console: 0 }
     }
 
     fn rules(self, rules: Rules) -> Rules {
-        Rules { deathmatch: self.deathmatch, netgame: self.players > 1 || self.deathmatch != 0, ..rules }
+        let netgame = self.players > 1 || self.deathmatch != 0;
+        Rules { deathmatch: self.deathmatch, netgame, no_autoaim: self.no_autoaim, ..rules }
     }
 }

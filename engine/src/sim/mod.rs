@@ -150,6 +150,10 @@ pub struct Rules {
     pub no_monsters: bool,
     /// Several players share the game (`netgame`).
     pub netgame: bool,
+    /// Players do not aim up, down or sideways at what they face (ZDoom's
+    /// `sv_noautoaim`, which two ViZDoom scenarios set; never on Doom's
+    /// maps).
+    pub no_autoaim: bool,
 }
 
 impl Rules {
@@ -169,6 +173,7 @@ impl Rules {
             fast: false,
             no_monsters: false,
             netgame: false,
+            no_autoaim: false,
         }
     }
 

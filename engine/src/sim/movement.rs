@@ -110,7 +110,13 @@ pub fn xy_movement(sim: &mut Sim, id: MobjId) {
             xmove = Fixed::ZERO;
             ymove = Fixed::ZERO;
         }
-        if through_wall(sim, id, ptryx, ptryy) || !collision::try_move(sim, id, ptryx, ptryy) {
+        if through_wall(sim, id, ptryx, ptryy) {
+            // Gone through the wall, as in Doom and ZDoom, but out of the
+            // game rather than flying on outside the map.
+            sim.remove_mobj(id);
+            return;
+        }
+        if !collision::try_move(sim, id, ptryx, ptryy) {
             if sim.mo(id).player.is_some() {
                 collision::slide_move(sim, id);
             } else if sim.mo(id).has(mf::MISSILE) {
@@ -141,13 +147,15 @@ pub fn xy_movement(sim: &mut Sim, id: MobjId) {
 }
 
 /// Under Sightline's rules, whether a missile too thin for its step
-/// would pass through a wall on it. Doom's (and ZDoom's) line checks test
-/// only the box where a move ends, so a missile narrower than half its step
-/// skips any line between (a DECORATE rocket of radius 0, rocket_basic's,
-/// leaves the map through the wall behind its target); here the step's
-/// path is traced and the first line it cannot pass stops it. Missiles
-/// pass blocking lines, as in Doom; a two-sided line stops one that does
-/// not fit its opening.
+/// passes through a wall on it. Doom's (and ZDoom's) line checks test only
+/// the box where a move ends, so a missile narrower than half its step
+/// skips any line between: rocket_basic's DECORATE rocket, of radius 0,
+/// goes through the wall behind its target in ViZDoom and explodes (if
+/// ever) out of sight of it, which the scenario's odds depend on. Here the
+/// step's path is traced, and a missile that crosses a line it could not
+/// pass (one-sided, or an opening it does not fit; blocking lines do not
+/// stop missiles, as in Doom) leaves the game there (`xy_movement`), so
+/// no body flies on outside the map.
 fn through_wall(sim: &mut Sim, id: MobjId, x: Fixed, y: Fixed) -> bool {
     let mo = sim.mo(id);
     let step = (x - mo.x).abs().max((y - mo.y).abs());
@@ -420,13 +428,16 @@ pub fn spawn_blood(sim: &mut Sim, x: Fixed, y: Fixed, z: Fixed, damage: i32) {
 pub fn check_missile_spawn(sim: &mut Sim, th: MobjId) {
     shorten_tics(sim, th);
     let mo = sim.mo(th);
-    let thin = through_wall(sim, th, mo.x + (mo.momx >> 1), mo.y + (mo.momy >> 1));
+    if through_wall(sim, th, mo.x + (mo.momx >> 1), mo.y + (mo.momy >> 1)) {
+        sim.remove_mobj(th);
+        return;
+    }
     let mo = sim.mo_mut(th);
     mo.x += mo.momx >> 1;
     mo.y += mo.momy >> 1;
     mo.z += mo.momz >> 1;
     let (x, y) = (mo.x, mo.y);
-    if thin || !collision::try_move(sim, th, x, y) {
+    if !collision::try_move(sim, th, x, y) {
         explode_missile(sim, th);
     }
 }
@@ -475,8 +486,11 @@ pub fn spawn_missile(sim: &mut Sim, source: MobjId, dest: MobjId, kind: usize) -
 pub fn spawn_player_missile(sim: &mut Sim, source: MobjId, kind: usize) {
     let range = Fixed(16 * 64 * FRACUNIT);
     let mut an = sim.mo(source).angle;
-    let mut slope = collision::aim_line_attack(sim, source, an, range);
-    if sim.tm.linetarget.is_none() {
+    let mut slope = Fixed::ZERO;
+    if !sim.rules.no_autoaim {
+        slope = collision::aim_line_attack(sim, source, an, range);
+    }
+    if !sim.rules.no_autoaim && sim.tm.linetarget.is_none() {
         an += Angle(1 << 26);
         slope = collision::aim_line_attack(sim, source, an, range);
         if sim.tm.linetarget.is_none() {

@@ -452,6 +452,9 @@ fn fire_plasma(sim: &mut Sim, n: usize, kind: usize) {
 /// `P_BulletSlope`: the slope to a monster straight ahead, or a little to
 /// the right, or to the left (the last try's slope when none is found).
 fn bullet_slope(sim: &mut Sim, mo: MobjId) -> Fixed {
+    if sim.rules.no_autoaim {
+        return Fixed::ZERO;
+    }
     let mut an = sim.mo(mo).angle;
     let mut slope = collision::aim_line_attack(sim, mo, an, AIMRANGE);
     if sim.tm.linetarget.is_none() {
