@@ -368,6 +368,11 @@ def report(rows, args, errors):
             f"| {fmt_ms(vr, 2)} | {fmt_ms(sr, 2)} | {fmt_p(welch_p(vr, sr) if sl else None)} "
             f"| {end_shares(vz)} | {end_shares(sl) if sl else '–'} |"
         )
+    lines += [
+        "",
+        "Made by `scripts/vizdoom-compare.py` (ViZDoom's side cached in `docs/vizdoom-reference.json`); "
+        "what the differences come from is in ARCHITECTURE.md, \"ZDoom-format scenarios\".",
+    ]
     if errors:
         lines += ["", "Sightline's side failed for:", ""]
         lines += [f"- {name}: {err}" for name, err in errors]

@@ -9,7 +9,7 @@
 
 use crate::bsp::BuildOptions;
 use crate::campaign::{open, Campaign, CampaignError, MapRef};
-use crate::sim::game::{SimGame, SimGameError};
+use crate::sim::game::{Setup, SimGame, SimGameError};
 use crate::sim::intermission::Intermission;
 
 use super::world::Exit;
@@ -57,22 +57,38 @@ pub struct Playthrough {
 impl Playthrough {
     /// Starts `campaign` on `map` (its first map when `None`).
     pub fn new(campaign: Campaign, map: Option<MapRef>, options: GameOptions) -> Result<Playthrough, PlaythroughError> {
+        Playthrough::set_up(campaign, map, options, Setup::SINGLE)
+    }
+
+    /// [`Playthrough::new`] with a game set up otherwise (a ViZDoom
+    /// scenario's server settings); the levels after keep it.
+    pub fn set_up(
+        campaign: Campaign,
+        map: Option<MapRef>,
+        options: GameOptions,
+        setup: Setup,
+    ) -> Result<Playthrough, PlaythroughError> {
         let build = BuildOptions::default();
         let map = map.unwrap_or_else(|| campaign.first());
         let opened = open(&map, &build)?;
         let map = opened.map.clone();
-        let game = SimGame::new(opened, options)?;
+        let game = SimGame::netgame(opened, options, setup)?;
         Ok(Playthrough { campaign, map, game, phase: Phase::Playing, ticks: 0, build })
     }
 
     /// Starts on a command-line map: a WAD, `WAD:MAP`, a campaign file or a map.
     pub fn of(map: &MapRef, options: GameOptions) -> Result<Playthrough, PlaythroughError> {
+        Playthrough::of_set_up(map, options, Setup::SINGLE)
+    }
+
+    /// [`Playthrough::of`] with a game set up otherwise.
+    pub fn of_set_up(map: &MapRef, options: GameOptions, setup: Setup) -> Result<Playthrough, PlaythroughError> {
         let campaign = Campaign::of(map)?;
         let start = match (&campaign, map) {
             (Campaign::List { .. }, _) | (Campaign::Wad { .. }, MapRef::Wad { map: None, .. }) => None,
             _ => Some(map.clone()),
         };
-        Playthrough::new(campaign, start, options)
+        Playthrough::set_up(campaign, start, options, setup)
     }
 
     pub fn options(&self) -> GameOptions {

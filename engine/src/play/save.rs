@@ -99,6 +99,11 @@ impl Playthrough {
         if self.phase != Phase::Playing {
             return Err("the level is over (saves are made while playing)");
         }
+        if self.game.scripts().is_some() {
+            // The VM's threads, variables and generator are not saved yet:
+            // a save would lose the scenario's logic.
+            return Err("this map's ACS scripts cannot be saved yet (a ZDoom-format map)");
+        }
         let (map_fingerprint, state) = (self.game.fingerprint(), self.game.state_bytes());
         let info = SaveInfo {
             map: absolute_map(&self.map),

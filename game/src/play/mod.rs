@@ -80,7 +80,10 @@ pub fn run(args: &PlayArgs) -> Result<()> {
     let play = match &args.load {
         Some(save) => Playthrough::load(save)?,
         None => {
-            Playthrough::of(&map, game_options).with_context(|| format!("{}: cannot start the game", map.label()))?
+            let no_autoaim = scenario.as_ref().is_some_and(|c| c.no_autoaim());
+            let setup = sightline::sim::game::Setup { no_autoaim, ..sightline::sim::game::Setup::SINGLE };
+            Playthrough::of_set_up(&map, game_options, setup)
+                .with_context(|| format!("{}: cannot start the game", map.label()))?
         }
     };
     let renderer = crate::replay::choose_renderer(args.renderer, play.game.level(), &play.map.label())?;
