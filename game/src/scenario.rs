@@ -52,6 +52,8 @@ pub fn autoplay(args: &AutoplayArgs) -> Result<()> {
             "dead": end == Some(sightline::scenario::End::Death),
             "end": end,
             "shaping": f64::from(episode.global(1)) / 65536.0,
+            "kills": episode.game.stats().kills,
+            "ammo": episode.game.player().ammo,
             "warnings": warnings,
         }));
     }

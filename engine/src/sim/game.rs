@@ -173,14 +173,7 @@ impl SimGame {
                     Some(from) => from.next_level(level, |_| {}),
                     None => {
                         let mut sim = from_map::sim_on_map(level, rules, players, table);
-                        // Doom's generator is one table read in turn: a seed
-                        // moves `P_Random`'s and `M_Random`'s cursors on
-                        // from where the level's setup left them. (A WAD's
-                        // map does not move them, as vanilla does not and
-                        // its demos need.)
-                        let [p, m, ..] = options.seed.to_le_bytes();
-                        let (p0, m0) = (sim.rng.p_index(), sim.rng.m_index());
-                        sim.rng = crate::fixed::DoomRandom::from_indices(p0.wrapping_add(p), m0.wrapping_add(m));
+                        seed_random(&mut sim, options.seed);
                         sim
                     }
                 };
@@ -815,7 +808,11 @@ fn zdoom_sim(
     let players = setup.players();
     let mut sim = match from {
         Some(from) => from.next_level(sim_level, |_| {}),
-        None => from_map::sim_on_map(sim_level, rules, players, table),
+        None => {
+            let mut sim = from_map::sim_on_map(sim_level, rules, players, table);
+            seed_random(&mut sim, options.seed);
+            sim
+        }
     };
     measure_textures(&mut sim, level);
     let mut scripts = Scripts::load(wad, name, options.seed).map_err(|e| e.to_string())?.map(Box::new);
@@ -865,4 +862,14 @@ impl Setup {
         let netgame = self.players > 1 || self.deathmatch != 0;
         Rules { deathmatch: self.deathmatch, netgame, no_autoaim: self.no_autoaim, ..rules }
     }
+}
+
+/// Doom's generator is one table read in turn: a seed moves `P_Random`'s
+/// and `M_Random`'s cursors on from where the level's setup left them, so
+/// a RON or ZDoom map's games differ by seed. (A Doom-format WAD's map does
+/// not move them, as vanilla does not and its demos need.)
+fn seed_random(sim: &mut Sim, seed: u64) {
+    let [p, m, ..] = seed.to_le_bytes();
+    let (p0, m0) = (sim.rng.p_index(), sim.rng.m_index());
+    sim.rng = crate::fixed::DoomRandom::from_indices(p0.wrapping_add(p), m0.wrapping_add(m));
 }
