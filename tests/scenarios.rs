@@ -199,7 +199,7 @@ fn basic_one_shot_kills_the_cacodemon_for_106_less_costs() {
             assert!(actions < 100, "seed {seed}: the cacodemon still lives");
         }
         assert_eq!(episode.end(), Some(End::Exit), "seed {seed}");
-        assert_eq!(episode.game.sim.mo(caco).health <= 0, true, "seed {seed}: one hit kills");
+        assert!(episode.game.sim.mo(caco).health <= 0, "seed {seed}: one hit kills");
         assert_eq!(episode.game.player().ammo[0], 49, "seed {seed}: one bullet spent");
         let expected = 106.0 - 5.0 - f64::from(actions);
         assert!((episode.total_reward - expected).abs() < 1e-9, "seed {seed}: {} != {expected}", episode.total_reward);

@@ -227,9 +227,9 @@ impl SimHost<'_> {
             self.give(n, name, 1);
             // The weapon's own ammunition instead of Doom's weapon's.
             if let (Some(before), Some(give), Some(p)) = (before, ammo_give, self.sim.players[n].as_mut()) {
-                for a in 0..p.ammo.len() {
-                    if p.ammo[a] != before[a] {
-                        p.ammo[a] = (before[a] + give * factor).min(p.maxammo[a]);
+                for ((held, was), max) in p.ammo.iter_mut().zip(before).zip(p.maxammo) {
+                    if *held != was {
+                        *held = (was + give * factor).min(max);
                     }
                 }
             }

@@ -140,22 +140,22 @@ impl SimGame {
             _ if udmf.is_some() => {
                 let Some((wad, name)) = udmf else { unreachable!() };
                 let library = crate::texture::Library { dirs: Vec::new(), wad: opened.wad.clone() };
-                let (sim, loaded) =
-                    zdoom_sim(wad, &name, &mut opened.level, &library, &options, table, from, setup).map_err(&error)?;
+                let map = ZdoomMap { wad, name: &name, level: &mut opened.level, library: &library };
+                let (sim, loaded) = zdoom_sim(map, &options, table, from, setup).map_err(&error)?;
                 scripts = loaded;
                 (sim, Scene::identity(&opened.level.compiled.map))
             }
             (MapRef::Wad { map: Some(name), .. }, Some(links)) => {
                 let Some(wad) = stacked else { unreachable!("a WAD map's WADs are stacked above") };
                 let sim = match from {
-                    Some(from) => from.next_level_of(&wad, name),
+                    Some(from) => from.next_level_of(wad, name),
                     None => {
-                        let table = demo::table_for(&wad, &table).map_err(&error)?;
-                        let mode = demo::game_mode(&wad);
+                        let table = demo::table_for(wad, &table).map_err(&error)?;
+                        let mode = demo::game_mode(wad);
                         let version = demo::game_version(mode);
                         let rules = setup
                             .rules(Rules { no_monsters: options.no_monsters, ..Rules::single(skill, version, mode) });
-                        Sim::new(&wad, name, rules, players, table)
+                        Sim::new(wad, name, rules, players, table)
                     }
                 };
                 let sim = sim.map_err(|e| error(e.to_string()))?;
@@ -779,21 +779,28 @@ mod tests {
     }
 }
 
+/// A UDMF map opened for a game: the WADs, the map's name, the converted
+/// level (its sprites completed for what the scripts spawn) and its art.
+struct ZdoomMap<'a> {
+    wad: &'a crate::wad::Wad,
+    name: &'a str,
+    level: &'a mut Level,
+    library: &'a crate::texture::Library,
+}
+
 /// A game on UDMF map `name` of `wad` (opened as `level`): the level built
 /// from its compiled conversion with its things' ZDoom fields
 /// ([`from_map::level_from_udmf`]), played by Sightline's rules as Doom II
 /// 1.9, with its DECORATE actors on `table`, and its ACS scripts started
 /// (their generator seeded from the game's seed).
 fn zdoom_sim(
-    wad: &crate::wad::Wad,
-    name: &str,
-    level: &mut Level,
-    library: &crate::texture::Library,
+    map: ZdoomMap,
     options: &GameOptions,
     table: std::sync::Arc<ActorTable>,
     from: Option<&Sim>,
     setup: Setup,
 ) -> Result<(Sim, Option<Box<Scripts>>), String> {
+    let ZdoomMap { wad, name, level, library } = map;
     let records = wad.map_records(name).map_err(|e| e.to_string())?;
     let udmf = wad.udmf(name).map_err(|e| e.to_string())?;
     let (table, _unread) = crate::scenario::actor_table(wad, &table)?;
