@@ -164,20 +164,7 @@ impl SimGame {
             _ => {
                 let compiled = &opened.level.compiled;
                 let level = from_map::level_from_map(compiled, &table).map_err(|e| error(e.to_string()))?;
-                let rules = setup.rules(Rules {
-                    compat: Compat::Sightline,
-                    no_monsters: options.no_monsters,
-                    ..Rules::single(skill, super::GameVersion::Doom19, super::GameMode::Commercial)
-                });
-                let mut sim = match from {
-                    Some(from) => from.next_level(level, |_| {}),
-                    None => {
-                        let mut sim = from_map::sim_on_map(level, rules, players, table);
-                        seed_random(&mut sim, options.seed);
-                        sim
-                    }
-                };
-                measure_textures(&mut sim, &opened.level);
+                let sim = sightline_game(level, &opened.level, &options, table, from, setup);
                 (sim, Scene::identity(&compiled.map))
             }
         };
@@ -806,22 +793,7 @@ fn zdoom_sim(
     let (table, _unread) = crate::scenario::actor_table(wad, &table)?;
     let sim_level =
         from_map::level_from_udmf(&level.compiled, &table, &udmf, &records.map).map_err(|e| e.to_string())?;
-    let skill = options.skill.saturating_sub(1);
-    let rules = setup.rules(Rules {
-        compat: Compat::Sightline,
-        no_monsters: options.no_monsters,
-        ..Rules::single(skill, super::GameVersion::Doom19, super::GameMode::Commercial)
-    });
-    let players = setup.players();
-    let mut sim = match from {
-        Some(from) => from.next_level(sim_level, |_| {}),
-        None => {
-            let mut sim = from_map::sim_on_map(sim_level, rules, players, table);
-            seed_random(&mut sim, options.seed);
-            sim
-        }
-    };
-    measure_textures(&mut sim, level);
+    let sim = sightline_game(sim_level, level, options, table, from, setup);
     let mut scripts = Scripts::load(wad, name, options.seed).map_err(|e| e.to_string())?.map(Box::new);
     if let Some(s) = scripts.as_mut() {
         s.begin(&sim);
@@ -879,4 +851,33 @@ fn seed_random(sim: &mut Sim, seed: u64) {
     let [p, m, ..] = seed.to_le_bytes();
     let (p0, m0) = (sim.rng.p_index(), sim.rng.m_index());
     sim.rng = crate::fixed::DoomRandom::from_indices(p0.wrapping_add(p), m0.wrapping_add(m));
+}
+
+/// A game by Sightline's rules (as Doom II 1.9) on `sim_level`, built from
+/// the converted map `level` (a RON map's or a UDMF map's): a new one with
+/// its seed in Doom's table, or `from`'s going on there.
+fn sightline_game(
+    sim_level: super::Level,
+    level: &Level,
+    options: &GameOptions,
+    table: std::sync::Arc<ActorTable>,
+    from: Option<&Sim>,
+    setup: Setup,
+) -> Sim {
+    let skill = options.skill.saturating_sub(1);
+    let rules = setup.rules(Rules {
+        compat: Compat::Sightline,
+        no_monsters: options.no_monsters,
+        ..Rules::single(skill, super::GameVersion::Doom19, super::GameMode::Commercial)
+    });
+    let mut sim = match from {
+        Some(from) => from.next_level(sim_level, |_| {}),
+        None => {
+            let mut sim = from_map::sim_on_map(sim_level, rules, setup.players(), table);
+            seed_random(&mut sim, options.seed);
+            sim
+        }
+    };
+    measure_textures(&mut sim, level);
+    sim
 }
