@@ -323,6 +323,9 @@ pub fn chase_target(sim: &mut Sim, id: MobjId) {
             actor.angle.0 = actor.angle.0.wrapping_add(ANG90.0 / 2);
         }
     }
+    if sim.walk_to_goal(id) {
+        return; // a ZDoom script's goal: walking there, not fighting
+    }
     let target = sim.mo(id).target.filter(|&t| sim.mo(t).has(mf::SHOOTABLE));
     let Some(target) = target else {
         // Look for a new target.

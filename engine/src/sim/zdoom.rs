@@ -133,6 +133,40 @@ impl Sim {
         self.zdoom.get(id).is_some_and(|e| e.invisible)
     }
 
+    /// ZDoom's `A_Chase` for a monster a script sent to a goal
+    /// (`Thing_SetGoal`): it walks to the goal without attacking, and
+    /// within melee range of it goes on to the next patrol point (the one
+    /// whose thing id is the goal's first argument), or stops having a
+    /// goal. Returns whether the monster is walking to a goal this tic.
+    /// (ZDoom's wait at a point, its second argument, is not kept: the
+    /// scenarios' points have none.)
+    pub fn walk_to_goal(&mut self, id: MobjId) -> bool {
+        let Some(goal) = self.zdoom.get(id).and_then(|e| e.goal) else { return false };
+        if self.mo(goal).removed {
+            self.zdoom.entry(id).goal = None;
+            return false;
+        }
+        let (mo, g) = (self.mo(id), self.mo(goal));
+        let near = crate::fixed::approx_distance(g.x - mo.x, g.y - mo.y) < super::monsters::MELEERANGE;
+        let mut goal = Some(goal);
+        if near {
+            let next = self.zdoom.get(goal.unwrap_or(id)).map_or(0, |e| e.args[0]);
+            goal = self.bodies_with_tid(next).first().copied();
+            self.zdoom.entry(id).goal = goal;
+        }
+        let Some(goal) = goal else {
+            self.mo_mut(id).target = None;
+            return false;
+        };
+        self.mo_mut(id).target = Some(goal);
+        let actor = self.mo_mut(id);
+        actor.movecount -= 1;
+        if actor.movecount < 0 || !super::chase::p_move(self, id) {
+            super::chase::new_chase_dir(self, id);
+        }
+        true
+    }
+
     /// A body with a thing special died or was taken: the special is set
     /// off (once: ZDoom clears it as it runs).
     pub fn fire_thing_special(&mut self, id: MobjId, activator: Option<MobjId>) {
