@@ -296,3 +296,28 @@ fn deadly_corridor_rewards_the_players_x() {
     }
     assert!(x(&episode) - x0 > 50.0, "the player went east");
 }
+
+/// predict_position: the cacodemon a script sends to a patrol point
+/// (`Thing_SetGoal`) walks between the two points, never attacking, as
+/// ViZDoom's does.
+#[test]
+#[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
+fn predict_position_the_cacodemon_patrols_between_its_points() {
+    let Some((config, scenario)) =
+        scenario("predict_position", "predict_position_the_cacodemon_patrols_between_its_points")
+    else {
+        return;
+    };
+    let mut episode = scenario.episode(2).unwrap();
+    let caco = *episode.game.sim.bodies_with_tid(10).first().expect("the cacodemon");
+    let idle = press(&config, &[]);
+    let (mut low, mut high) = (f64::INFINITY, f64::NEG_INFINITY);
+    for _ in 0..280 {
+        episode.step(&idle);
+        let y = episode.game.sim.mo(caco).y.to_f64();
+        (low, high) = (low.min(y), high.max(y));
+    }
+    // The points are at y = -608 and 608: it reached one and turned back.
+    assert!(high > 500.0 && low < 0.0, "the cacodemon went from {low} to {high}");
+    assert_eq!(episode.game.player().health, 100, "it never attacked");
+}

@@ -294,3 +294,27 @@ mod records {
         }
     }
 }
+
+mod zdoom_sectors {
+    use crate::map::special::{Damage, Suit};
+    use crate::wad::udmf_records::zdoom_sector_special;
+
+    /// ZDoom's sector numbers with a Doom meaning: Doom's moved up by 64,
+    /// the lava floors (health_gathering's 83), instant death, and the
+    /// damage and secret bits; the rest are not translated.
+    #[test]
+    fn zdoom_sector_specials_translate_where_doom_can_say_them() {
+        let damage = |n| zdoom_sector_special(n).and_then(|s| s.damage);
+        assert_eq!(damage(83), Some(Damage { amount: 8, every: 32, exit_below: 0, suit: Suit::Useless }));
+        assert_eq!(damage(82).map(|d| d.amount), Some(5));
+        assert_eq!(damage(115).map(|d| (d.amount, d.every)), Some((1000, 1)));
+        assert_eq!(damage(512).map(|d| (d.amount, d.every, d.suit)), Some((10, 32, Suit::Shields)));
+        assert_eq!(damage(768).map(|d| (d.amount, d.suit)), Some((20, Suit::Leaks)));
+        // 71 is Doom's 7, nukage: 5 every 32 tics.
+        assert_eq!(damage(71).map(|d| d.amount), Some(5));
+        assert!(zdoom_sector_special(1024).is_some_and(|s| s.secret && s.damage.is_none()));
+        assert_eq!(zdoom_sector_special(1), None, "Light_Phased is not Doom's");
+        assert_eq!(zdoom_sector_special(227), None, "a carry sector is not Doom's");
+        assert_eq!(zdoom_sector_special(4096 + 83), None, "a push bit is not Doom's");
+    }
+}
