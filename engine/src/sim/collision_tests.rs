@@ -512,3 +512,32 @@ fn an_imp_s_fireball_spares_imps_but_burns_others() {
     sim.mo_mut(shot).z = u(60);
     assert!(check_position(&mut sim, shot, u(90), u(200)));
 }
+
+/// A missile of radius 0 (a DECORATE rocket's) passes a one-sided wall in
+/// Doom (the line check tests only where a step ends); under Sightline's
+/// rules it leaves the game at the wall instead of flying on outside the
+/// map. A missile whose box touches the wall at the step's end explodes
+/// there under both rules.
+#[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
+fn a_missile_too_thin_for_its_step_leaves_the_game_at_a_wall_under_sightlines_rules() {
+    let shot = |compat: Compat, x: i32, radius: i32| {
+        let mut sim = sim(0, 128);
+        sim.rules.compat = compat;
+        let kind = sim.kind_of(mt::TROOPSHOT);
+        let ball = sim.spawn_mobj(u(x), u(128), u(32), kind);
+        let mo = sim.mo_mut(ball);
+        mo.radius = u(radius);
+        mo.momx = u(12);
+        crate::sim::movement::xy_movement(&mut sim, ball);
+        let mo = sim.mo(ball);
+        (mo.removed, mo.x.to_f64(), mo.has(crate::sim::mobj::mf::MISSILE))
+    };
+    // From 250 the thin ball's step ends at 262, past the east wall (256).
+    assert_eq!(shot(Compat::Vanilla, 250, 0), (false, 262.0, true), "Doom lets it through");
+    assert_eq!(shot(Compat::Sightline, 250, 0).0, true, "Sightline's rules take it out");
+    // A ball of radius 6 whose end box reaches the wall explodes there.
+    for compat in [Compat::Vanilla, Compat::Sightline] {
+        assert_eq!(shot(compat, 246, 6), (false, 246.0, false), "{compat:?}");
+    }
+}

@@ -5,6 +5,7 @@
 //! in [`super::interaction`].
 
 use super::info::mt;
+use super::level::{BOXBOTTOM, BOXLEFT, BOXRIGHT, BOXTOP};
 use super::mobj::point_in_subsector;
 use super::mobj::{mf, ONCEILINGZ, ONFLOORZ};
 use super::setup::VIEWHEIGHT;
@@ -154,24 +155,39 @@ pub fn xy_movement(sim: &mut Sim, id: MobjId) {
 /// ever) out of sight of it, which the scenario's odds depend on. Here the
 /// step's path is traced, and a missile that crosses a line it could not
 /// pass (one-sided, or an opening it does not fit; blocking lines do not
-/// stop missiles, as in Doom) leaves the game there (`xy_movement`), so
-/// no body flies on outside the map.
+/// stop missiles, as in Doom) and that its box at the step's end does not
+/// touch (where Doom would have let it through) leaves the game there
+/// (`xy_movement`), so no body flies on outside the map. A line the end
+/// box touches stops it as in Doom: it explodes against the wall.
 fn through_wall(sim: &mut Sim, id: MobjId, x: Fixed, y: Fixed) -> bool {
     let mo = sim.mo(id);
     let step = (x - mo.x).abs().max((y - mo.y).abs());
     if sim.rules.compat != super::Compat::Sightline || !mo.has(mf::MISSILE) || mo.radius.0 * 2 >= step.0 {
         return false;
     }
-    let (x1, y1, bottom, top) = (mo.x, mo.y, mo.z, mo.z + mo.height);
-    let mut blocked = false;
+    let (x1, y1, bottom, top, radius) = (mo.x, mo.y, mo.z, mo.z + mo.height, mo.radius);
+    // Where the step ends, the box Doom's line check tests.
+    let end = [y + radius, y - radius, x - radius, x + radius];
+    let mut skipped = false;
     super::maputl::path_traverse(sim, x1, y1, x, y, super::maputl::PT_ADDLINES, |sim, hit, _| {
         let super::maputl::Hit::Line(line) = hit.hit else { return true };
         super::maputl::line_opening(sim, line);
         let o = sim.tm.opening;
-        blocked = o.range <= Fixed::ZERO || bottom < o.bottom || top > o.top;
-        !blocked
+        if o.range > Fixed::ZERO && bottom >= o.bottom && top <= o.top {
+            return true; // it fits through
+        }
+        // A line the end box touches stops it as in Doom (it explodes there);
+        // one it would have skipped stops it here.
+        let ld = &sim.level.lines[line];
+        let b = &ld.bbox;
+        let apart = end[BOXRIGHT] <= b[BOXLEFT]
+            || end[BOXLEFT] >= b[BOXRIGHT]
+            || end[BOXTOP] <= b[BOXBOTTOM]
+            || end[BOXBOTTOM] >= b[BOXTOP];
+        skipped = apart || super::maputl::box_on_line_side(&end, ld) != -1;
+        false
     });
-    blocked
+    skipped
 }
 
 fn clamp_move(m: Fixed) -> Fixed {
