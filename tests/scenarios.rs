@@ -321,3 +321,18 @@ fn predict_position_the_cacodemon_patrols_between_its_points() {
     assert!(high > 500.0 && low < 0.0, "the cacodemon went from {low} to {high}");
     assert_eq!(episode.game.player().health, 100, "it never attacked");
 }
+
+/// rocket_basic's DECORATE: what the actor table cannot hold is listed
+/// with its lump and line (the rocket's trail, its obituary, ...), and the
+/// scenario plays anyway.
+#[test]
+#[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
+fn rocket_basic_lists_what_its_decorate_leaves_out() {
+    let Some((_, scenario)) = scenario("rocket_basic", "rocket_basic_lists_what_its_decorate_leaves_out") else {
+        return;
+    };
+    let unread = &scenario.decorate_unread;
+    let trail = unread.iter().find(|l| l.contains("+ROCKETTRAIL")).expect("the rocket's trail is listed");
+    assert!(trail.contains("rocket_basic.wad:DECORATE:10: actor CustomRocket"), "{trail}");
+    assert!(unread.iter().all(|l| l.contains(":DECORATE:")), "{unread:?}");
+}

@@ -25,6 +25,11 @@ pub fn autoplay(args: &AutoplayArgs) -> Result<()> {
     let buttons = config.available_buttons.len();
     let scenario = Scenario::open(&config, args.iwad.as_deref())
         .with_context(|| format!("{}: cannot open the scenario", args.map))?;
+    if !args.json {
+        for line in &scenario.decorate_unread {
+            println!("DECORATE, left out: {line}");
+        }
+    }
     for k in 0..u64::from(args.episodes) {
         let seed = args.seed.wrapping_add(k);
         let mut episode = scenario.episode(seed).with_context(|| format!("{}: cannot start the scenario", args.map))?;
@@ -60,6 +65,7 @@ pub fn autoplay(args: &AutoplayArgs) -> Result<()> {
     if args.json {
         let out = json!({
             "scenario": name,
+            "decorate_unread": scenario.decorate_unread,
             "episodes": episodes,
             "seconds": started.elapsed().as_secs_f64(),
         });

@@ -98,6 +98,10 @@ pub fn reward_so_far(game: &SimGame, config: &ScenarioConfig) -> f64 {
 pub struct Scenario {
     pub config: ScenarioConfig,
     opened: Opened,
+    /// What the WAD's DECORATE says that the actor table cannot hold
+    /// (flags, properties, actions left out), one line each with its lump
+    /// and line.
+    pub decorate_unread: Vec<String>,
 }
 
 impl Scenario {
@@ -106,7 +110,13 @@ impl Scenario {
     pub fn open(config: &ScenarioConfig, iwad: Option<&Path>) -> Result<Scenario, ScenarioError> {
         let map = map_of(config, iwad)?;
         let opened = campaign::open(&map, &BuildOptions::default()).map_err(|e| ScenarioError::Open(e.to_string()))?;
-        Ok(Scenario { config: config.clone(), opened })
+        let decorate_unread = match &opened.wad {
+            Some(art) => {
+                super::actor_table(&art.wad, crate::actors::ActorTable::active()).map_err(ScenarioError::Open)?.1
+            }
+            None => Vec::new(),
+        };
+        Ok(Scenario { config: config.clone(), opened, decorate_unread })
     }
 
     /// A new episode, its random generators seeded with `seed`, after the
