@@ -117,6 +117,16 @@ const AMMO: [(&str, usize); 8] = [
     ("RocketBox", 3),
 ];
 
+/// Doom's weapon of ZDoom class `item`, and its `Weapon.AmmoGive`.
+fn doom_weapon(item: &str) -> Option<(usize, i32)> {
+    WEAPONS.iter().find(|(name, ..)| name.eq_ignore_ascii_case(item)).map(|&(_, w, give)| (w, give))
+}
+
+/// Doom's ammunition type of ZDoom class `item` (a box counts as its kind).
+fn ammo_named(item: &str) -> Option<usize> {
+    AMMO.iter().find(|(name, _)| name.eq_ignore_ascii_case(item)).map(|&(_, a)| a)
+}
+
 /// ZDoom's ammunition factor for the skill (`SKILLP_AmmoFactor`): double
 /// on the easiest skill and on Nightmare.
 fn ammo_factor(sim: &Sim) -> i32 {
@@ -174,32 +184,14 @@ impl SimHost<'_> {
         }
     }
 
-    /// ZDoom's ammunition factor for the skill (`SKILLP_AmmoFactor`).
-    fn ammo_factor(&self) -> i32 {
-        ammo_factor(self.sim)
-    }
-
     fn give(&mut self, n: usize, item: &str, amount: i32) {
         let amount = amount.max(1);
-        if let Some(&(_, w, ammo_give)) = WEAPONS.iter().find(|(name, ..)| name.eq_ignore_ascii_case(item)) {
-            let ammo = self.sim.info.weapons.get(w).and_then(Option::as_ref).and_then(|i| i.ammo);
-            let factor = self.ammo_factor();
-            let Some(p) = self.sim.players[n].as_mut() else { return };
-            if let Some(a) = ammo {
-                p.ammo[a] = (p.ammo[a] + ammo_give * factor).min(p.maxammo[a]);
-            }
-            let unarmed = p.psprites[0].state.is_none();
-            if !p.weaponowned[w] {
-                p.weaponowned[w] = true;
-                if unarmed {
-                    // It comes up from the next tic on (`Scripts::tick`).
-                    p.pendingweapon = Some(w);
-                }
-            }
+        if let Some((w, ammo_give)) = doom_weapon(item) {
+            self.give_weapon(n, w, ammo_give);
             return;
         }
-        if let Some(&(_, a)) = AMMO.iter().find(|(name, _)| name.eq_ignore_ascii_case(item)) {
-            let factor = self.ammo_factor();
+        if let Some(a) = ammo_named(item) {
+            let factor = ammo_factor(self.sim);
             if let Some(p) = self.sim.players[n].as_mut() {
                 p.ammo[a] = (p.ammo[a] + amount * factor).min(p.maxammo[a]);
             }
@@ -214,36 +206,38 @@ impl SimHost<'_> {
             pickups::give_body(self.sim, n, h * amount);
             return;
         }
-        if let Some(w) = self.custom_weapon(item) {
-            let name = WEAPONS.iter().find(|&&(_, n, _)| n == w).map_or("Pistol", |&(name, ..)| name);
-            let kind = crate::actors::zdoom::find(&self.sim.info.table, item);
-            let pickup = kind.and_then(|k| self.sim.info.table.actors[k].pickup.clone());
-            let ammo_give = pickup.iter().flat_map(|p| p.give.iter()).find_map(|g| match g {
-                crate::actors::Give::Ammo(_, n) => Some(*n),
-                _ => None,
-            });
-            let before = self.sim.player(n).map(|p| p.ammo);
-            let factor = ammo_factor(self.sim);
-            self.give(n, name, 1);
-            // The weapon's own ammunition instead of Doom's weapon's.
-            if let (Some(before), Some(give), Some(p)) = (before, ammo_give, self.sim.players[n].as_mut()) {
-                for ((held, was), max) in p.ammo.iter_mut().zip(before).zip(p.maxammo) {
-                    if *held != was {
-                        *held = (was + give * factor).min(max);
-                    }
-                }
-            }
+        if let Some((w, ammo_give)) = self.custom_weapon(item) {
+            self.give_weapon(n, w, ammo_give);
             return;
         }
         self.unsupported(format!("GiveInventory(\"{item}\") (not an item this game knows)"));
+    }
+
+    /// Weapon `w` with `ammo_give` of its ammunition (times the skill's
+    /// factor); it comes up only for an unarmed player, from the next tic
+    /// on (`Scripts::tick`).
+    fn give_weapon(&mut self, n: usize, w: usize, ammo_give: i32) {
+        let ammo = self.sim.info.weapons.get(w).and_then(Option::as_ref).and_then(|i| i.ammo);
+        let factor = ammo_factor(self.sim);
+        let Some(p) = self.sim.players[n].as_mut() else { return };
+        if let Some(a) = ammo {
+            p.ammo[a] = (p.ammo[a] + ammo_give * factor).min(p.maxammo[a]);
+        }
+        if !p.weaponowned[w] {
+            p.weaponowned[w] = true;
+            if p.psprites[0].state.is_none() {
+                p.pendingweapon = Some(w);
+            }
+        }
     }
 
     /// A DECORATE weapon (`CustomRocketLauncher`): the player holds Doom's
     /// nine weapons, so it takes the place of Doom's weapon with the same
     /// ammunition (the rocket launcher for rockets, the pistol for
     /// bullets, ...) in this game's weapon table, its states and actions
-    /// its own. Returns that weapon's number.
-    fn custom_weapon(&mut self, item: &str) -> Option<usize> {
+    /// its own. Returns that weapon's number and the ammunition its pickup
+    /// gives.
+    fn custom_weapon(&mut self, item: &str) -> Option<(usize, i32)> {
         let table = self.sim.info.table.clone();
         let kind = crate::actors::zdoom::find(&table, item)?;
         let def = &table.actors[kind];
@@ -255,6 +249,10 @@ impl SimHost<'_> {
             Some(crate::actors::AmmoKind::Cells) => wp::PLASMA,
             None => wp::FIST,
         };
+        let ammo_give = def.pickup.iter().flat_map(|p| p.give.iter()).find_map(|g| match g {
+            crate::actors::Give::Ammo(_, n) => Some(*n),
+            _ => None,
+        });
         let info = std::sync::Arc::make_mut(&mut self.sim.info);
         let slot = info.weapons.get_mut(w)?;
         let ammo = slot.as_ref().and_then(|s| s.ammo);
@@ -267,16 +265,16 @@ impl SimHost<'_> {
             atkstate: def.label("Fire"),
             flashstate: def.label("Flash"),
         });
-        Some(w)
+        Some((w, ammo_give.unwrap_or(0)))
     }
 
     fn take(&mut self, n: usize, item: &str, amount: i32) {
         let Some(p) = self.sim.players[n].as_mut() else { return };
-        if let Some(&(_, w, _)) = WEAPONS.iter().find(|(name, ..)| name.eq_ignore_ascii_case(item)) {
+        if let Some((w, _)) = doom_weapon(item) {
             p.weaponowned[w] = false;
             return;
         }
-        if let Some(&(_, a)) = AMMO.iter().find(|(name, _)| name.eq_ignore_ascii_case(item)) {
+        if let Some(a) = ammo_named(item) {
             p.ammo[a] = (p.ammo[a] - amount.max(0)).max(0);
             return;
         }
@@ -285,10 +283,10 @@ impl SimHost<'_> {
 
     fn count(&self, n: usize, item: &str) -> i32 {
         let Some(p) = self.sim.player(n) else { return 0 };
-        if let Some(&(_, w, _)) = WEAPONS.iter().find(|(name, ..)| name.eq_ignore_ascii_case(item)) {
+        if let Some((w, _)) = doom_weapon(item) {
             return i32::from(p.weaponowned[w]);
         }
-        if let Some(&(_, a)) = AMMO.iter().find(|(name, _)| name.eq_ignore_ascii_case(item)) {
+        if let Some(a) = ammo_named(item) {
             return p.ammo[a];
         }
         if item.eq_ignore_ascii_case("Health") {
@@ -325,13 +323,7 @@ impl SimHost<'_> {
         if mo.has(mf::SPECIAL) {
             mo.flags |= mf::DROPPED;
         }
-        let counts = (mo.has(mf::COUNTKILL), mo.has(mf::COUNTITEM));
-        if counts.0 {
-            self.sim.total_kills += 1;
-        }
-        if counts.1 {
-            self.sim.total_items += 1;
-        }
+        self.sim.count_in_totals(id);
         self.sim.zdoom.entry(id).tid = tid;
         1
     }
@@ -576,12 +568,12 @@ impl Host for SimHost<'_> {
             op::CHECKWEAPON => {
                 let name = Self::text(cx, arg(0));
                 let ready = player.and_then(|n| self.sim.player(n)).map(|p| p.readyweapon);
-                let named = WEAPONS.iter().find(|(w, ..)| w.eq_ignore_ascii_case(&name)).map(|w| w.1);
+                let named = doom_weapon(&name).map(|(w, _)| w);
                 i32::from(ready.is_some() && ready == named)
             }
             op::SETWEAPON => {
                 let name = Self::text(cx, arg(0));
-                let named = WEAPONS.iter().find(|(w, ..)| w.eq_ignore_ascii_case(&name)).map(|w| w.1);
+                let named = doom_weapon(&name).map(|(w, _)| w);
                 match (player, named) {
                     (Some(n), Some(w)) => {
                         let Some(p) = self.sim.players[n].as_mut() else { return 0 };

@@ -137,15 +137,7 @@ pub fn check_position(sim: &mut Sim, thing: MobjId, x: Fixed, y: Fixed) -> bool 
 /// the box crosses, notes special ones; false for a line that blocks.
 fn check_line(sim: &mut Sim, line: usize) -> bool {
     let ld = &sim.level.lines[line];
-    let b = &sim.tm.bbox;
-    if b[BOXRIGHT] <= ld.bbox[BOXLEFT]
-        || b[BOXLEFT] >= ld.bbox[BOXRIGHT]
-        || b[BOXTOP] <= ld.bbox[BOXBOTTOM]
-        || b[BOXBOTTOM] >= ld.bbox[BOXTOP]
-    {
-        return true;
-    }
-    if maputl::box_on_line_side(b, ld) != -1 {
+    if !maputl::box_touches_line(&sim.tm.bbox, ld) {
         return true;
     }
     if ld.backsector.is_none() {

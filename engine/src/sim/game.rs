@@ -136,16 +136,15 @@ impl SimGame {
             (MapRef::Wad { map: Some(name), .. }, Some(wad)) if wad.is_udmf(name) => Some((wad, name.clone())),
             _ => None,
         };
-        let (sim, scene) = match (&opened.map, opened.links) {
-            _ if udmf.is_some() => {
-                let Some((wad, name)) = udmf else { unreachable!() };
+        let (sim, scene) = match (&opened.map, opened.links, udmf) {
+            (_, _, Some((wad, name))) => {
                 let library = crate::texture::Library { dirs: Vec::new(), wad: opened.wad.clone() };
                 let map = ZdoomMap { wad, name: &name, level: &mut opened.level, library: &library };
                 let (sim, loaded) = zdoom_sim(map, &options, table, from, setup).map_err(&error)?;
                 scripts = loaded;
                 (sim, Scene::identity(&opened.level.compiled.map))
             }
-            (MapRef::Wad { map: Some(name), .. }, Some(links)) => {
+            (MapRef::Wad { map: Some(name), .. }, Some(links), None) => {
                 let Some(wad) = stacked else { unreachable!("a WAD map's WADs are stacked above") };
                 let sim = match from {
                     Some(from) => from.next_level_of(wad, name),
@@ -788,8 +787,8 @@ fn zdoom_sim(
     setup: Setup,
 ) -> Result<(Sim, Option<Box<Scripts>>), String> {
     let ZdoomMap { wad, name, level, library } = map;
-    let records = wad.map_records(name).map_err(|e| e.to_string())?;
     let udmf = wad.udmf(name).map_err(|e| e.to_string())?;
+    let records = udmf.to_records(name).map_err(|e| format!("{}: {name}: {e}", wad.path))?;
     let (table, _unread) = crate::scenario::actor_table(wad, &table)?;
     let sim_level =
         from_map::level_from_udmf(&level.compiled, &table, &udmf, &records.map).map_err(|e| e.to_string())?;

@@ -60,6 +60,15 @@ pub fn point_on_map_line_side(x: Fixed, y: Fixed, line: &Line) -> usize {
     point_on_line_side(x, y, &line_divline(line)).index()
 }
 
+/// Whether a box (`BOXTOP`..`BOXRIGHT`) touches a line: their boxes
+/// overlap and the line does not pass wholly on one side of it
+/// (`PIT_CheckLine`'s first two tests).
+pub fn box_touches_line(b: &[Fixed; 4], line: &Line) -> bool {
+    let l = &line.bbox;
+    !(b[BOXRIGHT] <= l[BOXLEFT] || b[BOXLEFT] >= l[BOXRIGHT] || b[BOXTOP] <= l[BOXBOTTOM] || b[BOXBOTTOM] >= l[BOXTOP])
+        && box_on_line_side(b, line) == -1
+}
+
 /// `P_BoxOnLineSide`: 0 or 1 when the box is wholly on one side of the
 /// (infinite) line, -1 when it crosses it. Axis-aligned lines compare the
 /// box's edges with `>`/`<`, so a box edge exactly on the line counts as

@@ -5,7 +5,6 @@
 //! in [`super::interaction`].
 
 use super::info::mt;
-use super::level::{BOXBOTTOM, BOXLEFT, BOXRIGHT, BOXTOP};
 use super::mobj::point_in_subsector;
 use super::mobj::{mf, ONCEILINGZ, ONFLOORZ};
 use super::setup::VIEWHEIGHT;
@@ -178,13 +177,7 @@ fn through_wall(sim: &mut Sim, id: MobjId, x: Fixed, y: Fixed) -> bool {
         }
         // A line the end box touches stops it as in Doom (it explodes there);
         // one it would have skipped stops it here.
-        let ld = &sim.level.lines[line];
-        let b = &ld.bbox;
-        let apart = end[BOXRIGHT] <= b[BOXLEFT]
-            || end[BOXLEFT] >= b[BOXRIGHT]
-            || end[BOXTOP] <= b[BOXBOTTOM]
-            || end[BOXBOTTOM] >= b[BOXTOP];
-        skipped = apart || super::maputl::box_on_line_side(&end, ld) != -1;
+        skipped = !super::maputl::box_touches_line(&end, &sim.level.lines[line]);
         false
     });
     skipped

@@ -229,17 +229,22 @@ impl Sim {
             let mo = self.mo_mut(id);
             mo.tics = 1 + r % mo.tics;
         }
+        self.count_in_totals(id);
+        let mo = self.mo_mut(id);
+        mo.angle = thing_angle(thing);
+        if thing.flags & MTF_AMBUSH != 0 {
+            mo.flags |= mf::AMBUSH;
+        }
+    }
+
+    /// A body the level's tallies count: a monster to kill, an item to find.
+    pub fn count_in_totals(&mut self, id: super::MobjId) {
         let flags = self.mo(id).flags;
         if flags & mf::COUNTKILL != 0 {
             self.total_kills += 1;
         }
         if flags & mf::COUNTITEM != 0 {
             self.total_items += 1;
-        }
-        let mo = self.mo_mut(id);
-        mo.angle = thing_angle(thing);
-        if thing.flags & MTF_AMBUSH != 0 {
-            mo.flags |= mf::AMBUSH;
         }
     }
 
