@@ -193,17 +193,17 @@ impl SimHost<'_> {
         if let Some(a) = ammo_named(item) {
             let factor = ammo_factor(self.sim);
             if let Some(p) = self.sim.players[n].as_mut() {
-                p.ammo[a] = (p.ammo[a] + amount * factor).min(p.maxammo[a]);
+                p.ammo[a] = p.ammo[a].saturating_add(amount.saturating_mul(factor)).min(p.maxammo[a]);
             }
             return;
         }
         let health = match item.to_ascii_lowercase().as_str() {
-            "stimpack" => Some(10),
+            "stimpack" => Some(10i32),
             "medikit" => Some(25),
             _ => None,
         };
         if let Some(h) = health {
-            pickups::give_body(self.sim, n, h * amount);
+            pickups::give_body(self.sim, n, h.saturating_mul(amount));
             return;
         }
         if let Some((w, ammo_give)) = self.custom_weapon(item) {
@@ -221,7 +221,7 @@ impl SimHost<'_> {
         let factor = ammo_factor(self.sim);
         let Some(p) = self.sim.players[n].as_mut() else { return };
         if let Some(a) = ammo {
-            p.ammo[a] = (p.ammo[a] + ammo_give * factor).min(p.maxammo[a]);
+            p.ammo[a] = p.ammo[a].saturating_add(ammo_give.saturating_mul(factor)).min(p.maxammo[a]);
         }
         if !p.weaponowned[w] {
             p.weaponowned[w] = true;
@@ -275,7 +275,7 @@ impl SimHost<'_> {
             return;
         }
         if let Some(a) = ammo_named(item) {
-            p.ammo[a] = (p.ammo[a] - amount.max(0)).max(0);
+            p.ammo[a] = p.ammo[a].saturating_sub(amount.max(0)).max(0);
             return;
         }
         self.unsupported(format!("TakeInventory(\"{item}\")"));

@@ -109,7 +109,7 @@ pub fn give_body(sim: &mut Sim, n: usize, num: i32) -> bool {
     if p.health >= MAXHEALTH {
         return false;
     }
-    p.health = (p.health + num).min(MAXHEALTH);
+    p.health = p.health.saturating_add(num).min(MAXHEALTH);
     let (mo, health) = (p.mo, p.health);
     sim.mo_mut(mo).health = health;
     true
