@@ -243,7 +243,7 @@ fn play_through(inputs: &[TickInput]) -> (Vec<u8>, Vec<u32>, bool) {
     let mut fb = sightline::Framebuffer::new(160, 100);
     let level = Observe::level(&g);
     sightline::render::render_frame(level, &g.view(1.0), &options, &mut sightline::render::Frame::new(), &mut fb);
-    sightline::screen::draw(&mut fb, level, Observe::player(&g), sightline::screen::Hud::StatusBar);
+    sightline::screen::draw(&mut fb, level, Observe::table(&g), Observe::player(&g), sightline::screen::Hud::StatusBar);
     (g.state_bytes(), fb.pixels, noticed)
 }
 

@@ -140,7 +140,8 @@ impl Capture {
     pub fn frame(&mut self, play: &Playthrough, tick: u64) -> Result<()> {
         let game = &play.game;
         render_frame(game.level(), &game.view(1.0), &self.options, &mut self.frame, &mut self.fb);
-        sightline::screen::draw(&mut self.fb, game.level(), game.player(), sightline::screen::Hud::StatusBar);
+        let table = &game.sim.info.table;
+        sightline::screen::draw(&mut self.fb, game.level(), table, game.player(), sightline::screen::Hud::StatusBar);
         hud::draw_phase(&mut self.fb, &play.phase);
         write_atomic(&self.dir.join(format!("tick-{tick:06}.png")), &self.fb.to_png())?;
         self.written += 1;

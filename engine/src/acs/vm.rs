@@ -107,7 +107,7 @@ pub struct Thread {
 }
 
 /// A list node: the thread (taken out while it runs) and its neighbours.
-#[derive(Debug, Default)]
+#[derive(Clone, Debug, Default)]
 struct Slot {
     thread: Option<Box<Thread>>,
     next: Option<usize>,
@@ -118,6 +118,7 @@ struct Slot {
 }
 
 /// A loaded module, its variables and its running scripts.
+#[derive(Clone)]
 pub struct Vm {
     /// Shared so a running script can read its code while it changes the VM.
     pub module: Arc<Module>,

@@ -98,18 +98,49 @@ impl ScenarioConfig {
             base_dir: Path::new(label).parent().map(Path::to_path_buf).unwrap_or_default(),
             ..Default::default()
         };
+        cfg.read_lines(text, label)?;
+        Ok(cfg)
+    }
+
+    /// `.cfg` text applied onto this configuration, as ViZDoom's
+    /// `load_config` and `set_config` apply a file onto a game's settings:
+    /// the keys it sets replace, `+=` appends, the rest stay. The paths it
+    /// sets are resolved against `label`'s directory and kept whole, so
+    /// they still name the same files whatever [`Self::base_dir`] is. On
+    /// an error nothing changes.
+    pub fn apply(&mut self, text: &str, label: &str) -> Result<(), CfgError> {
+        let mut next = self.clone();
+        next.read_lines(text, label)?;
+        let here = ScenarioConfig {
+            base_dir: Path::new(label).parent().map(Path::to_path_buf).unwrap_or_default(),
+            ..Default::default()
+        };
+        let whole = |now: &Option<String>, then: &Option<String>| match now {
+            Some(p) if now != then => Some(here.resolve(p).display().to_string()),
+            other => other.clone(),
+        };
+        next.vizdoom_path = whole(&next.vizdoom_path, &self.vizdoom_path);
+        next.doom_game_path = whole(&next.doom_game_path, &self.doom_game_path);
+        next.doom_scenario_path = whole(&next.doom_scenario_path, &self.doom_scenario_path);
+        next.doom_config_path = whole(&next.doom_config_path, &self.doom_config_path);
+        next.base_dir = self.base_dir.clone();
+        *self = next;
+        Ok(())
+    }
+
+    fn read_lines(&mut self, text: &str, label: &str) -> Result<(), CfgError> {
         let mut lines = text.split('\n').enumerate().map(|(i, l)| (i + 1, squeeze(l)));
         while let Some((number, line)) = lines.next() {
             if line.is_empty() || line.starts_with('#') {
                 continue;
             }
-            cfg.read_entry(number, &line, &mut lines).map_err(|(line, problem)| CfgError::Line {
+            self.read_entry(number, &line, &mut lines).map_err(|(line, problem)| CfgError::Line {
                 path: label.to_string(),
                 line,
                 problem,
             })?;
         }
-        Ok(cfg)
+        Ok(())
     }
 
     /// One `key = value` line, and for a list the lines it spans.

@@ -8,8 +8,10 @@ mod cfg;
 mod config;
 pub mod host;
 mod names;
+pub mod observe;
 pub mod run;
 pub mod scripts;
+pub mod variables;
 
 pub use cfg::{key_names, CfgError, Problem, KEY_COUNT};
 pub use config::{AutomapOptions, Outputs, RenderFlags, Rewards, ScenarioConfig};

@@ -58,6 +58,60 @@ pub struct Episode {
     leaving: bool,
     /// Tics a turn button has been held.
     turn_held: u32,
+    /// The counts the 1.3 rewards are paid on, after the last action.
+    counts: Counts,
+}
+
+/// What ViZDoom 1.3's event rewards are paid on (`kill_reward` and the
+/// rest): the player's counts after an action, compared with the last.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+struct Counts {
+    kills: f64,
+    items: f64,
+    secrets: f64,
+    frags: f64,
+    hits: f64,
+    hits_taken: f64,
+    damage: f64,
+    damage_taken: f64,
+    health: f64,
+    armor: f64,
+}
+
+impl Counts {
+    fn of(game: &SimGame) -> Counts {
+        let v = |variable| super::variables::value(game, 0, variable);
+        use super::GameVariable as G;
+        Counts {
+            kills: v(G::KillCount),
+            items: v(G::ItemCount),
+            secrets: v(G::SecretCount),
+            frags: v(G::FragCount),
+            hits: v(G::HitCount),
+            hits_taken: v(G::HitsTaken),
+            damage: v(G::DamageCount),
+            damage_taken: v(G::DamageTaken),
+            health: v(G::Health),
+            armor: v(G::Armor),
+        }
+    }
+
+    /// The rewards earned from `before` to `self`: per kill, item, secret,
+    /// frag and hit, per point of damage, and per point of health and
+    /// armour gained (losses pay nothing).
+    fn reward_since(&self, before: &Counts, r: &super::Rewards) -> f64 {
+        let gained = |now: f64, then: f64| (now - then).max(0.0);
+        r.kill * (self.kills - before.kills)
+            + r.item * (self.items - before.items)
+            + r.secret * (self.secrets - before.secrets)
+            + r.frag * (self.frags - before.frags)
+            + r.hit * (self.hits - before.hits)
+            - r.hit_taken_penalty * (self.hits_taken - before.hits_taken)
+            + r.damage_made * (self.damage - before.damage)
+            - r.damage_taken_penalty * (self.damage_taken - before.damage_taken)
+            + r.health * gained(self.health, before.health)
+            + r.armor * gained(self.armor, before.armor)
+    }
 }
 
 /// What went wrong starting a scenario.
@@ -94,10 +148,14 @@ pub fn reward_so_far(game: &SimGame, config: &ScenarioConfig) -> f64 {
 }
 
 /// A scenario opened once: its `.cfg` and its map converted and compiled,
-/// so each episode starts from a copy.
+/// and its one-player game set up (actors, scripts, art), so each episode
+/// starts from a copy.
 pub struct Scenario {
     pub config: ScenarioConfig,
     opened: Opened,
+    /// The one-player game at its first tic with seed 0, copied and
+    /// reseeded for each episode (`SimGame::reseeded`).
+    pristine: SimGame,
     /// What the WAD's DECORATE says that the actor table cannot hold
     /// (flags, properties, actions left out), one line each with its lump
     /// and line.
@@ -116,23 +174,34 @@ impl Scenario {
             }
             None => Vec::new(),
         };
-        Ok(Scenario { config: config.clone(), opened, decorate_unread })
+        let setup = Setup { no_autoaim: config.no_autoaim(), ..Setup::SINGLE };
+        let pristine = Self::game(config, &opened, 0, setup)?;
+        Ok(Scenario { config: config.clone(), opened, pristine, decorate_unread })
+    }
+
+    fn game(config: &ScenarioConfig, opened: &Opened, seed: u64, setup: Setup) -> Result<SimGame, ScenarioError> {
+        let skill = config.doom_skill.clamp(1, 5) as u8;
+        let options = GameOptions { skill, seed, no_monsters: false };
+        SimGame::netgame(opened.clone(), options, setup).map_err(|e| ScenarioError::Open(e.to_string()))
     }
 
     /// A new episode, its random generators seeded with `seed`, after the
-    /// start time's tics played with no input.
+    /// start time's tics played with no input: a copy of the game set up
+    /// once, the same as a game set up anew with `seed`.
     pub fn episode(&self, seed: u64) -> Result<Episode, ScenarioError> {
-        self.episode_with(seed, Setup { no_autoaim: self.config.no_autoaim(), ..Setup::SINGLE })
+        let Some(game) = self.pristine.reseeded(seed) else { unreachable!("the pristine game is unplayed, seed 0") };
+        Ok(self.begin(game))
     }
 
     /// [`Scenario::episode`] with `setup` players (a multiplayer scenario:
     /// the others' commands go in through `Episode::game`'s
     /// `command_all`; [`Episode::step`] plays the first player's).
     pub fn episode_with(&self, seed: u64, setup: Setup) -> Result<Episode, ScenarioError> {
-        let skill = self.config.doom_skill.clamp(1, 5) as u8;
-        let options = GameOptions { skill, seed, no_monsters: false };
-        let game =
-            SimGame::netgame(self.opened.clone(), options, setup).map_err(|e| ScenarioError::Open(e.to_string()))?;
+        Ok(self.begin(Self::game(&self.config, &self.opened, seed, setup)?))
+    }
+
+    /// An episode of `game`, after the start time.
+    fn begin(&self, game: SimGame) -> Episode {
         let mut episode = Episode {
             game,
             config: self.config.clone(),
@@ -142,12 +211,14 @@ impl Scenario {
             reward_global: 0,
             leaving: false,
             turn_held: 0,
+            counts: Counts::default(),
         };
         for _ in 0..self.config.episode_start_time {
             episode.game.command(Ticcmd::default());
         }
         episode.reward_global = episode.global(0);
-        Ok(episode)
+        episode.counts = Counts::of(&episode.game);
+        episode
     }
 }
 
@@ -180,10 +251,14 @@ impl Episode {
             let global = self.global(0);
             reward += f64::from(global.wrapping_sub(self.reward_global)) / 65536.0;
             self.reward_global = global;
+            let counts = Counts::of(&self.game);
+            reward += counts.reward_since(&self.counts, &rewards);
+            self.counts = counts;
             if self.game.player().health <= 0 {
                 reward -= rewards.death_penalty;
                 self.end = Some(End::Death);
             } else if self.game.sim.exit.is_some() {
+                reward += rewards.map_exit;
                 self.leaving = true;
             }
         }
@@ -191,6 +266,20 @@ impl Episode {
             self.end = Some(End::Timeout);
         }
         self.total_reward += reward;
+        reward
+    }
+
+    /// [`Episode::step`] `tics` times with the same buttons, as ViZDoom's
+    /// `make_action(action, tics)`: the rewards summed, stopping early when
+    /// the episode ends.
+    pub fn step_tics(&mut self, pressed: &[f64], tics: u32) -> f64 {
+        let mut reward = 0.0;
+        for _ in 0..tics.max(1) {
+            if self.end.is_some() {
+                break;
+            }
+            reward += self.step(pressed);
+        }
         reward
     }
 
@@ -265,5 +354,42 @@ impl RandomPolicy {
             *b = 1.0;
         }
         pressed
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// What two games must agree on: every body's place and health, the
+    /// generators' cursors, the scripts' reward.
+    fn fingerprint(e: &Episode) -> (Vec<(i32, i32, i32, i32)>, u8, u8, i32) {
+        let sim = &e.game.sim;
+        let bodies = sim.mobjs.iter().map(|m| (m.x.0, m.y.0, m.z.0, m.health)).collect();
+        (bodies, sim.rng.p_index(), sim.rng.m_index(), e.global(0))
+    }
+
+    /// A copied, reseeded game plays as one set up anew with the seed,
+    /// with scripts (ACS random numbers) and monsters (Doom's table).
+    #[test]
+    fn a_reseeded_copy_plays_as_a_game_set_up_with_its_seed() {
+        let Some(dir) = super::super::shipped_dir() else { return };
+        for name in ["defend_the_center.cfg", "predict_position.cfg", "health_gathering.cfg"] {
+            let config = ScenarioConfig::load(dir.join(name)).unwrap();
+            let scenario = Scenario::open(&config, None).unwrap();
+            let setup = Setup { no_autoaim: config.no_autoaim(), ..Setup::SINGLE };
+            for seed in [1, 77, 4096] {
+                let mut copied = scenario.episode(seed).unwrap();
+                let mut fresh = scenario.episode_with(seed, setup).unwrap();
+                let mut policy = RandomPolicy::new(seed);
+                for tic in 0..300 {
+                    let action = policy.action(config.available_buttons.len());
+                    copied.step(&action);
+                    fresh.step(&action);
+                    assert_eq!(fingerprint(&copied), fingerprint(&fresh), "{name} seed {seed} tic {tic}");
+                }
+                assert_eq!(copied.total_reward, fresh.total_reward, "{name} seed {seed}");
+            }
+        }
     }
 }

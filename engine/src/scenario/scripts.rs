@@ -38,6 +38,17 @@ pub struct Scripts {
     pub unsupported: Vec<String>,
 }
 
+/// A copy that goes on exactly as the original: the generator copied by
+/// its seed, stream and position.
+impl Clone for Scripts {
+    fn clone(&self) -> Scripts {
+        let mut rng = ChaCha8Rng::from_seed(self.rng.get_seed());
+        rng.set_stream(self.rng.get_stream());
+        rng.set_word_pos(self.rng.get_word_pos());
+        Scripts { vm: self.vm.clone(), rng, printed: self.printed.clone(), unsupported: self.unsupported.clone() }
+    }
+}
+
 impl Scripts {
     /// The scripts of `map` in `wad`, or `None` when it has no BEHAVIOR.
     /// The VM's random generator is seeded with `seed`. A module this VM or
@@ -52,6 +63,12 @@ impl Scripts {
         vm.level_number = default_level_number(map);
         let rng = ChaCha8Rng::seed_from_u64(seed);
         Ok(Some(Scripts { vm, rng, printed: Vec::new(), unsupported: Vec::new() }))
+    }
+
+    /// The VM's random generator seeded anew with `seed` (a game set up
+    /// once and copied for each episode: see `SimGame::reseeded`).
+    pub fn reseed(&mut self, seed: u64) {
+        self.rng = ChaCha8Rng::seed_from_u64(seed);
     }
 
     /// The level begins: its OPEN scripts with the world as activator, then

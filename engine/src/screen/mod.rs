@@ -8,6 +8,7 @@
 //! centred across its width (a wide frame has margins beside the weapon,
 //! not a stretched one).
 
+pub mod automap;
 pub mod status;
 pub mod text;
 pub mod tint;
@@ -29,13 +30,14 @@ pub enum Hud {
     Off,
 }
 
-/// Draws the weapon, the tints and the HUD of `player` over a rendered view of `level`.
-pub fn draw(fb: &mut Framebuffer, level: &Level, player: &Player, hud: Hud) {
+/// Draws the weapon, the tints and the HUD of `player` over a rendered
+/// view of `level`; `table` is the game's actor table (the weapon's states).
+pub fn draw(fb: &mut Framebuffer, level: &Level, table: &crate::actors::ActorTable, player: &Player, hud: Hud) {
     tint::apply(fb, player);
-    weapon::draw(fb, level, player, hud == Hud::StatusBar);
+    weapon::draw(fb, level, table, player, hud == Hud::StatusBar);
     match hud {
-        Hud::StatusBar => status::status_bar(fb, level, player),
-        Hud::Minimal => status::minimal(fb, level, player),
+        Hud::StatusBar => status::status_bar(fb, level, table, player),
+        Hud::Minimal => status::minimal(fb, level, table, player),
         Hud::Off => {}
     }
 }

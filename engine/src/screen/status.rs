@@ -23,8 +23,8 @@ const GOLD: u32 = rgb(240, 200, 60);
 const GREY: u32 = rgb(150, 150, 150);
 
 /// The ammunition of the weapon in hand, if it uses any.
-fn current_ammo(player: &Player) -> Option<(i32, i32)> {
-    let weapon = ActorTable::active().actors.get(player.ready_weapon?)?.weapon.as_ref()?;
+fn current_ammo(table: &ActorTable, player: &Player) -> Option<(i32, i32)> {
+    let weapon = table.actors.get(player.ready_weapon?)?.weapon.as_ref()?;
     let k = weapon.ammo?.index();
     Some((player.ammo[k], player.max_ammo[k]))
 }
@@ -61,7 +61,8 @@ impl Layout {
     }
 }
 
-pub fn status_bar(fb: &mut Framebuffer, _level: &Level, player: &Player) {
+/// `table` is the game's actor table (its weapons' slots and ammunition).
+pub fn status_bar(fb: &mut Framebuffer, _level: &Level, table: &ActorTable, player: &Player) {
     let (s, margin) = scale(fb);
     let top = fb.height as f64 - BAR_HEIGHT * s;
     let l = Layout { s, margin, top };
@@ -73,7 +74,7 @@ pub fn status_bar(fb: &mut Framebuffer, _level: &Level, player: &Player) {
     for (u0, u1) in boxes {
         fill_rect(fb, l.x(u0 + 1.0), l.y(2.0), l.len(u1 - u0 - 2.0), l.len(29.0), rgb(28, 27, 26));
     }
-    let (ammo, _) = current_ammo(player).unwrap_or((-1, 0));
+    let (ammo, _) = current_ammo(table, player).unwrap_or((-1, 0));
     if ammo >= 0 {
         l.centred(fb, 0.0, 48.0, 5.0, 16.0, &ammo.to_string(), RED);
     }
@@ -81,7 +82,6 @@ pub fn status_bar(fb: &mut Framebuffer, _level: &Level, player: &Player) {
     l.centred(fb, 48.0, 104.0, 5.0, 16.0, &format!("{}%", player.health.clamp(0, 999)), RED);
     l.centred(fb, 48.0, 104.0, 23.0, 6.0, "HEALTH", GREY);
     // Arms: 2 3 4 / 5 6 7, lit when a weapon of that slot is owned.
-    let table = ActorTable::active();
     for slot in 2..=7u8 {
         let owned = player
             .weapons
@@ -139,13 +139,13 @@ fn face(fb: &mut Framebuffer, l: &Layout, player: &Player) {
 
 /// The minimal HUD: health and armour at the bottom left, the ammunition
 /// of the weapon in hand at the bottom right, keys beside it.
-pub fn minimal(fb: &mut Framebuffer, _level: &Level, player: &Player) {
+pub fn minimal(fb: &mut Framebuffer, _level: &Level, table: &ActorTable, player: &Player) {
     let (s, margin) = scale(fb);
     let l = Layout { s, margin, top: fb.height as f64 - 20.0 * s };
     let k = l.text(10.0);
     let left = format!("{}% {}%", player.health.clamp(0, 999), player.armor);
     draw_text_in(fb, l.x(4.0), l.y(4.0), k, &left, RED);
-    if let Some((ammo, _)) = current_ammo(player) {
+    if let Some((ammo, _)) = current_ammo(table, player) {
         let text = ammo.to_string();
         let x = l.x(316.0).saturating_sub(text.len() * GLYPH * k);
         draw_text_in(fb, x, l.y(4.0), k, &text, GOLD);

@@ -7,6 +7,7 @@
 //! [`TextureKind::Screen`]: crate::texture::TextureKind::Screen
 
 use super::scale;
+use crate::actors::ActorTable;
 use crate::framebuffer::Framebuffer;
 use crate::level::Level;
 use crate::materials::Materials;
@@ -16,8 +17,9 @@ use crate::play::Player;
 /// view window is 168 rows high, its centre 16 rows above the screen's).
 pub const STATUS_LIFT: f64 = 16.0;
 
-pub fn draw(fb: &mut Framebuffer, level: &Level, player: &Player, status_bar: bool) {
-    let table = crate::actors::ActorTable::active();
+/// `table` is the game's actor table, whose states the player's sprites
+/// are in (a scenario's DECORATE weapons are in its own).
+pub fn draw(fb: &mut Framebuffer, level: &Level, table: &ActorTable, player: &Player, status_bar: bool) {
     let light = level.compiled.map.sectors.get(player.sector).map_or(255, |s| i32::from(s.light));
     let lit = ((light + 16 * player.extra_light) as f32 / 255.0).clamp(0.2, 1.0);
     let lift = if status_bar { STATUS_LIFT } else { 0.0 };
@@ -44,24 +46,22 @@ fn blit(fb: &mut Framebuffer, texture: &crate::texture::Texture, x: f64, y: f64,
     let px1 = ((x0 + w).ceil().max(0.0) as usize).min(fb.width);
     let py1 = ((y0 + h).ceil().max(0.0) as usize).min(fb.height);
     let k = (shade * 256.0) as u32;
+    let d = |c: u8| ((u32::from(c) * k) >> 8).min(255) as u8;
+    // The texel row of each screen row, found once for the whole picture.
+    let texel = |p: usize, origin: f64, size: usize| {
+        let t = ((p as f64 + 0.5 - origin) / s).floor();
+        (t >= 0.0 && t < size as f64).then_some(t as usize)
+    };
+    let rows: Vec<(usize, usize)> =
+        (py0..py1).filter_map(|py| texel(py, y0, texture.height).map(|v| (py, v))).collect();
     for px in px0..px1 {
-        let u = ((px as f64 + 0.5 - x0) / s).floor();
-        if u < 0.0 || u >= texture.width as f64 {
-            continue;
-        }
-        let column = u as usize * texture.height;
-        for py in py0..py1 {
-            let v = ((py as f64 + 0.5 - y0) / s).floor();
-            if v < 0.0 || v >= texture.height as f64 {
-                continue;
+        let Some(u) = texel(px, x0, texture.width) else { continue };
+        let column = &texture.texels[u * texture.height..(u + 1) * texture.height];
+        for &(py, v) in &rows {
+            let [r, g, b, a] = column[v].to_le_bytes();
+            if a >= 128 {
+                fb.pixels[py * fb.width + px] = u32::from_le_bytes([d(r), d(g), d(b), 255]);
             }
-            let texel = texture.texels[column + v as usize];
-            let [r, g, b, a] = texel.to_le_bytes();
-            if a < 128 {
-                continue;
-            }
-            let d = |c: u8| ((u32::from(c) * k) >> 8).min(255) as u8;
-            fb.pixels[py * fb.width + px] = u32::from_le_bytes([d(r), d(g), d(b), 255]);
         }
     }
 }

@@ -43,6 +43,7 @@ pub enum SimGameError {
 }
 
 /// A game on one level of the simulation with Doom's arithmetic.
+#[derive(Clone)]
 pub struct SimGame {
     pub sim: Sim,
     level: Level,
@@ -187,6 +188,26 @@ impl SimGame {
         game.refresh();
         game.before = game.after;
         Ok(game)
+    }
+
+    /// This game, new and unplayed, as it would have begun with `seed`:
+    /// a copy with the generators moved as [`SimGame::new`] moves them (a
+    /// RON or ZDoom map's Doom table cursors, the scripts' generator). A
+    /// scenario sets its game up once with seed 0 and copies it for each
+    /// episode. `None` for a game already played or not begun with seed 0.
+    pub fn reseeded(&self, seed: u64) -> Option<SimGame> {
+        if self.options.seed != 0 || self.ticks() != 0 {
+            return None;
+        }
+        let mut game = self.clone();
+        if game.sim.rules.compat == Compat::Sightline {
+            seed_random(&mut game.sim, seed);
+        }
+        if let Some(s) = game.scripts.as_mut() {
+            s.reseed(seed);
+        }
+        game.options.seed = seed;
+        Some(game)
     }
 
     /// The game going on to the next map of a campaign, or to its own map

@@ -68,6 +68,7 @@ pub fn kill_mobj(sim: &mut Sim, source: Option<MobjId>, target: MobjId) {
             }
             p.playerstate = PlayerState::Dead;
         }
+        sim.zdoom.tallies[v].deaths += 1;
         sim.mo_mut(target).flags &= !mf::SOLID;
         weapons::drop_weapon(sim, v);
     }
@@ -128,6 +129,7 @@ pub fn damage_mobj(sim: &mut Sim, target: MobjId, inflictor: Option<MobjId>, sou
             return;
         }
     }
+    sim.log_damage(target, source, damage);
     let mo = sim.mo_mut(target);
     mo.health = mo.health.wrapping_sub(damage);
     if mo.health <= 0 {

@@ -79,8 +79,9 @@ pub const MAGIC: &[u8] = b"SIGHTLINE-SIMS\n";
 /// carry their parameters (a door's wait shut, a floor's change on
 /// arrival, a ceiling's starting speed) and the level its generalized
 /// specials, which the map's fingerprint covers. 3: the bodies' ZDoom
-/// fields (thing ids and specials, script-set properties).
-pub const VERSION: u8 = 3;
+/// fields (thing ids and specials, script-set properties). 4: ViZDoom's
+/// tallies of hits, damage and deaths.
+pub const VERSION: u8 = 4;
 
 #[derive(Debug, thiserror::Error)]
 pub enum SaveError {

@@ -78,6 +78,25 @@ pub struct Zdoom {
     pub bodies: BTreeMap<u32, Extra>,
     /// Specials set off and not yet run, oldest first.
     pub fired: Vec<Fired>,
+    /// ViZDoom's tallies, by player.
+    pub tallies: [Tally; super::MAXPLAYERS],
+}
+
+/// What ViZDoom counts for a player beyond Doom's kills, items and secrets
+/// (its game variables `HITCOUNT`, `HITS_TAKEN`, `DAMAGECOUNT`,
+/// `DAMAGE_TAKEN`, `DEATHCOUNT`, and the rewards paid on them): hits and
+/// damage as `VIZ_LogDmg` logs them, the damage a body loses in health
+/// (after armour), a hit over 1,000 (a telefrag) not counted.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub struct Tally {
+    /// Hits the player's attacks landed on others, and their damage.
+    pub hits: i32,
+    pub damage: i32,
+    /// Hits the player took, and their damage.
+    pub hits_taken: i32,
+    pub damage_taken: i32,
+    /// Times the player died.
+    pub deaths: i32,
 }
 
 impl Zdoom {
@@ -96,6 +115,24 @@ impl Zdoom {
 }
 
 impl Sim {
+    /// Logs `damage` about to come off `target`'s health, by `source`
+    /// (ViZDoom's `VIZ_LogDmg`): a player hit counts as taken, else a hit
+    /// by a player counts as that player's.
+    pub fn log_damage(&mut self, target: MobjId, source: Option<MobjId>, damage: i32) {
+        if !(0..=1000).contains(&damage) {
+            return;
+        }
+        if let Some(n) = self.mo(target).player {
+            let t = &mut self.zdoom.tallies[n];
+            t.hits_taken += 1;
+            t.damage_taken += damage;
+        } else if let Some(n) = source.and_then(|s| self.mo(s).player) {
+            let t = &mut self.zdoom.tallies[n];
+            t.hits += 1;
+            t.damage += damage;
+        }
+    }
+
     /// The live bodies with thing id `tid`, oldest first (0 matches none:
     /// ACS means the activator by it, which the caller resolves).
     pub fn bodies_with_tid(&self, tid: i32) -> Vec<MobjId> {

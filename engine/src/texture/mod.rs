@@ -223,7 +223,9 @@ fn list_paths(paths: &[PathBuf]) -> String {
 /// file tells them apart) share one texture and one id.
 #[derive(Clone, Debug, Default)]
 pub struct TextureSet {
-    textures: Vec<Texture>,
+    /// Shared, so a copied level (a scenario's game copied for each
+    /// episode) shares its texels.
+    textures: Vec<std::sync::Arc<Texture>>,
     names: Vec<String>,
     ids: HashMap<(String, TextureKind), TextureId>,
     sources: HashMap<Source, TextureId>,
@@ -293,7 +295,7 @@ impl TextureSet {
                 // Ids are u32 to keep map data small; four billion textures
                 // would not fit in memory first.
                 let id = TextureId(self.textures.len() as u32);
-                self.textures.push(texture);
+                self.textures.push(std::sync::Arc::new(texture));
                 self.names.push(name.to_string());
                 self.sources.insert(source, id);
                 id

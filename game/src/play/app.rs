@@ -20,7 +20,6 @@ use winit::event_loop::ActiveEventLoop;
 use winit::keyboard::PhysicalKey;
 use winit::window::WindowId;
 
-use super::automap::Automap;
 use super::clock::TickClock;
 use super::hud::Hud;
 use super::input::{digit, window_action, Action};
@@ -29,6 +28,7 @@ use super::screen::{Screen, ScreenOptions};
 use super::screenshot;
 use super::session::Session;
 use super::timings::Timings;
+use sightline::screen::automap::Automap;
 
 pub struct App {
     screen_options: ScreenOptions,
@@ -145,7 +145,7 @@ impl App {
         let start = Instant::now();
         render_frame(level, &view, &self.options, &mut self.frame, &mut self.fb);
         let render = start.elapsed();
-        sightline::screen::draw(&mut self.fb, level, play.game.player(), self.status);
+        sightline::screen::draw(&mut self.fb, level, &play.game.sim.info.table, play.game.player(), self.status);
         self.automap.accumulate(self.frame.seen_lines());
         if self.automap.visible {
             self.automap.draw(&level.map, (view.pos.x, view.pos.y), view.angle, &mut self.fb);

@@ -13,7 +13,6 @@
 //! ```
 
 mod app;
-mod automap;
 mod clock;
 pub(crate) mod hud;
 mod input;

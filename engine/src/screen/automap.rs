@@ -3,9 +3,9 @@
 //! player. It remembers what every rendered frame reported as drawn
 //! (`Frame::seen_lines`), so it fills in as you explore.
 
-use sightline::framebuffer::rgb;
-use sightline::map::Map;
-use sightline::Framebuffer;
+use crate::framebuffer::rgb;
+use crate::map::Map;
+use crate::Framebuffer;
 
 /// Blank border around the map, as a fraction of the frame's smaller side.
 const MARGIN: f64 = 0.05;
@@ -20,6 +20,8 @@ const FLOOR_STEP: u32 = rgb(188, 120, 72);
 const CEILING_STEP: u32 = rgb(252, 252, 0);
 const OPENING: u32 = rgb(120, 120, 120);
 const PLAYER: u32 = rgb(255, 255, 255);
+/// Things, in the modes that show them (ViZDoom's `OBJECTS`).
+const THING: u32 = rgb(0, 252, 0);
 const BACKGROUND: u32 = rgb(0, 0, 0);
 
 pub struct Automap {
@@ -71,9 +73,16 @@ impl Automap {
     /// Replaces the frame with the automap: seen lines and the player at
     /// `pos` facing `angle` degrees (counter-clockwise from east).
     pub fn draw(&self, map: &Map, pos: (f64, f64), angle: f64, fb: &mut Framebuffer) {
+        self.draw_showing(map, pos, angle, Show::Seen, fb);
+    }
+
+    /// [`Automap::draw`] showing more: every line, or every line and the
+    /// things (`level.things`), each a dot.
+    pub fn draw_showing(&self, map: &Map, pos: (f64, f64), angle: f64, show: Show<'_>, fb: &mut Framebuffer) {
         fb.pixels.fill(BACKGROUND);
         let fit = Fit::new(map, fb.width, fb.height);
-        for (line, _) in map.lines.iter().zip(&self.seen).filter(|(_, &seen)| seen) {
+        let whole = !matches!(show, Show::Seen);
+        for (line, _) in map.lines.iter().zip(&self.seen).filter(|(_, &seen)| seen || whole) {
             let (a, b) = map.line_points(line);
             let colour = match &line.back {
                 None => WALL,
@@ -90,8 +99,27 @@ impl Automap {
             };
             draw_line(fb, fit.to_screen(a.x, a.y), fit.to_screen(b.x, b.y), colour);
         }
+        if let Show::Things(things) = show {
+            for t in things {
+                let (x, y) = fit.to_screen(t.pos.x, t.pos.y);
+                for (dx, dy) in [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0)] {
+                    draw_line(fb, (x + dx, y + dy), (x + dx, y + dy), THING);
+                }
+            }
+        }
         draw_arrow(fb, fit.to_screen(pos.0, pos.1), angle, ARROW * fb.height as f64);
     }
+}
+
+/// What [`Automap::draw_showing`] shows.
+#[derive(Clone, Copy, Debug)]
+pub enum Show<'a> {
+    /// The lines the player has seen (Doom's automap).
+    Seen,
+    /// Every line.
+    Whole,
+    /// Every line and these things.
+    Things(&'a [crate::level::DrawnThing]),
 }
 
 /// An arrow `len` pixels long centred on `at`, pointing along `angle`

@@ -1,0 +1,258 @@
+"""ViZDoom's enumerations, by the same names and values as the ``vizdoom``
+package 1.3.2 (its ``vizdoom.pyi``), so code that compares or stores them
+as integers keeps working. Each is an :class:`enum.IntEnum`."""
+
+import enum
+
+
+class _Enum(enum.IntEnum):
+    def __str__(self) -> str:
+        return f"{type(self).__name__}.{self.name}"
+
+
+class AutomapMode(_Enum):
+    NORMAL = 0
+    WHOLE = 1
+    OBJECTS = 2
+    OBJECTS_WITH_SIZE = 3
+
+class Button(_Enum):
+    ATTACK = 0
+    USE = 1
+    JUMP = 2
+    CROUCH = 3
+    TURN180 = 4
+    ALTATTACK = 5
+    RELOAD = 6
+    ZOOM = 7
+    SPEED = 8
+    STRAFE = 9
+    MOVE_RIGHT = 10
+    MOVE_LEFT = 11
+    MOVE_BACKWARD = 12
+    MOVE_FORWARD = 13
+    TURN_RIGHT = 14
+    TURN_LEFT = 15
+    LOOK_UP = 16
+    LOOK_DOWN = 17
+    MOVE_UP = 18
+    MOVE_DOWN = 19
+    LAND = 20
+    SELECT_WEAPON1 = 21
+    SELECT_WEAPON2 = 22
+    SELECT_WEAPON3 = 23
+    SELECT_WEAPON4 = 24
+    SELECT_WEAPON5 = 25
+    SELECT_WEAPON6 = 26
+    SELECT_WEAPON7 = 27
+    SELECT_WEAPON8 = 28
+    SELECT_WEAPON9 = 29
+    SELECT_WEAPON0 = 30
+    SELECT_NEXT_WEAPON = 31
+    SELECT_PREV_WEAPON = 32
+    DROP_SELECTED_WEAPON = 33
+    ACTIVATE_SELECTED_ITEM = 34
+    SELECT_NEXT_ITEM = 35
+    SELECT_PREV_ITEM = 36
+    DROP_SELECTED_ITEM = 37
+    LOOK_UP_DOWN_DELTA = 38
+    TURN_LEFT_RIGHT_DELTA = 39
+    MOVE_FORWARD_BACKWARD_DELTA = 40
+    MOVE_LEFT_RIGHT_DELTA = 41
+    MOVE_UP_DOWN_DELTA = 42
+
+class GameVariable(_Enum):
+    KILLCOUNT = 0
+    ITEMCOUNT = 1
+    SECRETCOUNT = 2
+    FRAGCOUNT = 3
+    DEATHCOUNT = 4
+    HITCOUNT = 5
+    HITS_TAKEN = 6
+    DAMAGECOUNT = 7
+    DAMAGE_TAKEN = 8
+    HEALTH = 9
+    ARMOR = 10
+    DEAD = 11
+    ON_GROUND = 12
+    ATTACK_READY = 13
+    ALTATTACK_READY = 14
+    SELECTED_WEAPON = 15
+    SELECTED_WEAPON_AMMO = 16
+    AMMO0 = 17
+    AMMO1 = 18
+    AMMO2 = 19
+    AMMO3 = 20
+    AMMO4 = 21
+    AMMO5 = 22
+    AMMO6 = 23
+    AMMO7 = 24
+    AMMO8 = 25
+    AMMO9 = 26
+    WEAPON0 = 27
+    WEAPON1 = 28
+    WEAPON2 = 29
+    WEAPON3 = 30
+    WEAPON4 = 31
+    WEAPON5 = 32
+    WEAPON6 = 33
+    WEAPON7 = 34
+    WEAPON8 = 35
+    WEAPON9 = 36
+    POSITION_X = 37
+    POSITION_Y = 38
+    POSITION_Z = 39
+    ANGLE = 40
+    PITCH = 41
+    ROLL = 42
+    VIEW_HEIGHT = 43
+    VELOCITY_X = 44
+    VELOCITY_Y = 45
+    VELOCITY_Z = 46
+    CAMERA_POSITION_X = 47
+    CAMERA_POSITION_Y = 48
+    CAMERA_POSITION_Z = 49
+    CAMERA_ANGLE = 50
+    CAMERA_PITCH = 51
+    CAMERA_ROLL = 52
+    CAMERA_FOV = 53
+    PLAYER_NUMBER = 54
+    PLAYER_COUNT = 55
+    PLAYER1_FRAGCOUNT = 56
+    PLAYER2_FRAGCOUNT = 57
+    PLAYER3_FRAGCOUNT = 58
+    PLAYER4_FRAGCOUNT = 59
+    PLAYER5_FRAGCOUNT = 60
+    PLAYER6_FRAGCOUNT = 61
+    PLAYER7_FRAGCOUNT = 62
+    PLAYER8_FRAGCOUNT = 63
+    PLAYER9_FRAGCOUNT = 64
+    PLAYER10_FRAGCOUNT = 65
+    PLAYER11_FRAGCOUNT = 66
+    PLAYER12_FRAGCOUNT = 67
+    PLAYER13_FRAGCOUNT = 68
+    PLAYER14_FRAGCOUNT = 69
+    PLAYER15_FRAGCOUNT = 70
+    PLAYER16_FRAGCOUNT = 71
+    USER1 = 72
+    USER2 = 73
+    USER3 = 74
+    USER4 = 75
+    USER5 = 76
+    USER6 = 77
+    USER7 = 78
+    USER8 = 79
+    USER9 = 80
+    USER10 = 81
+    USER11 = 82
+    USER12 = 83
+    USER13 = 84
+    USER14 = 85
+    USER15 = 86
+    USER16 = 87
+    USER17 = 88
+    USER18 = 89
+    USER19 = 90
+    USER20 = 91
+    USER21 = 92
+    USER22 = 93
+    USER23 = 94
+    USER24 = 95
+    USER25 = 96
+    USER26 = 97
+    USER27 = 98
+    USER28 = 99
+    USER29 = 100
+    USER30 = 101
+    USER31 = 102
+    USER32 = 103
+    USER33 = 104
+    USER34 = 105
+    USER35 = 106
+    USER36 = 107
+    USER37 = 108
+    USER38 = 109
+    USER39 = 110
+    USER40 = 111
+    USER41 = 112
+    USER42 = 113
+    USER43 = 114
+    USER44 = 115
+    USER45 = 116
+    USER46 = 117
+    USER47 = 118
+    USER48 = 119
+    USER49 = 120
+    USER50 = 121
+    USER51 = 122
+    USER52 = 123
+    USER53 = 124
+    USER54 = 125
+    USER55 = 126
+    USER56 = 127
+    USER57 = 128
+    USER58 = 129
+    USER59 = 130
+    USER60 = 131
+
+class Mode(_Enum):
+    PLAYER = 0
+    SPECTATOR = 1
+    ASYNC_PLAYER = 2
+    ASYNC_SPECTATOR = 3
+
+class ScreenFormat(_Enum):
+    CRCGCB = 0
+    RGB24 = 1
+    RGBA32 = 2
+    ARGB32 = 3
+    CBCGCR = 4
+    BGR24 = 5
+    BGRA32 = 6
+    ABGR32 = 7
+    GRAY8 = 8
+    DOOM_256_COLORS8 = 9
+
+class ScreenResolution(_Enum):
+    RES_160X120 = 0
+    RES_200X125 = 1
+    RES_200X150 = 2
+    RES_256X144 = 3
+    RES_256X160 = 4
+    RES_256X192 = 5
+    RES_320X180 = 6
+    RES_320X200 = 7
+    RES_320X240 = 8
+    RES_320X256 = 9
+    RES_400X225 = 10
+    RES_400X250 = 11
+    RES_400X300 = 12
+    RES_512X288 = 13
+    RES_512X320 = 14
+    RES_512X384 = 15
+    RES_640X360 = 16
+    RES_640X400 = 17
+    RES_640X480 = 18
+    RES_800X450 = 19
+    RES_800X500 = 20
+    RES_800X600 = 21
+    RES_1024X576 = 22
+    RES_1024X640 = 23
+    RES_1024X768 = 24
+    RES_1280X720 = 25
+    RES_1280X800 = 26
+    RES_1280X960 = 27
+    RES_1280X1024 = 28
+    RES_1400X787 = 29
+    RES_1400X875 = 30
+    RES_1400X1050 = 31
+    RES_1600X900 = 32
+    RES_1600X1000 = 33
+    RES_1600X1200 = 34
+    RES_1920X1080 = 35
+
+class SamplingRate(_Enum):
+    SR_11025 = 0
+    SR_22050 = 1
+    SR_44100 = 2
+

@@ -1,0 +1,188 @@
+//! One scenario game as Python drives it: the engine's [`Episode`] and an
+//! [`Observer`] of it, with the checks a call from Python needs (an action
+//! of the wrong length, a step before any episode) turned into Python
+//! exceptions. Frames are drawn when asked for, once per state.
+
+use std::sync::Arc;
+
+use pyo3::exceptions::{PyFileNotFoundError, PyRuntimeError, PyValueError};
+use pyo3::PyResult;
+use sightline::scenario::observe::{convert, shape, Observer};
+use sightline::scenario::{variables, Episode, GameVariable, Scenario, ScenarioConfig};
+
+/// A scenario opened once, shared by every game of it.
+pub struct Opened {
+    scenario: Scenario,
+}
+
+impl Opened {
+    /// Opens `config`'s scenario, its files checked first so that a
+    /// missing one is a `FileNotFoundError` naming it.
+    pub fn open(config: &ScenarioConfig, iwad: Option<&str>) -> PyResult<Opened> {
+        let Some(wad) = config.scenario_wad() else {
+            return Err(PyValueError::new_err(
+                "no scenario WAD: set doom_scenario_path (set_doom_scenario_path or a .cfg's doom_scenario_path)",
+            ));
+        };
+        let given = iwad.map(std::path::PathBuf::from).or_else(|| config.game_wad());
+        for path in [Some(wad), given.clone()].into_iter().flatten() {
+            if !path.is_file() {
+                return Err(PyFileNotFoundError::new_err(format!("{}: no such file", path.display())));
+            }
+        }
+        let scenario = Scenario::open(config, given.as_deref()).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+        Ok(Opened { scenario })
+    }
+}
+
+/// A game of an opened scenario.
+pub struct Env {
+    opened: Arc<Opened>,
+    episode: Option<Episode>,
+    observer: Observer,
+    /// The available game variables, in order.
+    variables: Vec<GameVariable>,
+    /// The last step's reward.
+    pub last_reward: f64,
+    /// The screen drawn is the current state's.
+    drawn: bool,
+}
+
+impl Env {
+    pub fn new(opened: Arc<Opened>, threads: usize) -> Env {
+        let config = &opened.scenario.config;
+        let observer = Observer::new(config, threads);
+        let variables = config.available_game_variables.clone();
+        Env { opened, episode: None, observer, variables, last_reward: 0.0, drawn: false }
+    }
+
+    pub fn config(&self) -> &ScenarioConfig {
+        &self.opened.scenario.config
+    }
+
+    pub fn new_episode(&mut self, seed: u64) -> PyResult<()> {
+        let episode = self.opened.scenario.episode(seed).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+        self.episode = Some(episode);
+        self.observer.reset();
+        self.last_reward = 0.0;
+        self.drawn = false;
+        Ok(())
+    }
+
+    fn episode(&self) -> PyResult<&Episode> {
+        self.episode.as_ref().ok_or_else(|| PyRuntimeError::new_err("no episode is running: call new_episode first"))
+    }
+
+    /// An action must give one value per available button, each finite.
+    pub fn check_action(&self, action: &[f64]) -> PyResult<()> {
+        let buttons = &self.config().available_buttons;
+        if action.len() != buttons.len() {
+            let names: Vec<String> = buttons.iter().map(|b| b.name()).collect();
+            return Err(PyValueError::new_err(format!(
+                "an action has one value per available button: {} given for {} ({})",
+                action.len(),
+                buttons.len(),
+                names.join(", ")
+            )));
+        }
+        if let Some(i) = action.iter().position(|v| !v.is_finite()) {
+            return Err(PyValueError::new_err(format!("action value {i} ({}) is not a finite number", action[i])));
+        }
+        Ok(())
+    }
+
+    /// `tics` tics holding `action` (checked), delta buttons held to
+    /// their `button_max_value`.
+    pub fn step(&mut self, action: &[f64], tics: u32) -> PyResult<f64> {
+        self.episode()?;
+        let config = &self.opened.scenario.config;
+        let limited: Vec<f64> = action
+            .iter()
+            .zip(&config.available_buttons)
+            .map(|(&v, b)| match config.button_max_values.get(b) {
+                Some(&max) if max > 0 && b.is_delta() => v.clamp(-f64::from(max), f64::from(max)),
+                _ => v,
+            })
+            .collect();
+        let Some(episode) = self.episode.as_mut() else { unreachable!("checked above") };
+        self.last_reward = episode.step_tics(&limited, tics);
+        self.drawn = false;
+        Ok(self.last_reward)
+    }
+
+    pub fn finished(&self) -> bool {
+        self.episode.as_ref().is_none_or(|e| e.end().is_some())
+    }
+
+    pub fn player_dead(&self) -> bool {
+        self.episode.as_ref().is_some_and(|e| e.game.player().health <= 0)
+    }
+
+    pub fn timeout_reached(&self) -> bool {
+        self.episode.as_ref().is_some_and(|e| e.end() == Some(sightline::scenario::End::Timeout))
+    }
+
+    pub fn end(&self) -> Option<&'static str> {
+        self.episode.as_ref().and_then(Episode::end).map(|end| match end {
+            sightline::scenario::End::Exit => "exit",
+            sightline::scenario::End::Death => "death",
+            sightline::scenario::End::Timeout => "timeout",
+        })
+    }
+
+    pub fn total_reward(&self) -> f64 {
+        self.episode.as_ref().map_or(0.0, |e| e.total_reward)
+    }
+
+    pub fn episode_time(&self) -> u64 {
+        self.episode.as_ref().map_or(0, |e| e.game.ticks())
+    }
+
+    pub fn actions(&self) -> u32 {
+        self.episode.as_ref().map_or(0, |e| e.actions)
+    }
+
+    pub fn variable(&self, v: GameVariable) -> f64 {
+        self.episode.as_ref().map_or(0.0, |e| variables::value(&e.game, 0, v))
+    }
+
+    pub fn variables(&self) -> Vec<f64> {
+        self.variables.iter().map(|&v| self.variable(v)).collect()
+    }
+
+    /// Draws the current state if it is not drawn yet.
+    fn draw(&mut self) -> PyResult<()> {
+        if !self.drawn {
+            let Some(episode) = self.episode.as_ref() else {
+                return Err(PyRuntimeError::new_err("no episode is running: call new_episode first"));
+            };
+            self.observer.render(&episode.game);
+            self.drawn = true;
+        }
+        Ok(())
+    }
+
+    /// The screen in the `.cfg`'s format: its array shape and bytes.
+    pub fn screen(&mut self) -> PyResult<(Vec<usize>, Vec<u8>)> {
+        self.draw()?;
+        let fb = self.observer.screen();
+        self.formatted(fb)
+    }
+
+    /// The automap in the screen's format.
+    pub fn automap(&mut self) -> PyResult<(Vec<usize>, Vec<u8>)> {
+        if !self.config().outputs.automap_buffer {
+            return Err(PyRuntimeError::new_err("the automap buffer is off: set_automap_buffer_enabled(True) first"));
+        }
+        self.draw()?;
+        let Some(fb) = self.observer.automap() else { unreachable!("drawn with the automap on") };
+        self.formatted(fb)
+    }
+
+    fn formatted(&self, fb: &sightline::Framebuffer) -> PyResult<(Vec<usize>, Vec<u8>)> {
+        let format = self.config().screen_format;
+        let mut bytes = Vec::new();
+        convert(fb, format, &mut bytes).map_err(|e| PyValueError::new_err(e.to_string()))?;
+        Ok((shape(format, fb.width, fb.height), bytes))
+    }
+}

@@ -1,0 +1,363 @@
+//! `sightline._native`: the engine's scenarios for Python. A small core
+//! that the pure-Python layers build on (`sightline.vizdoom`'s `DoomGame`,
+//! the Gymnasium and PettingZoo environments):
+//!
+//! - [`Config`]: a ViZDoom `.cfg`'s settings, read and changed with the
+//!   engine's own `.cfg` reader (so a setter and a file line are checked
+//!   alike);
+//! - [`Game`]: one scenario game, stepped with the interpreter lock released;
+//! - [`Games`]: many games stepped together on the engine's threads (the
+//!   vector environment).
+//!
+//! Every buffer reaches Python as a numpy array that owns the engine's
+//! bytes (no copy after the engine writes them).
+
+mod env;
+
+use numpy::ndarray::{Array, IxDyn};
+use numpy::{IntoPyArray, PyArrayDyn, PyReadonlyArray2};
+use pyo3::exceptions::{PyFileNotFoundError, PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use rayon::prelude::*;
+use sightline::scenario::{GameVariable, ScenarioConfig};
+
+use env::{Env, Opened};
+
+/// A scenario's settings: every `.cfg` key ViZDoom 1.3.2 reads, with
+/// ViZDoom's defaults.
+#[pyclass(module = "sightline._native")]
+#[derive(Clone)]
+struct Config {
+    inner: ScenarioConfig,
+}
+
+#[pymethods]
+impl Config {
+    #[new]
+    fn new() -> Config {
+        Config { inner: ScenarioConfig::default() }
+    }
+
+    /// Applies the `.cfg` file at `path` onto these settings (ViZDoom's
+    /// `load_config`); its relative paths are relative to it.
+    fn load(&mut self, path: &str) -> PyResult<()> {
+        let bytes =
+            std::fs::read(path).map_err(|e| PyFileNotFoundError::new_err(format!("{path}: cannot read: {e}")))?;
+        let label = std::path::absolute(path).map_or_else(|_| path.to_string(), |p| p.display().to_string());
+        self.apply(&String::from_utf8_lossy(&bytes), &label)
+    }
+
+    /// Applies `.cfg` text onto these settings; `label` names it in errors
+    /// and its directory is where its relative paths start.
+    fn apply(&mut self, text: &str, label: &str) -> PyResult<()> {
+        self.inner.apply(text, label).map_err(|e| PyValueError::new_err(e.to_string()))
+    }
+
+    /// The settings as a dictionary of plain values (names as ViZDoom's
+    /// enums spell them).
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let c = &self.inner;
+        let d = PyDict::new(py);
+        let path = |p: &Option<String>| p.as_deref().map(|p| c.resolve(p).display().to_string()).unwrap_or_default();
+        d.set_item("vizdoom_path", path(&c.vizdoom_path))?;
+        d.set_item("doom_game_path", path(&c.doom_game_path))?;
+        d.set_item("doom_scenario_path", path(&c.doom_scenario_path))?;
+        d.set_item("doom_config_path", path(&c.doom_config_path))?;
+        d.set_item("doom_map", c.doom_map.to_ascii_lowercase())?;
+        d.set_item("doom_skill", c.doom_skill)?;
+        d.set_item("seed", c.seed)?;
+        d.set_item("game_args", c.game_args.join(" "))?;
+        d.set_item("mode", c.mode.name())?;
+        d.set_item("ticrate", c.ticrate)?;
+        d.set_item("episode_timeout", c.episode_timeout)?;
+        d.set_item("episode_start_time", c.episode_start_time)?;
+        let r = &c.rewards;
+        for (k, v) in [
+            ("living_reward", r.living),
+            ("death_penalty", r.death_penalty),
+            ("map_exit_reward", r.map_exit),
+            ("kill_reward", r.kill),
+            ("item_reward", r.item),
+            ("secret_reward", r.secret),
+            ("frag_reward", r.frag),
+            ("hit_reward", r.hit),
+            ("hit_taken_penalty", r.hit_taken_penalty),
+            ("damage_made_reward", r.damage_made),
+            ("damage_taken_penalty", r.damage_taken_penalty),
+            ("health_reward", r.health),
+            ("armor_reward", r.armor),
+        ] {
+            d.set_item(k, v)?;
+        }
+        d.set_item("available_buttons", c.available_buttons.iter().map(|b| b.name()).collect::<Vec<_>>())?;
+        let max: Vec<(String, u32)> = c.button_max_values.iter().map(|(b, v)| (b.name(), *v)).collect();
+        d.set_item("button_max_values", max)?;
+        let vars: Vec<String> = c.available_game_variables.iter().map(|v| v.name()).collect();
+        d.set_item("available_game_variables", vars)?;
+        d.set_item("screen_width", c.screen_resolution.width)?;
+        d.set_item("screen_height", c.screen_resolution.height)?;
+        d.set_item("screen_format", c.screen_format.name())?;
+        let f = &c.render;
+        for (k, v) in [
+            ("render_hud", f.hud),
+            ("render_minimal_hud", f.minimal_hud),
+            ("render_weapon", f.weapon),
+            ("render_crosshair", f.crosshair),
+            ("render_decals", f.decals),
+            ("render_particles", f.particles),
+            ("render_effects_sprites", f.effects_sprites),
+            ("render_messages", f.messages),
+            ("render_corpses", f.corpses),
+            ("render_screen_flashes", f.screen_flashes),
+            ("render_all_frames", f.all_frames),
+        ] {
+            d.set_item(k, v)?;
+        }
+        let o = &c.outputs;
+        for (k, v) in [
+            ("depth_buffer_enabled", o.depth_buffer),
+            ("labels_buffer_enabled", o.labels_buffer),
+            ("automap_buffer_enabled", o.automap_buffer),
+            ("audio_buffer_enabled", o.audio_buffer),
+            ("notifications_buffer_enabled", o.notifications_buffer),
+            ("objects_info_enabled", o.objects_info),
+            ("sectors_info_enabled", o.sectors_info),
+            ("window_visible", c.window_visible),
+            ("console_enabled", c.console_enabled),
+            ("sound_enabled", c.sound_enabled),
+            ("automap_rotate", c.automap.rotate),
+            ("automap_render_textures", c.automap.render_textures),
+            ("automap_render_objects_as_sprites", c.automap.render_objects_as_sprites),
+        ] {
+            d.set_item(k, v)?;
+        }
+        d.set_item("audio_sampling_rate", o.audio_sampling_rate.hertz())?;
+        d.set_item("audio_buffer_size", o.audio_buffer_size)?;
+        d.set_item("notifications_buffer_size", o.notifications_buffer_size)?;
+        d.set_item("automap_mode", c.automap.mode.name())?;
+        Ok(d)
+    }
+}
+
+/// A game variable by ViZDoom's name (`AMMO2`), as a `ValueError` if unknown.
+fn variable(name: &str) -> PyResult<GameVariable> {
+    GameVariable::from_cfg(&name.to_ascii_lowercase()).ok_or_else(|| {
+        PyValueError::new_err(format!("unknown game variable `{name}` (ViZDoom's names: HEALTH, AMMO2, USER1, ...)"))
+    })
+}
+
+/// A numpy array owning `data`, of `shape`.
+fn array<'py, T: numpy::Element>(
+    py: Python<'py>,
+    shape: &[usize],
+    data: Vec<T>,
+) -> PyResult<Bound<'py, PyArrayDyn<T>>> {
+    let a = Array::from_shape_vec(IxDyn(shape), data).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+    Ok(a.into_pyarray(py))
+}
+
+/// One scenario game.
+#[pyclass(module = "sightline._native")]
+struct Game {
+    env: Env,
+}
+
+#[pymethods]
+impl Game {
+    /// Opens `config`'s scenario (its WAD on `iwad`, else the `.cfg`'s
+    /// game WAD, else `freedoom2.wad` where Doom ports look), drawing with
+    /// `threads` threads. No episode runs until `new_episode`.
+    #[new]
+    #[pyo3(signature = (config, iwad=None, threads=1))]
+    fn new(py: Python<'_>, config: &Config, iwad: Option<String>, threads: usize) -> PyResult<Game> {
+        let config = config.inner.clone();
+        let opened = py.detach(|| Opened::open(&config, iwad.as_deref()))?;
+        Ok(Game { env: Env::new(opened.into(), threads) })
+    }
+
+    /// Starts a new episode with its random generator seeded by `seed`.
+    fn new_episode(&mut self, py: Python<'_>, seed: u64) -> PyResult<()> {
+        let env = &mut self.env;
+        py.detach(|| env.new_episode(seed))
+    }
+
+    /// Plays `tics` tics holding `action` (one value per available
+    /// button); returns their summed reward.
+    #[pyo3(signature = (action, tics=1))]
+    fn step(&mut self, py: Python<'_>, action: Vec<f64>, tics: u32) -> PyResult<f64> {
+        self.env.check_action(&action)?;
+        let env = &mut self.env;
+        py.detach(|| env.step(&action, tics))
+    }
+
+    /// Whether the episode has ended (or none has started).
+    fn is_finished(&self) -> bool {
+        self.env.finished()
+    }
+
+    fn is_player_dead(&self) -> bool {
+        self.env.player_dead()
+    }
+
+    fn is_timeout_reached(&self) -> bool {
+        self.env.timeout_reached()
+    }
+
+    /// How the episode ended: "exit", "death", "timeout", or None.
+    fn end(&self) -> Option<&'static str> {
+        self.env.end()
+    }
+
+    fn total_reward(&self) -> f64 {
+        self.env.total_reward()
+    }
+
+    fn last_reward(&self) -> f64 {
+        self.env.last_reward
+    }
+
+    /// Tics played this episode (the start time's included).
+    fn episode_time(&self) -> u64 {
+        self.env.episode_time()
+    }
+
+    /// Actions taken this episode.
+    fn actions(&self) -> u32 {
+        self.env.actions()
+    }
+
+    /// One game variable by ViZDoom's name.
+    fn game_variable(&self, name: &str) -> PyResult<f64> {
+        Ok(self.env.variable(variable(name)?))
+    }
+
+    /// The `.cfg`'s available game variables, in order.
+    fn game_variables<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let values = self.env.variables();
+        array(py, &[values.len()], values)
+    }
+
+    /// The screen in the `.cfg`'s format and size.
+    fn screen<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<u8>>> {
+        let env = &mut self.env;
+        let (shape, bytes) = py.detach(|| env.screen())?;
+        array(py, &shape, bytes)
+    }
+
+    /// The automap in the screen's format and size.
+    fn automap<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<u8>>> {
+        let env = &mut self.env;
+        let (shape, bytes) = py.detach(|| env.automap())?;
+        array(py, &shape, bytes)
+    }
+
+    /// The available buttons' names, in order.
+    fn buttons(&self) -> Vec<String> {
+        self.env.config().available_buttons.iter().map(|b| b.name()).collect()
+    }
+}
+
+/// Many games of one scenario, stepped together on the engine's threads.
+#[pyclass(module = "sightline._native")]
+struct Games {
+    envs: Vec<Env>,
+    pool: rayon::ThreadPool,
+}
+
+#[pymethods]
+impl Games {
+    /// `count` games of `config`'s scenario, stepped on `threads` threads
+    /// (0: one per core).
+    #[new]
+    #[pyo3(signature = (config, count, iwad=None, threads=0))]
+    fn new(py: Python<'_>, config: &Config, count: usize, iwad: Option<String>, threads: usize) -> PyResult<Games> {
+        if count == 0 {
+            return Err(PyValueError::new_err("a vector of games needs at least one game"));
+        }
+        let config = config.inner.clone();
+        let opened = std::sync::Arc::new(py.detach(|| Opened::open(&config, iwad.as_deref()))?);
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .map_err(|e| PyRuntimeError::new_err(format!("cannot start the games' threads: {e}")))?;
+        Ok(Games { envs: (0..count).map(|_| Env::new(opened.clone(), 1)).collect(), pool })
+    }
+
+    fn __len__(&self) -> usize {
+        self.envs.len()
+    }
+
+    /// Starts a new episode in game `i` seeded by `seed`.
+    fn new_episode(&mut self, py: Python<'_>, i: usize, seed: u64) -> PyResult<()> {
+        let count = self.envs.len();
+        let env = self.envs.get_mut(i).ok_or_else(|| PyValueError::new_err(format!("no game {i} of {count}")))?;
+        py.detach(|| env.new_episode(seed))
+    }
+
+    /// Plays `tics` tics in every game, game `i` holding row `i` of
+    /// `actions`; returns each game's reward and whether its episode has
+    /// ended.
+    #[pyo3(signature = (actions, tics=1))]
+    fn step<'py>(
+        &mut self,
+        py: Python<'py>,
+        actions: PyReadonlyArray2<'py, f64>,
+        tics: u32,
+    ) -> PyResult<(Bound<'py, PyArrayDyn<f64>>, Bound<'py, PyArrayDyn<bool>>)> {
+        let actions = actions.as_array();
+        if actions.nrows() != self.envs.len() {
+            let (rows, n) = (actions.nrows(), self.envs.len());
+            return Err(PyValueError::new_err(format!("actions has {rows} rows for {n} games")));
+        }
+        let rows: Vec<Vec<f64>> = actions.rows().into_iter().map(|r| r.to_vec()).collect();
+        for (env, row) in self.envs.iter().zip(&rows) {
+            env.check_action(row)?;
+        }
+        let (envs, pool) = (&mut self.envs, &self.pool);
+        let rewards: Vec<PyResult<f64>> = py.detach(|| {
+            pool.install(|| envs.par_iter_mut().zip(rows.par_iter()).map(|(env, row)| env.step(row, tics)).collect())
+        });
+        let rewards = rewards.into_iter().collect::<PyResult<Vec<f64>>>()?;
+        let done: Vec<bool> = self.envs.iter().map(Env::finished).collect();
+        Ok((array(py, &[rewards.len()], rewards)?, array(py, &[done.len()], done)?))
+    }
+
+    /// Every game's screen, stacked on a first axis.
+    fn screens<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<u8>>> {
+        let (envs, pool) = (&mut self.envs, &self.pool);
+        let screens: Vec<PyResult<(Vec<usize>, Vec<u8>)>> =
+            py.detach(|| pool.install(|| envs.par_iter_mut().map(Env::screen).collect()));
+        let screens = screens.into_iter().collect::<PyResult<Vec<_>>>()?;
+        let mut shape = vec![screens.len()];
+        shape.extend(&screens[0].0);
+        let bytes: Vec<u8> = screens.into_iter().flat_map(|(_, b)| b).collect();
+        array(py, &shape, bytes)
+    }
+
+    /// Every game's available game variables, one row each.
+    fn game_variables<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let rows: Vec<Vec<f64>> = self.envs.iter().map(Env::variables).collect();
+        let width = rows[0].len();
+        array(py, &[rows.len(), width], rows.concat())
+    }
+
+    /// Every game's total reward this episode.
+    fn total_rewards(&self) -> Vec<f64> {
+        self.envs.iter().map(Env::total_reward).collect()
+    }
+
+    /// How each game's episode ended ("exit", "death", "timeout") or None.
+    fn ends(&self) -> Vec<Option<&'static str>> {
+        self.envs.iter().map(Env::end).collect()
+    }
+}
+
+#[pymodule]
+fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<Config>()?;
+    m.add_class::<Game>()?;
+    m.add_class::<Games>()?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    Ok(())
+}
