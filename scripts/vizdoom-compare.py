@@ -36,6 +36,11 @@ Usage (from the repository root):
   python3 scripts/vizdoom-compare.py --vizdoom-only \
       --vizdoom-json docs/vizdoom-reference.json
   python3 scripts/vizdoom-compare.py --only basic,take_cover --episodes 50
+  python3 scripts/vizdoom-compare.py --speed --out docs/python-speed.md
+
+`--speed` measures steps per second of both Python packages instead (the
+`vizdoom` package and Sightline's, installed in the same Python; see
+scripts/vizdoom_speed.py).
 
 `--vizdoom-json FILE` caches ViZDoom's side: scenarios already in FILE with
 the same seed, episode count and policy are read from it, the rest are run and
@@ -389,10 +394,34 @@ def main():
     ap.add_argument("--vizdoom-only", action="store_true", help="run only ViZDoom's side")
     ap.add_argument("--vizdoom-json", help="cache of ViZDoom's side (read, completed and rewritten)")
     ap.add_argument("--out", help="also write the Markdown table to this file")
+    ap.add_argument(
+        "--speed",
+        action="store_true",
+        help="measure steps per second instead (scripts/vizdoom_speed.py): both packages in this Python",
+    )
+    ap.add_argument("--speed-steps", type=int, default=2000, help="steps per round with --speed")
+    ap.add_argument("--speed-rounds", type=int, default=5, help="rounds per cell with --speed")
     args = ap.parse_args()
 
     def log(msg):
         print(msg, file=sys.stderr, flush=True)
+
+    if args.speed:
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        import vizdoom_speed
+
+        folder = args.scenarios
+        if folder is None:
+            import vizdoom as vzd
+
+            folder = vzd.scenarios_path
+        names = args.only.split(",") if args.only else ["basic", "deadly_corridor"]
+        rows = vizdoom_speed.measure(folder, names, args.speed_steps, args.speed_rounds, log)
+        text = vizdoom_speed.table(rows, args.speed_steps, args.speed_rounds)
+        sys.stdout.write(text)
+        if args.out:
+            write_atomic(args.out, text)
+        return
 
     names = SCENARIOS
     if args.only:

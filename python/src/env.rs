@@ -7,7 +7,7 @@ use std::sync::Arc;
 
 use pyo3::exceptions::{PyFileNotFoundError, PyRuntimeError, PyValueError};
 use pyo3::PyResult;
-use sightline::scenario::observe::{convert, shape, Observer};
+use sightline::scenario::observe::{convert, convert_into, shape, Observer};
 use sightline::scenario::{variables, Episode, GameVariable, Scenario, ScenarioConfig};
 
 /// A scenario opened once, shared by every game of it.
@@ -167,6 +167,19 @@ impl Env {
         self.draw()?;
         let fb = self.observer.screen();
         self.formatted(fb)
+    }
+
+    /// The screen's array shape in the `.cfg`'s format.
+    pub fn screen_shape(&self) -> Vec<usize> {
+        let r = self.config().screen_resolution;
+        shape(self.config().screen_format, usize::from(r.width), usize::from(r.height))
+    }
+
+    /// The screen in the `.cfg`'s format, into `out` (of its size).
+    pub fn screen_into(&mut self, out: &mut [u8]) -> PyResult<()> {
+        self.draw()?;
+        let format = self.config().screen_format;
+        convert_into(self.observer.screen(), format, out).map_err(|e| PyValueError::new_err(e.to_string()))
     }
 
     /// The automap in the screen's format.

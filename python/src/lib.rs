@@ -323,15 +323,21 @@ impl Games {
         Ok((array(py, &[rewards.len()], rewards)?, array(py, &[done.len()], done)?))
     }
 
-    /// Every game's screen, stacked on a first axis.
+    /// Every game's screen, stacked on a first axis (each game draws into
+    /// its part of one array, on the games' threads).
     fn screens<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<u8>>> {
+        let one = self.envs[0].screen_shape();
+        let size: usize = one.iter().product();
+        let mut bytes = vec![0u8; size * self.envs.len()];
         let (envs, pool) = (&mut self.envs, &self.pool);
-        let screens: Vec<PyResult<(Vec<usize>, Vec<u8>)>> =
-            py.detach(|| pool.install(|| envs.par_iter_mut().map(Env::screen).collect()));
-        let screens = screens.into_iter().collect::<PyResult<Vec<_>>>()?;
-        let mut shape = vec![screens.len()];
-        shape.extend(&screens[0].0);
-        let bytes: Vec<u8> = screens.into_iter().flat_map(|(_, b)| b).collect();
+        let drawn: PyResult<()> = py.detach(|| {
+            pool.install(|| {
+                envs.par_iter_mut().zip(bytes.par_chunks_mut(size)).try_for_each(|(env, out)| env.screen_into(out))
+            })
+        });
+        drawn?;
+        let mut shape = vec![self.envs.len()];
+        shape.extend(one);
         array(py, &shape, bytes)
     }
 

@@ -142,15 +142,27 @@ pub enum FormatError {
 /// luma of ITU-R BT.601 (0.299 R + 0.587 G + 0.114 B), rounded; the alpha
 /// byte of the 32-bit formats is 255.
 pub fn convert(fb: &Framebuffer, format: ScreenFormat, out: &mut Vec<u8>) -> Result<(), FormatError> {
+    out.clear();
+    out.resize(shape(format, fb.width, fb.height).iter().product(), 0);
+    convert_into(fb, format, out)
+}
+
+/// [`convert`] into a slice of exactly the format's size (one game's part
+/// of a batch of screens).
+pub fn convert_into(fb: &Framebuffer, format: ScreenFormat, out: &mut [u8]) -> Result<(), FormatError> {
     let n = fb.pixels.len();
+    debug_assert_eq!(out.len(), shape(format, fb.width, fb.height).iter().product::<usize>());
     let rgb_of = |p: u32| {
         let [r, g, b, _] = channels(p);
         [r, g, b]
     };
-    out.clear();
+    let packed = |bytes: usize, out: &mut [u8], f: &dyn Fn([u8; 3]) -> [u8; 4]| {
+        for (o, &p) in out.chunks_exact_mut(bytes).zip(&fb.pixels) {
+            o.copy_from_slice(&f(rgb_of(p))[..bytes]);
+        }
+    };
     match format {
         ScreenFormat::Crcgcb | ScreenFormat::Cbcgcr => {
-            out.resize(3 * n, 0);
             let order = if format == ScreenFormat::Crcgcb { [0, 1, 2] } else { [2, 1, 0] };
             let (a, rest) = out.split_at_mut(n);
             let (b, c) = rest.split_at_mut(n);
@@ -161,26 +173,18 @@ pub fn convert(fb: &Framebuffer, format: ScreenFormat, out: &mut Vec<u8>) -> Res
                 c[i] = rgb[order[2]];
             }
         }
-        ScreenFormat::Rgb24 => out.extend(fb.pixels.iter().flat_map(|&p| rgb_of(p))),
-        ScreenFormat::Bgr24 => out.extend(fb.pixels.iter().flat_map(|&p| {
-            let [r, g, b] = rgb_of(p);
-            [b, g, r]
-        })),
-        ScreenFormat::Rgba32 | ScreenFormat::Argb32 | ScreenFormat::Bgra32 | ScreenFormat::Abgr32 => {
-            out.extend(fb.pixels.iter().flat_map(|&p| {
-                let [r, g, b] = rgb_of(p);
-                match format {
-                    ScreenFormat::Rgba32 => [r, g, b, 255],
-                    ScreenFormat::Argb32 => [255, r, g, b],
-                    ScreenFormat::Bgra32 => [b, g, r, 255],
-                    _ => [255, b, g, r],
-                }
-            }))
+        ScreenFormat::Rgb24 => packed(3, out, &|[r, g, b]| [r, g, b, 0]),
+        ScreenFormat::Bgr24 => packed(3, out, &|[r, g, b]| [b, g, r, 0]),
+        ScreenFormat::Rgba32 => packed(4, out, &|[r, g, b]| [r, g, b, 255]),
+        ScreenFormat::Argb32 => packed(4, out, &|[r, g, b]| [255, r, g, b]),
+        ScreenFormat::Bgra32 => packed(4, out, &|[r, g, b]| [b, g, r, 255]),
+        ScreenFormat::Abgr32 => packed(4, out, &|[r, g, b]| [255, b, g, r]),
+        ScreenFormat::Gray8 => {
+            for (o, &p) in out.iter_mut().zip(&fb.pixels) {
+                let [r, g, b] = rgb_of(p).map(u32::from);
+                *o = ((299 * r + 587 * g + 114 * b + 500) / 1000) as u8;
+            }
         }
-        ScreenFormat::Gray8 => out.extend(fb.pixels.iter().map(|&p| {
-            let [r, g, b] = rgb_of(p).map(u32::from);
-            ((299 * r + 587 * g + 114 * b + 500) / 1000) as u8
-        })),
         ScreenFormat::Doom256Colors8 => return Err(FormatError::PaletteIndices),
     }
     Ok(())

@@ -1,0 +1,137 @@
+"""Steps per second of the vizdoom package and of Sightline's Python
+package, measured in one run, alternating (`vizdoom-compare.py --speed`).
+
+A step is what a learner's loop does: the state read and its screen copied
+into a numpy array of its own, then one action of random buttons held for
+the frame skip; a finished episode starts a new one (its start counted).
+Each cell is the median of several rounds, the two engines taking turns
+round by round, so a noisy neighbour on a shared machine hits both alike.
+Sightline's vector environment is measured too: N games stepped together
+on all cores, every game's screen copied each step.
+"""
+
+from __future__ import annotations
+
+import os
+import random
+import statistics
+import time
+
+import numpy as np
+
+RESOLUTIONS = ["RES_160X120", "RES_320X240", "RES_640X480"]
+
+
+def _game(module, cfg: str, resolution: str, seed: int):
+    game = module.DoomGame()
+    game.load_config(cfg)
+    game.set_window_visible(False)
+    game.set_screen_format(module.ScreenFormat.RGB24)
+    game.set_screen_resolution(getattr(module.ScreenResolution, resolution))
+    game.set_mode(module.Mode.PLAYER)
+    game.set_seed(seed)
+    game.init()
+    return game
+
+
+def _round(game, steps: int, skip: int, rng: random.Random) -> float:
+    buttons = game.get_available_buttons_size()
+    start = time.perf_counter()
+    for _ in range(steps):
+        if game.is_episode_finished():
+            game.new_episode()
+        state = game.get_state()
+        screen = np.array(state.screen_buffer, copy=True)
+        del screen
+        game.make_action([rng.random() < 0.5 for _ in range(buttons)], skip)
+    return steps / (time.perf_counter() - start)
+
+
+def _vector_round(games, steps: int, skip: int, rng: np.random.Generator) -> float:
+    n = len(games)
+    start = time.perf_counter()
+    for _ in range(steps):
+        screens = np.array(games.screens(), copy=True)
+        del screens
+        actions = rng.integers(0, 2, size=(n, games.buttons)).astype(np.float64)
+        _, done = games.step(actions, skip)
+        for i in np.flatnonzero(done):
+            games.new_episode(int(i), int(rng.integers(0, 2**31 - 1)))
+    return n * steps / (time.perf_counter() - start)
+
+
+class _VectorGames:
+    def __init__(self, sightline, cfg: str, resolution: str, count: int):
+        config = sightline.Config()
+        config.load(cfg)
+        config.apply(f"screen_resolution = {resolution}\nscreen_format = RGB24", "<speed>")
+        self.games = sightline.Games(config, count, threads=0)
+        self.buttons = len(config.to_dict()["available_buttons"])
+        for i in range(count):
+            self.games.new_episode(i, i)
+
+    def __len__(self):
+        return len(self.games)
+
+    def screens(self):
+        return self.games.screens()
+
+    def step(self, actions, skip):
+        return self.games.step(actions, skip)
+
+    def new_episode(self, i, seed):
+        self.games.new_episode(i, seed)
+
+
+def measure(scenarios: str, names: list, steps: int, rounds: int, log) -> list:
+    """Rows of (scenario, resolution, skip, vizdoom steps/s, sightline
+    steps/s, sightline vector steps/s, vector games)."""
+    import vizdoom
+
+    import sightline
+    import sightline.vizdoom as svzd
+
+    cores = os.cpu_count() or 1
+    count = 2 * cores
+    rows = []
+    for name in names:
+        cfg = os.path.join(scenarios, f"{name}.cfg")
+        for resolution in RESOLUTIONS:
+            for skip in (1, 4):
+                theirs = _game(vizdoom, cfg, resolution, 1)
+                ours = _game(svzd, cfg, resolution, 1)
+                vector = _VectorGames(sightline, cfg, resolution, count)
+                rng_a, rng_b = random.Random(1), random.Random(1)
+                rng_v = np.random.default_rng(1)
+                a, b, v = [], [], []
+                for _ in range(rounds):
+                    a.append(_round(theirs, steps, skip, rng_a))
+                    b.append(_round(ours, steps, skip, rng_b))
+                    v.append(_vector_round(vector, max(1, steps // count), skip, rng_v))
+                theirs.close()
+                ours.close()
+                row = (name, resolution, skip, statistics.median(a), statistics.median(b), statistics.median(v), count)
+                log(
+                    f"{name} {resolution} skip {skip}: vizdoom {row[3]:.0f}, sightline {row[4]:.0f} "
+                    f"({row[4] / row[3]:.2f}x), vector of {count} {row[5]:.0f} ({row[5] / row[4]:.2f}x one)"
+                )
+                rows.append(row)
+    return rows
+
+
+def table(rows: list, steps: int, rounds: int) -> str:
+    cores = os.cpu_count() or 1
+    out = [
+        f"Steps per second, median of {rounds} rounds of {steps} steps each, the engines alternating "
+        f"round by round; one process on this {cores}-core machine; RGB24; the state's screen copied "
+        "to numpy every step; random buttons. `vector` is Sightline's native vector environment "
+        "(`sightline.Games`) stepping its games on all cores, counted in game steps.",
+        "",
+        "| scenario | resolution | frame skip | vizdoom | sightline | ratio | vector (games) | vector / one |",
+        "|---|---|---|---|---|---|---|---|",
+    ]
+    for name, res, skip, a, b, v, count in rows:
+        out.append(
+            f"| {name} | {res[4:].lower()} | {skip} | {a:,.0f} | {b:,.0f} | {b / a:.2f}x | {v:,.0f} ({count}) | {v / b:.2f}x |"
+        )
+    return "\n".join(out) + "\n"
