@@ -282,7 +282,9 @@ pub(crate) struct StripFrame {
     pub(crate) clip_top: Vec<i32>,
     /// One past the last open row of each column.
     pub(crate) clip_bottom: Vec<i32>,
-    pub(crate) stack: Vec<(Child, Option<Aabb>)>,
+    /// The walk's stack: a subtree, its box, and whether it lies below a
+    /// partition the eye looks along (see `bsp::looks_along`).
+    pub(crate) stack: Vec<(Child, Option<Aabb>, bool)>,
     pub(crate) hits: Vec<Hit>,
     /// Column-major canvas of the strip being drawn (see [`super::columns`]),
     /// and its write counts when counting.

@@ -8,6 +8,7 @@
 
 use glam::DVec2;
 
+use super::bsp::onto_partition;
 use super::columns::ColumnWriter;
 use super::frame::{Lap, Scene, StripFrame};
 use super::light::fake_contrast;
@@ -67,7 +68,10 @@ struct SegColumns<'a> {
     lower: Paint<'a>,
 }
 
-pub(crate) fn draw_seg(scene: &Scene, seg: &Seg, frame: &mut StripFrame, out: &mut ColumnWriter) {
+/// Draws `seg` in the columns still open. `along`: the walk is below a
+/// partition the eye looks along, whose near-by seg ends count as on it
+/// ([`super::bsp::looks_along`]).
+pub(crate) fn draw_seg(scene: &Scene, seg: &Seg, frame: &mut StripFrame, out: &mut ColumnWriter, along: bool) {
     frame.stats.walls_considered += 1;
     let (level, cam) = (scene.level, scene.cam);
     let map = &level.map;
@@ -87,7 +91,11 @@ pub(crate) fn draw_seg(scene: &Scene, seg: &Seg, frame: &mut StripFrame, out: &m
     if !facing || !cross_from.is_finite() {
         return;
     }
-    let Some((x0, x1)) = cam.project_span_in(scene.slopes, cam.to_camera(seg.v1), cam.to_camera(seg.v2)) else {
+    let (mut v1, mut v2) = (cam.to_camera(seg.v1), cam.to_camera(seg.v2));
+    if along {
+        (v1, v2) = (onto_partition(v1), onto_partition(v2));
+    }
+    let Some((x0, x1)) = cam.project_span_in(scene.slopes, v1, v2) else {
         return;
     };
     let columns = Lap::start(scene.profile);
