@@ -114,6 +114,7 @@ fn fill_void(frame: &mut StripFrame, out: &mut ColumnWriter, shade: Shade) {
         let stop = frame.occlusion.next_closed(start, width);
         for col in start..stop {
             out.fill(col, frame.clip_top[col], frame.clip_bottom[col], colour);
+            out.buffers.far(col, (frame.clip_top[col], frame.clip_bottom[col]));
         }
         x = stop;
     }
