@@ -682,6 +682,81 @@ fn frames_full_of_actors_agree_with_the_reference() {
     assert!(rotations.len() >= 40, "only {} distinct views were drawn", rotations.len());
 }
 
+/// The depth and label buffers in play, as the Python environment reads
+/// them: E1M1 on skill 4, every monster awake and 35 ticks into the fight,
+/// eight monsters each seen from four sides at 96 units. The BSP walk's
+/// buffers equal the reference's wherever the `ids` frames agree (labels
+/// exactly, depth to the bit here), and a labelled pixel names a live body:
+/// the simulation keys a drawn thing by its body's id, the label is id + 1.
+#[test]
+#[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
+fn buffers_in_play_agree_with_the_reference_and_name_bodies() {
+    use sightline::campaign::MapRef;
+    use sightline::play::playthrough::Playthrough;
+    use sightline::render::{Buffers, Shade};
+
+    let wad = wad_path("freedoom1.wad");
+    let map = format!("{}:E1M1", wad.display());
+    let options = GameOptions { skill: 4, ..GameOptions::default() };
+    let mut play = Playthrough::of(&MapRef::parse(&map, None), options).unwrap_or_else(|e| panic!("{e}"));
+    play.game.set_health(1_000_000);
+    wake_all(&mut play.game);
+    for _ in 0..35 {
+        play.tick(&TickInput::default()).unwrap();
+    }
+    let monsters: Vec<MobjId> = {
+        let game = &play.game;
+        game.sim.live_mobjs().filter(|&id| game.sim.mo(id).has(mf::COUNTKILL)).take(8).collect()
+    };
+    let size = (160, 100);
+    let (mut frames, mut labelled, mut named) = (0, 0, 0);
+    for id in monsters {
+        let pos = body_pos(&play.game, id);
+        for k in 0..4 {
+            let from = 90.0 * f64::from(k);
+            let (s, c) = from.to_radians().sin_cos();
+            let eye = pos + DVec2::new(c, s) * 96.0;
+            if !try_teleport(&mut play.game, eye, from + 180.0) {
+                continue;
+            }
+            let view = eye_of(&play.game);
+            let level = play.game.level();
+            let shot = |renderer| {
+                let options = RenderOptions {
+                    renderer,
+                    shade: Shade::Ids,
+                    buffers: Buffers { depth: true, labels: true },
+                    ..Default::default()
+                };
+                let (mut fb, mut frame) = (Framebuffer::new(size.0, size.1), Frame::new());
+                render_frame(level, &view, &options, &mut frame, &mut fb);
+                (fb, frame.depth().to_vec(), frame.labels().to_vec())
+            };
+            let (bsp, reference) = (shot(Renderer::Bsp), shot(Renderer::Reference));
+            let what = format!("E1M1 body {} from {from}", id.0);
+            for i in 0..size.0 * size.1 {
+                if bsp.0.pixels[i] != reference.0.pixels[i] {
+                    continue;
+                }
+                assert_eq!(bsp.2[i], reference.2[i], "{what}: labels at {i}");
+                assert_eq!(bsp.1[i].to_bits(), reference.1[i].to_bits(), "{what}: depth at {i}");
+                if let Some(key) = bsp.2[i].checked_sub(1) {
+                    labelled += 1;
+                    let body = MobjId(key);
+                    assert!(play.game.sim.live_mobjs().any(|m| m == body), "{what}: label {} names no body", key + 1);
+                    named += usize::from(body == id);
+                }
+            }
+            assert_agree(level, &view, size, &what);
+            frames += 1;
+        }
+    }
+    assert!(
+        frames >= 16 && named > 1_000 && labelled >= named,
+        "{frames} frames, {labelled} labelled, {named} of the targets"
+    );
+}
+
 /// E1M1 on skill 3 is a game that can be won: every monster can be
 /// fought and killed with the weapons found, and the exit switch ends the
 /// level, on the simulation. A scripted fighter (not a person, and it moves by teleporting)

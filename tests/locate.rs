@@ -314,3 +314,32 @@ fn rays_from_a_doorway_start_in_the_room_they_enter() {
         }
     }
 }
+
+/// The case `poses_on_two_sided_lines_of_random_maps_agree` found (the map is
+/// `tests/maps/eye_on_partition.ron`): the eye at vertex 15, the south-west
+/// corner of an axis-aligned platform, looking east along the platform's
+/// south face (line 15), whose line is the partition of node 1 in the
+/// random splitter's tree for this seed. Line 8, a face of another platform
+/// 171 units ahead, is cut by that partition 1.8e-15 south of it, so its
+/// south piece missed column 63, whose ray runs along the line; the near
+/// (south) subtree drew the far side of that platform there (line 11 from
+/// inside it, cut exactly on the line), and 65 of the column's 75 pixels
+/// showed that platform's ceiling and floor, not line 8's face and the
+/// room's. Before the fix this failed; `render::bsp::looks_along` says why.
+#[test]
+fn regression_eye_on_partition_of_a_random_map() {
+    let path = sightline_tests::root().join("tests/maps/eye_on_partition.ron");
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let map = sightline::map::parse_map(&text, "eye_on_partition.ron").unwrap_or_else(|e| panic!("{e}"));
+    let options = sightline::bsp::BuildOptions { splitter: SplitterKind::Random, seed: 162_236_210_168_585_868 };
+    let level = sightline::level::Level::with_builtin_textures(sightline::bsp::build(&map, &options).unwrap()).unwrap();
+    let p = level.map.vertices[15];
+    assert_eq!(p, DVec2::new(-142.472_218_957_953_94, 0.335_868_730_799_857_6));
+    let node = &level.bsp.nodes[1];
+    assert!(node.a == p && node.b.y == p.y, "node 1's partition is line 15's line, through the eye");
+    let view = sightline::View::at_pose(&level, p.x, p.y, 360.0, None).unwrap();
+    for size in [(127, 75), (96, 60)] {
+        let (diff, ..) = sightline_tests::bsp_vs_reference(&level, &view, size);
+        assert_eq!(diff.pixels, 0, "{size:?}: bsp and reference differ in {} pixels", diff.pixels);
+    }
+}

@@ -391,3 +391,44 @@ fn regression_void_along_wall_line() {
         assert_agree(&level, &view, ODD, &format!("void along wall line, {}", splitter.name()));
     }
 }
+
+/// A room, a square pillar behind the eye whose south face lies on y = 0,
+/// and ahead a triangular pillar whose west face (line 8) crosses y = 0;
+/// the eye at (-128, 0) on the south face's line, looking east along it
+/// (column 63's ray runs exactly along the line). Where a tree partitions
+/// along y = 0 above the triangle, line 8 is cut at (8.50.., -1.8e-15), one
+/// ulp south: the south piece, drawn first (the ray runs along the
+/// partition's direction, so the front, south, is near), ended an ulp right
+/// of the ray and did not claim column 63, the east wall's south piece
+/// (line 2, cut exactly at (256, 0)) did, and the north piece of line 8,
+/// drawn later, found the column closed: 57 pixels of column 63 showed the
+/// east wall 248 units behind the pillar (random splitter seeds 10, 11, 12
+/// and 15 of 0..16). Below a partition the eye looks along, the walk now
+/// counts seg ends within the compiler's `ON_EPSILON` of it as on it
+/// (`render::bsp::looks_along`).
+#[test]
+fn regression_eye_on_partition_looking_along_it() {
+    let room: &[(f64, f64)] = &[(-256.0, -256.0), (-256.0, 256.0), (256.0, 256.0), (256.0, -256.0)];
+    let behind: &[(f64, f64)] = &[(-224.0, 0.0), (-208.0, 0.0), (-208.0, 16.0), (-224.0, 16.0)];
+    let ahead: &[(f64, f64)] = &[(0.0, 10.0 + 1.0 / 7.0), (15.0 + 2.0 / 3.0, -8.0 - 6.0 / 11.0), (40.0, 0.5)];
+    let map = one_sector_map(&[room, behind, ahead]);
+    let cut = sightline::geom::line_intersection(map.vertices[8], map.vertices[9], map.vertices[4], map.vertices[5]);
+    assert!(cut.y < 0.0, "the fixture needs line 8 cut south of y = 0, not at {cut}");
+    let mut rounded_south = 0;
+    for (splitter, seed) in [(SplitterKind::Cost, 0)].into_iter().chain((0..16).map(|s| (SplitterKind::Random, s))) {
+        let compiled = sightline::bsp::build(&map, &sightline::bsp::BuildOptions { splitter, seed }).unwrap();
+        check_invariants(&compiled.map, &compiled.bsp).unwrap();
+        rounded_south += usize::from(compiled.bsp.segs.iter().any(|s| s.line == 8 && (s.v1 == cut || s.v2 == cut)));
+        let level = sightline::level::Level::with_builtin_textures(compiled).unwrap();
+        let view = sightline_tests::view(&level, -128.0, 0.0, 0.0);
+        let (diff, ..) = bsp_vs_reference(&level, &view, ODD);
+        assert_eq!(
+            diff.pixels,
+            0,
+            "{} seed {seed}: bsp and reference differ in {} pixels",
+            splitter.name(),
+            diff.pixels
+        );
+    }
+    assert!(rounded_south >= 4, "only {rounded_south} trees cut line 8 at y = 0");
+}

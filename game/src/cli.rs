@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use clap::{Args, Parser, Subcommand};
 use sightline::bsp::SplitterKind;
 use sightline::render::raycast::RayMethod;
-use sightline::render::{Renderer, Shade};
+use sightline::render::{Buffers, Renderer, Shade};
 
 #[derive(Parser)]
 #[command(
@@ -150,6 +150,11 @@ pub struct BenchTourArgs {
     /// Also print the figures as one JSON object on the last line.
     #[arg(long)]
     pub json: bool,
+    /// Per-pixel buffers to fill besides the colour: off, depth, labels or
+    /// both. A comma-separated list (`off,depth,labels,both`) times each in
+    /// the same run, a pass of the tour each in turn, and reports each.
+    #[arg(long, value_delimiter = ',', default_value = "off", value_parser = parse_buffers)]
+    pub buffers: Vec<Buffers>,
 }
 
 #[derive(Args)]
@@ -527,6 +532,10 @@ fn parse_renderer(s: &str) -> Result<Renderer, String> {
         let names: Vec<_> = Renderer::ALL.iter().map(|r| r.name()).collect();
         format!("unknown renderer `{s}`; choose one of {}", names.join(", "))
     })
+}
+
+fn parse_buffers(s: &str) -> Result<Buffers, String> {
+    Buffers::from_name(s.trim()).ok_or_else(|| format!("unknown buffers `{s}`; choose off, depth, labels or both"))
 }
 
 fn parse_shade(s: &str) -> Result<Shade, String> {

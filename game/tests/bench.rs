@@ -62,3 +62,23 @@ fn bench_tour_refuses_a_missing_map() {
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("no-such-map.ron"));
 }
+
+/// `--buffers` with a list times every variant in one run: the JSON's top
+/// level is the first one's, and `variants` holds each, named.
+#[test]
+fn bench_tour_times_each_buffers_variant() {
+    let args = ["bench", "tour", "maps/pillars.ron", "--size", "64x40", "--repeat", "1", "--json"];
+    let out = sightline(&[&args[..], &["--buffers", "off,depth,labels,both"]].concat());
+    let stdout = stdout_of(&out);
+    let json: serde_json::Value = serde_json::from_str(stdout.lines().last().unwrap_or_default()).unwrap();
+    assert_eq!(json["buffers"], "off", "{json}");
+    let variants = json["variants"].as_array().unwrap_or_else(|| panic!("no variants: {json}"));
+    let names: Vec<_> = variants.iter().map(|v| v["buffers"].as_str().unwrap_or_default()).collect();
+    assert_eq!(names, ["off", "depth", "labels", "both"]);
+    for v in variants {
+        assert_eq!(v["frames"], 65, "{v}");
+        assert!(v["median_ms"].as_f64() > Some(0.0), "{v}");
+    }
+    let bad = sightline(&["bench", "tour", "maps/room.ron", "--buffers", "colour"]);
+    assert_eq!(bad.status.code(), Some(2));
+}

@@ -8,19 +8,21 @@ use super::frame::{Scene, StripFrame};
 use super::shade::{Shade, Surface, VOID};
 use super::view::Camera;
 use super::walls::draw_seg;
+use crate::bsp::build::ON_EPSILON;
 use crate::bsp::{Child, Node};
 use crate::geom::{front_distance, Aabb};
+use glam::DVec2;
 
 /// Walks the tree for the strip `frame` was readied for.
 pub(crate) fn render(scene: &Scene, frame: &mut StripFrame, out: &mut ColumnWriter) {
     let (cam, bsp) = (scene.cam, &scene.level.bsp);
-    frame.stack.push((bsp.root, None));
-    while let Some((child, bbox)) = frame.stack.pop() {
+    frame.stack.push((bsp.root, None, false));
+    while let Some((child, bbox, along)) = frame.stack.pop() {
         if frame.occlusion.all_closed() {
             break;
         }
         if let Some(bbox) = bbox {
-            if !box_visible(cam, scene.slopes, &bbox, frame) {
+            if !box_visible(cam, scene.slopes, &bbox, frame, along) {
                 frame.stats.subtrees_culled += 1;
                 continue;
             }
@@ -30,14 +32,17 @@ pub(crate) fn render(scene: &Scene, frame: &mut StripFrame, out: &mut ColumnWrit
                 frame.stats.nodes_visited += 1;
                 let node = &bsp.nodes[i];
                 let near = near_side(node, cam) as usize;
-                frame.stack.push((node.children[1 - near], Some(node.bbox[1 - near])));
-                frame.stack.push((node.children[near], Some(node.bbox[near])));
+                // Below a partition the eye looks along, seg ends the
+                // compiler counted as on it count as on it (see `along`).
+                let along = along || looks_along(node, cam);
+                frame.stack.push((node.children[1 - near], Some(node.bbox[1 - near]), along));
+                frame.stack.push((node.children[near], Some(node.bbox[near]), along));
             }
             Child::Leaf(i) => {
                 frame.stats.leaves_visited += 1;
                 let leaf = &bsp.leaves[i];
                 for seg in bsp.leaf_segs(leaf) {
-                    draw_seg(scene, seg, frame, out);
+                    draw_seg(scene, seg, frame, out, along);
                     if frame.occlusion.all_closed() {
                         break;
                     }
@@ -56,12 +61,46 @@ pub(crate) fn render(scene: &Scene, frame: &mut StripFrame, out: &mut ColumnWrit
 /// ray runs along the line. The screen's half-open rule gives that column to
 /// what starts at the ray, as if the ray were an infinitesimal step to its
 /// right: the front side when the ray runs `a -> b`, the back when `b -> a`.
+/// That order is right only if the pieces touching the ray from that side
+/// reach it, which split points rounded off the line need not: see
+/// [`looks_along`].
 pub(crate) fn near_side(node: &Node, cam: &Camera) -> bool {
     let d = front_distance(node.a, node.b, cam.eye);
     if d == 0.0 {
         (node.b - node.a).dot(cam.forward) < 0.0
     } else {
         d < 0.0
+    }
+}
+
+/// Is the eye exactly on `node`'s partition, looking exactly along it (the
+/// partition is the camera's line y = 0, so with an odd width the centre
+/// column's ray runs along it)?
+///
+/// Then the column along the line is drawn from the side [`near_side`]
+/// picks, and the segs that should claim it are the pieces of the lines
+/// crossing the partition, cut at it. Their cut points are rounded: one that
+/// lands an ulp on the near side leaves its near piece short of the ray, so
+/// the near subtree's farther walls took the column, and the far piece, drawn
+/// later, found it closed (a random map of `tests/locate.rs`: a pillar's face
+/// lost 65 pixels of column 63 to the wall behind it; `tests/properties.rs`,
+/// `regression_eye_on_partition_looking_along_it`). The compiler counts any
+/// seg end within `ON_EPSILON` of a partition as on it; below such a node
+/// the walk does too ([`onto_partition`]), so the near piece starts exactly
+/// at the ray and owns the column, and the far piece ends there and does not.
+pub(crate) fn looks_along(node: &Node, cam: &Camera) -> bool {
+    front_distance(node.a, node.b, cam.eye) == 0.0 && (cam.to_camera(node.b) - cam.to_camera(node.a)).y == 0.0
+}
+
+/// A seg end (camera space) under a partition the eye looks along
+/// ([`looks_along`]): within the compiler's `ON_EPSILON` of that line, the
+/// camera's y = 0, it is on it.
+#[inline]
+pub(crate) fn onto_partition(p: DVec2) -> DVec2 {
+    if p.y.abs() < ON_EPSILON {
+        DVec2::new(p.x, 0.0)
+    } else {
+        p
     }
 }
 
@@ -75,6 +114,7 @@ fn fill_void(frame: &mut StripFrame, out: &mut ColumnWriter, shade: Shade) {
         let stop = frame.occlusion.next_closed(start, width);
         for col in start..stop {
             out.fill(col, frame.clip_top[col], frame.clip_bottom[col], colour);
+            out.buffers.far(col, (frame.clip_top[col], frame.clip_bottom[col]));
         }
         x = stop;
     }
@@ -83,7 +123,12 @@ fn fill_void(frame: &mut StripFrame, out: &mut ColumnWriter, shade: Shade) {
 /// Could anything inside `bbox` still show? Projects the box's silhouette (the
 /// two corners that bound it as seen from the eye, as Doom's R_CheckBBox picks
 /// them) and asks the occlusion array about the columns between.
-fn box_visible(cam: &Camera, slopes: &[f64], bbox: &Aabb, frame: &StripFrame) -> bool {
+///
+/// Under a partition the eye looks `along`, a box that reaches within
+/// `ON_EPSILON` of the camera's y = 0 in front of the eye is visible: a seg
+/// end in it may be moved onto that line ([`onto_partition`]), and the
+/// silhouette of the unmoved box could miss the column along it.
+fn box_visible(cam: &Camera, slopes: &[f64], bbox: &Aabb, frame: &StripFrame, along: bool) -> bool {
     // Within a unit of the box, call it visible: the silhouette argument below
     // needs the eye clear of the box by much more than NEAR.
     let grown = Aabb { min: bbox.min - 1.0, max: bbox.max + 1.0 };
@@ -91,6 +136,13 @@ fn box_visible(cam: &Camera, slopes: &[f64], bbox: &Aabb, frame: &StripFrame) ->
         return true;
     }
     let (e, lo, hi) = (cam.eye, bbox.min, bbox.max);
+    if along {
+        let corners = [lo, hi, glam::DVec2::new(lo.x, hi.y), glam::DVec2::new(hi.x, lo.y)].map(|c| cam.to_camera(c));
+        let (low, high) = corners.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), c| (l.min(c.y), h.max(c.y)));
+        if low < ON_EPSILON && high > -ON_EPSILON && corners.iter().any(|c| c.x > 0.0) {
+            return true;
+        }
+    }
     let region = |v: f64, lo: f64, hi: f64| {
         if v < lo {
             0

@@ -8,6 +8,7 @@
 //! touches 1080 cache lines, more than L1 holds, and that store took 88% of a
 //! maze frame (measurements in ARCHITECTURE.md).
 
+use super::buffers::BufferWriter;
 use super::light::Tint;
 
 pub struct ColumnWriter<'a> {
@@ -22,6 +23,9 @@ pub struct ColumnWriter<'a> {
     pub masked_written: u64,
     /// How textures are sampled (the sampling study's switches).
     pub sampling: Sampling,
+    /// The strip's depth and label canvases, when the frame fills them:
+    /// whoever paints a run says what surface it is (see [`super::buffers`]).
+    pub buffers: BufferWriter<'a>,
 }
 
 /// Texture sampling other than the default, for the sampling study: bilinear
@@ -38,7 +42,16 @@ impl<'a> ColumnWriter<'a> {
     /// A writer for columns `[x0, x0 + canvas.len() / height)` of a frame
     /// `height` rows tall; `counts`, if given, is as long as the canvas.
     pub fn new(canvas: &'a mut [u32], x0: usize, height: usize, counts: Option<&'a mut [u16]>) -> Self {
-        ColumnWriter { canvas, x0, height, counts, written: 0, masked_written: 0, sampling: Sampling::default() }
+        ColumnWriter {
+            canvas,
+            x0,
+            height,
+            counts,
+            written: 0,
+            masked_written: 0,
+            sampling: Sampling::default(),
+            buffers: BufferWriter::default(),
+        }
     }
 
     /// Fills rows `[y0, y1)` of column `x`. Empty and inverted runs write nothing;

@@ -5,6 +5,7 @@
 //! events, the canvas). `Frame` keeps one `StripFrame` per worker thread, so
 //! strips can be drawn in parallel, each by whichever worker is free.
 
+use super::buffers::{Buffers, Canvases, FAR};
 use super::light::Lighting;
 use super::occlusion::Occlusion;
 use super::parallel::Pool;
@@ -211,6 +212,10 @@ pub struct Frame {
     pub(crate) pool: Pool,
     /// Writes per pixel (row-major), kept only when counting was asked for.
     pub(crate) counts: Vec<u16>,
+    /// Depth and labels per pixel (row-major), kept only when asked for
+    /// (see [`super::buffers`]).
+    pub(crate) depth: Vec<f32>,
+    pub(crate) labels: Vec<u32>,
     pub stats: FrameStats,
     /// Where the last frame's time went, when it was profiled.
     pub breakdown: Breakdown,
@@ -227,7 +232,7 @@ impl Frame {
 
     /// Resets the shared state for a new frame of `cam`'s size, and readies
     /// `workers` strip states.
-    pub(crate) fn begin(&mut self, cam: &Camera, count_writes: bool, workers: usize) {
+    pub(crate) fn begin(&mut self, cam: &Camera, count_writes: bool, buffers: Buffers, workers: usize) {
         let (w, h) = (cam.width, cam.height);
         self.slopes.clear();
         self.slopes.extend((0..w).map(|x| cam.column_slope(x)));
@@ -240,6 +245,9 @@ impl Frame {
         if count_writes {
             self.counts.resize(w * h, 0);
         }
+        // Every pixel is written by the strips' copies; no clearing needed.
+        self.depth.resize(if buffers.depth { w * h } else { 0 }, FAR);
+        self.labels.resize(if buffers.labels { w * h } else { 0 }, 0);
         self.stats = FrameStats::default();
         self.breakdown = Breakdown::default();
         if self.workers.len() < workers {
@@ -269,6 +277,24 @@ impl Frame {
     pub fn write_counts(&self) -> &[u16] {
         &self.counts
     }
+
+    /// Camera-space depth of each pixel of the last frame, row-major
+    /// (`width * height`), in map units; `f32::INFINITY` for sky and void.
+    /// Empty unless the last frame was rendered with
+    /// [`super::RenderOptions::buffers`]`.depth` on. The BSP walk, the
+    /// ray-caster and the reference fill it; painter's and the z-buffer
+    /// (the visibility study) leave it infinite.
+    pub fn depth(&self) -> &[f32] {
+        &self.depth
+    }
+
+    /// `key + 1` of the thing whose sprite shows at each pixel of the last
+    /// frame, 0 where none does, row-major (`width * height`). Empty unless
+    /// the last frame was rendered with [`super::RenderOptions::buffers`]`.labels`
+    /// on. Painter's and the z-buffer, which draw no sprites, leave it 0.
+    pub fn labels(&self) -> &[u32] {
+        &self.labels
+    }
 }
 
 /// One worker's state, for the strip it is drawing: the walk's occlusion
@@ -282,7 +308,9 @@ pub(crate) struct StripFrame {
     pub(crate) clip_top: Vec<i32>,
     /// One past the last open row of each column.
     pub(crate) clip_bottom: Vec<i32>,
-    pub(crate) stack: Vec<(Child, Option<Aabb>)>,
+    /// The walk's stack: a subtree, its box, and whether it lies below a
+    /// partition the eye looks along (see `bsp::looks_along`).
+    pub(crate) stack: Vec<(Child, Option<Aabb>, bool)>,
     pub(crate) hits: Vec<Hit>,
     /// Column-major canvas of the strip being drawn (see [`super::columns`]),
     /// and its write counts when counting.
@@ -304,6 +332,8 @@ pub(crate) struct StripFrame {
     pub(crate) seen_lines: Vec<bool>,
     /// Depth buffer and scratch canvas of the z-buffer renderer (study only).
     pub(crate) zbuffer: super::zbuffer::Buffers,
+    /// The strip's depth and label canvases, when the frame asks for them.
+    pub(crate) buffers: Canvases,
 }
 
 impl StripFrame {
@@ -329,7 +359,7 @@ impl StripFrame {
 
     /// Readies columns `[x0, x1)` of a `height`-row screen for a walk that
     /// sees only them.
-    pub(crate) fn begin_strip(&mut self, x0: usize, x1: usize, height: usize, count_writes: bool) {
+    pub(crate) fn begin_strip(&mut self, x0: usize, x1: usize, height: usize, count_writes: bool, buffers: Buffers) {
         let width = self.clip_top.len();
         self.occlusion.reset_to_strip(width, x0, x1);
         self.clip_top[x0..x1].fill(0);
@@ -346,6 +376,7 @@ impl StripFrame {
         if count_writes {
             self.counts.resize((x1 - x0) * height, 0);
         }
+        self.buffers.begin_strip(buffers, (x1 - x0) * height);
     }
 
     /// Records that beyond `depth`, column `x` shows only rows `[top, bottom)`.

@@ -8,6 +8,7 @@
 //! masked pass, and copy the strip into the framebuffer.
 
 pub mod bsp;
+pub mod buffers;
 pub mod columns;
 pub mod frame;
 pub mod light;
@@ -28,6 +29,7 @@ pub mod visplanes;
 pub mod walls;
 pub mod zbuffer;
 
+pub use buffers::Buffers;
 pub use frame::{Breakdown, Frame, FrameStats};
 use frame::{Lap, Scene, StripFrame};
 pub use shade::Shade;
@@ -85,6 +87,13 @@ impl Renderer {
         }
     }
 
+    /// Whether this renderer fills the depth and label buffers
+    /// ([`RenderOptions::buffers`]). Painter's and the z-buffer, kept for the
+    /// visibility study, leave depth infinite and labels 0.
+    pub fn fills_buffers(self) -> bool {
+        !matches!(self, Renderer::Painter | Renderer::Zbuffer)
+    }
+
     /// Whether this renderer can draw `level`.
     pub fn supports(self, level: &Level) -> bool {
         self != Renderer::Raycast || level.grid().is_some()
@@ -116,6 +125,9 @@ pub struct RenderOptions {
     pub threads: usize,
     /// Time the frame's parts into [`Frame::breakdown`] (a few percent slower).
     pub profile: bool,
+    /// Per-pixel buffers to fill besides the colour: depth and thing labels
+    /// ([`Frame::depth`], [`Frame::labels`]). Off, they cost nothing per pixel.
+    pub buffers: Buffers,
 }
 
 impl Default for RenderOptions {
@@ -130,6 +142,7 @@ impl Default for RenderOptions {
             threads: 1,
             sampling: columns::Sampling::default(),
             profile: false,
+            buffers: Buffers::default(),
         }
     }
 }
@@ -155,7 +168,7 @@ pub fn render_frame(
     let cam = Camera::new(view, fb.width, fb.height);
     let (w, h) = (cam.width, cam.height);
     let threads = options.threads.max(1);
-    frame.begin(&cam, options.count_writes, threads);
+    frame.begin(&cam, options.count_writes, options.buffers, threads);
     if !options.disabled.sprites {
         sprites::collect(level, &cam, &frame.slopes, &mut frame.sprites);
     }
@@ -170,7 +183,8 @@ pub fn render_frame(
     if let Some(height) = sky_height {
         frame.sky_rows.extend(frame.row_slopes.iter().map(|&s| planes::sky_row(height, s) as u32));
     }
-    let Frame { slopes, row_slopes, inv_rows, sky_rows, sprites, strips, workers, pool, counts, .. } = frame;
+    let Frame { slopes, row_slopes, inv_rows, sky_rows, sprites, strips, workers, pool, counts, depth, labels, .. } =
+        frame;
     let scene = Scene {
         level,
         cam: &cam,
@@ -198,6 +212,11 @@ pub fn render_frame(
                 let copy = Lap::start(options.profile);
                 columns::present_pixels(&strip.canvas, h, fb.pixels.chunks_exact_mut(w).map(|r| &mut r[x0..x1]));
                 columns::present_strip(&strip.counts, h, counts.chunks_exact_mut(w).map(|r| &mut r[x0..x1]));
+                strip.buffers.present(
+                    h,
+                    depth.chunks_exact_mut(w).map(|r| &mut r[x0..x1]),
+                    labels.chunks_exact_mut(w).map(|r| &mut r[x0..x1]),
+                );
                 strip.breakdown.copy += copy.ns();
             }
             1
@@ -209,16 +228,26 @@ pub fn render_frame(
             }
             let rows = parallel::split_rows(&mut fb.pixels, w, strips);
             let mut count_rows = parallel::split_rows(counts, w, strips).into_iter();
+            let mut depth_rows = parallel::split_rows(depth, w, strips).into_iter();
+            let mut label_rows = parallel::split_rows(labels, w, strips).into_iter();
             let jobs = strips
                 .iter()
                 .zip(rows)
-                .map(|(&(x0, x1), rows)| parallel::Job { x0, x1, rows, counts: count_rows.next().unwrap_or_default() })
+                .map(|(&(x0, x1), rows)| parallel::Job {
+                    x0,
+                    x1,
+                    rows,
+                    counts: count_rows.next().unwrap_or_default(),
+                    depth: depth_rows.next().unwrap_or_default(),
+                    labels: label_rows.next().unwrap_or_default(),
+                })
                 .collect();
             parallel::run(pool, &mut workers[..used], jobs, &|strip, job| {
                 draw(strip, (job.x0, job.x1));
                 let copy = Lap::start(options.profile);
                 columns::present_pixels(&strip.canvas, h, job.rows.into_iter());
                 columns::present_strip(&strip.counts, h, job.counts.into_iter());
+                strip.buffers.present(h, job.depth.into_iter(), job.labels.into_iter());
                 strip.breakdown.copy += copy.ns();
             });
             used
@@ -242,13 +271,19 @@ fn draw_strip(
     (x0, x1): (usize, usize),
 ) {
     let h = scene.cam.height;
-    strip.begin_strip(x0, x1, h, options.count_writes);
-    // The writer borrows the canvas and counts while the pass borrows the rest.
+    strip.begin_strip(x0, x1, h, options.count_writes, options.buffers);
+    // The writer borrows the canvases and counts while the pass borrows the rest.
     let mut canvas = std::mem::take(&mut strip.canvas);
     let mut counts = std::mem::take(&mut strip.counts);
+    let mut buffers = std::mem::take(&mut strip.buffers);
     let counting = options.count_writes.then_some(counts.as_mut_slice());
     let mut out = columns::ColumnWriter::new(&mut canvas, x0, h, counting);
     out.sampling = options.sampling;
+    if options.renderer.fills_buffers() {
+        out.buffers = buffers.writer(x0, h);
+    } else {
+        buffers.depth.fill(buffers::FAR);
+    }
     match options.renderer {
         Renderer::Bsp | Renderer::Raycast => {
             // The walk's own time is what its segs' columns did not take.
@@ -281,4 +316,5 @@ fn draw_strip(
     strip.stats.masked_pixels_written += out.masked_written;
     strip.canvas = canvas;
     strip.counts = counts;
+    strip.buffers = buffers;
 }

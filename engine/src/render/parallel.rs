@@ -55,12 +55,15 @@ impl Pool {
 }
 
 /// One strip to draw: its columns and where its pixels (and write counts,
-/// when counting) go, one slice per row.
+/// depth and labels, when asked for) go, one slice per row.
 pub(crate) struct Job<'a> {
     pub x0: usize,
     pub x1: usize,
     pub rows: Vec<&'a mut [u32]>,
     pub counts: Vec<&'a mut [u16]>,
+    /// Its depth and label rows, when the frame fills those buffers.
+    pub depth: Vec<&'a mut [f32]>,
+    pub labels: Vec<&'a mut [u32]>,
 }
 
 /// Each strip's piece of every row of a row-major `buf` that is `width` wide

@@ -331,6 +331,7 @@ pub(crate) fn render(
     if level.grid().is_none() {
         for x in x0..x1 {
             out.fill(x, 0, h, VOID);
+            out.buffers.far(x, (0, h));
         }
         return;
     }
@@ -356,7 +357,10 @@ pub(crate) fn render(
         frame.stats.walls_considered += 1;
         match hit {
             Some(hit) => draw_column(scene, &setup, &hit, x, frame, out),
-            None => out.fill(x, 0, h, VOID),
+            None => {
+                out.fill(x, 0, h, VOID);
+                out.buffers.far(x, (0, h));
+            }
         }
     }
     frame.stats.nodes_visited += steps;
@@ -379,6 +383,14 @@ fn draw_column(scene: &Scene, setup: &Setup, hit: &RayHit, x: usize, frame: &mut
         }
     }
     let rows = (ceiling_end, floor_start);
+    if out.buffers.on() {
+        let (z, inv_rows, sector) = (cam.z, scene.inv_rows, &level.map.sectors[0]);
+        let ceiling = (!sector.ceiling_is_sky()).then_some(setup.ceiling - z);
+        let floor = (!sector.floor_is_sky()).then_some(setup.floor - z);
+        out.buffers.plane(x, (0, ceiling_end), ceiling, inv_rows, depth);
+        out.buffers.plane(x, (floor_start, h), floor, inv_rows, depth);
+        out.buffers.flat(x, rows, depth);
+    }
     let surface = Surface::Wall { line: hit.line.unwrap_or(usize::MAX) };
     // Wolfenstein shades east and west faces apart from north and south ones.
     let facing = if hit.face.is_x() { 1.0 } else { 0.8 };

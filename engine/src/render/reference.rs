@@ -77,16 +77,14 @@ impl<'a> Reference<'a> {
             let sprites = sprites_on_column(cam, things, x);
             frame.stats.walls_considered += ends.len() as u64;
             let mut run: Option<(i32, u32)> = None;
+            let buffers = out.buffers.on();
             for y in 0..cam.height as i32 {
-                let c = pixel_colour(
-                    level,
-                    cam,
-                    ends,
-                    &frame.hits,
-                    &sprites,
-                    (cam.column_slope(x), y),
-                    (shade, self.masked),
-                );
+                let seen =
+                    pixel(level, cam, ends, &frame.hits, &sprites, (cam.column_slope(x), y), (shade, self.masked));
+                if buffers {
+                    out.buffers.pixel(x, y, seen.depth(cam, y), seen.label());
+                }
+                let c = seen.colour;
                 match run {
                     Some((_, rc)) if rc == c => {}
                     Some((start, rc)) => {
@@ -309,7 +307,47 @@ fn texel_at(cam: &Camera, texture: &Texture, u: usize, top: f64, depth: f64, y: 
     (texel >> 24 != 0).then_some(texel)
 }
 
-fn pixel_colour(
+/// What a pixel's ray meets first: its colour, and for the depth and label
+/// buffers the surface and where.
+struct Seen {
+    colour: u32,
+    surface: Surface,
+    at: At,
+}
+
+/// Where a [`Seen`] surface is: at one depth (a wall, middle or sprite), on
+/// a plane `rise` above the eye found at a crossing `limit` deep, or nowhere
+/// (sky, void).
+enum At {
+    Depth(f64),
+    Plane { rise: f64, limit: f64 },
+    Far,
+}
+
+impl Seen {
+    fn new(colour: u32, surface: Surface, at: At) -> Seen {
+        Seen { colour, surface, at }
+    }
+
+    /// The depth buffer's value at row `y`, by the walk's formulas.
+    fn depth(&self, cam: &Camera, y: i32) -> f32 {
+        match (self.surface, &self.at) {
+            (Surface::Sky | Surface::Void, _) | (_, At::Far) => super::buffers::FAR,
+            (_, At::Depth(d)) => *d as f32,
+            // `1 / row_slope`: the number the walk's `inv_rows` holds.
+            (_, &At::Plane { rise, limit }) => super::buffers::plane_depth(rise, 1.0 / cam.row_slope(y), limit),
+        }
+    }
+
+    fn label(&self) -> u32 {
+        match self.surface {
+            Surface::Thing { thing } => super::sprites::label(thing),
+            _ => 0,
+        }
+    }
+}
+
+fn pixel(
     level: &Level,
     cam: &Camera,
     ends: &[(DVec2, DVec2, bool)],
@@ -317,9 +355,13 @@ fn pixel_colour(
     sprites: &[(&Billboard, usize)],
     (t, y): (f64, i32),
     (shade, masked): (Shade, bool),
-) -> u32 {
+) -> Seen {
     let map = &level.map;
     let mut sprites = sprites.iter().peekable();
+    let thing = |b: &Billboard| {
+        let surface = Surface::Thing { thing: b.thing };
+        Seen::new(colour(shade, surface, b.light, 1.0), surface, At::Depth(b.depth))
+    };
     for hit in hits {
         // Billboards nearer than this crossing (or at its depth: a sprite
         // against a wall is in front of it) come first.
@@ -329,7 +371,7 @@ fn pixel_colour(
             }
             sprites.next();
             if texel_at(cam, b.texture, u, b.floor + b.texture.height as f64, b.depth, y).is_some() {
-                return colour(shade, Surface::Thing { thing: b.thing }, b.light, 1.0);
+                return thing(b);
             }
         }
         // Is this row's ray above `height` where it crosses the line?
@@ -348,11 +390,12 @@ fn pixel_colour(
         let light = sector.light;
         let (ceiling_light, floor_light) = plane_lights(map, sector);
         let (ceiling, floor) = plane_surfaces(near.sector, sector);
+        let plane = |height: f64| At::Plane { rise: height - cam.z, limit: hit.depth };
         if above(ceiling_at_line(sector, far_sector)) {
-            return colour(shade, ceiling, ceiling_light, 1.0);
+            return Seen::new(colour(shade, ceiling, ceiling_light, 1.0), ceiling, plane(sector.ceiling));
         }
         if !above(sector.floor) {
-            return colour(shade, floor, floor_light, 1.0);
+            return Seen::new(colour(shade, floor, floor_light, 1.0), floor, plane(sector.floor));
         }
         match far_sector {
             Some(back) if above(back.floor) && !above(back.ceiling) => {
@@ -364,23 +407,23 @@ fn pixel_colour(
                     let u = masked_u(&ends[hit.line], side_offsets(near, level.time).0, hit, t);
                     let u = (u.floor() as i64).rem_euclid(texture.width as i64) as usize;
                     if texel_at(cam, texture, u, top, hit.depth, y).is_some() {
-                        return colour(shade, wall, light, 1.0);
+                        return Seen::new(colour(shade, wall, light, 1.0), wall, At::Depth(hit.depth));
                     }
                 }
                 continue;
             }
             _ => {
                 let (a, b) = map.line_points(line);
-                return colour(shade, wall, light, wall_facing(b - a));
+                return Seen::new(colour(shade, wall, light, wall_facing(b - a)), wall, At::Depth(hit.depth));
             }
         }
     }
     for &(b, u) in sprites {
         if texel_at(cam, b.texture, u, b.floor + b.texture.height as f64, b.depth, y).is_some() {
-            return colour(shade, Surface::Thing { thing: b.thing }, b.light, 1.0);
+            return thing(b);
         }
     }
-    colour(shade, Surface::Void, 0, 1.0)
+    Seen::new(colour(shade, Surface::Void, 0, 1.0), Surface::Void, At::Far)
 }
 
 /// Where along its side (plus the side's offset) the crossing `hit` lies:

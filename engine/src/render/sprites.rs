@@ -137,7 +137,8 @@ impl MaskedPass<'_> {
             return;
         }
         let texel_row = |y: i32| c.texel_rows[(y - c.rows.0) as usize] as usize;
-        self.put_texels(out, x, s.depth, c.rows, (c.texture, u as usize, texel_row), c.paint, false);
+        let at = (s.depth, label(s.thing));
+        self.put_texels(out, x, at, c.rows, (c.texture, u as usize, texel_row), c.paint, false);
     }
 
     fn masked_column(&self, out: &mut ColumnWriter, m: &super::frame::MaskedColumn, x: usize) {
@@ -165,7 +166,8 @@ impl MaskedPass<'_> {
         // Translucent middles (Boom's 260) blend only when textured, so
         // the flat and ids pictures stay comparable with the reference.
         let translucent = line.flags.translucent && self.scene.shade == Shade::Textured;
-        self.put_texels(out, x, m.depth, rows, (texture, u, self.texel_row(texture, m.depth, top)), paint, translucent);
+        let texels = (texture, u, self.texel_row(texture, m.depth, top));
+        self.put_texels(out, x, (m.depth, 0), rows, texels, paint, translucent);
     }
 
     /// The texel row screen row `y` shows of `texture` standing at `depth`
@@ -180,12 +182,13 @@ impl MaskedPass<'_> {
 
     /// Writes the opaque texels of texture column `u` over rows `rows` of
     /// column `x`, clipped to the window left open in front of `depth`; row
-    /// `y` shows texel row `texel_row(y)`.
+    /// `y` shows texel row `texel_row(y)`. Where the frame fills them, those
+    /// pixels get `depth` and `label` (a thing's, or 0 for a middle).
     fn put_texels(
         &self,
         out: &mut ColumnWriter,
         x: usize,
-        depth: f64,
+        (depth, label): (f64, u32),
         rows: (i32, i32),
         (texture, u, texel_row): (&Texture, usize, impl Fn(i32) -> usize),
         paint: Texels,
@@ -209,6 +212,7 @@ impl MaskedPass<'_> {
                         *t = texel(y + k as i32);
                     }
                     out.tint_opaque(x, y, &texels[..n], tint);
+                    out.buffers.opaque(x, y, &texels[..n], depth, label);
                     y += n as i32;
                 }
             }
@@ -218,6 +222,7 @@ impl MaskedPass<'_> {
                     if t >> 24 == 0 {
                         continue;
                     }
+                    out.buffers.pixel(x, y, depth as f32, label);
                     let c = match paint {
                         Texels::Solid(c) => c,
                         Texels::Tinted(tint) => tint.apply(t),
@@ -251,6 +256,12 @@ impl MaskedPass<'_> {
         }
         (0, height)
     }
+}
+
+/// The label buffer's value for the thing keyed `key`: `key + 1`, so that 0
+/// is no thing (saturating, for keys no simulation hands out).
+pub(crate) fn label(key: usize) -> u32 {
+    u32::try_from(key.saturating_add(1)).unwrap_or(u32::MAX)
 }
 
 /// How opaque texels become pixels.

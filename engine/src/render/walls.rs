@@ -8,6 +8,7 @@
 
 use glam::DVec2;
 
+use super::bsp::onto_partition;
 use super::columns::ColumnWriter;
 use super::frame::{Lap, Scene, StripFrame};
 use super::light::fake_contrast;
@@ -56,6 +57,9 @@ struct SegColumns<'a> {
     back: Option<(f64, f64)>,
     ceiling_paint: PlanePaint<'a>,
     floor_paint: PlanePaint<'a>,
+    /// The front sector's ceiling or floor is sky (infinitely far, for the depth buffer).
+    ceiling_sky: bool,
+    floor_sky: bool,
     /// A see-through middle on a two-sided line, drawn later with the sprites.
     masked: bool,
     /// Some part samples a texture column (or the masked middle will): only
@@ -67,7 +71,10 @@ struct SegColumns<'a> {
     lower: Paint<'a>,
 }
 
-pub(crate) fn draw_seg(scene: &Scene, seg: &Seg, frame: &mut StripFrame, out: &mut ColumnWriter) {
+/// Draws `seg` in the columns still open. `along`: the walk is below a
+/// partition the eye looks along, whose near-by seg ends count as on it
+/// ([`super::bsp::looks_along`]).
+pub(crate) fn draw_seg(scene: &Scene, seg: &Seg, frame: &mut StripFrame, out: &mut ColumnWriter, along: bool) {
     frame.stats.walls_considered += 1;
     let (level, cam) = (scene.level, scene.cam);
     let map = &level.map;
@@ -87,7 +94,11 @@ pub(crate) fn draw_seg(scene: &Scene, seg: &Seg, frame: &mut StripFrame, out: &m
     if !facing || !cross_from.is_finite() {
         return;
     }
-    let Some((x0, x1)) = cam.project_span_in(scene.slopes, cam.to_camera(seg.v1), cam.to_camera(seg.v2)) else {
+    let (mut v1, mut v2) = (cam.to_camera(seg.v1), cam.to_camera(seg.v2));
+    if along {
+        (v1, v2) = (onto_partition(v1), onto_partition(v2));
+    }
+    let Some((x0, x1)) = cam.project_span_in(scene.slopes, v1, v2) else {
         return;
     };
     let columns = Lap::start(scene.profile);
@@ -163,6 +174,8 @@ fn seg_columns<'a>(
         back: back.map(|b| (b.ceiling, b.floor)),
         ceiling_paint,
         floor_paint,
+        ceiling_sky: ceiling_surface == Surface::Sky,
+        floor_sky: floor_surface == Surface::Sky,
         masked,
         needs_u: masked || [middle, upper, lower].iter().any(|p| matches!(p, Paint::Textured { .. })),
         middle,
@@ -251,9 +264,15 @@ fn draw_column(scene: &Scene, s: &SegColumns, x: usize, frame: &mut StripFrame, 
     let wall = WallColumn { scene, x, depth, u };
     // Clip events only matter to the masked pass; a frame without one skips them.
     let track = scene.plan.masked_pass();
+    if out.buffers.on() {
+        let (z, inv_rows) = (scene.cam.z, scene.inv_rows);
+        out.buffers.plane(x, (top, ceiling_end), (!s.ceiling_sky).then_some(s.ceiling - z), inv_rows, depth);
+        out.buffers.plane(x, (floor_start, bottom), (!s.floor_sky).then_some(s.floor - z), inv_rows, depth);
+    }
     match s.back {
         None => {
             wall.paint(out, (ceiling_end, floor_start), s.middle);
+            out.buffers.flat(x, (ceiling_end, floor_start), depth);
             frame.occlusion.close(x);
             if track {
                 frame.push_event(x, depth, 0, 0);
@@ -265,6 +284,8 @@ fn draw_column(scene: &Scene, s: &SegColumns, x: usize, frame: &mut StripFrame, 
             let lower_start = row(back_floor).clamp(upper_end, floor_start);
             wall.paint(out, (ceiling_end, upper_end), s.upper);
             wall.paint(out, (lower_start, floor_start), s.lower);
+            out.buffers.flat(x, (ceiling_end, upper_end), depth);
+            out.buffers.flat(x, (lower_start, floor_start), depth);
             if upper_end >= lower_start {
                 frame.occlusion.close(x);
             } else {

@@ -6,6 +6,8 @@
 //! renderer's stopwatches on gives the breakdown: the mean time per frame of
 //! each part (set-up, walk, wall columns, spans, masked, copy-out). Prints a
 //! short table, and with `--json` one JSON object as the last line of stdout.
+//! `--buffers off,depth,labels,both` times the depth and label buffers'
+//! cost: each variant a pass in turn, reported one after another.
 
 use std::time::{Duration, Instant};
 
@@ -13,7 +15,7 @@ use anyhow::{bail, Result};
 use sightline::bsp::BuildOptions;
 use sightline::campaign::{open, MapRef};
 use sightline::play::DEFAULT_SKILL;
-use sightline::render::{render_frame, Breakdown, Frame, RenderOptions, View};
+use sightline::render::{render_frame, Breakdown, Buffers, Frame, RenderOptions, View};
 use sightline::tour::things_tour;
 use sightline::Framebuffer;
 
@@ -36,74 +38,111 @@ pub fn run(args: &BenchTourArgs) -> Result<()> {
         bail!("{}: no pose of the tour lies inside a sector", args.map);
     }
     let (width, height) = args.size;
-    let options = RenderOptions { renderer, threads: args.threads, ..Default::default() };
+    let variants: Vec<Buffers> = if args.buffers.is_empty() { vec![Buffers::default()] } else { args.buffers.clone() };
+    let options = |buffers| RenderOptions { renderer, threads: args.threads, buffers, ..Default::default() };
     let mut frame = Frame::new();
     let mut fb = Framebuffer::new(width, height);
-    let mut render = |view: &View| {
+    let mut render = |view: &View, options: &RenderOptions| {
         let start = Instant::now();
-        render_frame(&level, view, &options, &mut frame, &mut fb);
+        render_frame(&level, view, options, &mut frame, &mut fb);
         start.elapsed()
     };
 
-    let warm_up: Duration = views.iter().map(&mut render).sum();
+    let mut warm_up = Duration::ZERO;
+    for &buffers in &variants {
+        warm_up += views.iter().map(|v| render(v, &options(buffers))).sum::<Duration>();
+    }
     let passes = args.repeat.map(|n| n as usize).unwrap_or_else(|| {
         let per_pass = warm_up.as_secs_f64().max(1e-6);
         let fit = (TARGET.as_secs_f64() / per_pass).ceil() as usize;
         fit.clamp(MIN_PASSES, (MAX_FRAMES / views.len()).max(1))
     });
-    let mut times = Vec::with_capacity(passes * views.len());
+    // A pass of each variant in turn, so that a busy spell of the machine
+    // falls on all of them alike.
+    let mut times: Vec<Vec<Duration>> = variants.iter().map(|_| Vec::with_capacity(passes * views.len())).collect();
     for _ in 0..passes {
-        times.extend(views.iter().map(&mut render));
+        for (&buffers, times) in variants.iter().zip(&mut times) {
+            let options = options(buffers);
+            times.extend(views.iter().map(|v| render(v, &options)));
+        }
     }
 
-    // The breakdown's own pass: the stopwatches cost a little, so its frames
-    // are not among the timed ones.
-    let profiled = RenderOptions { profile: true, ..options };
-    let mut parts = Breakdown::default();
-    let profile_start = Instant::now();
-    for view in &views {
-        render_frame(&level, view, &profiled, &mut frame, &mut fb);
-        parts += frame.breakdown;
+    // The breakdown's own pass per variant: the stopwatches cost a little,
+    // so its frames are not among the timed ones.
+    let mut reports = Vec::new();
+    for (&buffers, times) in variants.iter().zip(&mut times) {
+        let profiled = RenderOptions { profile: true, ..options(buffers) };
+        let mut parts = Breakdown::default();
+        let profile_start = Instant::now();
+        for view in &views {
+            render_frame(&level, view, &profiled, &mut frame, &mut fb);
+            parts += frame.breakdown;
+        }
+        let profiled_ms = profile_start.elapsed().as_secs_f64() * 1000.0 / views.len() as f64;
+        reports.push(Report { buffers, summary: Summary::of(times), parts, profiled_ms });
     }
-    let profiled_ms = profile_start.elapsed().as_secs_f64() * 1000.0 / views.len() as f64;
     let part_ms = |ns: u64| ns as f64 / 1e6 / views.len() as f64;
 
-    let summary = Summary::of(&mut times);
     let size = format!("{width}x{height}");
     println!("map       {} ({} poses x {passes} passes)", args.map, views.len());
     println!("renderer  {} at {size}, {} thread(s)", renderer.name(), args.threads);
-    println!("frames    {}", summary.frames);
-    println!("median    {:.4} ms ({:.0} fps)", summary.median_ms, summary.fps_median());
-    println!("p95       {:.4} ms", summary.p95_ms);
-    println!("mean      {:.4} ms", summary.mean_ms);
-    println!(
-        "breakdown (one profiled pass, mean per frame, {profiled_ms:.4} ms a frame with the stopwatches; \
-         with threads, summed over them):"
-    );
-    let total = parts.total().max(1) as f64;
-    for (name, ns) in parts.parts() {
-        println!("  {name:<8}{:>9.4} ms {:>5.1}%", part_ms(ns), ns as f64 / total * 100.0);
+    for report in &reports {
+        let (summary, parts) = (&report.summary, &report.parts);
+        if variants.len() > 1 || report.buffers.any() {
+            println!("buffers   {}", report.buffers.name());
+        }
+        println!("frames    {}", summary.frames);
+        println!("median    {:.4} ms ({:.0} fps)", summary.median_ms, summary.fps_median());
+        println!("p95       {:.4} ms", summary.p95_ms);
+        println!("mean      {:.4} ms", summary.mean_ms);
+        println!(
+            "breakdown (one profiled pass, mean per frame, {:.4} ms a frame with the stopwatches; \
+             with threads, summed over them):",
+            report.profiled_ms
+        );
+        let total = parts.total().max(1) as f64;
+        for (name, ns) in parts.parts() {
+            println!("  {name:<8}{:>9.4} ms {:>5.1}%", part_ms(ns), ns as f64 / total * 100.0);
+        }
     }
     if args.json {
-        let breakdown: serde_json::Map<String, serde_json::Value> =
-            parts.parts().iter().map(|&(name, ns)| (format!("{name}_ms"), part_ms(ns).into())).collect();
-        let json = serde_json::json!({
-            "map": args.map.to_string(),
-            "size": size,
-            "renderer": renderer.name(),
-            "threads": args.threads,
-            "frames": summary.frames,
-            "passes": passes,
-            "median_ms": summary.median_ms,
-            "p95_ms": summary.p95_ms,
-            "mean_ms": summary.mean_ms,
-            "fps_median": summary.fps_median(),
-            "breakdown": breakdown,
-            "profiled_mean_ms": profiled_ms,
-        });
+        let figures = |report: &Report| {
+            let breakdown: serde_json::Map<String, serde_json::Value> =
+                report.parts.parts().iter().map(|&(name, ns)| (format!("{name}_ms"), part_ms(ns).into())).collect();
+            serde_json::json!({
+                "buffers": report.buffers.name(),
+                "frames": report.summary.frames,
+                "median_ms": report.summary.median_ms,
+                "p95_ms": report.summary.p95_ms,
+                "mean_ms": report.summary.mean_ms,
+                "fps_median": report.summary.fps_median(),
+                "breakdown": breakdown,
+                "profiled_mean_ms": report.profiled_ms,
+            })
+        };
+        // The first variant's figures at the top level, as before `--buffers`.
+        let mut json = figures(&reports[0]);
+        if let Some(object) = json.as_object_mut() {
+            object.insert("map".into(), args.map.to_string().into());
+            object.insert("size".into(), size.into());
+            object.insert("renderer".into(), renderer.name().into());
+            object.insert("threads".into(), args.threads.into());
+            object.insert("passes".into(), passes.into());
+            if reports.len() > 1 {
+                object.insert("variants".into(), reports.iter().map(figures).collect::<Vec<_>>().into());
+            }
+        }
         println!("{json}");
     }
     Ok(())
+}
+
+/// One variant's timings and breakdown.
+struct Report {
+    buffers: Buffers,
+    summary: Summary,
+    parts: Breakdown,
+    profiled_ms: f64,
 }
 
 /// Order statistics of the frame times.
