@@ -13,8 +13,9 @@ Delta buttons (turns and moves by a value) are a ``Box`` beside them, in a
 ``Dict`` action space with keys ``binary`` and ``continuous``.
 
 Observations are a ``Dict``: ``screen`` (height, width, channels; RGB24
-unless the ``.cfg`` asks for GRAY8, which has one channel), ``automap``
-when the ``.cfg`` turns it on, and ``gamevariables`` (float32) when it
+unless the ``.cfg`` asks for GRAY8, which has one channel), ``depth``
+(float32 map units), ``labels`` and ``automap`` when the ``.cfg`` turns
+them on, and ``gamevariables`` (float32) when it
 lists any. An episode that reaches the ``.cfg``'s ``episode_timeout`` is
 *truncated*; death and the exit *terminate* it.
 
@@ -82,6 +83,10 @@ class _Spec:
         height, width = game.get_screen_height(), game.get_screen_width()
         channels = game.get_screen_channels()
         spaces = {"screen": gym.spaces.Box(0, 255, (height, width, channels), np.uint8)}
+        if game.is_depth_buffer_enabled():
+            spaces["depth"] = gym.spaces.Box(0, np.inf, (height, width, 1), np.float32)
+        if game.is_labels_buffer_enabled():
+            spaces["labels"] = gym.spaces.Box(0, 255, (height, width, 1), np.uint8)
         if game.is_automap_buffer_enabled():
             spaces["automap"] = gym.spaces.Box(0, 255, (height, width, channels), np.uint8)
         n_vars = game.get_available_game_variables_size()
@@ -175,6 +180,10 @@ class SightlineEnv(gym.Env):
                 {"screen": self._last_screen} if self._last_screen is not None else {}
             )
         obs = {"screen": self._spec.screen(state.screen_buffer)}
+        if "depth" in self.observation_space.spaces:
+            obs["depth"] = state.depth_buffer[:, :, None]
+        if "labels" in self.observation_space.spaces:
+            obs["labels"] = state.labels_buffer[:, :, None]
         if "automap" in self.observation_space.spaces:
             obs["automap"] = self._spec.screen(state.automap_buffer)
         if "gamevariables" in self.observation_space.spaces:
@@ -263,8 +272,9 @@ class SightlineVectorEnv(gym.vector.VectorEnv):
         self.frame_skip = frame_skip
         self.single_action_space = self._spec.action_space
         self.single_observation_space = self._spec.observation_space
-        if "automap" in self.single_observation_space.spaces:
-            raise NotImplementedError("the vector environment gives the screen and game variables, not the automap")
+        for extra in ("automap", "depth", "labels"):
+            if extra in self.single_observation_space.spaces:
+                raise NotImplementedError(f"the vector environment gives the screen and game variables, not the {extra}")
         self.action_space = gym.vector.utils.batch_space(self.single_action_space, num_envs)
         self.observation_space = gym.vector.utils.batch_space(self.single_observation_space, num_envs)
         self._games = _native.Games(game._config, num_envs, threads=threads)

@@ -545,11 +545,19 @@ class DoomGame:
         settings = self._settings()
         variables = game.game_variables() if settings["available_game_variables"] else None
         automap = game.automap() if settings["automap_buffer_enabled"] else None
+        depth = game.depth() if settings["depth_buffer_enabled"] else None
+        labels_buffer, labels = None, []
+        if settings["labels_buffer_enabled"]:
+            labels_buffer, objects = game.labels()
+            labels = [Label(**o) for o in objects]
         return GameState(
             number=self._state_number,
             tic=game.episode_time(),
             game_variables=variables,
             screen_buffer=game.screen(),
+            depth_buffer=depth,
+            labels_buffer=labels_buffer,
+            labels=labels,
             automap_buffer=automap,
         )
 

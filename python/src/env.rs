@@ -35,6 +35,20 @@ impl Opened {
     }
 }
 
+/// A body seen in the labels buffer (ViZDoom's `Label`).
+pub struct Label {
+    pub object_id: u32,
+    pub object_name: String,
+    pub value: u8,
+    pub x: usize,
+    pub y: usize,
+    pub width: usize,
+    pub height: usize,
+    pub position: [f64; 3],
+    pub angle: f64,
+    pub velocity: [f64; 3],
+}
+
 /// A game of an opened scenario.
 pub struct Env {
     opened: Arc<Opened>,
@@ -180,6 +194,68 @@ impl Env {
         self.draw()?;
         let format = self.config().screen_format;
         convert_into(self.observer.screen(), format, out).map_err(|e| PyValueError::new_err(e.to_string()))
+    }
+
+    /// The depth buffer: each pixel's depth along the view in map units
+    /// (f32, infinite for the sky), rows first.
+    pub fn depth(&mut self) -> PyResult<(Vec<usize>, Vec<f32>)> {
+        if !self.config().outputs.depth_buffer {
+            return Err(PyRuntimeError::new_err("the depth buffer is off: set_depth_buffer_enabled(True) first"));
+        }
+        self.draw()?;
+        let fb = self.observer.screen();
+        Ok((vec![fb.height, fb.width], self.observer.frame().depth().to_vec()))
+    }
+
+    /// The labels buffer and its objects: each visible body gets a value
+    /// 1 to 255 by its id's order (0: no body; past 254 bodies the rest
+    /// share 255), and each object its box in the frame.
+    pub fn labels(&mut self) -> PyResult<(Vec<usize>, Vec<u8>, Vec<Label>)> {
+        if !self.config().outputs.labels_buffer {
+            return Err(PyRuntimeError::new_err("the labels buffer is off: set_labels_buffer_enabled(True) first"));
+        }
+        self.draw()?;
+        let Some(episode) = self.episode.as_ref() else { unreachable!("drawn above") };
+        let sim = &episode.game.sim;
+        let (w, h) = (self.observer.screen().width, self.observer.screen().height);
+        let keys = self.observer.frame().labels();
+        let mut seen: Vec<u32> = keys.iter().copied().filter(|&k| k != 0).collect();
+        seen.sort_unstable();
+        seen.dedup();
+        let value_of = |k: u32| seen.binary_search(&k).map_or(0, |i| (i + 1).min(255) as u8);
+        let mut boxes: Vec<(usize, usize, usize, usize)> = vec![(usize::MAX, usize::MAX, 0, 0); seen.len()];
+        let mut buffer = vec![0u8; keys.len()];
+        for (i, &k) in keys.iter().enumerate() {
+            if k == 0 {
+                continue;
+            }
+            buffer[i] = value_of(k);
+            let Ok(j) = seen.binary_search(&k) else { continue };
+            let (x, y) = (i % w, i / w);
+            let b = &mut boxes[j];
+            *b = (b.0.min(x), b.1.min(y), b.2.max(x), b.3.max(y));
+        }
+        let labels = seen
+            .iter()
+            .zip(&boxes)
+            .filter_map(|(&k, &(x0, y0, x1, y1))| {
+                let id = sightline::sim::MobjId(k - 1);
+                let m = sim.mobjs.get(id.0 as usize)?;
+                Some(Label {
+                    object_id: id.0,
+                    object_name: sim.info.things.get(m.kind).map_or_else(String::new, |t| t.name.clone()),
+                    value: value_of(k),
+                    x: x0,
+                    y: y0,
+                    width: x1 + 1 - x0,
+                    height: y1 + 1 - y0,
+                    position: [m.x.to_f64(), m.y.to_f64(), m.z.to_f64()],
+                    angle: m.angle.to_degrees(),
+                    velocity: [m.momx.to_f64(), m.momy.to_f64(), m.momz.to_f64()],
+                })
+            })
+            .collect();
+        Ok((vec![h, w], buffer, labels))
     }
 
     /// The automap in the screen's format.

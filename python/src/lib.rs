@@ -245,6 +245,43 @@ impl Game {
         array(py, &shape, bytes)
     }
 
+    /// The depth buffer (height, width; float32 map units along the view,
+    /// infinite for the sky).
+    fn depth<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f32>>> {
+        let env = &mut self.env;
+        let (shape, values) = py.detach(|| env.depth())?;
+        array(py, &shape, values)
+    }
+
+    /// The labels buffer (height, width; uint8) and its objects, each a
+    /// dictionary of ViZDoom's `Label` fields.
+    fn labels<'py>(&mut self, py: Python<'py>) -> PyResult<(Bound<'py, PyArrayDyn<u8>>, Vec<Bound<'py, PyDict>>)> {
+        let env = &mut self.env;
+        let (shape, values, labels) = py.detach(|| env.labels())?;
+        let objects = labels
+            .into_iter()
+            .map(|l| {
+                let d = PyDict::new(py);
+                d.set_item("object_id", l.object_id)?;
+                d.set_item("object_name", l.object_name)?;
+                d.set_item("value", l.value)?;
+                d.set_item("x", l.x)?;
+                d.set_item("y", l.y)?;
+                d.set_item("width", l.width)?;
+                d.set_item("height", l.height)?;
+                for (k, v) in ["object_position_x", "object_position_y", "object_position_z"].iter().zip(l.position) {
+                    d.set_item(*k, v)?;
+                }
+                d.set_item("object_angle", l.angle)?;
+                for (k, v) in ["object_velocity_x", "object_velocity_y", "object_velocity_z"].iter().zip(l.velocity) {
+                    d.set_item(*k, v)?;
+                }
+                Ok(d)
+            })
+            .collect::<PyResult<Vec<_>>>()?;
+        Ok((array(py, &shape, values)?, objects))
+    }
+
     /// The automap in the screen's format and size.
     fn automap<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<u8>>> {
         let env = &mut self.env;

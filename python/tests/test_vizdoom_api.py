@@ -206,3 +206,31 @@ def test_bad_calls_raise_clear_python_errors(basic_cfg, tmp_path: pathlib.Path):
     # The game that raised goes on.
     game.make_action([0, 0, 1])
     assert game.get_state() is not None or game.is_episode_finished()
+
+
+def test_depth_and_labels_buffers(scenarios):
+    game = vzd.DoomGame()
+    game.load_config(os.path.join(scenarios, "defend_the_center.cfg"))
+    game.set_screen_resolution(vzd.ScreenResolution.RES_320X240)
+    game.set_depth_buffer_enabled(True)
+    game.set_labels_buffer_enabled(True)
+    game.set_seed(2)
+    game.init()
+    for _ in range(10):
+        game.make_action([0, 0, 0])
+    state = game.get_state()
+    depth, labels = state.depth_buffer, state.labels_buffer
+    assert depth.shape == (240, 320) and depth.dtype == np.float32
+    assert labels.shape == (240, 320) and labels.dtype == np.uint8
+    finite = depth[np.isfinite(depth)]
+    assert finite.size > 0 and (finite > 0).all()
+    # The monsters around the player: each label's box holds its pixels.
+    assert state.labels, "defend_the_center's monsters are in view"
+    for label in state.labels:
+        ys, xs = np.nonzero(labels == label.value)
+        assert (xs.min(), ys.min()) == (label.x, label.y)
+        assert (xs.max() + 1 - label.x, ys.max() + 1 - label.y) == (label.width, label.height)
+        assert label.object_name
+        # A thing's pixels are nearer than the wall behind it, farther than the eye.
+        assert np.isfinite(depth[ys, xs]).all()
+    assert set(np.unique(labels)) - {0} == {lab.value for lab in state.labels}

@@ -31,7 +31,14 @@ impl Observer {
         let (w, h) = (usize::from(config.screen_resolution.width), usize::from(config.screen_resolution.height));
         Observer {
             config: config.clone(),
-            options: RenderOptions { threads, ..RenderOptions::default() },
+            options: RenderOptions {
+                threads,
+                buffers: crate::render::Buffers {
+                    depth: config.outputs.depth_buffer,
+                    labels: config.outputs.labels_buffer,
+                },
+                ..RenderOptions::default()
+            },
             frame: Frame::new(),
             screen: Framebuffer::new(w, h),
             automap: None,
@@ -94,7 +101,9 @@ impl Observer {
         self.automap.as_ref().map(|(_, fb)| fb)
     }
 
-    /// The renderer's frame (its per-frame results).
+    /// The renderer's frame (its per-frame results: the depth and labels
+    /// buffers when the `.cfg` turns them on, `Frame::depth`,
+    /// `Frame::labels`).
     pub fn frame(&self) -> &Frame {
         &self.frame
     }
