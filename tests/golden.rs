@@ -86,7 +86,7 @@ fn play_frames_with_the_status_bar_and_a_weapon_match_golden_images() {
         let shown = Observe::player(&g).health.min(100);
         g.player_mut().health = shown;
         let mut frame = render(Observe::level(&g), &g.view(1.0), SIZE, Renderer::Bsp, Shade::Textured);
-        draw(&mut frame, Observe::level(&g), Observe::player(&g), hud);
+        draw(&mut frame, Observe::level(&g), Observe::table(&g), Observe::player(&g), hud);
         frames.push((name, frame));
     }
     let dir = root().join("tests/images");
@@ -150,7 +150,7 @@ fn the_default_level_s_main_views_match_golden_images() {
         }
         assert!(k != 1 || Observe::player(&g).ready_weapon == Some(shotgun), "the shotgun is not up");
         let mut frame = render(Observe::level(&g), &g.view(1.0), SIZE, Renderer::Bsp, Shade::Textured);
-        draw(&mut frame, Observe::level(&g), Observe::player(&g), Hud::StatusBar);
+        draw(&mut frame, Observe::level(&g), Observe::table(&g), Observe::player(&g), Hud::StatusBar);
         let file = dir.join(format!("outpost-play-{k}-{name}.png"));
         if bless {
             std::fs::write(&file, frame.to_png()).unwrap();

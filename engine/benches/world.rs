@@ -266,6 +266,7 @@ fn freedoom(quick: bool) {
                     repairs: Vec::new(),
                     report: None,
                     links: opened.links.clone(),
+                    wad: opened.wad.clone(),
                 };
                 SimGame::new(again, GameOptions { skill: 3, ..Default::default() })
                     .unwrap_or_else(|e| panic!("{label}: {e}"))

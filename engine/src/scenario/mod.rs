@@ -7,6 +7,7 @@
 mod cfg;
 mod config;
 pub mod host;
+pub mod multi;
 mod names;
 pub mod observe;
 pub mod run;
@@ -15,6 +16,7 @@ pub mod variables;
 
 pub use cfg::{key_names, CfgError, Problem, KEY_COUNT};
 pub use config::{AutomapOptions, Outputs, RenderFlags, Rewards, ScenarioConfig};
+pub use multi::MultiEpisode;
 pub use names::{AutomapMode, Button, GameVariable, Mode, SamplingRate, ScreenFormat, ScreenResolution, RESOLUTIONS};
 pub use run::{map_of, reward_so_far, End, Episode, RandomPolicy, Scenario, ScenarioError};
 pub use scripts::Scripts;

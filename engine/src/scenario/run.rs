@@ -65,7 +65,7 @@ pub struct Episode {
 /// What ViZDoom 1.3's event rewards are paid on (`kill_reward` and the
 /// rest): the player's counts after an action, compared with the last.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-struct Counts {
+pub(super) struct Counts {
     kills: f64,
     items: f64,
     secrets: f64,
@@ -79,8 +79,9 @@ struct Counts {
 }
 
 impl Counts {
-    fn of(game: &SimGame) -> Counts {
-        let v = |variable| super::variables::value(game, 0, variable);
+    /// Player `player`'s counts.
+    pub(super) fn of(game: &SimGame, player: usize) -> Counts {
+        let v = |variable| super::variables::value(game, player, variable);
         use super::GameVariable as G;
         Counts {
             kills: v(G::KillCount),
@@ -99,7 +100,7 @@ impl Counts {
     /// The rewards earned from `before` to `self`: per kill, item, secret,
     /// frag and hit, per point of damage, and per point of health and
     /// armour gained (losses pay nothing).
-    fn reward_since(&self, before: &Counts, r: &super::Rewards) -> f64 {
+    pub(super) fn reward_since(&self, before: &Counts, r: &super::Rewards) -> f64 {
         let gained = |now: f64, then: f64| (now - then).max(0.0);
         r.kill * (self.kills - before.kills)
             + r.item * (self.items - before.items)
@@ -217,7 +218,7 @@ impl Scenario {
             episode.game.command(Ticcmd::default());
         }
         episode.reward_global = episode.global(0);
-        episode.counts = Counts::of(&episode.game);
+        episode.counts = Counts::of(&episode.game, 0);
         episode
     }
 }
@@ -251,7 +252,7 @@ impl Episode {
             let global = self.global(0);
             reward += f64::from(global.wrapping_sub(self.reward_global)) / 65536.0;
             self.reward_global = global;
-            let counts = Counts::of(&self.game);
+            let counts = Counts::of(&self.game, 0);
             reward += counts.reward_since(&self.counts, &rewards);
             self.counts = counts;
             if self.game.player().health <= 0 {
@@ -285,50 +286,51 @@ impl Episode {
 
     /// Doom's command for the pressed buttons.
     fn command(&mut self, pressed: &[f64]) -> Ticcmd {
-        let held = |b: Button| {
-            let i = self.config.available_buttons.iter().position(|&x| x == b);
-            i.and_then(|i| pressed.get(i)).copied().unwrap_or(0.0)
-        };
-        let on = |b: Button| held(b) != 0.0;
-        let speed = on(Button::Speed);
-        let (walk, strafe) = if speed { (50.0, 40.0) } else { (25.0, 24.0) };
-        let mut forward = 0.0;
-        let mut side = 0.0;
-        forward += if on(Button::MoveForward) { walk } else { 0.0 };
-        forward -= if on(Button::MoveBackward) { walk } else { 0.0 };
-        side += if on(Button::MoveRight) { strafe } else { 0.0 };
-        side -= if on(Button::MoveLeft) { strafe } else { 0.0 };
-        forward += held(Button::MoveForwardBackwardDelta);
-        side += held(Button::MoveLeftRightDelta);
-        let turning = on(Button::TurnLeft) != on(Button::TurnRight);
-        self.turn_held = if turning { self.turn_held + 1 } else { 0 };
-        let rate = if speed {
-            1280.0
-        } else if self.turn_held <= SLOW_TURN_TICS {
-            320.0
-        } else {
-            640.0
-        };
-        let mut turn = 0.0;
-        turn += if on(Button::TurnLeft) { rate } else { 0.0 };
-        turn -= if on(Button::TurnRight) { rate } else { 0.0 };
-        // Delta turns are degrees, positive to the right.
-        turn -= (held(Button::TurnLeftRightDelta) * 32768.0 / 180.0).floor();
-        let mut bits = 0;
-        if on(Button::Attack) {
-            bits |= buttons::ATTACK;
-        }
-        if on(Button::Use) {
-            bits |= buttons::USE;
-        }
-        let clamp8 = |v: f64| v.clamp(-127.0, 127.0) as i8;
-        Ticcmd {
-            forward: clamp8(forward),
-            side: clamp8(side),
-            turn: turn.clamp(-32768.0, 32767.0) as i16,
-            buttons: bits,
-        }
+        command(&self.config, pressed, &mut self.turn_held)
     }
+}
+
+/// Doom's command for `pressed` (one value per `config`'s available
+/// button); `turn_held` counts the tics a turn button has been held.
+pub(super) fn command(config: &ScenarioConfig, pressed: &[f64], turn_held: &mut u32) -> Ticcmd {
+    let held = |b: Button| {
+        let i = config.available_buttons.iter().position(|&x| x == b);
+        i.and_then(|i| pressed.get(i)).copied().unwrap_or(0.0)
+    };
+    let on = |b: Button| held(b) != 0.0;
+    let speed = on(Button::Speed);
+    let (walk, strafe) = if speed { (50.0, 40.0) } else { (25.0, 24.0) };
+    let mut forward = 0.0;
+    let mut side = 0.0;
+    forward += if on(Button::MoveForward) { walk } else { 0.0 };
+    forward -= if on(Button::MoveBackward) { walk } else { 0.0 };
+    side += if on(Button::MoveRight) { strafe } else { 0.0 };
+    side -= if on(Button::MoveLeft) { strafe } else { 0.0 };
+    forward += held(Button::MoveForwardBackwardDelta);
+    side += held(Button::MoveLeftRightDelta);
+    let turning = on(Button::TurnLeft) != on(Button::TurnRight);
+    *turn_held = if turning { *turn_held + 1 } else { 0 };
+    let rate = if speed {
+        1280.0
+    } else if *turn_held <= SLOW_TURN_TICS {
+        320.0
+    } else {
+        640.0
+    };
+    let mut turn = 0.0;
+    turn += if on(Button::TurnLeft) { rate } else { 0.0 };
+    turn -= if on(Button::TurnRight) { rate } else { 0.0 };
+    // Delta turns are degrees, positive to the right.
+    turn -= (held(Button::TurnLeftRightDelta) * 32768.0 / 180.0).floor();
+    let mut bits = 0;
+    if on(Button::Attack) {
+        bits |= buttons::ATTACK;
+    }
+    if on(Button::Use) {
+        bits |= buttons::USE;
+    }
+    let clamp8 = |v: f64| v.clamp(-127.0, 127.0) as i8;
+    Ticcmd { forward: clamp8(forward), side: clamp8(side), turn: turn.clamp(-32768.0, 32767.0) as i16, buttons: bits }
 }
 
 /// The comparison's random policy (`scripts/vizdoom-compare.py` plays the

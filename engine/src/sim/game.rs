@@ -380,6 +380,28 @@ impl SimGame {
         }
     }
 
+    /// Draws the game as player `n` sees it (`level`, `view` and
+    /// `player` become that player's: the others' bodies drawn, its own
+    /// not), for a game with several agents each with its own screen. The
+    /// simulation is untouched: only the picture's side of the game
+    /// changes, until the next tic or the next look. `false` for a player
+    /// not in the game.
+    pub fn look_as(&mut self, n: usize) -> bool {
+        if self.sim.player(n).is_none() {
+            return false;
+        }
+        let console = self.sim.console;
+        self.sim.console = n;
+        self.scene.draw(&self.sim, &mut self.level);
+        if let Some(view) = self.scene.view(&self.sim) {
+            self.after = view;
+            self.before = view;
+        }
+        self.refresh_player();
+        self.sim.console = console;
+        true
+    }
+
     /// A ZDoom map's scripts (`None` on other maps, or a map without any).
     pub fn scripts(&self) -> Option<&Scripts> {
         self.scripts.as_deref()
