@@ -19,19 +19,24 @@ impl Opened {
     /// Opens `config`'s scenario, its files checked first so that a
     /// missing one is a `FileNotFoundError` naming it.
     pub fn open(config: &ScenarioConfig, iwad: Option<&str>) -> PyResult<Opened> {
-        let Some(wad) = config.scenario_wad() else {
-            return Err(PyValueError::new_err(
-                "no scenario WAD: set doom_scenario_path (set_doom_scenario_path or a .cfg's doom_scenario_path)",
-            ));
-        };
         let given = iwad.map(std::path::PathBuf::from).or_else(|| config.game_wad());
-        for path in [Some(wad), given.clone()].into_iter().flatten() {
+        let wad = config.scenario_wad();
+        if wad.is_none() && given.is_none() {
+            return Err(PyValueError::new_err(
+                "no map: set doom_scenario_path (a scenario WAD) or doom_game_path (a WAD whose own map to play)",
+            ));
+        }
+        for path in [wad, given.clone()].into_iter().flatten() {
             if !path.is_file() {
                 return Err(PyFileNotFoundError::new_err(format!("{}: no such file", path.display())));
             }
         }
         let scenario = Scenario::open(config, given.as_deref()).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
         Ok(Opened { scenario })
+    }
+
+    pub fn scenario(&self) -> &Scenario {
+        &self.scenario
     }
 }
 

@@ -7,12 +7,14 @@
 //!   alike);
 //! - [`Game`]: one scenario game, stepped with the interpreter lock released;
 //! - [`Games`]: many games stepped together on the engine's threads (the
-//!   vector environment).
+//!   vector environment);
+//! - [`multi::MultiGame`]: several agents in one game (PettingZoo).
 //!
 //! Every buffer reaches Python as a numpy array that owns the engine's
 //! bytes (no copy after the engine writes them).
 
 mod env;
+mod multi;
 
 use numpy::ndarray::{Array, IxDyn};
 use numpy::{IntoPyArray, PyArrayDyn, PyReadonlyArray2};
@@ -28,8 +30,8 @@ use env::{Env, Opened};
 /// ViZDoom's defaults.
 #[pyclass(module = "sightline._native")]
 #[derive(Clone)]
-struct Config {
-    inner: ScenarioConfig,
+pub struct Config {
+    pub(crate) inner: ScenarioConfig,
 }
 
 #[pymethods]
@@ -148,7 +150,7 @@ fn variable(name: &str) -> PyResult<GameVariable> {
 }
 
 /// A numpy array owning `data`, of `shape`.
-fn array<'py, T: numpy::Element>(
+pub(crate) fn array<'py, T: numpy::Element>(
     py: Python<'py>,
     shape: &[usize],
     data: Vec<T>,
@@ -401,6 +403,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Config>()?;
     m.add_class::<Game>()?;
     m.add_class::<Games>()?;
+    m.add_class::<multi::MultiGame>()?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -118,7 +118,7 @@ impl Counts {
 /// What went wrong starting a scenario.
 #[derive(Debug, thiserror::Error)]
 pub enum ScenarioError {
-    #[error("{cfg}: no doom_scenario_path: which WAD holds the scenario's map?")]
+    #[error("{cfg}: no doom_scenario_path or doom_game_path: which WAD holds the scenario's map?")]
     NoWad { cfg: String },
     #[error("{0}")]
     Open(String),
@@ -126,15 +126,23 @@ pub enum ScenarioError {
 
 /// The map a scenario plays: its `.cfg`'s `doom_map` in its WAD, over
 /// `iwad`, else over the `.cfg`'s `doom_game_path`, else over
-/// `freedoom2.wad` where Doom ports look for it.
+/// `freedoom2.wad` where Doom ports look for it; with no scenario WAD, the
+/// map is the game WAD's own.
 pub fn map_of(config: &ScenarioConfig, iwad: Option<&Path>) -> Result<MapRef, ScenarioError> {
     let label = config.base_dir.display().to_string();
-    let wad = config.scenario_wad().ok_or(ScenarioError::NoWad { cfg: label })?;
-    let iwad = iwad.map(Path::to_path_buf).or_else(|| config.game_wad()).unwrap_or_else(|| {
+    let given = iwad.map(Path::to_path_buf).or_else(|| config.game_wad());
+    let wad = match (config.scenario_wad(), &given) {
+        (Some(wad), _) => Some(wad),
+        // A map of the game's own WAD (ViZDoom's freedoom2.cfg, deathmatch
+        // on freedm.wad): no scenario WAD over it.
+        (None, Some(_)) => None,
+        (None, None) => return Err(ScenarioError::NoWad { cfg: label }),
+    };
+    let iwad = given.unwrap_or_else(|| {
         let dirs = campaign::wad_dirs();
         campaign::find_wad(&PathBuf::from("freedoom2.wad"), &dirs)
     });
-    Ok(MapRef::Wad { wads: vec![iwad, wad], map: Some(config.doom_map.clone()) })
+    Ok(MapRef::Wad { wads: std::iter::once(iwad).chain(wad).collect(), map: Some(config.doom_map.clone()) })
 }
 
 /// The reward ViZDoom would have paid so far in a game of `config` played
