@@ -50,11 +50,11 @@ def _round(game, steps: int, skip: int, rng: random.Random) -> float:
 def _vector_round(games, steps: int, skip: int, rng: np.random.Generator) -> float:
     n = len(games)
     start = time.perf_counter()
+    screens = np.array(games.screens(), copy=True)
     for _ in range(steps):
-        screens = np.array(games.screens(), copy=True)
-        del screens
         actions = rng.integers(0, 2, size=(n, games.buttons)).astype(np.float64)
-        _, done = games.step(actions, skip)
+        _, done, screens = games.step_screens(actions, skip)
+        screens = np.array(screens, copy=True)
         for i in np.flatnonzero(done):
             games.new_episode(int(i), int(rng.integers(0, 2**31 - 1)))
     return n * steps / (time.perf_counter() - start)
@@ -76,8 +76,8 @@ class _VectorGames:
     def screens(self):
         return self.games.screens()
 
-    def step(self, actions, skip):
-        return self.games.step(actions, skip)
+    def step_screens(self, actions, skip):
+        return self.games.step_screens(actions, skip)
 
     def new_episode(self, i, seed):
         self.games.new_episode(i, seed)

@@ -281,8 +281,9 @@ class SightlineVectorEnv(gym.vector.VectorEnv):
         self._needs_reset = np.zeros(num_envs, dtype=bool)
         self._rngs = [gym.utils.seeding.np_random()[0] for _ in range(num_envs)]
 
-    def _observe(self) -> dict:
-        screens = self._games.screens()
+    def _observe(self, screens: Optional[np.ndarray] = None) -> dict:
+        if screens is None:
+            screens = self._games.screens()
         obs = {"screen": screens[..., None] if screens.ndim == 3 else screens}
         if "gamevariables" in self.single_observation_space.spaces:
             obs["gamevariables"] = self._games.game_variables().astype(np.float32)
@@ -312,16 +313,22 @@ class SightlineVectorEnv(gym.vector.VectorEnv):
             rows[i] = self._spec.to_buttons(one)
         # A game whose episode ended last step takes no action (its
         # episode is over, so the step plays nothing) and starts anew.
-        rewards, _ = self._games.step(rows, self.frame_skip)
         resetting = self._needs_reset.copy()
-        for i in np.flatnonzero(resetting):
-            self._new_episode(int(i))
+        if resetting.any():
+            rewards, _ = self._games.step(rows, self.frame_skip)
+            for i in np.flatnonzero(resetting):
+                self._new_episode(int(i))
+            obs = self._observe()
+        else:
+            # The usual step: the tics and the screens in one pass.
+            rewards, _, screens = self._games.step_screens(rows, self.frame_skip)
+            obs = self._observe(screens)
         rewards = np.where(resetting, 0.0, rewards)
         ends = self._games.ends()
         truncated = np.array([e == "timeout" for e in ends]) & ~resetting
         terminated = np.array([e in ("exit", "death") for e in ends]) & ~resetting
         self._needs_reset = terminated | truncated
-        return self._observe(), rewards, terminated, truncated, {}
+        return obs, rewards, terminated, truncated, {}
 
     def close_extras(self, **kwargs: Any) -> None:
         self._games = None

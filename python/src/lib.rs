@@ -304,6 +304,22 @@ struct Games {
     pool: rayon::ThreadPool,
 }
 
+impl Games {
+    /// The actions' rows, one per game, each checked.
+    fn rows(&self, actions: &PyReadonlyArray2<'_, f64>) -> PyResult<Vec<Vec<f64>>> {
+        let actions = actions.as_array();
+        if actions.nrows() != self.envs.len() {
+            let (rows, n) = (actions.nrows(), self.envs.len());
+            return Err(PyValueError::new_err(format!("actions has {rows} rows for {n} games")));
+        }
+        let rows: Vec<Vec<f64>> = actions.rows().into_iter().map(|r| r.to_vec()).collect();
+        for (env, row) in self.envs.iter().zip(&rows) {
+            env.check_action(row)?;
+        }
+        Ok(rows)
+    }
+}
+
 #[pymethods]
 impl Games {
     /// `count` games of `config`'s scenario, stepped on `threads` threads
@@ -344,15 +360,7 @@ impl Games {
         actions: PyReadonlyArray2<'py, f64>,
         tics: u32,
     ) -> PyResult<(Bound<'py, PyArrayDyn<f64>>, Bound<'py, PyArrayDyn<bool>>)> {
-        let actions = actions.as_array();
-        if actions.nrows() != self.envs.len() {
-            let (rows, n) = (actions.nrows(), self.envs.len());
-            return Err(PyValueError::new_err(format!("actions has {rows} rows for {n} games")));
-        }
-        let rows: Vec<Vec<f64>> = actions.rows().into_iter().map(|r| r.to_vec()).collect();
-        for (env, row) in self.envs.iter().zip(&rows) {
-            env.check_action(row)?;
-        }
+        let rows = self.rows(&actions)?;
         let (envs, pool) = (&mut self.envs, &self.pool);
         let rewards: Vec<PyResult<f64>> = py.detach(|| {
             pool.install(|| envs.par_iter_mut().zip(rows.par_iter()).map(|(env, row)| env.step(row, tics)).collect())
@@ -360,6 +368,42 @@ impl Games {
         let rewards = rewards.into_iter().collect::<PyResult<Vec<f64>>>()?;
         let done: Vec<bool> = self.envs.iter().map(Env::finished).collect();
         Ok((array(py, &[rewards.len()], rewards)?, array(py, &[done.len()], done)?))
+    }
+
+    /// [`Games::step`] and [`Games::screens`] in one pass over the games'
+    /// threads (each game plays its tics and draws its screen in one
+    /// task): the rewards, whether each episode has ended, the screens.
+    #[pyo3(signature = (actions, tics=1))]
+    #[allow(clippy::type_complexity)]
+    fn step_screens<'py>(
+        &mut self,
+        py: Python<'py>,
+        actions: PyReadonlyArray2<'py, f64>,
+        tics: u32,
+    ) -> PyResult<(Bound<'py, PyArrayDyn<f64>>, Bound<'py, PyArrayDyn<bool>>, Bound<'py, PyArrayDyn<u8>>)> {
+        let rows = self.rows(&actions)?;
+        let one = self.envs[0].screen_shape();
+        let size: usize = one.iter().product();
+        let mut bytes = vec![0u8; size * self.envs.len()];
+        let (envs, pool) = (&mut self.envs, &self.pool);
+        let rewards: Vec<PyResult<f64>> = py.detach(|| {
+            pool.install(|| {
+                envs.par_iter_mut()
+                    .zip(rows.par_iter())
+                    .zip(bytes.par_chunks_mut(size))
+                    .map(|((env, row), out)| {
+                        let reward = env.step(row, tics)?;
+                        env.screen_into(out)?;
+                        Ok(reward)
+                    })
+                    .collect()
+            })
+        });
+        let rewards = rewards.into_iter().collect::<PyResult<Vec<f64>>>()?;
+        let done: Vec<bool> = self.envs.iter().map(Env::finished).collect();
+        let mut shape = vec![self.envs.len()];
+        shape.extend(one);
+        Ok((array(py, &[rewards.len()], rewards)?, array(py, &[done.len()], done)?, array(py, &shape, bytes)?))
     }
 
     /// Every game's screen, stacked on a first axis (each game draws into

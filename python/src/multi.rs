@@ -36,13 +36,21 @@ impl MultiGame {
     /// (2) or co-operative (0).
     #[new]
     #[pyo3(signature = (config, players, deathmatch=1, iwad=None))]
-    fn new(py: Python<'_>, config: &Config, players: usize, deathmatch: u8, iwad: Option<String>) -> PyResult<MultiGame> {
+    fn new(
+        py: Python<'_>,
+        config: &Config,
+        players: usize,
+        deathmatch: u8,
+        iwad: Option<String>,
+    ) -> PyResult<MultiGame> {
         if !(1..=sightline::sim::MAXPLAYERS).contains(&players) {
             let max = sightline::sim::MAXPLAYERS;
             return Err(PyValueError::new_err(format!("{players} agents: a game holds 1 to {max} players")));
         }
         if deathmatch > 2 {
-            return Err(PyValueError::new_err(format!("deathmatch {deathmatch}: 0 co-operative, 1 deathmatch, 2 altdeath")));
+            return Err(PyValueError::new_err(format!(
+                "deathmatch {deathmatch}: 0 co-operative, 1 deathmatch, 2 altdeath"
+            )));
         }
         let cfg = config.inner.clone();
         let opened = Arc::new(py.detach(|| Opened::open(&cfg, iwad.as_deref()))?);
@@ -138,8 +146,10 @@ impl MultiGame {
     fn game_variables<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let (players, vars) = (self.players, self.variables.clone());
         let episode = self.episode()?;
-        let values: Vec<f64> =
-            (0..players).flat_map(|n| vars.iter().map(move |&v| (n, v))).map(|(n, v)| variables::value(&episode.game, n, v)).collect();
+        let values: Vec<f64> = (0..players)
+            .flat_map(|n| vars.iter().map(move |&v| (n, v)))
+            .map(|(n, v)| variables::value(&episode.game, n, v))
+            .collect();
         array(py, &[players, vars.len()], values)
     }
 
