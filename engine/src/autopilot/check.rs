@@ -241,6 +241,13 @@ pub fn check(level: Level, skill: u8) -> (Report, Drawing) {
     (report, drawing)
 }
 
+/// [`check`]'s report alone: what can be reached, without the route the
+/// plan draws (which plays the level with the autopilot, up to 20 minutes
+/// of game time).
+pub fn report(level: &Level, skill: u8) -> Report {
+    analyse(level, skill).0
+}
+
 fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
     let map = &level.compiled.map;
     let nav = NavGrid::new(&level.compiled);

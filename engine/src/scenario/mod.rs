@@ -7,6 +7,7 @@
 mod cfg;
 mod config;
 pub mod host;
+pub mod made;
 pub mod multi;
 mod names;
 pub mod observe;

@@ -60,6 +60,8 @@ pub struct Episode {
     turn_held: u32,
     /// The counts the 1.3 rewards are paid on, after the last action.
     counts: Counts,
+    /// A made scenario's own events (`scenario::made`): goals, pickups.
+    made: Option<super::made::events::Tracker>,
 }
 
 /// What ViZDoom 1.3's event rewards are paid on (`kill_reward` and the
@@ -169,6 +171,8 @@ pub struct Scenario {
     /// (flags, properties, actions left out), one line each with its lump
     /// and line.
     pub decorate_unread: Vec<String>,
+    /// A made scenario's goals and item rewards (`scenario::made`).
+    made: Option<std::sync::Arc<super::made::events::Rules>>,
 }
 
 impl Scenario {
@@ -185,7 +189,19 @@ impl Scenario {
         };
         let setup = Setup { no_autoaim: config.no_autoaim(), ..Setup::SINGLE };
         let pristine = Self::game(config, &opened, 0, setup)?;
-        Ok(Scenario { config: config.clone(), opened, pristine, decorate_unread })
+        Ok(Scenario { config: config.clone(), opened, pristine, decorate_unread, made: None })
+    }
+
+    /// A scenario on a map already opened (a made scenario's RON map:
+    /// `scenario::made`), whose episodes also pay `made`'s events.
+    pub(super) fn on_opened(
+        config: &ScenarioConfig,
+        opened: Opened,
+        made: Option<std::sync::Arc<super::made::events::Rules>>,
+    ) -> Result<Scenario, ScenarioError> {
+        let setup = Setup { no_autoaim: config.no_autoaim(), ..Setup::SINGLE };
+        let pristine = Self::game(config, &opened, 0, setup)?;
+        Ok(Scenario { config: config.clone(), opened, pristine, decorate_unread: Vec::new(), made })
     }
 
     fn game(config: &ScenarioConfig, opened: &Opened, seed: u64, setup: Setup) -> Result<SimGame, ScenarioError> {
@@ -221,10 +237,12 @@ impl Scenario {
             leaving: false,
             turn_held: 0,
             counts: Counts::default(),
+            made: None,
         };
         for _ in 0..self.config.episode_start_time {
             episode.game.command(Ticcmd::default());
         }
+        episode.made = self.made.as_ref().map(|rules| rules.start(&episode.game));
         episode.reward_global = episode.global(0);
         episode.counts = Counts::of(&episode.game, 0);
         episode
@@ -240,6 +258,12 @@ impl Episode {
     /// How the episode ended, once it has.
     pub fn end(&self) -> Option<End> {
         self.end
+    }
+
+    /// A made scenario's goals paid so far, in its `reach` order (empty
+    /// for a `.cfg` scenario).
+    pub fn reached(&self) -> &[bool] {
+        self.made.as_ref().map_or(&[], |m| m.reached())
     }
 
     /// One action: `pressed[i]` for the `.cfg`'s `available_buttons[i]`
@@ -269,6 +293,10 @@ impl Episode {
             } else if self.game.sim.exit.is_some() {
                 reward += rewards.map_exit;
                 self.leaving = true;
+            }
+            if let Some((paid, end)) = self.made.as_mut().map(|m| m.tic(&self.game)) {
+                reward += paid;
+                self.end = self.end.or(end);
             }
         }
         if self.end.is_none() && self.config.episode_timeout > 0 && self.actions >= self.config.episode_timeout {
