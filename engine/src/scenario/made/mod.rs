@@ -24,7 +24,7 @@ mod spec;
 #[cfg(test)]
 mod tests;
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 pub use check::{check, Finding, Severity};
@@ -33,9 +33,13 @@ pub use spec::{Pickup, Reach, RewardSpec};
 use super::{Scenario, ScenarioConfig};
 use crate::actors::ActorTable;
 use crate::bsp::BuildOptions;
-use crate::campaign::{self, CampaignError, MapRef, Opened};
+use crate::campaign::{self, CampaignError, Opened};
 use crate::level::{level_from_bytes, Level, LevelError};
+use crate::map::{Map, MapError};
 use crate::materials::Materials;
+use crate::texture::{Library, TextureError};
+use crate::wad::library::WadArt;
+use crate::wad::Wad;
 
 /// Why a made scenario could not be made.
 #[derive(Debug, thiserror::Error)]
@@ -55,14 +59,19 @@ pub enum MadeError {
     Open(String),
 }
 
-/// Where a made scenario's map comes from.
+/// Where a made scenario's map comes from, and its art: PNGs in
+/// `textures/`, `flats/` and `sprites/` of a folder, then the built-in
+/// set. A map naming a picture neither has (a Doom monster's sprite: of
+/// the monsters only the zombieman is built in) takes the IWAD's art,
+/// `freedoom2.wad` where Doom ports look, when it is there.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum MapInput {
-    /// A RON (or compiled) map file; its art is looked for beside it.
+    /// A RON (or compiled) map file; its art folder is its own.
     File(PathBuf),
-    /// RON text, named `label` in errors; its art is looked for in `dir`
-    /// (`textures/`, `flats/`, `sprites/`) before the built-in set.
-    Text { text: String, label: String, dir: Option<PathBuf> },
+    /// RON text, named `label` in errors, its art in `dir`; with `wad`,
+    /// that WAD's pictures come after the folder and before the built-in
+    /// set.
+    Text { text: String, label: String, dir: Option<PathBuf>, wad: Option<PathBuf> },
 }
 
 impl MapInput {
@@ -76,16 +85,45 @@ impl MapInput {
 
     /// The map validated, compiled and with its art, as play opens it.
     pub fn load(&self) -> Result<Opened, CampaignError> {
-        match self {
-            MapInput::File(path) => campaign::open(&MapRef::File(path.clone()), &BuildOptions::default()),
-            MapInput::Text { text, label, dir } => {
-                let compiled = level_from_bytes(text.as_bytes(), label, &BuildOptions::default())?;
-                let dirs: Vec<PathBuf> = dir.iter().cloned().collect();
-                let materials = Materials::resolve(&compiled.map, &dirs, label).map_err(LevelError::from)?;
-                Ok(Opened::of_level(Level::new(compiled, materials), label))
+        let label = self.label();
+        let read;
+        let (bytes, dirs, wad) = match self {
+            MapInput::File(path) => {
+                let io = |error| LevelError::Map(MapError::Io { path: label.clone(), error });
+                read = std::fs::read(path).map_err(io)?;
+                (&read[..], vec![path.parent().map(Path::to_path_buf).unwrap_or_default()], None)
             }
-        }
+            MapInput::Text { text, dir, wad, .. } => (text.as_bytes(), dir.iter().cloned().collect(), wad.as_deref()),
+        };
+        let compiled = level_from_bytes(bytes, &label, &BuildOptions::default())?;
+        let materials = art(&compiled.map, dirs, wad, &label)?;
+        Ok(Opened::of_level(Level::new(compiled, materials), &label))
     }
+}
+
+/// `map`'s art from `dirs` and the built-in set, or with `wad` between
+/// them; with no `wad`, the IWAD's when something is missing.
+fn art(map: &Map, dirs: Vec<PathBuf>, wad: Option<&Path>, label: &str) -> Result<Materials, CampaignError> {
+    let with_wad = |wad: &Path, dirs: Vec<PathBuf>| -> Result<Materials, CampaignError> {
+        let wad = Wad::open(&campaign::find_wad(wad, &campaign::wad_dirs()))?;
+        let library = Library { dirs, wad: Some(Arc::new(WadArt::new(wad)?)) };
+        Ok(Materials::resolve_in(map, &library, label).map_err(LevelError::from)?)
+    };
+    if let Some(wad) = wad {
+        return with_wad(wad, dirs);
+    }
+    match Materials::resolve(map, &dirs, label) {
+        Err(e) if matches!(e.error, TextureError::Missing { .. }) => match default_iwad() {
+            Some(iwad) => with_wad(&iwad, dirs),
+            None => Err(LevelError::from(e).into()),
+        },
+        other => Ok(other.map_err(LevelError::from)?),
+    }
+}
+
+/// `freedoom2.wad` where Doom ports look for it, if it is there.
+fn default_iwad() -> Option<PathBuf> {
+    Some(campaign::find_wad(Path::new("freedoom2.wad"), &campaign::wad_dirs())).filter(|p| p.is_file())
 }
 
 /// A made scenario: its map opened once and its rewards checked against

@@ -41,7 +41,7 @@ fn corridor(rooms: &[(f64, f64, &str)], between: &[&str], things: &str) -> Strin
 }
 
 fn text(ron: String) -> MapInput {
-    MapInput::Text { text: ron, label: "made.ron".into(), dir: None }
+    MapInput::Text { text: ron, label: "made.ron".into(), dir: None, wad: None }
 }
 
 fn settings(buttons: &str) -> ScenarioConfig {
@@ -282,4 +282,16 @@ fn check_finds_what_cannot_be_reached_or_paid() {
     let findings = check(&text(broken), None, 3);
     assert!(findings.len() >= 2 && findings.iter().all(|f| f.severity == Severity::Error), "{findings:#?}");
     assert!(findings.iter().all(|f| f.message.starts_with("made.ron: ")), "{findings:#?}");
+}
+
+#[test]
+fn a_monster_without_built_in_art_takes_the_iwads() {
+    let things = format!("{START}, Thing(kind: \"imp\", x: 200.0, y: 64.0, angle: 180.0)");
+    let map = text(corridor(&[(0.0, 256.0, "")], &[], &things));
+    match (Made::open(&map, RewardSpec::default()), super::default_iwad()) {
+        (Ok(made), Some(_)) => assert!(made.opened.level.materials.sprites[1].is_some()),
+        (Err(e), None) => assert!(e.to_string().contains("sprite \"TROOA1\" not found"), "{e}"),
+        (Ok(_), None) => panic!("the imp found art with no IWAD"),
+        (Err(e), Some(iwad)) => panic!("{e} (with {} there)", iwad.display()),
+    }
 }
