@@ -130,8 +130,9 @@ class _Spec:
 
 
 def _configured_game(config_file: Optional[str], kwargs: dict) -> DoomGame:
-    game = DoomGame()
-    if config_file is not None:
+    made = getattr(config_file, "doom_game", None)  # a scenario made in Python (sightline.made)
+    game = made() if made is not None else DoomGame()
+    if config_file is not None and made is None:
         game.load_config(_config_file(config_file))
     for key, value in kwargs.items():
         getattr(game, f"set_{key}")(value)
@@ -277,7 +278,7 @@ class SightlineVectorEnv(gym.vector.VectorEnv):
                 raise NotImplementedError(f"the vector environment gives the screen and game variables, not the {extra}")
         self.action_space = gym.vector.utils.batch_space(self.single_action_space, num_envs)
         self.observation_space = gym.vector.utils.batch_space(self.single_observation_space, num_envs)
-        self._games = _native.Games(game._config, num_envs, threads=threads)
+        self._games = game._open_games(num_envs, threads)
         self._needs_reset = np.zeros(num_envs, dtype=bool)
         self._rngs = [gym.utils.seeding.np_random()[0] for _ in range(num_envs)]
 

@@ -480,7 +480,7 @@ class DoomGame:
         if self._seed is None:
             self.set_seed(random.SystemRandom().getrandbits(31))
         try:
-            self._game = _native.Game(self._config)
+            self._game = self._open()
         except FileNotFoundError as e:
             raise FileDoesNotExistException(str(e)) from None
         except (RuntimeError, ValueError) as e:
@@ -488,6 +488,14 @@ class DoomGame:
         self._action = [0.0] * self.get_available_buttons_size()
         self.new_episode()
         return True
+
+    def _open(self) -> "_native.Game":
+        """The native game of these settings (a made scenario's game opens its own)."""
+        return _native.Game(self._config)
+
+    def _open_games(self, count: int, threads: int = 0) -> "_native.Games":
+        """``count`` native games of these settings, for the vector environment."""
+        return _native.Games(self._config, count, threads=threads)
 
     def _running(self) -> "_native.Game":
         if self._game is None:

@@ -16,6 +16,11 @@ pub struct Opened {
 }
 
 impl Opened {
+    /// A scenario opened otherwise (a made scenario: `made.rs`).
+    pub fn of(scenario: Scenario) -> Opened {
+        Opened { scenario }
+    }
+
     /// Opens `config`'s scenario, its files checked first so that a
     /// missing one is a `FileNotFoundError` naming it.
     pub fn open(config: &ScenarioConfig, iwad: Option<&str>) -> PyResult<Opened> {

@@ -14,6 +14,7 @@
 //! bytes (no copy after the engine writes them).
 
 mod env;
+mod made;
 mod multi;
 
 use numpy::ndarray::{Array, IxDyn};
@@ -448,6 +449,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Game>()?;
     m.add_class::<Games>()?;
     m.add_class::<multi::MultiGame>()?;
+    made::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }
