@@ -115,8 +115,9 @@ fn reachability(level: &Level, skill: u8, goals: &[usize]) -> (crate::autopilot:
     }
     let asked: Vec<usize> = (0..sectors.len()).filter(|&s| sectors[s].special.secret).collect();
     let mut report = crate::autopilot::check::report(&probe, skill);
-    let reached_sector = |s: usize| asked.iter().position(|&a| a == s).map(|i| report.secrets[i].reachable);
-    let reached = goals.iter().map(|&g| reached_sector(g).unwrap_or(false)).collect();
+    // No secrets at all when the start has no standable cell near it.
+    let reached_sector = |s: usize| asked.iter().position(|&a| a == s).and_then(|i| report.secrets.get(i));
+    let reached = goals.iter().map(|&g| reached_sector(g).is_some_and(|p| p.reachable)).collect();
     let kept = asked.iter().zip(std::mem::take(&mut report.secrets)).filter(|(&s, _)| secret[s]);
     report.secrets = kept.map(|(_, place)| place).collect();
     (report, reached)

@@ -295,3 +295,13 @@ fn a_monster_without_built_in_art_takes_the_iwads() {
         (Err(e), Some(iwad)) => panic!("{e} (with {} there)", iwad.display()),
     }
 }
+
+#[test]
+fn check_on_a_map_with_no_room_to_stand_reaches_nothing_without_a_panic() {
+    // 40 units under the ceiling: the player (56 high) stands nowhere.
+    let map = corridor(&[(0.0, 256.0, ""), (256.0, 384.0, "")], &[], START).replace("ceiling: 128.0", "ceiling: 40.0");
+    let spec = RewardSpec::from_ron("Rewards(reach: [(sector: 1, reward: 1.0)])").unwrap();
+    let findings = check(&text(map), Some(&spec), 3);
+    let all: Vec<String> = findings.iter().map(ToString::to_string).collect();
+    assert!(all.contains(&"warning: rewards.reach[0]: sector 1 cannot be reached".to_string()), "{all:#?}");
+}
