@@ -298,6 +298,7 @@ class DoomGame:
         self._next_seed = 0
         self._state_number = 0
         self._action: list = []
+        self._outputs: dict = {}
 
     # ---- configuration -------------------------------------------------
 
@@ -485,7 +486,19 @@ class DoomGame:
             raise FileDoesNotExistException(str(e)) from None
         except (RuntimeError, ValueError) as e:
             raise ViZDoomErrorException(str(e)) from None
-        self._action = [0.0] * self.get_available_buttons_size()
+        # What each state carries is fixed once the game is open: read the
+        # settings here, not on every get_state.
+        opened = self._settings()
+        self._outputs = {
+            key: bool(opened[key])
+            for key in (
+                "available_game_variables",
+                "automap_buffer_enabled",
+                "depth_buffer_enabled",
+                "labels_buffer_enabled",
+            )
+        }
+        self._action = [0.0] * len(opened["available_buttons"])
         self.new_episode()
         return True
 
@@ -550,12 +563,12 @@ class DoomGame:
         game = self._running()
         if game.is_finished():
             return None
-        settings = self._settings()
-        variables = game.game_variables() if settings["available_game_variables"] else None
-        automap = game.automap() if settings["automap_buffer_enabled"] else None
-        depth = game.depth() if settings["depth_buffer_enabled"] else None
+        outputs = self._outputs
+        variables = game.game_variables() if outputs["available_game_variables"] else None
+        automap = game.automap() if outputs["automap_buffer_enabled"] else None
+        depth = game.depth() if outputs["depth_buffer_enabled"] else None
         labels_buffer, labels = None, []
-        if settings["labels_buffer_enabled"]:
+        if outputs["labels_buffer_enabled"]:
             labels_buffer, objects = game.labels()
             labels = [Label(**o) for o in objects]
         return GameState(

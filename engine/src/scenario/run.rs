@@ -99,6 +99,14 @@ impl Counts {
         }
     }
 
+    /// Whether any count pays a reward (most scenarios pay none, and then
+    /// the counts are not read at all).
+    pub(super) fn paid(r: &super::Rewards) -> bool {
+        let each =
+            [r.kill, r.item, r.secret, r.frag, r.hit, r.hit_taken_penalty, r.damage_made, r.damage_taken_penalty];
+        each.into_iter().chain([r.health, r.armor]).any(|v| v != 0.0)
+    }
+
     /// The rewards earned from `before` to `self`: per kill, item, secret,
     /// frag and hit, per point of damage, and per point of health and
     /// armour gained (losses pay nothing).
@@ -284,9 +292,11 @@ impl Episode {
             let global = self.global(0);
             reward += f64::from(global.wrapping_sub(self.reward_global)) / 65536.0;
             self.reward_global = global;
-            let counts = Counts::of(&self.game, 0);
-            reward += counts.reward_since(&self.counts, &rewards);
-            self.counts = counts;
+            if Counts::paid(&rewards) {
+                let counts = Counts::of(&self.game, 0);
+                reward += counts.reward_since(&self.counts, &rewards);
+                self.counts = counts;
+            }
             if self.game.player().health <= 0 {
                 reward -= rewards.death_penalty;
                 self.end = Some(End::Death);
