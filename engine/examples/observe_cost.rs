@@ -33,6 +33,11 @@ fn main() {
     let mut out = Vec::new();
     let buttons = config.available_buttons.len();
     for i in 0..2000 {
+        // A new episode where one ends (basic's monster dies to a shot),
+        // so every tic timed is a tic played.
+        if episode.end().is_some() {
+            episode = scenario.episode(i as u64).expect("episode");
+        }
         let mut action = vec![0.0; buttons];
         action[i % buttons] = 1.0;
         let t = Instant::now();

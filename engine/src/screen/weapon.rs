@@ -40,11 +40,16 @@ fn blit(fb: &mut Framebuffer, texture: &crate::texture::Texture, x: f64, y: f64,
     let (s, margin) = scale(fb);
     let x0 = margin + x * s;
     let y0 = y * s;
-    let (w, h) = (texture.width as f64 * s, texture.height as f64 * s);
-    let px0 = x0.max(0.0).floor() as usize;
-    let py0 = y0.max(0.0).floor() as usize;
-    let px1 = ((x0 + w).ceil().max(0.0) as usize).min(fb.width);
-    let py1 = ((y0 + h).ceil().max(0.0) as usize).min(fb.height);
+    // Only the screen pixels over the texels that show: texel u covers
+    // pixels whose centres fall in [x0 + u s, x0 + (u + 1) s).
+    let [u0, u1, v0, v1] = texture.shown;
+    let span = |origin: f64, t0: usize, t1: usize, limit: usize| {
+        // One pixel wider each side than the exact bounds: a rounding there
+        // only adds a pixel whose texel is tested below.
+        let first = ((origin + t0 as f64 * s - 0.5).ceil() - 1.0).max(0.0) as usize;
+        let end = ((origin + t1 as f64 * s - 0.5).ceil() + 1.0).max(0.0).min(limit as f64) as usize;
+        first..end.max(first)
+    };
     let k = (shade * 256.0) as u32;
     let d = |c: u8| ((u32::from(c) * k) >> 8).min(255) as u8;
     // The texel row of each screen row, found once for the whole picture.
@@ -53,15 +58,64 @@ fn blit(fb: &mut Framebuffer, texture: &crate::texture::Texture, x: f64, y: f64,
         (t >= 0.0 && t < size as f64).then_some(t as usize)
     };
     let rows: Vec<(usize, usize)> =
-        (py0..py1).filter_map(|py| texel(py, y0, texture.height).map(|v| (py, v))).collect();
-    for px in px0..px1 {
+        span(y0, v0, v1, fb.height).filter_map(|py| texel(py, y0, texture.height).map(|v| (py, v))).collect();
+    for px in span(x0, u0, u1, fb.width) {
         let Some(u) = texel(px, x0, texture.width) else { continue };
-        let column = &texture.texels[u * texture.height..(u + 1) * texture.height];
+        let column = texture.column(u);
         for &(py, v) in &rows {
             let [r, g, b, a] = column[v].to_le_bytes();
             if a >= 128 {
                 fb.pixels[py * fb.width + px] = u32::from_le_bytes([d(r), d(g), d(b), 255]);
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::texture::Texture;
+
+    /// Every screen pixel looked up on its own: the texel under its centre.
+    fn reference(fb: &mut Framebuffer, texture: &Texture, x: f64, y: f64) {
+        let (s, margin) = scale(fb);
+        for py in 0..fb.height {
+            for px in 0..fb.width {
+                let u = ((px as f64 + 0.5 - (margin + x * s)) / s).floor();
+                let v = ((py as f64 + 0.5 - y * s) / s).floor();
+                if u < 0.0 || v < 0.0 || u >= texture.width as f64 || v >= texture.height as f64 {
+                    continue;
+                }
+                let t = texture.texel(u as usize, v as usize);
+                if t >> 24 >= 128 {
+                    fb.pixels[py * fb.width + px] = t | 0xff00_0000;
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_picture_is_drawn_where_its_texels_show_and_nowhere_else() {
+        // A 320x200 picture showing only a ragged patch, as the procedural
+        // weapons are, at several screen sizes and offsets (some off screen).
+        let picture = Texture::from_fn(320, 200, |u, v| {
+            let shows = (100..170).contains(&u) && (120..200).contains(&v) && (u * 7 + v * 3) % 5 != 0;
+            [(u % 256) as u8, (v % 256) as u8, 9, if shows { 255 } else { 0 }]
+        });
+        assert_eq!(picture.shown, [100, 170, 120, 200]);
+        for (w, h) in [(160, 120), (320, 200), (333, 211), (640, 480), (97, 61)] {
+            for (x, y) in [(0.0, 0.0), (-1.0, -32.0), (13.7, 5.25), (-120.0, 40.0), (250.0, -150.0)] {
+                let mut fast = Framebuffer::new(w, h);
+                let mut slow = Framebuffer::new(w, h);
+                blit(&mut fast, &picture, x, y, 1.0);
+                reference(&mut slow, &picture, x, y);
+                assert!(fast.pixels == slow.pixels, "{w}x{h} at ({x}, {y})");
+            }
+        }
+        let clear = Texture::from_fn(4, 4, |_, _| [1, 2, 3, 0]);
+        assert_eq!(clear.shown, [0, 0, 0, 0]);
+        let mut fb = Framebuffer::new(160, 120);
+        blit(&mut fb, &clear, 0.0, 0.0, 1.0);
+        assert!(fb.pixels.iter().all(|&p| p == Framebuffer::new(160, 120).pixels[0]));
     }
 }

@@ -35,6 +35,13 @@ pub struct Texture {
     pub texels: Vec<u32>,
     /// True when every texel's alpha is 255, so a renderer may skip the mask test.
     pub opaque: bool,
+    /// The smallest box of columns `u0..u1` and rows `v0..v1` holding every
+    /// texel a masked draw shows (alpha 128 and over), as `[u0, u1, v0, v1]`;
+    /// empty (`u0 == u1`) for a wholly transparent texture. A screen picture
+    /// drawn 320x200 (the procedural weapons) covers a small part of itself,
+    /// and its blit walks only this box. Texels may be recoloured after
+    /// construction but never made more or less transparent.
+    pub shown: [usize; 4],
 }
 
 /// `i` wrapped into `0..size` (`size > 0`): a mask when `size` is a power
@@ -46,6 +53,23 @@ pub fn wrap(i: i64, size: i64) -> i64 {
         i & (size - 1)
     } else {
         i.rem_euclid(size)
+    }
+}
+
+/// [`Texture::shown`] of column-major texels.
+fn shown_box(width: usize, height: usize, texels: &[u32]) -> [usize; 4] {
+    let mut b = [width, 0, height, 0];
+    for (u, column) in texels.chunks_exact(height).enumerate() {
+        let shows = |t: &u32| t >> 24 >= 128;
+        let (Some(first), Some(last)) = (column.iter().position(shows), column.iter().rposition(shows)) else {
+            continue;
+        };
+        b = [b[0].min(u), u + 1, b[2].min(first), b[3].max(last + 1)];
+    }
+    if b[0] >= b[1] {
+        [0, 0, 0, 0]
+    } else {
+        b
     }
 }
 
@@ -69,7 +93,8 @@ impl Texture {
     fn from_texels(width: usize, height: usize, texels: Vec<u32>) -> Texture {
         debug_assert_eq!(texels.len(), width * height);
         let opaque = texels.iter().all(|&t| t >> 24 == 0xff);
-        Texture { width, height, texels, opaque }
+        let shown = if opaque { [0, width, 0, height] } else { shown_box(width, height, &texels) };
+        Texture { width, height, texels, opaque, shown }
     }
 
     /// Reads a PNG file (any colour type and bit depth) into a texture.
