@@ -203,7 +203,8 @@ def main(argv=None) -> int:
                 done = game.is_episode_finished()
                 dones[t, i] = done
                 if done:
-                    episodes.append((steps + i + 1, time.perf_counter() - start, game.get_total_reward()))
+                    elapsed = round(time.perf_counter() - start, 2)
+                    episodes.append((steps + i + 1, elapsed, round(game.get_total_reward(), 2)))
                     game.new_episode()
                 raw[i] = observe(game)
             game_seconds += time.perf_counter() - g0
@@ -251,7 +252,7 @@ def main(argv=None) -> int:
     }
     tmp = args.out + ".part"
     with open(tmp, "w") as f:
-        json.dump(result, f)
+        json.dump(result, f, separators=(",", ":"))
     os.replace(tmp, args.out)
     return 0
 

@@ -226,4 +226,16 @@ mod tests {
         }
         assert!(convert(&fb, ScreenFormat::Doom256Colors8, &mut out).is_err());
     }
+
+    #[test]
+    fn rgb24_packs_every_pixel() {
+        for n in [1, 3, 4, 7, 8, 13] {
+            let mut fb = Framebuffer::new(n, 1);
+            fb.pixels = (0..n as u8).map(|i| rgb(i, 100 + i, 200 + i) & 0x7fff_ffff).collect();
+            let want: Vec<u8> = (0..n as u8).flat_map(|i| [i, 100 + i, 200 + i]).collect();
+            let mut out = Vec::new();
+            convert(&fb, ScreenFormat::Rgb24, &mut out).unwrap();
+            assert_eq!(out, want, "{n} pixels");
+        }
+    }
 }
