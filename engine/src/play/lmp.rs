@@ -34,8 +34,8 @@ pub const DEMO_MARKER: u8 = 0x80;
 pub const VERSION_1_9: u8 = 109;
 /// The "Doom 1.91" longtics form: turns stored in 16 bits.
 pub const VERSION_LONGTICS: u8 = 111;
-/// Players a vanilla game can hold.
-pub const MAX_PLAYERS: usize = 4;
+/// Player slots in a demo's header: a vanilla game's four.
+pub const MAX_PLAYERS: usize = crate::sim::VANILLA_PLAYERS;
 /// Length of the header in the 1.4-1.9 and longtics forms.
 const HEADER: usize = 13;
 /// Length of the header in the 1.0-1.2 form (no version, no settings).

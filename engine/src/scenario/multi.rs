@@ -34,8 +34,10 @@ pub struct MultiEpisode {
 }
 
 impl Scenario {
-    /// A game of `players` agents (2 to 4), deathmatch (`deathmatch` 1,
-    /// or 2 for altdeath) or co-operative (0), seeded with `seed`.
+    /// A game of `players` agents (1 to [`MAXPLAYERS`], sixteen),
+    /// deathmatch (`deathmatch` 1, or 2 for altdeath) or co-operative (0),
+    /// seeded with `seed`. Players the map has no start for spawn where
+    /// `sim::starts` puts them.
     pub fn multi_episode(&self, seed: u64, players: usize, deathmatch: u8) -> Result<MultiEpisode, ScenarioError> {
         if !(1..=MAXPLAYERS).contains(&players) {
             return Err(ScenarioError::Open(format!("{players} agents: a game holds 1 to {MAXPLAYERS} players")));

@@ -474,8 +474,15 @@ const BODYQUESIZE: usize = 32;
 pub fn check_spot(sim: &mut Sim, n: usize, body: Option<MobjId>, spot: &crate::wad::level::WadThing) -> bool {
     let (x, y) = (Fixed::from_int(spot.x.into()), Fixed::from_int(spot.y.into()));
     let Some(mo) = body else {
-        let taken = (0..n).filter_map(|i| sim.player(i)).any(|p| sim.mo(p.mo).x == x && sim.mo(p.mo).y == y);
-        return !taken;
+        // Vanilla looks at the players before `n`: when deathmatch places
+        // the players in turn they are the ones with bodies yet. A player
+        // placed after the map's starts (`sim::starts`) may come before
+        // some who have one, so every other player's own body is looked at.
+        let stands_there = |i: usize| {
+            let Some(p) = sim.player(i) else { return false };
+            sim.mobjs.get(p.mo.0 as usize).is_some_and(|m| m.player == Some(i) && m.x == x && m.y == y)
+        };
+        return !(0..super::MAXPLAYERS).filter(|&i| i != n).any(stands_there);
     };
     if !check_position(sim, mo, x, y) {
         return false;

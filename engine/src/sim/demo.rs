@@ -106,7 +106,8 @@ pub fn start_as(
         netgame: h.players() > 1,
         ..Rules::single(h.skill, version.unwrap_or(game_version(mode)), mode)
     };
-    let players = Players { in_game: h.in_game, console: usize::from(h.console_player) };
+    let in_game = std::array::from_fn(|n| h.in_game.get(n).copied().unwrap_or(false));
+    let players = Players { in_game, console: usize::from(h.console_player) };
     let map = h.map_name(mode == GameMode::Commercial);
     Sim::new(wad, &map, rules, players, table).map_err(|e| e.to_string())
 }
@@ -206,7 +207,7 @@ pub struct SyncReport {
 /// Tic `t`'s commands of `demo` by player number.
 pub fn commands(demo: &VanillaDemo, t: usize) -> [Option<Ticcmd>; MAXPLAYERS] {
     let mut cmds = [None; MAXPLAYERS];
-    let players = (0..MAXPLAYERS).filter(|&n| demo.header.in_game[n]);
+    let players = (0..demo.header.in_game.len()).filter(|&n| demo.header.in_game[n]);
     for (k, n) in players.enumerate() {
         cmds[n] = demo.tic(t).get(k).copied();
     }

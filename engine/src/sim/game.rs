@@ -95,7 +95,7 @@ impl SimGame {
         SimGame::begin(opened, options, table, None, Setup::SINGLE)
     }
 
-    /// A net game of `setup.players` players (1 to 4), deathmatch or
+    /// A net game of `setup.players` players (1 to [`MAXPLAYERS`]), deathmatch or
     /// co-operative, on `opened`; the console player is player 1.
     /// [`SimGame::command_all`] feeds every player.
     pub fn netgame(opened: Opened, options: GameOptions, setup: Setup) -> Result<SimGame, SimGameError> {
@@ -239,7 +239,7 @@ impl SimGame {
     pub fn tick_between(&mut self, wi: &mut Intermission, input: &TickInput) {
         self.events.clear();
         let cmd = vanilla::command_of(input, &mut self.carry);
-        self.sim.tick_between(wi, &[Some(cmd), None, None, None]);
+        self.sim.tick_between(wi, &first_player(cmd));
         // The tallies' ticks and thumps, heard as the player's own.
         self.events.extend(wi.sounds.iter().map(|&sound| Event::Sound { sound, origin: Origin::Player }));
     }
@@ -344,7 +344,7 @@ impl SimGame {
     /// One tic from a Doom command. After the level has ended tics do
     /// nothing.
     pub fn command(&mut self, cmd: Ticcmd) {
-        self.command_all(&[Some(cmd), None, None, None]);
+        self.command_all(&first_player(cmd));
     }
 
     /// One tic of a net game: each player's command (`None`: as before).
@@ -859,6 +859,13 @@ fn measure_textures(sim: &mut Sim, level: &Level) {
     sim.spec.texture_heights = heights.collect();
 }
 
+/// Player 1's command alone (the others' as before).
+fn first_player(cmd: Ticcmd) -> [Option<Ticcmd>; MAXPLAYERS] {
+    let mut cmds = [None; MAXPLAYERS];
+    cmds[0] = Some(cmd);
+    cmds
+}
+
 /// How a game is set up beyond its skill: how many players, whether it is
 /// deathmatch, and the server settings a ViZDoom scenario's `game_args`
 /// give (`+sv_noautoaim 1`).
@@ -876,7 +883,7 @@ impl Setup {
     pub const SINGLE: Setup = Setup { players: 1, deathmatch: 0, no_autoaim: false };
 
     fn players(self) -> Players {
-        Players { in_game: std::array::from_fn(|n| n < self.players), console: 0 }
+        Players::first(self.players)
     }
 
     fn rules(self, rules: Rules) -> Rules {

@@ -19,13 +19,16 @@ struct Between {
 
 impl Between {
     fn new(mode: GameMode, name: &str, secret: bool, tallies: Tallies) -> Between {
-        let players = [Some(player()), None, None, None];
+        let mut players: [Option<Player>; MAXPLAYERS] = Default::default();
+        players[0] = Some(player());
         Between { wi: Intermission::start(mode, name, secret, tallies), players }
     }
 
     fn tic(&mut self, buttons: u8) {
         let cmd = Ticcmd { buttons, ..Ticcmd::default() };
-        self.wi.tick(&mut self.players, &[Some(cmd), None, None, None]);
+        let mut cmds = [None; MAXPLAYERS];
+        cmds[0] = Some(cmd);
+        self.wi.tick(&mut self.players, &cmds);
     }
 
     /// Idle tics until `done` or `limit`; the tics run.
@@ -138,6 +141,18 @@ fn doom_twos_text_screens_wait_fifty_tics_then_take_any_button() {
     }
 }
 
+/// Players 1 and 2 alone in the game.
+fn two(a: Player, b: Player) -> [Option<Player>; MAXPLAYERS] {
+    let mut players: [Option<Player>; MAXPLAYERS] = Default::default();
+    (players[0], players[1]) = (Some(a), Some(b));
+    players
+}
+
+/// Frags of the first players, none of the rest.
+fn frags(first: &[i32]) -> [i32; MAXPLAYERS] {
+    std::array::from_fn(|n| first.get(n).copied().unwrap_or(0))
+}
+
 #[test]
 fn par_times_are_doom_exes() {
     assert_eq!(
@@ -152,17 +167,17 @@ fn par_times_are_doom_exes() {
 fn deathmatch_counts_the_frags_table_one_a_tic_and_a_figure_past_99_never_ends() {
     let mut a = player();
     let mut b = player();
-    a.frags = [0, 3, 0, 0];
-    b.frags = [-2, 0, 0, 0];
-    let players = [Some(a.clone()), Some(b.clone()), None, None];
+    a.frags = frags(&[0, 3]);
+    b.frags = frags(&[-2, 0]);
+    let players = two(a.clone(), b.clone());
     let start = || Intermission::start(GameMode::Commercial, "MAP01", false, Tallies::default());
     let mut between = Between { wi: start().for_netgame(&players, (0, 0, 0), true, false), players };
     // A pause, three tics of counting (the largest figure), a pause.
     let counted = |wi: &Intermission| matches!(wi.stage, Stage::Tallies { step: 4, .. });
     assert_eq!(between.idle_until(1000, counted), 35 + 3 + 1 + 35);
     // 120 frags: the table stops at 99 and counts on until a press.
-    a.frags = [0, 120, 0, 0];
-    let players = [Some(a), Some(b), None, None];
+    a.frags = frags(&[0, 120]);
+    let players = two(a, b);
     let mut between = Between { wi: start().for_netgame(&players, (0, 0, 0), true, false), players };
     assert_eq!(between.idle_until(1000, counted), 1000);
     between.tic(buttons::ATTACK);
@@ -173,7 +188,7 @@ fn deathmatch_counts_the_frags_table_one_a_tic_and_a_figure_past_99_never_ends()
 fn coop_counts_everyone_together_and_frags_only_when_someone_has_some() {
     let (mut a, mut b) = (player(), player());
     (a.killcount, b.killcount) = (10, 2);
-    let players = [Some(a.clone()), Some(b.clone()), None, None];
+    let players = two(a.clone(), b.clone());
     let start = || Intermission::start(GameMode::Commercial, "MAP01", false, Tallies::default());
     let done = |wi: &Intermission| matches!(wi.stage, Stage::Tallies { step: 10, .. });
     // Kills to 50% (25 tics, the slower player's), items and secrets one
@@ -183,7 +198,7 @@ fn coop_counts_everyone_together_and_frags_only_when_someone_has_some() {
     assert!(!between.wi.counted_frags());
     // A frag, or an earlier intermission's, counts the frags too.
     a.frags[1] = 2;
-    let players = [Some(a), Some(b), None, None];
+    let players = two(a, b);
     let mut between = Between { wi: start().for_netgame(&players, (20, 0, 0), false, false), players };
     assert_eq!(between.idle_until(1000, done), 5 * 35 + 25 + 1 + 1 + 2);
     assert!(between.wi.counted_frags());

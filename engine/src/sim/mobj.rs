@@ -38,7 +38,10 @@ pub mod mf {
     pub const COUNTITEM: u32 = 0x800000;
     pub const SKULLFLY: u32 = 0x1000000;
     pub const NOTDMATCH: u32 = 0x2000000;
-    pub const TRANSLATION: u32 = 0xc000000;
+    /// The player colour: Doom's two bits (players 2 to 4: indigo, brown,
+    /// red), widened to four for sixteen players. Doom never sets the two
+    /// above them (28 and 29), so its bodies' flags are unchanged.
+    pub const TRANSLATION: u32 = 0x3c00_0000;
     pub const TRANSSHIFT: u32 = 26;
 }
 
@@ -132,7 +135,7 @@ impl Sim {
         let reactiontime = if self.rules.skill != super::Rules::NIGHTMARE { info.reactiontime } else { 0 };
         let (spawnstate, radius, height, flags, health) =
             (info.spawnstate, info.radius, info.height, info.flags, info.spawnhealth);
-        let lastlook = self.p_random() % super::MAXPLAYERS as i32;
+        let lastlook = self.p_random() % self.slots() as i32;
         let (sprite, frame, tics) = match spawnstate {
             Some(s) => {
                 let st = self.info.state(s);

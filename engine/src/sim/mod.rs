@@ -72,6 +72,7 @@ pub mod setup;
 pub mod sight;
 pub mod slide;
 pub mod specials;
+pub mod starts;
 pub mod state;
 pub mod switches;
 pub mod teleport;
@@ -91,8 +92,13 @@ pub use level::Level;
 pub use mobj::Mobj;
 pub use think::{Thinker, ThinkerKind};
 
-/// Players a game can hold.
-pub const MAXPLAYERS: usize = 4;
+/// Player slots a game can hold: ViZDoom's and GZDoom's limit, sixteen.
+/// Doom's own four are [`VANILLA_PLAYERS`]; which of the two counts a
+/// game's rules walk is [`Sim::slots`].
+pub const MAXPLAYERS: usize = 16;
+/// Player slots in Doom's executables and in their demos' headers
+/// (vanilla's `MAXPLAYERS`).
+pub const VANILLA_PLAYERS: usize = 4;
 /// Tics a second.
 pub const TICRATE: u32 = 35;
 
@@ -335,6 +341,22 @@ impl Sim {
 
     pub fn player(&self, n: usize) -> Option<&Player> {
         self.players.get(n).and_then(Option::as_ref)
+    }
+
+    /// The player slots the game's rules count in, where Doom counts in
+    /// its `MAXPLAYERS`: a new body's `lastlook` (`P_Random() % slots`),
+    /// the monsters' walk round the players, how many deathmatch starts a
+    /// level keeps. Doom's four while every player is in them, so Doom's
+    /// games, its demos and their saves get exactly Doom's numbers; all
+    /// sixteen once a player is past them (GZDoom walks its `MAXPLAYERS`
+    /// the same way). Players join only when a game is made and never
+    /// leave, so a game's count never changes.
+    pub fn slots(&self) -> usize {
+        if self.players[VANILLA_PLAYERS..].iter().all(Option::is_none) {
+            VANILLA_PLAYERS
+        } else {
+            MAXPLAYERS
+        }
     }
 
     /// `P_Random`: the game's one random source, in Doom's table order.

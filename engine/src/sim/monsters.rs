@@ -9,7 +9,7 @@
 use super::info::mt;
 use super::level::ml;
 use super::mobj::mf;
-use super::{attacks, bosses, chase, sight, vile, MobjId, Sim, MAXPLAYERS};
+use super::{attacks, bosses, chase, sight, vile, MobjId, Sim};
 use crate::actors::{ActionCall, Arg};
 use crate::fixed::{approx_distance, point_to_angle2, Fixed, ANG270, ANG90, FRACUNIT};
 
@@ -206,16 +206,18 @@ pub fn check_missile_range(sim: &mut Sim, id: MobjId) -> bool {
 /// `P_LookForPlayers`: the next players in turn from `lastlook` (at most
 /// two of them, as Doom's `c++ == 2` stops it), the first alive and in
 /// sight and, unless `allaround`, in front or within melee range becomes
-/// the target.
+/// the target. The turn goes round the game's [`Sim::slots`]: Doom's
+/// `& 3` in a game of four slots.
 pub fn look_for_players(sim: &mut Sim, id: MobjId, allaround: bool) -> bool {
     if sim.players.iter().all(Option::is_none) || sim.ignores_players(id) {
         return false; // Doom would loop for ever
     }
+    let slots = sim.slots() as i32;
     let mut c = 0;
-    let stop = (sim.mo(id).lastlook - 1) & 3;
+    let stop = (sim.mo(id).lastlook - 1).rem_euclid(slots);
     loop {
         let look = sim.mo(id).lastlook;
-        if let Some(player) = sim.player(look as usize % MAXPLAYERS) {
+        if let Some(player) = sim.player(look.rem_euclid(slots) as usize) {
             let (health, pmo) = (player.health, player.mo);
             c += 1;
             if c == 3 || look == stop {
@@ -229,7 +231,7 @@ pub fn look_for_players(sim: &mut Sim, id: MobjId, allaround: bool) -> bool {
                         let dist = approx_distance(p.x - actor.x, p.y - actor.y);
                         // Behind its back, unless really close.
                         if dist > MELEERANGE {
-                            sim.mo_mut(id).lastlook = (look + 1) & 3;
+                            sim.mo_mut(id).lastlook = (look + 1).rem_euclid(slots);
                             continue;
                         }
                     }
@@ -238,7 +240,7 @@ pub fn look_for_players(sim: &mut Sim, id: MobjId, allaround: bool) -> bool {
                 return true;
             }
         }
-        sim.mo_mut(id).lastlook = (look + 1) & 3;
+        sim.mo_mut(id).lastlook = (look + 1).rem_euclid(slots);
     }
 }
 

@@ -80,8 +80,9 @@ pub const MAGIC: &[u8] = b"SIGHTLINE-SIMS\n";
 /// arrival, a ceiling's starting speed) and the level its generalized
 /// specials, which the map's fingerprint covers. 3: the bodies' ZDoom
 /// fields (thing ids and specials, script-set properties). 4: ViZDoom's
-/// tallies of hits, damage and deaths.
-pub const VERSION: u8 = 4;
+/// tallies of hits, damage and deaths. 5: sixteen player slots (the
+/// players, each one's frags, the starts and the tallies hold sixteen).
+pub const VERSION: u8 = 5;
 
 #[derive(Debug, thiserror::Error)]
 pub enum SaveError {

@@ -44,7 +44,7 @@ impl Recorded {
     /// Tic `t`'s commands, each player's in its slot (as `demo::check`).
     fn cmds(&self, t: usize) -> [Option<Ticcmd>; MAXPLAYERS] {
         let mut cmds = [None; MAXPLAYERS];
-        let in_game = (0..MAXPLAYERS).filter(|&n| self.demo.header.in_game[n]);
+        let in_game = (0..self.demo.header.in_game.len()).filter(|&n| self.demo.header.in_game[n]);
         for (k, n) in in_game.enumerate() {
             cmds[n] = self.demo.tic(t).get(k).copied();
         }

@@ -41,6 +41,14 @@ pub struct Players {
     pub console: usize,
 }
 
+impl Players {
+    /// Players 1 to `count` (at most [`MAXPLAYERS`]), player 1 at the
+    /// console.
+    pub fn first(count: usize) -> Players {
+        Players { in_game: std::array::from_fn(|n| n < count), console: 0 }
+    }
+}
+
 impl Sim {
     /// A new game of `rules` on map `name` of `wad`, with `table`'s actors.
     pub fn new(
@@ -146,11 +154,15 @@ impl Sim {
             p.viewz = Fixed(1);
         }
         sim.spawn_things();
-        if sim.rules.deathmatch != 0 {
-            for n in 0..MAXPLAYERS {
-                if sim.players[n].is_some() {
-                    sim.deathmatch_spawn_player(n);
-                }
+        for n in 0..MAXPLAYERS {
+            if sim.players[n].is_none() {
+                continue;
+            }
+            if sim.rules.deathmatch != 0 {
+                sim.deathmatch_spawn_player(n);
+            } else if sim.starts[n].is_none() {
+                // Past the map's starts: Doom would have no body for it.
+                sim.spawn_without_start(n, None);
             }
         }
         before_specials(&mut sim);
@@ -179,24 +191,16 @@ impl Sim {
 
     /// `P_SpawnMapThing`.
     pub fn spawn_map_thing(&mut self, thing: &WadThing) {
-        match thing.kind {
-            11 => {
-                // Vanilla keeps ten deathmatch starts.
-                if self.deathmatch_starts.len() < 10 {
-                    self.deathmatch_starts.push(thing.clone());
-                }
-                return;
-            }
-            0 => return,
-            1..=4 => {
-                let n = usize::from(thing.kind - 1);
-                self.starts[n] = Some(thing.clone());
-                if self.rules.deathmatch == 0 {
-                    self.spawn_player(thing);
-                }
-                return;
-            }
-            _ => {}
+        if thing.kind == 11 {
+            self.deathmatch_start(thing);
+            return;
+        }
+        if thing.kind == 0 {
+            return;
+        }
+        if let Some(n) = super::starts::start_player(thing.kind) {
+            self.player_start(n, thing);
+            return;
         }
         if !self.rules.netgame && thing.flags & MTF_NOTSINGLE != 0 {
             return;
@@ -245,101 +249,6 @@ impl Sim {
         }
         if flags & mf::COUNTITEM != 0 {
             self.total_items += 1;
-        }
-    }
-
-    /// `P_SpawnPlayer`: player `thing.kind - 1`'s body at its start.
-    pub fn spawn_player(&mut self, thing: &WadThing) {
-        let n = usize::from(thing.kind.saturating_sub(1));
-        let Some(player) = self.players.get(n).and_then(Option::as_ref) else {
-            return;
-        };
-        if player.playerstate == PlayerState::Reborn {
-            let kept = (player.killcount, player.itemcount, player.secretcount);
-            let frags = player.frags;
-            self.players[n] = Some(Player::reborn(&self.info, frags, kept));
-        }
-        let kind = self.kind_of(mt::PLAYER);
-        let id = self.spawn_mobj(Fixed::from_int(thing.x.into()), Fixed::from_int(thing.y.into()), ONFLOORZ, kind);
-        let health = self.players[n].as_ref().map_or(100, |p| p.health);
-        let mo = self.mo_mut(id);
-        if thing.kind > 1 {
-            mo.flags |= u32::from(thing.kind - 1) << mf::TRANSSHIFT;
-        }
-        mo.angle = thing_angle(thing);
-        mo.player = Some(n);
-        mo.health = health;
-        let deathmatch = self.rules.deathmatch != 0;
-        if let Some(p) = self.players[n].as_mut() {
-            p.mo = id;
-            p.playerstate = PlayerState::Live;
-            p.refire = 0;
-            p.message = None;
-            p.damagecount = 0;
-            p.bonuscount = 0;
-            p.extralight = 0;
-            p.fixedcolormap = 0;
-            p.viewheight = VIEWHEIGHT;
-            if deathmatch {
-                p.cards = [true; super::NUMCARDS];
-            }
-        }
-        super::weapons::setup_psprites(self, n);
-    }
-
-    /// `G_DoReborn` in a netgame: player `n`'s body is left as a corpse
-    /// and a new one spawns at a deathmatch start (deathmatch), else at
-    /// the player's own start if it is clear, else at the first other
-    /// player's start that is, else at its own start anyway.
-    pub fn respawn_in_netgame(&mut self, n: usize) {
-        let Some(body) = self.players[n].as_ref().map(|p| p.mo) else { return };
-        self.mo_mut(body).player = None;
-        if self.rules.deathmatch != 0 {
-            self.deathmatch_respawn_player(n, Some(body));
-            return;
-        }
-        let own = self.starts[n].clone();
-        let others = (0..MAXPLAYERS).filter_map(|i| self.starts[i].clone());
-        for spot in own.iter().cloned().chain(others.collect::<Vec<_>>()) {
-            if collision::check_spot(self, n, Some(body), &spot) {
-                // Another's start, taken as this player's.
-                self.spawn_player(&WadThing { kind: n as u16 + 1, ..spot });
-                return;
-            }
-        }
-        if let Some(start) = own {
-            self.spawn_player(&start);
-        }
-    }
-
-    /// `G_DeathMatchSpawnPlayer`: up to 20 random deathmatch starts (a
-    /// `P_Random` each) until one is clear (`G_CheckSpot`, which also
-    /// queues the old body and spawns the fog), else the player's own start.
-    /// Vanilla refuses a map with fewer than four deathmatch starts; here
-    /// any number plays. At a level's start the player has no old body.
-    pub fn deathmatch_spawn_player(&mut self, n: usize) {
-        self.deathmatch_respawn_player(n, None);
-    }
-
-    /// [`Self::deathmatch_spawn_player`] for a player whose old body is
-    /// `body` (a respawn: the body is queued as a corpse).
-    pub fn deathmatch_respawn_player(&mut self, n: usize, body: Option<super::MobjId>) {
-        let selections = self.deathmatch_starts.len();
-        if selections > 0 {
-            for _ in 0..20 {
-                let i = self.p_random() as usize % selections;
-                let spot = self.deathmatch_starts[i].clone();
-                if collision::check_spot(self, n, body, &spot) {
-                    // Doom writes the player's number into the start itself.
-                    self.deathmatch_starts[i].kind = n as u16 + 1;
-                    let spot = self.deathmatch_starts[i].clone();
-                    self.spawn_player(&spot);
-                    return;
-                }
-            }
-        }
-        if let Some(start) = self.starts[n].clone() {
-            self.spawn_player(&start);
         }
     }
 }

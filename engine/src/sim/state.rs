@@ -13,8 +13,9 @@ impl Sim {
     /// The state after the tic just run (the dump's line for it: Doom's
     /// `gametic` before its increment, `leveltime` after).
     pub fn tic_state(&self) -> TicState {
-        let mut players = [None; 4];
-        for (n, p) in self.players.iter().enumerate() {
+        // The dumps are Doom's: its four players.
+        let mut players = [None; super::VANILLA_PLAYERS];
+        for (n, p) in self.players.iter().enumerate().take(super::VANILLA_PLAYERS) {
             if let Some(p) = p {
                 let mo = self.mo(p.mo);
                 players[n] = Some(PlayerState {

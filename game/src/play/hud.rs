@@ -245,10 +245,10 @@ mod tests {
             }
             fb.pixels.iter().filter(|&&p| p == rgb(255, 255, 255)).count()
         };
-        let mut players = [None, None, None, None];
+        let mut players = Default::default();
         let mut count = |wi: &mut Intermission, tics: u32| {
             for _ in 0..tics {
-                wi.tick(&mut players, &[None; 4]);
+                wi.tick(&mut players, &[None; sightline::sim::MAXPLAYERS]);
             }
         };
         let before = white(&wi);

@@ -21,7 +21,7 @@ fn u(n: i32) -> Fixed {
 fn sim() -> Sim {
     let wad = crate::sim::test_wad("freedoom2.wad");
     let rules = Rules { no_monsters: true, ..Rules::single(3, GameVersion::Doom19, GameMode::Commercial) };
-    let players = Players { in_game: [true, false, false, false], console: 0 };
+    let players = Players::first(1);
     let mut sim = Sim::new(&wad, "MAP01", rules, players, Arc::clone(ActorTable::doom())).expect("MAP01 loads");
     sim.rng = DoomRandom::new();
     sim
