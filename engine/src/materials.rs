@@ -58,6 +58,10 @@ pub struct Materials {
     /// the switch list (Doom swaps the first part of a side that matches,
     /// in list order).
     pub switches: HashMap<TextureId, (TextureId, usize)>,
+    /// Per texture and player colour, the texture redrawn in that colour
+    /// (or itself, where it has no green to redraw), made when a body in
+    /// that colour is first drawn ([`Materials::in_colour`]).
+    pub coloured: HashMap<(TextureId, u8), TextureId>,
 }
 
 /// Frames a sprite may have: `A` to `]` (Doom's 29).
@@ -198,6 +202,27 @@ impl Materials {
             m.add_sprite_views(map, library);
         }
         Ok(m)
+    }
+
+    /// Texture `id` in player colour `colour` (Doom's translation bits: the
+    /// player's number less one; 0 is the art's own green), made the first
+    /// time it is asked for ([`crate::texture::colours`]).
+    pub fn in_colour(&mut self, id: TextureId, colour: u8) -> TextureId {
+        if colour == 0 {
+            return id;
+        }
+        if let Some(&made) = self.coloured.get(&(id, colour)) {
+            return made;
+        }
+        let made = match crate::texture::colours::in_colour(self.textures.get(id), usize::from(colour)) {
+            Some(texture) => {
+                let name = format!("{}@colour{colour}", self.textures.name(id));
+                self.textures.add(name, texture)
+            }
+            None => id,
+        };
+        self.coloured.insert((id, colour), made);
+        made
     }
 
     /// The index of sprite `sprite`'s frame `frame` in [`Self::sprite_views`].

@@ -10,7 +10,8 @@
 use glam::DVec2;
 
 use super::level::NameId;
-use super::Sim;
+use super::mobj::mf;
+use super::{MobjId, Sim};
 use crate::level::{DrawnThing, Level};
 use crate::materials::Materials;
 use crate::render::View;
@@ -103,29 +104,45 @@ impl Scene {
         slide_grid_doors(level);
         self.draw_textures(sim, level);
         let viewer = sim.player(sim.console).map(|p| p.mo);
-        let table = &sim.info.table;
         let drawn = sim.live_mobjs().filter(|&id| Some(id) != viewer && !sim.invisible(id));
-        let things = drawn.filter_map(|id| {
-            let m = sim.mo(id);
-            let state = table.state(m.state?);
-            let views =
-                level.materials.sprite_views.get(Materials::view_index(state.sprite, state.frame)).copied()??;
-            let sector = self.sector(sim.level.subsectors[m.subsector].sector)?;
-            Some(DrawnThing {
-                key: id.0 as usize,
-                pos: DVec2::new(m.x.to_f64(), m.y.to_f64()),
-                z: m.z.to_f64(),
-                sector,
-                angle: m.angle.to_degrees(),
-                views,
-                bright: m.frame & super::info::FF_FULLBRIGHT != 0,
-                fuzz: m.has(super::mobj::mf::SHADOW),
-            })
-        });
-        level.things = things.collect();
+        let mut things = std::mem::take(&mut level.things);
+        things.clear();
+        let mut coloured = Vec::new();
+        for id in drawn {
+            let Some(thing) = self.drawn_thing(sim, level, id) else { continue };
+            let colour = (sim.mo(id).flags & mf::TRANSLATION) >> mf::TRANSSHIFT;
+            if colour != 0 {
+                coloured.push((things.len(), colour as u8));
+            }
+            things.push(thing);
+        }
+        // Players 2 to 16 in their colours (`R_DrawTranslatedColumn`).
+        for (k, colour) in coloured {
+            things[k].views = things[k].views.map(|v| level.materials.in_colour(v, colour));
+        }
+        level.things = things;
         level.time = u64::from(sim.leveltime);
         // `P_UpdateSpecials` ran before the tic's `leveltime++`.
         level.materials.animate(u64::from(sim.leveltime.saturating_sub(1)));
+    }
+
+    /// Body `id` as the renderers draw it, if its state has a sprite the
+    /// art has and it stands in a sector of the converted map.
+    fn drawn_thing(&self, sim: &Sim, level: &Level, id: MobjId) -> Option<DrawnThing> {
+        let m = sim.mo(id);
+        let state = sim.info.table.state(m.state?);
+        let views = level.materials.sprite_views.get(Materials::view_index(state.sprite, state.frame)).copied()??;
+        let sector = self.sector(sim.level.subsectors[m.subsector].sector)?;
+        Some(DrawnThing {
+            key: id.0 as usize,
+            pos: DVec2::new(m.x.to_f64(), m.y.to_f64()),
+            z: m.z.to_f64(),
+            sector,
+            angle: m.angle.to_degrees(),
+            views,
+            bright: m.frame & super::info::FF_FULLBRIGHT != 0,
+            fuzz: m.has(mf::SHADOW),
+        })
     }
 
     /// The textures play changed (switches flipped, floors changed by a

@@ -9,6 +9,7 @@
 //! texture's width on every texel.
 
 pub mod animdefs;
+pub mod colours;
 mod decode;
 pub mod procedural;
 
@@ -328,6 +329,15 @@ impl TextureSet {
         };
         self.ids.insert(key, id);
         Ok(id)
+    }
+
+    /// Adds `texture`, made in play (a sprite in a player's colour), under
+    /// `name`; names are not looked up for it.
+    pub fn add(&mut self, name: String, texture: Texture) -> TextureId {
+        let id = TextureId(self.textures.len() as u32);
+        self.textures.push(std::sync::Arc::new(texture));
+        self.names.push(name);
+        id
     }
 
     /// The id `name` already resolved to, if it has.
