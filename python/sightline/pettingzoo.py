@@ -8,8 +8,10 @@ scenario with room for several players (``multi_duel``, ``multi``,
 ``cig``, ``deathmatch``), and :func:`deathmatch_env` plays deathmatch on a
 Doom WAD's own map (Debian's ``freedm`` by default).
 
-Agents are ``player_0`` ... ``player_{n-1}`` (2 to 4: the simulation keeps
-Doom's four player slots). A dead agent comes back on its next action, as
+Agents are ``player_0`` ... ``player_{n-1}``, 1 to 16 of them (ViZDoom's
+limit): a game of up to four plays by Doom's rules exactly, and players past
+a map's starts spawn at the other starts or beside them (players 5 to 16 have
+colours of their own). A dead agent comes back on its next action, as
 after ViZDoom's ``respawn_player``; no agent leaves before the episode
 ends. The episode is *truncated* at ``max_cycles`` steps (default: the
 ``.cfg``'s ``episode_timeout``, else 2,100) and *terminated* if the level

@@ -13,7 +13,7 @@ use sightline::scenario::{variables, End, GameVariable, MultiEpisode};
 use crate::env::Opened;
 use crate::{array, Config};
 
-/// One game of several agents (2 to 4).
+/// One game of several agents (1 to 16).
 #[pyclass(module = "sightline._native")]
 pub struct MultiGame {
     opened: Arc<Opened>,
