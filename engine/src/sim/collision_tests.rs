@@ -255,6 +255,34 @@ fn aiming_picks_the_middle_of_what_the_step_leaves_visible() {
     assert_eq!(sim.tm.linetarget, None);
 }
 
+/// A body whose centre is in one blockmap cell and whose box reaches into
+/// the next is missed by a shot through that next cell in Doom, which
+/// looks only at the bodies linked in the cells the trace crosses, each
+/// linked in its centre's cell (the room's cells meet at x = 120 and y =
+/// 120). Under Sightline's rules, as in ZDoom, whose bodies are linked in
+/// every cell they overlap, the shot finds it.
+#[test]
+#[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
+fn a_shot_finds_a_body_across_a_cell_edge_under_sightlines_rules() {
+    // (shooter, target, facing): east along y = 126 at a body centred at
+    // y = 112 (its box 96..128), north along x = 126 at one at x = 112.
+    let cases = [((20, 126), (64, 112), Angle::ZERO), ((126, 20), (112, 180), crate::fixed::ANG90)];
+    for (compat, hits) in [(Compat::Vanilla, false), (Compat::Sightline, true)] {
+        for (from, to, facing) in cases {
+            let mut sim = sim(0, 128);
+            sim.rules.compat = compat;
+            let (a, b) = (body(&mut sim, from.0, from.1), body(&mut sim, to.0, to.1));
+            let what = format!("{compat:?}, from {from:?} at {to:?}");
+            assert_ne!(sim.mo(a).block, sim.mo(b).block, "{what}: the bodies share a cell");
+            let slope = aim_line_attack(&mut sim, a, facing, u(1024));
+            assert_eq!(sim.tm.linetarget == Some(b), hits, "{what}: aim");
+            let health = sim.mo(b).health;
+            line_attack(&mut sim, a, facing, u(1024), slope, 10);
+            assert_eq!(sim.mo(b).health < health, hits, "{what}: shot");
+        }
+    }
+}
+
 #[test]
 #[cfg_attr(freedoom_missing, ignore = "needs freedoom2.wad: apt-get install freedoom")]
 fn a_lowered_ceiling_squeezes_and_gibs() {

@@ -89,6 +89,10 @@ pub struct Info {
     pub weapons: Vec<Option<WeaponInfo>>,
     /// The actor of each Doom `mobjtype_t` (`None` if the table lacks it).
     pub by_mt: Vec<Option<usize>>,
+    /// The largest radius of any kind: how far a body's box can reach past
+    /// the blockmap cell its centre is linked in (Doom's tables: the Spider
+    /// Mastermind's 128).
+    pub largest_radius: Fixed,
 }
 
 impl Info {
@@ -112,7 +116,8 @@ impl Info {
             })
             .collect();
         let mt_of = |name: &str| doom.things.iter().position(|t| t.actor == name);
-        let things = table.actors.iter().enumerate().map(|(i, a)| mobj_info(a, i, fast, mt_of(&a.name))).collect();
+        let things: Vec<MobjInfo> =
+            table.actors.iter().enumerate().map(|(i, a)| mobj_info(a, i, fast, mt_of(&a.name))).collect();
         let by_mt = doom.things.iter().map(|t| table.index(&t.actor)).collect();
         let weapons = doom
             .weapons
@@ -131,7 +136,8 @@ impl Info {
                 })
             })
             .collect();
-        Info { table, things, states, weapons, by_mt }
+        let largest_radius = things.iter().map(|t| t.radius).max().unwrap_or(Fixed::ZERO);
+        Info { table, things, states, weapons, by_mt, largest_radius }
     }
 
     pub fn state(&self, id: StateId) -> &StateInfo {

@@ -363,16 +363,20 @@ pub fn path_traverse(
     };
     let mut xintercept = Fixed(x1.0 >> MAPBTOFRAC) + Fixed(partial) * xstep;
     let (mut mapx, mut mapy) = (xt1, yt1);
+    let around = (sim.rules.compat == Compat::Sightline).then(|| cells_a_box_reaches(sim));
+    let mut crossed = Vec::new();
     // At most 64 cells: the count stops a rounding error from missing the end.
     for _ in 0..64 {
         if flags & PT_ADDLINES != 0 && !block_lines(sim, mapx, mapy, |sim, line| add_line_intercept(sim, &mut c, line))
         {
             return false;
         }
-        if flags & PT_ADDTHINGS != 0
-            && !block_things(sim, mapx, mapy, |sim, thing| add_thing_intercept(sim, &mut c, thing))
-        {
-            return false;
+        if flags & PT_ADDTHINGS != 0 {
+            if around.is_some() {
+                crossed.push((mapx, mapy));
+            } else if !block_things(sim, mapx, mapy, |sim, thing| add_thing_intercept(sim, &mut c, thing)) {
+                return false;
+            }
         }
         if mapx == xt2 && mapy == yt2 {
             break;
@@ -385,7 +389,47 @@ pub fn path_traverse(
             mapy = mapy.wrapping_add(mapystep);
         }
     }
+    if let Some(reach) = around {
+        add_things_around(sim, &mut c, &crossed, reach);
+    }
     traverse_intercepts(sim, &mut c.intercepts, &c.trace, Fixed::ONE, &mut trav)
+}
+
+/// How many cells past the one its centre is linked in a body's box can
+/// reach: the largest radius in cells, rounded up (1 for Doom's kinds,
+/// whose largest radius is 128, a cell's side), and never more than the
+/// blockmap is wide or high.
+fn cells_a_box_reaches(sim: &Sim) -> i32 {
+    let radius = i64::from(sim.info.largest_radius.0.max(0));
+    let cells = (radius + i64::from(MAPBLOCKSIZE) - 1) >> MAPBLOCKSHIFT;
+    let bm = &sim.level.blockmap;
+    cells.min(i64::from(bm.width.max(bm.height))) as i32
+}
+
+/// Sightline's rules (ZDoom's): a trace meets every body whose box it
+/// crosses. Doom links a body in the one cell its centre is in and looks
+/// only in the cells the trace crosses, so a shot through the edge of a box
+/// that reaches into the next cell misses (on ViZDoom's `basic`, a player
+/// 2.6 units off the cacodemon's centre, across a cell edge from it, shot
+/// past it). ZDoom links a body in every cell its box overlaps
+/// (`AActor::LinkToWorld`'s block nodes) and takes each body once per
+/// trace. Here the cells within `reach` of those `crossed` are searched,
+/// each once, which finds the same bodies; Doom's test, the box's diagonal
+/// across the trace (`add_thing_intercept`), spans as much across the trace
+/// as the box does, so it keeps exactly those whose box the trace crosses.
+/// Rejected: linking bodies in every cell they overlap, as ZDoom does. Every
+/// collision check walks the cells of a box grown by `MAXRADIUS` and would
+/// then meet a body once per cell, and the links are part of the saves.
+fn add_things_around(sim: &mut Sim, c: &mut Collect, crossed: &[(i32, i32)], reach: i32) {
+    let mut cells: Vec<(i32, i32)> = crossed
+        .iter()
+        .flat_map(|&(x, y)| (-reach..=reach).flat_map(move |dy| (-reach..=reach).map(move |dx| (y + dy, x + dx))))
+        .collect();
+    cells.sort_unstable();
+    cells.dedup();
+    for (y, x) in cells {
+        block_things(sim, x, y, |sim, thing| add_thing_intercept(sim, c, thing));
+    }
 }
 
 /// `P_TraverseIntercepts`: repeatedly the nearest intercept not yet taken
