@@ -20,6 +20,17 @@ NAMES = {"vizdoom": "ViZDoom 1.3.2", "sightline": "Sightline"}
 WINDOW = 50
 
 
+def name(run: dict) -> str:
+    """The engine's name, and the run's variant where it has one (a run
+    of a later build, say, beside the first)."""
+    variant = run.get("variant")
+    return f"{NAMES[run['engine']]} ({variant})" if variant else NAMES[run["engine"]]
+
+
+def colour(run: dict) -> str:
+    return "tab:orange" if run.get("variant") else COLOURS[run["engine"]]
+
+
 def smooth(values: list) -> np.ndarray:
     out = np.empty(len(values))
     for i in range(len(values)):
@@ -45,13 +56,12 @@ def main(argv=None) -> int:
     scenarios = sorted({r["scenario"] for r in runs}, key=lambda s: (s != "basic", s))
     fig, axes = plt.subplots(2, len(scenarios), figsize=(6 * len(scenarios), 8), squeeze=False)
     for col, scenario in enumerate(scenarios):
-        for run in sorted((r for r in runs if r["scenario"] == scenario), key=lambda r: (r["engine"], r["seed"])):
+        for run in sorted((r for r in runs if r["scenario"] == scenario), key=lambda r: (r["engine"], r["seed"], r.get("variant", ""))):
             steps, seconds, returns = zip(*run["episodes"])
-            label = f"{NAMES[run['engine']]}, seed {run['seed']}"
+            label = f"{name(run)}, seed {run['seed']}"
             curve = smooth(returns)
-            colour = COLOURS[run["engine"]]
-            axes[0][col].plot(steps, curve, color=colour, alpha=0.8, label=label)
-            axes[1][col].plot(seconds, curve, color=colour, alpha=0.8, label=label)
+            axes[0][col].plot(steps, curve, color=colour(run), alpha=0.8, label=label)
+            axes[1][col].plot(seconds, curve, color=colour(run), alpha=0.8, label=label)
         axes[0][col].set_title(f"{scenario}: PPO, mean return of the last {WINDOW} episodes")
         axes[0][col].set_xlabel("actions (4 tics each)")
         axes[1][col].set_xlabel("wall-clock seconds (learner and game, one thread each)")
@@ -65,10 +75,10 @@ def main(argv=None) -> int:
     print("| scenario | engine | seed | actions | wall-clock s | of which game s | return, first 100 episodes | return, last 100 episodes |")
     print("|---|---|---|---|---|---|---|---|")
     for scenario in scenarios:
-        for run in sorted((r for r in runs if r["scenario"] == scenario), key=lambda r: (r["engine"], r["seed"])):
+        for run in sorted((r for r in runs if r["scenario"] == scenario), key=lambda r: (r["engine"], r["seed"], r.get("variant", ""))):
             returns = [e[2] for e in run["episodes"]]
             print(
-                f"| {scenario} | {NAMES[run['engine']]} | {run['seed']} | {run['steps']:,} | {run['seconds']:.0f} | "
+                f"| {scenario} | {name(run)} | {run['seed']} | {run['steps']:,} | {run['seconds']:.0f} | "
                 f"{run['game_seconds']:.0f} | {np.mean(returns[:100]):.1f} | {np.mean(returns[-100:]):.1f} |"
             )
     return 0
