@@ -21,6 +21,8 @@ impl Autopilot {
         let looker = Body { pos: player.pos, z: player.z, height: 56.0, radius: 16.0, index: usize::MAX };
         let mut best: Option<(f64, usize)> = None;
         self.in_sight = 0;
+        self.unsure = false;
+        self.target = None;
         for (i, a) in seen.iter().enumerate() {
             let def = &table.actors[a.kind];
             if a.removed
@@ -90,10 +92,17 @@ impl Autopilot {
         // With only a fist (or chainsaw), an enemy out of its reach is no
         // fight: swinging at it, or falling back from it, only gives it
         // time to shoot; go on (for ammo, say) instead.
-        if weapon == 1 && d > MELEE_REACH + table.actors[seen[i].kind].radius {
+        let def = &table.actors[seen[i].kind];
+        if weapon == 1 && d > MELEE_REACH + def.radius {
             return None;
         }
-        Some((to.y.atan2(to.x).to_degrees(), weapon, d, keep_off(&table.actors[seen[i].kind])))
+        let (radius, keep) = (def.radius, keep_off(def));
+        let body = Body { pos: target, z: seen[i].z, height: def.height, radius, index: i };
+        let (at, sure) = self.lead(game, body, weapon);
+        self.unsure = !sure;
+        self.target = Some(super::Aim { at, radius, thing: i, missile: matches!(weapon, 5 | 7) });
+        let to = at - player.pos;
+        Some((to.y.atan2(to.x).to_degrees(), weapon, d, keep))
     }
 
     /// Is a live barrel close in front, near a shot fired facing `angle`

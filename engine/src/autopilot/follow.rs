@@ -100,7 +100,7 @@ impl Autopilot {
                     // look again soon.
                     self.bad.clear();
                     self.unreachable.clear();
-                    self.next_replan = now + 35;
+                    self.next_replan = now + self.look_again_in();
                     return TickInput::default();
                 }
             }
@@ -382,7 +382,7 @@ impl Autopilot {
         // tick), in which a walking body goes some 8 units a tick.
         let past = long.and_then(|f| floor_at(target + d.normalize_or_zero() * WALK * (2.0 * (player.z - f)).sqrt()));
         if player.on_ground() && long.is_some_and(|f| past.is_some_and(|p| p < f - MAX_STEP)) {
-            self.creeping.set(true);
+            self.creeping.store(true, std::sync::atomic::Ordering::Relaxed);
             if player.velocity.length() > CREEP {
                 return self.hold(game);
             }

@@ -16,6 +16,9 @@
 //!   getting unstuck), fighting, and the report.
 //! - [`check`]: what a map maker asks of a map: can the exit, each key,
 //!   secret and item be reached, and where can the player get stuck.
+//! - `gather`: for play whose aim is not the exit ([`Options`], off by
+//!   default): fetching the health and armour seen, exploring, leading a
+//!   moving enemy with a rocket.
 
 mod arrive;
 pub mod blockmap;
@@ -23,7 +26,9 @@ pub mod brain;
 pub mod check;
 mod fight;
 mod follow;
+mod gather;
 use fight::{weapon_for, Fire};
+pub use gather::Options;
 pub mod leap;
 pub mod nav;
 pub mod observe;
@@ -307,8 +312,10 @@ pub struct Autopilot {
     barrel_near: bool,
     /// Last tick the body headed for a floor far below, stepping off at a
     /// creep (see [`Autopilot::drive_to`]): no fighting or dodging, which
-    /// would throw it off at speed.
-    creeping: std::cell::Cell<bool>,
+    /// would throw it off at speed. Atomic rather than a `Cell` (it is set
+    /// from `&self`) so that a bot can be shared across threads (a Python
+    /// game holding one is shared).
+    creeping: std::sync::atomic::AtomicBool,
     /// The trigger was held at the boss brain last tick.
     firing: bool,
     /// Live monsters in sight last tick (counted up to [`CROWD`]).
@@ -327,10 +334,38 @@ pub struct Autopilot {
     /// Health last tick, and what the body did then (for the trace).
     last_health: i32,
     mode: &'static str,
+    /// What it plays for besides the exit.
+    options: Options,
+    /// What it found out looking about (for `options`).
+    finds: gather::Finds,
+    /// The enemy it aims at this tick.
+    target: Option<Aim>,
+    /// Where the shot would meet the enemy is not known well enough to
+    /// fire (a lead with too short a track: [`Options::lead`]).
+    unsure: bool,
+}
+
+/// The enemy the bot aims at on a tick, for whoever turns its input into
+/// other buttons (`scenario::expert`): the point aimed at (the enemy, or
+/// where a rocket will meet it) and the enemy's radius.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Aim {
+    pub at: DVec2,
+    pub radius: f64,
+    /// The enemy, by index among the things ([`Observe::seen`]).
+    pub thing: usize,
+    /// The weapon fires a missile (the rocket launcher, the BFG), not
+    /// bullets.
+    pub missile: bool,
 }
 
 impl Autopilot {
     pub fn new(game: &dyn Observe) -> Autopilot {
+        Autopilot::with_options(game, Options::default())
+    }
+
+    /// A bot that also plays for what `options` asks.
+    pub fn with_options(game: &dyn Observe, options: Options) -> Autopilot {
         let level = game.level();
         let started = std::time::Instant::now();
         let nav = NavGrid::new(&level.compiled);
@@ -384,11 +419,20 @@ impl Autopilot {
             need: (supplies::Need::None, supplies::Need::None),
             in_sight: 0,
             barrel_near: false,
-            creeping: std::cell::Cell::new(false),
+            creeping: std::sync::atomic::AtomicBool::new(false),
             firing: false,
             last_health: game.player().health,
             mode: "",
+            options,
+            finds: gather::Finds::default(),
+            target: None,
+            unsure: false,
         }
+    }
+
+    /// The enemy aimed at on the last tick, if it fought.
+    pub fn aim(&self) -> Option<Aim> {
+        self.target
     }
 
     pub fn status(&self) -> &Status {
@@ -423,6 +467,7 @@ impl Autopilot {
         if self.last_pos.distance(player.pos) > 64.0 {
             self.note_teleport(game);
         }
+        self.look_about(game);
         // A suit with a few seconds left shields from all but the floors it
         // is no use on (its rare leaks are taken).
         let suited = player.powers[Power::IronFeet as usize] > SUIT_MARGIN;
@@ -452,8 +497,11 @@ impl Autopilot {
         // On the lift at the bottom, it fights where it stands (turning and
         // firing, not moving); once the lift starts up, it keeps its aim.
         let rising = riding && self.lift_rising(game);
-        let creeping = self.creeping.take();
+        let creeping = self.creeping.swap(false, std::sync::atomic::Ordering::Relaxed);
         let fight = self.fight(game).filter(|_| !leaping && !rising && !creeping);
+        if fight.is_none() {
+            self.target = None;
+        }
         // With a gun, stand and fight what is in sight (strafing from side
         // to side, backing off what comes close) for a while before going
         // on; with only a fist, go on. Hurt, fall back the way it came,
@@ -505,6 +553,9 @@ impl Autopilot {
         };
         // Using a line needs the body to face it: no fighting on that tick.
         let fight = fight.filter(|_| !input.use_line);
+        if fight.is_none() {
+            self.target = None;
+        }
         if let Some((angle, until)) = self.aim.filter(|&(_, until)| now < until && fight.is_none()) {
             // A rocket on its way out: it flies where the body faces.
             input.turn = turn_to(player.angle, angle) as f32;
@@ -536,7 +587,8 @@ impl Autopilot {
             input.fire = player.pending_weapon.is_none()
                 && slot_of(game, player.ready_weapon) == Some(weapon)
                 && !self.barrel_ahead(game, angle)
-                && !fight::tap_now(game);
+                && !fight::tap_now(game)
+                && !self.unsure;
             if input.fire && held.is_none() {
                 // The shot leaves some ticks after the trigger (Doom's
                 // rocket launcher: 8; the pistol and shotgun: 3-4): keep
@@ -869,7 +921,7 @@ impl Autopilot {
             self.log.push(format!("tick {}: lift {lift} is up on the way: calling it first", game.ticks()));
             Some(*call)
         });
-        let chosen = chosen.or_else(|| self.off_danger(game));
+        let chosen = chosen.or_else(|| self.explore_goal(game)).or_else(|| self.off_danger(game));
         let t = started.elapsed().as_secs_f64();
         self.figures.plans += 1;
         self.figures.plan_seconds += t;
@@ -1115,6 +1167,9 @@ impl Autopilot {
         let map = &level.compiled.map;
         let keys = Self::keys_held(game);
         let assumed = self.assume(game);
+        if let Some(a) = self.gather_goal(game, &assumed) {
+            return Some(a);
+        }
         let Assumed { heights, spent, .. } = &assumed;
         let start = assumed.start(&self.nav, game)?;
         let world = assumed.world(&self.nav, &self.mech, (&self.hurts, &self.wary), map);

@@ -350,6 +350,10 @@ pub enum Purpose {
     Lift,
     /// Off a floor that hurts, with nothing else to do.
     Safety,
+    /// Health or armour seen ([`super::Options::gather`]).
+    Gather,
+    /// A sector not yet visited ([`super::Options::explore`]).
+    Explore,
 }
 
 /// What the search needs of a goal: cells where it is met, and lines whose
