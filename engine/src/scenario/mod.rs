@@ -1,11 +1,13 @@
-//! ZDoom-format scenarios, as ViZDoom describes them. For now the reader of
-//! a scenario's `.cfg`: `cfg` reads the text into a `config::ScenarioConfig`
+//! ZDoom-format scenarios, as ViZDoom describes them. `cfg` reads a
+//! scenario's `.cfg` text into a `config::ScenarioConfig`
 //! (the scenario's WAD paths, map, buttons, game variables, rewards and
-//! rendering switches, typed in `names`) for whoever runs it. Nothing here
-//! loads the WAD or starts a game yet.
+//! rendering switches, typed in `names`) for whoever runs it; `run` plays
+//! episodes of it, and `expert` answers what the autopilot would press in
+//! one (for imitation learning).
 
 mod cfg;
 mod config;
+pub mod expert;
 pub mod host;
 pub mod made;
 pub mod multi;
@@ -17,6 +19,7 @@ pub mod variables;
 
 pub use cfg::{key_names, CfgError, Problem, KEY_COUNT};
 pub use config::{AutomapOptions, Outputs, RenderFlags, Rewards, ScenarioConfig};
+pub use expert::Expert;
 pub use multi::MultiEpisode;
 pub use names::{AutomapMode, Button, GameVariable, Mode, SamplingRate, ScreenFormat, ScreenResolution, RESOLUTIONS};
 pub use run::{map_of, reward_so_far, End, Episode, RandomPolicy, Scenario, ScenarioError};

@@ -41,7 +41,7 @@ pub enum End {
 
 /// Tics a turn button turns slowly (ZDoom's `SLOWTURNTICS` less one: ViZDoom
 /// measures the fast turn from the sixth held tic).
-const SLOW_TURN_TICS: u32 = 5;
+pub(super) const SLOW_TURN_TICS: u32 = 5;
 
 /// One episode of a scenario.
 pub struct Episode {
@@ -266,6 +266,12 @@ impl Episode {
     /// How the episode ended, once it has.
     pub fn end(&self) -> Option<End> {
         self.end
+    }
+
+    /// Tics a turn button has been held up to now (the next tic's turn
+    /// step depends on it: `command`).
+    pub fn turn_held(&self) -> u32 {
+        self.turn_held
     }
 
     /// A made scenario's goals paid so far, in its `reach` order (empty
