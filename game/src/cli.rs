@@ -96,6 +96,23 @@ pub enum BenchCommand {
     /// goal choice), and ticks per second of autoplay with rendering off
     /// and on.
     Autopilot(BenchAutopilotArgs),
+    /// The autopilot as an expert on ViZDoom scenarios: its answer's cost
+    /// per step, and the mean reward of following it against the random
+    /// policy's, as a Markdown table.
+    Expert(BenchExpertArgs),
+}
+
+#[derive(Args)]
+pub struct BenchExpertArgs {
+    /// Scenario `.cfg` files.
+    #[arg(required = true)]
+    pub scenarios: Vec<PathBuf>,
+    /// Episodes per scenario and policy; episode `k` is seeded `k`.
+    #[arg(long, default_value_t = 50, value_parser = clap::value_parser!(u32).range(1..))]
+    pub episodes: u32,
+    /// The IWAD under the scenarios' WADs.
+    #[arg(long)]
+    pub iwad: Option<PathBuf>,
 }
 
 #[derive(Args)]
@@ -422,7 +439,8 @@ pub struct AutoplayArgs {
     pub episodes: u32,
     /// A scenario `.cfg`: who presses the buttons. `random`: each tic one of
     /// the `.cfg`'s buttons, or none, uniformly, from a generator seeded
-    /// with `--seed`; `idle`: nothing is pressed.
+    /// with `--seed`; `idle`: nothing is pressed; `expert`: what the
+    /// autopilot would press (`scenario::expert`).
     #[arg(long, value_enum, default_value_t = Policy::Random)]
     pub policy: Policy,
 }
@@ -432,6 +450,7 @@ pub struct AutoplayArgs {
 pub enum Policy {
     Random,
     Idle,
+    Expert,
 }
 
 #[derive(Args)]

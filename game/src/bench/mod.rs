@@ -4,6 +4,7 @@
 //! one map.
 
 mod autopilot;
+mod expert;
 mod tour;
 
 use anyhow::Result;
@@ -14,6 +15,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
     match &args.command {
         Some(BenchCommand::Tour(tour)) => tour::run(tour),
         Some(BenchCommand::Autopilot(a)) => autopilot::run(a),
+        Some(BenchCommand::Expert(a)) => expert::run(a),
         None => crate::suite::run(&args.suite),
     }
 }
