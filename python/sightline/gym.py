@@ -12,6 +12,11 @@ action forms as ViZDoom's own wrapper registers them:
 Delta buttons (turns and moves by a value) are a ``Box`` beside them, in a
 ``Dict`` action space with keys ``binary`` and ``continuous``.
 
+The autopilot is an expert to imitate: ``env.expert_action()`` is what it
+would do now, in the environment's action space, and an environment made
+with ``expert=True`` also puts it in ``info["expert_action"]`` at every
+reset and step (``SightlineVectorEnv.expert_actions()`` for many games).
+
 Observations are a ``Dict``: ``screen`` (height, width, channels; RGB24
 unless the ``.cfg`` asks for GRAY8, which has one channel), ``depth``
 (float32 map units), ``labels`` and ``automap`` when the ``.cfg`` turns
@@ -125,8 +130,40 @@ class _Spec:
                 values[i] = float(v)
         return values
 
+    def from_buttons(self, values: Any) -> Any:
+        """The agent's action nearest the game's action ``values`` (one per
+        button): for ``Discrete``, the combination of buttons that misses
+        the fewest of those pressed, a missed ATTACK weighing most, then
+        USE, then turns (one button at a time can press only one of
+        TURN_LEFT and MOVE_FORWARD: turning first walks where it should);
+        for ``MultiBinary`` the buttons themselves; delta values as they
+        are, in the ``Box``."""
+        values = [float(v) for v in values]
+        binary: Any = None
+        if self.binary:
+            pressed = [values[i] != 0.0 for i in self.binary]
+            if self.combos:
+                weight = {i: _MISS_WEIGHT.get(self.buttons[i], 1) for i in self.binary}
+                wanted = {i for i, p in zip(self.binary, pressed) if p}
+
+                def miss(combo: tuple) -> int:
+                    return sum(weight[i] for i in wanted.symmetric_difference(combo))
+
+                binary = min(range(len(self.combos)), key=lambda k: miss(self.combos[k]))
+            else:
+                binary = np.array(pressed, dtype=np.int8)
+        continuous = np.array([values[i] for i in self.delta], dtype=np.float32) if self.delta else None
+        if isinstance(self.action_space, gym.spaces.Dict):
+            return {"binary": binary, "continuous": continuous}
+        return binary if binary is not None else continuous
+
     def screen(self, raw: np.ndarray) -> np.ndarray:
         return raw[:, :, None] if raw.ndim == 2 else raw
+
+
+# How much a button the expert pressed weighs when a Discrete combination
+# leaves it out (1 for the rest).
+_MISS_WEIGHT = {Button.ATTACK: 8, Button.USE: 4, Button.TURN_LEFT: 2, Button.TURN_RIGHT: 2}
 
 
 def _configured_game(config_file: Optional[str], kwargs: dict) -> DoomGame:
@@ -146,8 +183,10 @@ class SightlineEnv(gym.Env):
 
     ``config_file`` is a ``.cfg`` path or the name of one of ViZDoom's
     (``"basic"``); ``frame_skip`` tics pass per step holding the action;
-    other keyword arguments call the ``DoomGame`` setter of that name
-    (``doom_skill=5`` calls ``set_doom_skill(5)``)."""
+    ``expert=True`` puts the autopilot's action in every reset's and step's
+    ``info["expert_action"]`` (see :meth:`expert_action`); other keyword
+    arguments call the ``DoomGame`` setter of that name (``doom_skill=5``
+    calls ``set_doom_skill(5)``)."""
 
     metadata = {"render_modes": ["human", "rgb_array"], "render_fps": 35}
 
@@ -157,6 +196,7 @@ class SightlineEnv(gym.Env):
         frame_skip: int = 1,
         max_buttons_pressed: int = 0,
         render_mode: Optional[str] = None,
+        expert: bool = False,
         **kwargs: Any,
     ):
         if render_mode is not None and render_mode not in self.metadata["render_modes"]:
@@ -165,6 +205,7 @@ class SightlineEnv(gym.Env):
             raise ValueError(f"frame_skip must be at least 1, not {frame_skip}")
         self.frame_skip = frame_skip
         self.render_mode = render_mode
+        self.expert = expert
         self.game = _configured_game(config_file, kwargs)
         self.game.set_seed(0)
         self.game.init()
@@ -202,7 +243,7 @@ class SightlineEnv(gym.Env):
         obs = self._observe()
         if self.render_mode == "human":
             self.render()
-        return obs, {}
+        return obs, self._info()
 
     def step(self, action: Any):
         reward = self.game.make_action(self._spec.to_buttons(action), self.frame_skip)
@@ -212,7 +253,19 @@ class SightlineEnv(gym.Env):
         terminated = finished and not truncated
         if self.render_mode == "human":
             self.render()
-        return obs, float(reward), terminated, truncated, {}
+        return obs, float(reward), terminated, truncated, self._info()
+
+    def expert_action(self) -> Any:
+        """What the autopilot would do now, in this environment's action
+        space (:meth:`_Spec.from_buttons`: for a ``Discrete`` space the
+        nearest combination). Ask at every step, whatever the agent does:
+        the autopilot plays along, seeing the game when asked
+        (``DoomGame.get_expert_action``). Once the episode is over, the
+        action that presses nothing."""
+        return self._spec.from_buttons(self.game.get_expert_action())
+
+    def _info(self) -> dict:
+        return {"expert_action": self.expert_action()} if self.expert else {}
 
     def render(self):
         frame = self._last_screen
@@ -254,7 +307,9 @@ class SightlineVectorEnv(gym.vector.VectorEnv):
     a game whose episode ended starts a new one on the next step
     (``autoreset_mode`` NEXT_STEP, Gymnasium's default). Observations are
     the screen and game variables; every game is seeded apart, so N games
-    give byte for byte what N :class:`SightlineEnv` would."""
+    give byte for byte what N :class:`SightlineEnv` would. ``expert=True``
+    puts every game's expert action in ``infos["expert_action"]``
+    (:meth:`expert_actions`)."""
 
     metadata = {"autoreset_mode": gym.vector.AutoresetMode.NEXT_STEP}
 
@@ -265,9 +320,11 @@ class SightlineVectorEnv(gym.vector.VectorEnv):
         frame_skip: int = 1,
         max_buttons_pressed: int = 0,
         threads: int = 0,
+        expert: bool = False,
         **kwargs: Any,
     ):
         game = _configured_game(config_file, kwargs)
+        self.expert = expert
         self._spec = _Spec(game, max_buttons_pressed)
         self.num_envs = num_envs
         self.frame_skip = frame_skip
@@ -302,7 +359,7 @@ class SightlineVectorEnv(gym.vector.VectorEnv):
         for i in range(self.num_envs):
             self._new_episode(i)
         self._needs_reset[:] = False
-        return self._observe(), {}
+        return self._observe(), self._infos()
 
     def step(self, actions: Any):
         rows = np.zeros((self.num_envs, len(self._spec.buttons)), dtype=np.float64)
@@ -329,7 +386,23 @@ class SightlineVectorEnv(gym.vector.VectorEnv):
         truncated = np.array([e == "timeout" for e in ends]) & ~resetting
         terminated = np.array([e in ("exit", "death") for e in ends]) & ~resetting
         self._needs_reset = terminated | truncated
-        return obs, rewards, terminated, truncated, {}
+        return obs, rewards, terminated, truncated, self._infos()
+
+    def expert_actions(self) -> Any:
+        """Every game's expert action (:meth:`SightlineEnv.expert_action`),
+        batched as the action space is, answered on the engine's threads.
+        A game whose episode ended (it starts anew on the next step) gives
+        the action that presses nothing."""
+        rows = self._games.expert_actions()
+        actions = [self._spec.from_buttons(row) for row in rows]
+        return gym.vector.utils.concatenate(
+            self.single_action_space, actions, gym.vector.utils.create_empty_array(self.single_action_space, self.num_envs)
+        )
+
+    def _infos(self) -> dict:
+        if not self.expert:
+            return {}
+        return {"expert_action": self.expert_actions(), "_expert_action": np.ones(self.num_envs, dtype=bool)}
 
     def close_extras(self, **kwargs: Any) -> None:
         self._games = None

@@ -611,6 +611,22 @@ class DoomGame:
         b = Button(button)
         return self._action[buttons.index(b)] if b in buttons and self._action else 0.0
 
+    def get_expert_action(self) -> list:
+        """What Sightline's autopilot would press now: an action, one value
+        per available button (delta buttons take its exact turn or move),
+        to imitate. A Sightline extension: ViZDoom has no such call.
+
+        The autopilot fights what it sees, fetches the health and armour it
+        has seen, explores, and leads a moving enemy with a rocket; where
+        the buttons cannot say what it wants (basic has no turn buttons) it
+        strafes the enemy onto the line of fire and fires only when it is
+        there. It is made when first asked in an episode and plays along
+        from then on, seeing the game each time it is asked (ask every
+        step, whoever acts); it never changes the game, and asked twice on
+        one tic it gives the same answer. All zeros once the episode is
+        over."""
+        return self._running().expert_action()
+
     def is_multiplayer_game(self) -> bool:
         return False
 

@@ -8,7 +8,7 @@ use std::sync::Arc;
 use pyo3::exceptions::{PyFileNotFoundError, PyRuntimeError, PyValueError};
 use pyo3::PyResult;
 use sightline::scenario::observe::{convert, convert_into, shape, Observer};
-use sightline::scenario::{variables, Episode, GameVariable, Scenario, ScenarioConfig};
+use sightline::scenario::{variables, Episode, Expert, GameVariable, Scenario, ScenarioConfig};
 
 /// A scenario opened once, shared by every game of it.
 pub struct Opened {
@@ -70,6 +70,9 @@ pub struct Env {
     pub last_reward: f64,
     /// The screen drawn is the current state's.
     drawn: bool,
+    /// The autopilot playing along, made when first asked for its action
+    /// in an episode (so a game never asked pays nothing).
+    expert: Option<Expert>,
 }
 
 impl Env {
@@ -77,7 +80,7 @@ impl Env {
         let config = &opened.scenario.config;
         let observer = Observer::new(config, threads);
         let variables = config.available_game_variables.clone();
-        Env { opened, episode: None, observer, variables, last_reward: 0.0, drawn: false }
+        Env { opened, episode: None, observer, variables, last_reward: 0.0, drawn: false, expert: None }
     }
 
     pub fn config(&self) -> &ScenarioConfig {
@@ -87,6 +90,7 @@ impl Env {
     pub fn new_episode(&mut self, seed: u64) -> PyResult<()> {
         let episode = self.opened.scenario.episode(seed).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
         self.episode = Some(episode);
+        self.expert = None;
         self.observer.reset();
         self.last_reward = 0.0;
         self.drawn = false;
@@ -132,6 +136,15 @@ impl Env {
         self.last_reward = episode.step_tics(&limited, tics);
         self.drawn = false;
         Ok(self.last_reward)
+    }
+
+    /// What the autopilot would press now: one value per available
+    /// button (`scenario::expert`); all zero once the episode is over.
+    pub fn expert_action(&mut self) -> PyResult<Vec<f64>> {
+        let Some(episode) = self.episode.as_ref() else {
+            return Err(PyRuntimeError::new_err("no episode is running: call new_episode first"));
+        };
+        Ok(self.expert.get_or_insert_with(|| Expert::new(episode)).action(episode))
     }
 
     pub fn finished(&self) -> bool {

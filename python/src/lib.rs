@@ -194,6 +194,16 @@ impl Game {
         py.detach(|| env.step(&action, tics))
     }
 
+    /// What the autopilot would press now, as an action (one value per
+    /// available button; delta buttons carry its exact turn or move): the
+    /// expert for imitation learning. The autopilot is made when first
+    /// asked in an episode and plays along from then on, seeing the game
+    /// each time it is asked; asked twice on one tic it answers the same.
+    fn expert_action(&mut self, py: Python<'_>) -> PyResult<Vec<f64>> {
+        let env = &mut self.env;
+        py.detach(|| env.expert_action())
+    }
+
     /// Whether the episode has ended (or none has started).
     fn is_finished(&self) -> bool {
         self.env.finished()
@@ -429,6 +439,17 @@ impl Games {
     fn game_variables<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let rows: Vec<Vec<f64>> = self.envs.iter().map(Env::variables).collect();
         let width = rows[0].len();
+        array(py, &[rows.len(), width], rows.concat())
+    }
+
+    /// Every game's expert action (`Game.expert_action`), one row each,
+    /// answered on the games' threads.
+    fn expert_actions<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let (envs, pool) = (&mut self.envs, &self.pool);
+        let rows: Vec<PyResult<Vec<f64>>> =
+            py.detach(|| pool.install(|| envs.par_iter_mut().map(Env::expert_action).collect()));
+        let rows = rows.into_iter().collect::<PyResult<Vec<Vec<f64>>>>()?;
+        let width = self.envs[0].config().available_buttons.len();
         array(py, &[rows.len(), width], rows.concat())
     }
 
