@@ -1244,7 +1244,11 @@ impl Autopilot {
                 return Some(active(Goal::Touch(pos, i), Purpose::Key, route));
             }
         }
-        // Switches and walk lines: what could each open?
+        // Switches and walk lines: what could each open? (A level with
+        // none, as most of ViZDoom's scenarios, needs no flood to say so.)
+        if self.mech.triggers.is_empty() {
+            return None;
+        }
         self.search.run(&world, start, None);
         let base = self.search.reached.len();
         // With nothing untried left, a repeatable line tried before (a
