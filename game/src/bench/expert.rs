@@ -20,7 +20,7 @@ use crate::scenario::{median, play};
 const LIMIT: u64 = 35 * 60 * 5;
 
 pub fn run(args: &BenchExpertArgs) -> Result<()> {
-    println!("| scenario | expert reward | random reward | expert exits | median µs | mean µs | p99 µs | setup ms |");
+    println!("| scenario | expert reward | random reward | expert's episodes ending by the exit | median µs | mean µs | p99 µs | setup ms |");
     println!("|---|---|---|---|---|---|---|---|");
     for cfg in &args.scenarios {
         let label = cfg.display();
