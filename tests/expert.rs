@@ -68,10 +68,9 @@ fn mean(values: impl Iterator<Item = f64>) -> f64 {
 
 /// basic (MOVE_LEFT, MOVE_RIGHT, ATTACK: no turning): the expert strafes
 /// the cacodemon onto its line of fire and shoots once it is there. It
-/// kills it in at least 18 of 20 episodes (all 20 now; a cacodemon whose
-/// centre is in another blockmap row than the body can reach cannot be
-/// hit under vanilla's rules, 1 seed in 50), for a mean reward far above
-/// the random policy's (about -230 here, -200 in ViZDoom's reports).
+/// kills it in at least 18 of 20 episodes (all 20 now), for a mean reward
+/// far above the random policy's (about -230 here, -200 in ViZDoom's
+/// reports).
 #[test]
 #[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
 fn following_the_expert_wins_basic() {
