@@ -10,6 +10,20 @@ use super::{plan, Autopilot, Observe, BARREL_BLAST, BARREL_CLEARANCE, CROWD, FIG
 use crate::actors::{ActorFlag, Category};
 use crate::play::TickInput;
 
+/// The enemy the bot aims at on a tick, for whoever turns its input into
+/// other buttons (`scenario::expert`): the point aimed at (the enemy, or
+/// where a rocket will meet it) and the enemy's radius.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Aim {
+    pub at: DVec2,
+    pub radius: f64,
+    /// The enemy, by index among the things ([`Observe::seen`]).
+    pub thing: usize,
+    /// The weapon fires a missile (the rocket launcher, the BFG), not
+    /// bullets.
+    pub missile: bool,
+}
+
 impl Autopilot {
     /// The enemy to shoot, if one is in sight: the angle to it, the
     /// weapon number to hold, how far it is, and how near to let it come
@@ -100,7 +114,7 @@ impl Autopilot {
         let body = Body { pos: target, z: seen[i].z, height: def.height, radius, index: i };
         let (at, sure) = self.lead(game, body, weapon);
         self.unsure = !sure;
-        self.target = Some(super::Aim { at, radius, thing: i, missile: matches!(weapon, 5 | 7) });
+        self.target = Some(Aim { at, radius, thing: i, missile: matches!(weapon, 5 | 7) });
         let to = at - player.pos;
         Some((to.y.atan2(to.x).to_degrees(), weapon, d, keep))
     }

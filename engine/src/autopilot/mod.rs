@@ -27,6 +27,7 @@ pub mod check;
 mod fight;
 mod follow;
 mod gather;
+pub use fight::Aim;
 use fight::{weapon_for, Fire};
 pub use gather::Options;
 pub mod leap;
@@ -343,20 +344,6 @@ pub struct Autopilot {
     /// Where the shot would meet the enemy is not known well enough to
     /// fire (a lead with too short a track: [`Options::lead`]).
     unsure: bool,
-}
-
-/// The enemy the bot aims at on a tick, for whoever turns its input into
-/// other buttons (`scenario::expert`): the point aimed at (the enemy, or
-/// where a rocket will meet it) and the enemy's radius.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Aim {
-    pub at: DVec2,
-    pub radius: f64,
-    /// The enemy, by index among the things ([`Observe::seen`]).
-    pub thing: usize,
-    /// The weapon fires a missile (the rocket launcher, the BFG), not
-    /// bullets.
-    pub missile: bool,
 }
 
 impl Autopilot {
