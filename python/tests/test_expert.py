@@ -125,3 +125,29 @@ def test_the_vector_env_gives_every_games_expert_action(scenarios):
     _, infos = plain.reset(seed=5)
     assert "expert_action" not in infos
     plain.close()
+
+
+def test_the_expert_explores_a_scenario_made_in_python_into_its_goal_room():
+    """A made scenario (no IWAD needed): a hall and a goal room east of it.
+    With nothing to fight or take, the expert goes to the sector it has
+    not stood in, and the goal pays and ends the episode."""
+    import sightline
+    from sightline.maps import Map
+
+    m = Map("Goal")
+    m.room(0, 0, 512, 256)
+    goal = m.room(512, 64, 640, 192)
+    m.player_start(64, 128, angle=90)
+    rewards = {"reach": [{"sector": goal, "reward": 10.0, "end": True}], "living": -0.01}
+    buttons = ["TURN_LEFT", "TURN_RIGHT", "MOVE_FORWARD"]
+    scenario = sightline.make_scenario(m, rewards, buttons=buttons, resolution=(160, 120), timeout=700)
+    env = sgym.SightlineEnv(scenario, max_buttons_pressed=1, expert=True)
+    _, info = env.reset(seed=0)
+    total, done = 0.0, False
+    while not done:
+        _, reward, terminated, truncated, info = env.step(info["expert_action"])
+        total += reward
+        done = terminated or truncated
+    env.close()
+    # The goal pays 10; 700 tics of living cost 7 at most.
+    assert terminated and total > 3, total
