@@ -195,6 +195,11 @@ impl ScenarioConfig {
         let given = Given { key, raw };
         match slot {
             Slot::Uint(field) => *field(self) = given.typed(unsigned(&lower), UNSIGNED)?,
+            Slot::AudioTics => {
+                let tics = unsigned(&lower).filter(|&t| t <= super::buffers::MAX_AUDIO_TICS);
+                self.outputs.audio_buffer_size =
+                    given.typed(tics, "a number of tics from 0 to 2100 (a minute of sound)")?;
+            }
             Slot::Seed => self.seed = Some(given.typed(unsigned(&lower), UNSIGNED)?),
             Slot::Float(field) => *field(self) = given.typed(finite(&lower), NUMBER)?,
             Slot::NegatedFloat(field) => *field(self) = -given.typed(finite(&lower), NUMBER)?,
@@ -385,6 +390,8 @@ enum Slot {
     Resolution,
     Format,
     SamplingRate,
+    /// `audio_buffer_size`: tics, at most `buffers::MAX_AUDIO_TICS`.
+    AudioTics,
     ButtonMaxValue,
 }
 
@@ -407,7 +414,7 @@ const KEYS: [(&str, Slot); 61] = [
     ("episode_start_time", Slot::Uint(|c| &mut c.episode_start_time)),
     ("doom_skill", Slot::Uint(|c| &mut c.doom_skill)),
     ("ticrate", Slot::Uint(|c| &mut c.ticrate)),
-    ("audio_buffer_size", Slot::Uint(|c| &mut c.outputs.audio_buffer_size)),
+    ("audio_buffer_size", Slot::AudioTics),
     ("notifications_buffer_size", Slot::Uint(|c| &mut c.outputs.notifications_buffer_size)),
     // Rewards.
     ("living_reward", Slot::Float(|c| &mut c.rewards.living)),

@@ -283,6 +283,14 @@ fn each_error_names_file_line_and_key_or_value() {
             "test.cfg:1: `audio_sampling_rate`: `48000` is not a sampling rate (SR_11025, SR_22050 or SR_44100)",
         ),
         (
+            "audio_buffer_size = 2101",
+            "test.cfg:1: `audio_buffer_size`: `2101` is not a number of tics from 0 to 2100 (a minute of sound)",
+        ),
+        (
+            "audioBufferSize = -4",
+            "test.cfg:1: `audio_buffer_size`: `-4` is not a number of tics from 0 to 2100 (a minute of sound)",
+        ),
+        (
             "button_max_value = ATTACK",
             "test.cfg:1: `button_max_value`: `ATTACK` is not `BUTTON N`, a button and its maximum value",
         ),

@@ -141,7 +141,7 @@ pub struct Outputs {
     pub audio_buffer: bool,
     /// `audio_sampling_rate`; default `SR_44100`.
     pub audio_sampling_rate: SamplingRate,
-    /// `audio_buffer_size` in tics; default 1.
+    /// `audio_buffer_size` in tics, 0 to 2,100; default 1 (as ViZDoom 1.3.2).
     pub audio_buffer_size: u32,
     /// `notifications_buffer_enabled`.
     pub notifications_buffer: bool,

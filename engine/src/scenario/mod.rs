@@ -3,8 +3,10 @@
 //! (the scenario's WAD paths, map, buttons, game variables, rewards and
 //! rendering switches, typed in `names`) for whoever runs it; `run` plays
 //! episodes of it, and `expert` answers what the autopilot would press in
-//! one (for imitation learning).
+//! one (for imitation learning); `buffers` keeps the audio and
+//! notifications of an episode's last tics.
 
+pub mod buffers;
 mod cfg;
 mod config;
 pub mod expert;

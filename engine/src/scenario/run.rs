@@ -20,6 +20,7 @@
 
 use std::path::{Path, PathBuf};
 
+use super::buffers::TicBuffers;
 use super::{Button, ScenarioConfig};
 use crate::bsp::BuildOptions;
 use crate::campaign::{self, MapRef, Opened};
@@ -62,6 +63,9 @@ pub struct Episode {
     counts: Counts,
     /// A made scenario's own events (`scenario::made`): goals, pickups.
     made: Option<super::made::events::Tracker>,
+    /// The audio and notifications buffers, fed every tic, when the
+    /// `.cfg` turns either on.
+    buffers: Option<Box<TicBuffers>>,
 }
 
 /// What ViZDoom 1.3's event rewards are paid on (`kill_reward` and the
@@ -235,6 +239,7 @@ impl Scenario {
 
     /// An episode of `game`, after the start time.
     fn begin(&self, game: SimGame) -> Episode {
+        let buffers = TicBuffers::new(&self.config, &self.opened, &game).map(Box::new);
         let mut episode = Episode {
             game,
             config: self.config.clone(),
@@ -246,9 +251,11 @@ impl Scenario {
             turn_held: 0,
             counts: Counts::default(),
             made: None,
+            buffers,
         };
         for _ in 0..self.config.episode_start_time {
             episode.game.command(Ticcmd::default());
+            episode.heard();
         }
         episode.made = self.made.as_ref().map(|rules| rules.start(&episode.game));
         episode.reward_global = episode.global(0);
@@ -261,6 +268,18 @@ impl Episode {
     /// ACS global variable `i` (16.16 where the scenario keeps a reward).
     pub fn global(&self, i: usize) -> i32 {
         self.game.scripts().map_or(0, |s| s.global(i))
+    }
+
+    /// The audio and notifications buffers, when the `.cfg` turns either on.
+    pub fn buffers(&self) -> Option<&TicBuffers> {
+        self.buffers.as_deref()
+    }
+
+    /// Feeds the tic just played to the buffers.
+    fn heard(&mut self) {
+        if let Some(b) = &mut self.buffers {
+            b.tic(&self.game);
+        }
     }
 
     /// How the episode ended, once it has.
@@ -295,6 +314,7 @@ impl Episode {
         } else {
             let cmd = self.command(pressed);
             self.game.command(cmd);
+            self.heard();
             let global = self.global(0);
             reward += f64::from(global.wrapping_sub(self.reward_global)) / 65536.0;
             self.reward_global = global;

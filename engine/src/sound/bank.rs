@@ -11,6 +11,7 @@ use std::sync::Arc;
 
 use crate::actors::sounds::{doom, SoundDef};
 use crate::campaign::MapRef;
+use crate::wad::library::WadArt;
 use crate::wad::Wad;
 
 use super::{dmx, mus, procedural, Sample};
@@ -28,6 +29,8 @@ enum Source {
     /// WAVs in this directory, else ours.
     Dir(std::path::PathBuf),
     Wad(Arc<Wad>),
+    /// A WAD already open for a game's art (a scenario's, shared by its games).
+    Art(Arc<WadArt>),
 }
 
 /// The sounds of one map, by name (links resolved: the chaingun is the
@@ -66,6 +69,20 @@ impl SoundBank {
         SoundBank::of(Source::Wad(wad))
     }
 
+    /// The `DS*` lumps of a WAD opened for its art.
+    pub fn of_art(art: Arc<WadArt>) -> SoundBank {
+        SoundBank::of(Source::Art(art))
+    }
+
+    /// The WAD the voices come from, if any.
+    fn wad(&self) -> Option<&Wad> {
+        match &self.source {
+            Source::Wad(wad) => Some(wad),
+            Source::Art(art) => Some(&art.wad),
+            Source::Procedural | Source::Dir(_) => None,
+        }
+    }
+
     fn of(source: Source) -> SoundBank {
         SoundBank { source, voices: BTreeMap::new(), warnings: Vec::new() }
     }
@@ -81,11 +98,8 @@ impl SoundBank {
                     Ok(procedural::voice(&def.name))
                 }
             }
-            Source::Wad(wad) => {
-                let lump = format!("DS{}", def.name.to_ascii_uppercase());
-                let bytes = wad.find(&lump).map(|i| wad.bytes(i)).ok_or_else(|| format!("no lump {lump}"))?;
-                dmx::decode(bytes).map_err(|e| format!("lump {lump}: {e}"))
-            }
+            Source::Wad(wad) => dmx_lump(wad, &def.name),
+            Source::Art(art) => dmx_lump(&art.wad, &def.name),
         }
     }
 
@@ -121,10 +135,17 @@ impl SoundBank {
     /// The music lump `name` (`D_RUNNIN`) of a WAD map as a MIDI file
     /// (MUS converted); `Err` says why there is none.
     pub fn wad_music(&self, name: &str) -> Result<Vec<u8>, String> {
-        let Source::Wad(wad) = &self.source else { return Err("not a WAD map".into()) };
+        let Some(wad) = self.wad() else { return Err("not a WAD map".into()) };
         let bytes = wad.find(name).map(|i| wad.bytes(i)).ok_or_else(|| format!("no lump {name}"))?;
         midi_of(bytes).map_err(|e| format!("lump {name}: {e}"))
     }
+}
+
+/// The `DS` lump of sound `name` in `wad`, decoded.
+fn dmx_lump(wad: &Wad, name: &str) -> Result<Sample, String> {
+    let lump = format!("DS{}", name.to_ascii_uppercase());
+    let bytes = wad.find(&lump).map(|i| wad.bytes(i)).ok_or_else(|| format!("no lump {lump}"))?;
+    dmx::decode(bytes).map_err(|e| format!("lump {lump}: {e}"))
 }
 
 /// A music lump's bytes as a MIDI file: MIDI as it is, MUS converted.

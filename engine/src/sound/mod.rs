@@ -110,6 +110,12 @@ impl Sounds {
         }
     }
 
+    /// Sounds from `bank` alone, for games that stay on one map
+    /// ([`Sounds::effects`]).
+    pub fn with_bank(bank: SoundBank) -> Sounds {
+        Sounds { bank, ..Sounds::new() }
+    }
+
     /// The cues of the tick `play` just ran.
     pub fn cues(&mut self, play: &Playthrough) -> Cues {
         let mut cues = Cues::default();
@@ -150,7 +156,20 @@ impl Sounds {
             }));
             self.song = song;
         }
-        let game = &play.game;
+        self.effects_into(&play.game, &mut cues);
+        cues
+    }
+
+    /// The sound effects of the tic `game` just ran, on a map whose voices
+    /// this already holds ([`Sounds::with_bank`]): no map change, no music
+    /// (a scenario's audio buffer).
+    pub fn effects(&mut self, game: &crate::sim::game::SimGame) -> Cues {
+        let mut cues = Cues::default();
+        self.effects_into(game, &mut cues);
+        cues
+    }
+
+    fn effects_into(&mut self, game: &crate::sim::game::SimGame, cues: &mut Cues) {
         let player = game.player();
         cues.listener = Listener { pos: player.pos, angle: player.angle };
         let level = game.level();
@@ -183,7 +202,6 @@ impl Sounds {
                 cues.moved.push((Key::Actor(a), actor.pos));
             }
         }
-        cues
     }
 }
 
@@ -222,6 +240,18 @@ impl Audio {
         Audio { mixer: Mixer::new(OUTPUT_RATE, channels), music, listener: Listener::default() }
     }
 
+    /// Effects alone on `channels` channels at `rate` Hz (a whole number
+    /// of frames a tick: 11,025, 22,050 and 44,100 are 315, 630 and 1,260).
+    pub fn effects_at(rate: u32, channels: usize) -> Audio {
+        Audio { mixer: Mixer::new(rate, channels), music: None, listener: Listener::default() }
+    }
+
+    /// Frames a tick at the mixer's rate ([`FRAMES_PER_TICK`] at the
+    /// output rate).
+    pub fn frames_per_tick(&self) -> usize {
+        (self.mixer.rate() / crate::play::TICRATE) as usize
+    }
+
     /// Acts on a tick's cues: music changes, stops, the sounds' new
     /// positions, the new sounds. A song that does not parse is `Err` (and
     /// silence); everything else applies regardless.
@@ -245,12 +275,12 @@ impl Audio {
     }
 
     /// One tick offline, in step with the game: `cues` applied, then exactly
-    /// [`FRAMES_PER_TICK`] frames appended to `out` (what makes the same
-    /// demo sound the same). `Err` as [`Audio::apply`]'s.
+    /// [`Audio::frames_per_tick`] frames appended to `out` (what makes the
+    /// same demo sound the same). `Err` as [`Audio::apply`]'s.
     pub fn render_tick(&mut self, cues: &Cues, out: &mut Vec<f32>) -> Result<(), String> {
         let result = self.apply(cues);
         let at = out.len();
-        out.resize(at + 2 * FRAMES_PER_TICK, 0.0);
+        out.resize(at + 2 * self.frames_per_tick(), 0.0);
         self.render(&mut out[at..]);
         result
     }
