@@ -20,8 +20,11 @@ reset and step (``SightlineVectorEnv.expert_actions()`` for many games).
 Observations are a ``Dict``: ``screen`` (height, width, channels; RGB24
 unless the ``.cfg`` asks for GRAY8, which has one channel), ``depth``
 (float32 map units), ``labels`` and ``automap`` when the ``.cfg`` turns
-them on, and ``gamevariables`` (float32) when it
-lists any. An episode that reaches the ``.cfg``'s ``episode_timeout`` is
+them on, ``audio`` (int16, frames by 2: the sound of the step's tics) and
+``notifications`` (text: the messages of the step's tics) when it turns
+those buffers on, and ``gamevariables`` (float32) when it lists any. As in
+ViZDoom's wrapper, the audio and notifications buffers hold ``frame_skip``
+tics unless a keyword argument sets their size. An episode that reaches the ``.cfg``'s ``episode_timeout`` is
 *truncated*; death and the exit *terminate* it.
 
 :class:`SightlineVectorEnv` steps many games of one scenario at once on
@@ -94,6 +97,11 @@ class _Spec:
             spaces["labels"] = gym.spaces.Box(0, 255, (height, width, 1), np.uint8)
         if game.is_automap_buffer_enabled():
             spaces["automap"] = gym.spaces.Box(0, 255, (height, width, channels), np.uint8)
+        if game.is_audio_buffer_enabled():
+            frames = game.get_audio_sampling_rate() * game.get_audio_buffer_size() // 35
+            spaces["audio"] = gym.spaces.Box(-32768, 32767, (frames, 2), np.int16)
+        if game.is_notifications_buffer_enabled():
+            spaces["notifications"] = gym.spaces.Text(min_length=0, max_length=32768, charset=_ASCII)
         n_vars = game.get_available_game_variables_size()
         if n_vars:
             limit = np.finfo(np.float32).max
@@ -166,16 +174,30 @@ class _Spec:
 _MISS_WEIGHT = {Button.ATTACK: 8, Button.USE: 4, Button.TURN_LEFT: 2, Button.TURN_RIGHT: 2}
 
 
-def _configured_game(config_file: Optional[str], kwargs: dict) -> DoomGame:
+# The notifications' characters (ViZDoom's wrapper: codes 0 to 126).
+_ASCII = [chr(i) for i in range(127)]
+
+
+def _configured_game(config_file: Optional[str], kwargs: dict, frame_skip: int = 1) -> DoomGame:
     made = getattr(config_file, "doom_game", None)  # a scenario made in Python (sightline.made)
     game = made() if made is not None else DoomGame()
     if config_file is not None and made is None:
         game.load_config(_config_file(config_file))
+    # A step's buffers hold its tics, unless the caller says otherwise.
+    game.set_audio_buffer_size(min(frame_skip, 2100))  # the audio buffer's limit: a minute
+    game.set_notifications_buffer_size(frame_skip)
     for key, value in kwargs.items():
         getattr(game, f"set_{key}")(value)
     if game.get_screen_format() != ScreenFormat.GRAY8:
         game.set_screen_format(ScreenFormat.RGB24)
     return game
+
+
+def _empty(space: gym.Space) -> Any:
+    """The observation of ``space`` once the episode is over: zeros, or no text."""
+    if isinstance(space, gym.spaces.Text):
+        return ""
+    return np.zeros(space.shape, space.dtype)
 
 
 class SightlineEnv(gym.Env):
@@ -206,7 +228,7 @@ class SightlineEnv(gym.Env):
         self.frame_skip = frame_skip
         self.render_mode = render_mode
         self.expert = expert
-        self.game = _configured_game(config_file, kwargs)
+        self.game = _configured_game(config_file, kwargs, frame_skip)
         self.game.set_seed(0)
         self.game.init()
         self._spec = _Spec(self.game, max_buttons_pressed)
@@ -218,7 +240,7 @@ class SightlineEnv(gym.Env):
     def _observe(self) -> dict:
         state = self.game.get_state()
         if state is None:
-            return {k: np.zeros(s.shape, s.dtype) for k, s in self.observation_space.spaces.items()} | (
+            return {k: _empty(s) for k, s in self.observation_space.spaces.items()} | (
                 {"screen": self._last_screen} if self._last_screen is not None else {}
             )
         obs = {"screen": self._spec.screen(state.screen_buffer)}
@@ -228,6 +250,10 @@ class SightlineEnv(gym.Env):
             obs["labels"] = state.labels_buffer[:, :, None]
         if "automap" in self.observation_space.spaces:
             obs["automap"] = self._spec.screen(state.automap_buffer)
+        if "audio" in self.observation_space.spaces:
+            obs["audio"] = state.audio_buffer
+        if "notifications" in self.observation_space.spaces:
+            obs["notifications"] = state.notifications_buffer
         if "gamevariables" in self.observation_space.spaces:
             obs["gamevariables"] = state.game_variables.astype(np.float32)
         self._last_screen = obs["screen"]
@@ -323,14 +349,14 @@ class SightlineVectorEnv(gym.vector.VectorEnv):
         expert: bool = False,
         **kwargs: Any,
     ):
-        game = _configured_game(config_file, kwargs)
+        game = _configured_game(config_file, kwargs, frame_skip)
         self.expert = expert
         self._spec = _Spec(game, max_buttons_pressed)
         self.num_envs = num_envs
         self.frame_skip = frame_skip
         self.single_action_space = self._spec.action_space
         self.single_observation_space = self._spec.observation_space
-        for extra in ("automap", "depth", "labels"):
+        for extra in ("automap", "depth", "labels", "audio", "notifications"):
             if extra in self.single_observation_space.spaces:
                 raise NotImplementedError(f"the vector environment gives the screen and game variables, not the {extra}")
         self.action_space = gym.vector.utils.batch_space(self.single_action_space, num_envs)

@@ -172,16 +172,19 @@ def _flag(value: bool) -> str:
     return "true" if value else "false"
 
 
-def _enum_name(kind: type, value: Any) -> str:
-    """The name of ``value``, one of ``kind``'s members, its number, or its name."""
+def _enum_name(kind: type, value: Any, call: str = "") -> str:
+    """The name of ``value``, one of ``kind``'s members, its number, or its
+    name; ``call`` names the setter in the error."""
+    where = f"{call}: " if call else ""
+    members = ", ".join(kind.__members__)
     if isinstance(value, str):
         if value.upper() in kind.__members__:
             return value.upper()
-        raise ConfigError(f"{value!r} is not a {kind.__name__}")
+        raise ConfigError(f"{where}{value!r} is not a {kind.__name__} ({members})")
     try:
         return kind(value).name
     except ValueError:
-        raise ConfigError(f"{value!r} is not a {kind.__name__}") from None
+        raise ConfigError(f"{where}{value!r} is not a {kind.__name__} ({members})") from None
 
 
 # Settings given by a getter under ViZDoom's name, read from the config.
@@ -211,7 +214,7 @@ _GETTERS = {
     "get_armor_reward": "armor_reward",
     "get_screen_width": "screen_width",
     "get_screen_height": "screen_height",
-    "get_audio_sampling_rate": "audio_sampling_rate",
+    "get_audio_sampling_rate": "audio_sampling_rate",  # in hertz, as ViZDoom 1.3.2 gives it
     "get_audio_buffer_size": "audio_buffer_size",
     "get_notifications_buffer_size": "notifications_buffer_size",
     "is_depth_buffer_enabled": "depth_buffer_enabled",
@@ -387,7 +390,8 @@ class DoomGame:
         self._apply(f"automap_mode = {_enum_name(AutomapMode, mode)}", "set_automap_mode")
 
     def set_audio_sampling_rate(self, rate: SamplingRate) -> None:
-        self._apply(f"audio_sampling_rate = {_enum_name(SamplingRate, rate)}", "set_audio_sampling_rate")
+        name = _enum_name(SamplingRate, rate, "set_audio_sampling_rate")
+        self._apply(f"audio_sampling_rate = {name}", "set_audio_sampling_rate")
 
     def set_available_buttons(self, buttons: Sequence[Button]) -> None:
         names = " ".join(_enum_name(Button, b) for b in buttons)
@@ -496,6 +500,8 @@ class DoomGame:
                 "automap_buffer_enabled",
                 "depth_buffer_enabled",
                 "labels_buffer_enabled",
+                "audio_buffer_enabled",
+                "notifications_buffer_enabled",
             )
         }
         self._action = [0.0] * len(opened["available_buttons"])
@@ -567,6 +573,8 @@ class DoomGame:
         variables = game.game_variables() if outputs["available_game_variables"] else None
         automap = game.automap() if outputs["automap_buffer_enabled"] else None
         depth = game.depth() if outputs["depth_buffer_enabled"] else None
+        audio = game.audio() if outputs["audio_buffer_enabled"] else None
+        notifications = game.notifications() if outputs["notifications_buffer_enabled"] else None
         labels_buffer, labels = None, []
         if outputs["labels_buffer_enabled"]:
             labels_buffer, objects = game.labels()
@@ -580,6 +588,8 @@ class DoomGame:
             labels_buffer=labels_buffer,
             labels=labels,
             automap_buffer=automap,
+            audio_buffer=audio,
+            notifications_buffer=notifications,
         )
 
     def is_episode_finished(self) -> bool:

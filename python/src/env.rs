@@ -291,6 +291,28 @@ impl Env {
         self.formatted(fb)
     }
 
+    /// The audio buffer: (frames, 2) int16, the sound effects of the
+    /// last `audio_buffer_size` tics at the `.cfg`'s rate, oldest first.
+    pub fn audio(&self) -> PyResult<(Vec<usize>, Vec<i16>)> {
+        let buffer = self.episode()?.buffers().and_then(|b| b.audio());
+        let Some(audio) = buffer else {
+            return Err(PyRuntimeError::new_err("the audio buffer is off: set_audio_buffer_enabled(True) first"));
+        };
+        Ok((vec![audio.frames(), 2], audio.samples()))
+    }
+
+    /// The notifications buffer: the messages of the last
+    /// `notifications_buffer_size` tics, each followed by a newline.
+    pub fn notifications(&self) -> PyResult<String> {
+        let buffer = self.episode()?.buffers().and_then(|b| b.notifications());
+        let Some(notifications) = buffer else {
+            return Err(PyRuntimeError::new_err(
+                "the notifications buffer is off: set_notifications_buffer_enabled(True) first",
+            ));
+        };
+        Ok(notifications.text())
+    }
+
     fn formatted(&self, fb: &sightline::Framebuffer) -> PyResult<(Vec<usize>, Vec<u8>)> {
         let format = self.config().screen_format;
         let mut bytes = Vec::new();

@@ -302,6 +302,21 @@ impl Game {
         array(py, &shape, bytes)
     }
 
+    /// The audio buffer (frames, 2; int16 stereo): the sound effects of
+    /// the last `audio_buffer_size` tics at `audio_sampling_rate`, oldest
+    /// first (tics x rate / 35 frames).
+    fn audio<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<i16>>> {
+        let (shape, samples) = self.env.audio()?;
+        array(py, &shape, samples)
+    }
+
+    /// The notifications buffer: the messages the player was shown in
+    /// the last `notifications_buffer_size` tics (pickups, keys, locked
+    /// doors, secrets, the scripts' prints), each followed by a newline.
+    fn notifications(&self) -> PyResult<String> {
+        self.env.notifications()
+    }
+
     /// The available buttons' names, in order.
     fn buttons(&self) -> Vec<String> {
         self.env.config().available_buttons.iter().map(|b| b.name()).collect()
