@@ -42,6 +42,9 @@ __all__ = [
     "GameState",
     "GameVariable",
     "Label",
+    "Line",
+    "Object",
+    "Sector",
     "Mode",
     "NotSupportedError",
     "SamplingRate",
@@ -148,6 +151,51 @@ class Label:
     object_velocity_y: float = 0.0
     object_velocity_z: float = 0.0
     object_category: str = ""
+
+
+@dataclass
+class Object:
+    """A body in the level (ViZDoom's ``Object``): ``id`` is the body's,
+    as a :class:`Label`'s ``object_id``; ``name`` ZDoom's class name
+    (``DoomPlayer``, ``Cacodemon``); velocities in map units a tic. Pitch
+    and roll are 0 and the category is empty (not given)."""
+
+    id: int
+    name: str
+    position_x: float = 0.0
+    position_y: float = 0.0
+    position_z: float = 0.0
+    angle: float = 0.0
+    pitch: float = 0.0
+    roll: float = 0.0
+    velocity_x: float = 0.0
+    velocity_y: float = 0.0
+    velocity_z: float = 0.0
+    sector_id: int = 0
+    category: str = ""
+
+
+@dataclass
+class Line:
+    """A line of a sector (ViZDoom's ``Line``): blocking when one-sided or
+    flagged to block."""
+
+    x1: float
+    y1: float
+    x2: float
+    y2: float
+    is_blocking: bool
+
+
+@dataclass
+class Sector:
+    """A sector (ViZDoom's ``Sector``): its heights now and its lines, a
+    two-sided line in both its sectors."""
+
+    id: int
+    floor_height: float
+    ceiling_height: float
+    lines: list = field(default_factory=list)
 
 
 @dataclass
@@ -502,6 +550,8 @@ class DoomGame:
                 "labels_buffer_enabled",
                 "audio_buffer_enabled",
                 "notifications_buffer_enabled",
+                "objects_info_enabled",
+                "sectors_info_enabled",
             )
         }
         self._action = [0.0] * len(opened["available_buttons"])
@@ -575,10 +625,14 @@ class DoomGame:
         depth = game.depth() if outputs["depth_buffer_enabled"] else None
         audio = game.audio() if outputs["audio_buffer_enabled"] else None
         notifications = game.notifications() if outputs["notifications_buffer_enabled"] else None
+        objects = [Object(**o) for o in game.objects()] if outputs["objects_info_enabled"] else None
+        sectors = None
+        if outputs["sectors_info_enabled"]:
+            sectors = [Sector(**{**s, "lines": [Line(**l) for l in s["lines"]]}) for s in game.sectors()]
         labels_buffer, labels = None, []
         if outputs["labels_buffer_enabled"]:
-            labels_buffer, objects = game.labels()
-            labels = [Label(**o) for o in objects]
+            labels_buffer, seen = game.labels()
+            labels = [Label(**o) for o in seen]
         return GameState(
             number=self._state_number,
             tic=game.episode_time(),
@@ -590,6 +644,8 @@ class DoomGame:
             automap_buffer=automap,
             audio_buffer=audio,
             notifications_buffer=notifications,
+            objects=objects,
+            sectors=sectors,
         )
 
     def is_episode_finished(self) -> bool:

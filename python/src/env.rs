@@ -8,7 +8,7 @@ use std::sync::Arc;
 use pyo3::exceptions::{PyFileNotFoundError, PyRuntimeError, PyValueError};
 use pyo3::PyResult;
 use sightline::scenario::observe::{convert, convert_into, shape, Observer};
-use sightline::scenario::{variables, Episode, Expert, GameVariable, Scenario, ScenarioConfig};
+use sightline::scenario::{variables, world, Episode, Expert, GameVariable, Scenario, ScenarioConfig};
 
 /// A scenario opened once, shared by every game of it.
 pub struct Opened {
@@ -311,6 +311,22 @@ impl Env {
             ));
         };
         Ok(notifications.text())
+    }
+
+    /// Every body in the level (ViZDoom's `objects`).
+    pub fn objects(&self) -> PyResult<Vec<world::Object>> {
+        if !self.config().outputs.objects_info {
+            return Err(PyRuntimeError::new_err("objects info is off: set_objects_info_enabled(True) first"));
+        }
+        Ok(world::objects(&self.episode()?.game))
+    }
+
+    /// Every sector with its heights and lines (ViZDoom's `sectors`).
+    pub fn sectors(&self) -> PyResult<Vec<world::Sector>> {
+        if !self.config().outputs.sectors_info {
+            return Err(PyRuntimeError::new_err("sectors info is off: set_sectors_info_enabled(True) first"));
+        }
+        Ok(world::sectors(&self.episode()?.game))
     }
 
     fn formatted(&self, fb: &sightline::Framebuffer) -> PyResult<(Vec<usize>, Vec<u8>)> {

@@ -317,6 +317,64 @@ impl Game {
         self.env.notifications()
     }
 
+    /// Every body in the level, each a dictionary of ViZDoom's `Object`
+    /// fields (`id` is the body's, as a label's `object_id`; pitch and roll
+    /// are 0, the category empty).
+    fn objects<'py>(&self, py: Python<'py>) -> PyResult<Vec<Bound<'py, PyDict>>> {
+        let objects = self.env.objects()?;
+        objects
+            .into_iter()
+            .map(|o| {
+                let d = PyDict::new(py);
+                d.set_item("id", o.id)?;
+                d.set_item("name", o.name)?;
+                d.set_item("category", "")?;
+                for (k, v) in ["position_x", "position_y", "position_z"].iter().zip(o.position) {
+                    d.set_item(*k, v)?;
+                }
+                d.set_item("angle", o.angle)?;
+                d.set_item("pitch", 0.0)?;
+                d.set_item("roll", 0.0)?;
+                for (k, v) in ["velocity_x", "velocity_y", "velocity_z"].iter().zip(o.velocity) {
+                    d.set_item(*k, v)?;
+                }
+                d.set_item("sector_id", o.sector)?;
+                Ok(d)
+            })
+            .collect()
+    }
+
+    /// Every sector, each a dictionary of ViZDoom's `Sector` fields with
+    /// its `lines` as dictionaries of `Line`'s (`x1`, `y1`, `x2`, `y2`,
+    /// `is_blocking`: one-sided or flagged to block).
+    fn sectors<'py>(&self, py: Python<'py>) -> PyResult<Vec<Bound<'py, PyDict>>> {
+        let sectors = self.env.sectors()?;
+        sectors
+            .into_iter()
+            .map(|s| {
+                let d = PyDict::new(py);
+                d.set_item("id", s.id)?;
+                d.set_item("floor_height", s.floor)?;
+                d.set_item("ceiling_height", s.ceiling)?;
+                let lines = s
+                    .lines
+                    .iter()
+                    .map(|l| {
+                        let line = PyDict::new(py);
+                        line.set_item("x1", l.from[0])?;
+                        line.set_item("y1", l.from[1])?;
+                        line.set_item("x2", l.to[0])?;
+                        line.set_item("y2", l.to[1])?;
+                        line.set_item("is_blocking", l.blocking)?;
+                        Ok(line)
+                    })
+                    .collect::<PyResult<Vec<_>>>()?;
+                d.set_item("lines", lines)?;
+                Ok(d)
+            })
+            .collect()
+    }
+
     /// The available buttons' names, in order.
     fn buttons(&self) -> Vec<String> {
         self.env.config().available_buttons.iter().map(|b| b.name()).collect()

@@ -176,3 +176,4 @@ def test_gym_observes_the_step_s_audio_and_notifications():
         heard = max(heard, int(np.abs(obs["audio"].astype(np.int32)).max()))
     assert heard > 8000
     env.close()
+

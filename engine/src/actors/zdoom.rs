@@ -34,11 +34,14 @@ enum Ours {
 
 use Ours::{Name, Number};
 
-/// ZDoom's class names and where each is in our table.
+/// ZDoom's class names and where each is in our table. Lookups ignore
+/// case; the spelling is what ViZDoom 1.3.2 names its objects
+/// (`Zombieman`, where ZDoom's DECORATE wrote `ZombieMan`), for
+/// `scenario::world`.
 const CLASSES: &[(&str, Ours)] = &[
     // The player, monsters and the boss brain's parts.
     ("DoomPlayer", Name("player")),
-    ("ZombieMan", Number(3004)),
+    ("Zombieman", Number(3004)),
     ("ShotgunGuy", Number(9)),
     ("ChaingunGuy", Number(65)),
     ("DoomImp", Number(3001)),

@@ -4,7 +4,8 @@
 //! rendering switches, typed in `names`) for whoever runs it; `run` plays
 //! episodes of it, and `expert` answers what the autopilot would press in
 //! one (for imitation learning); `buffers` keeps the audio and
-//! notifications of an episode's last tics.
+//! notifications of an episode's last tics, `world` lists its bodies and
+//! sectors.
 
 pub mod buffers;
 mod cfg;
@@ -18,6 +19,7 @@ pub mod observe;
 pub mod run;
 pub mod scripts;
 pub mod variables;
+pub mod world;
 
 pub use cfg::{key_names, CfgError, Problem, KEY_COUNT};
 pub use config::{AutomapOptions, Outputs, RenderFlags, Rewards, ScenarioConfig};
