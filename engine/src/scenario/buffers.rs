@@ -104,12 +104,19 @@ impl AudioBuffer {
 
     fn tic(&mut self, game: &SimGame) {
         let cues = self.sounds.effects(game);
-        self.scratch.clear();
-        // No music is applied, so nothing can fail.
-        let _ = self.audio.render_tick(&cues, &mut self.scratch);
         let len = self.samples.len();
-        // Mixed in -1..1 (clipped there), as Doom's mixer fills its 16-bit buffer.
-        self.samples.extend(self.scratch.iter().map(|&v| (v * 32767.0).round() as i16));
+        if cues.starts.is_empty() && self.audio.mixer.busy() == 0 {
+            // Nothing sounds and nothing starts: the mix would be zeros
+            // (and the listener, all `apply` would change, is set again
+            // before the next sound starts). Most tics are silent.
+            self.samples.extend(std::iter::repeat_n(0, 2 * self.audio.frames_per_tick()));
+        } else {
+            self.scratch.clear();
+            // No music is applied, so nothing can fail.
+            let _ = self.audio.render_tick(&cues, &mut self.scratch);
+            // Mixed in -1..1 (clipped there), as Doom's mixer fills its 16-bit buffer.
+            self.samples.extend(self.scratch.iter().map(|&v| (v * 32767.0).round() as i16));
+        }
         let extra = self.samples.len() - len;
         self.samples.drain(..extra);
     }
