@@ -6,7 +6,10 @@
 //!
 //! Screen positions are Doom's 320x200, scaled by the frame's height and
 //! centred across its width (a wide frame has margins beside the weapon,
-//! not a stretched one).
+//! not a stretched one). The status bar and the HUD also fit the width (a
+//! narrow frame such as 320x240 shows them whole, above an empty band);
+//! the weapon without the status bar always takes the height's scale, as
+//! ZDoom draws it, its sides cut off on a narrow frame ([`view_scale`]).
 
 pub mod automap;
 pub mod status;
@@ -48,4 +51,15 @@ pub fn scale(fb: &Framebuffer) -> (f64, f64) {
     let s = fb.height as f64 / 200.0;
     let margin = ((fb.width as f64 - 320.0 * s) / 2.0).max(0.0);
     (s.min(fb.width as f64 / 320.0).max(1e-9), margin)
+}
+
+/// The scale of the full-screen view's pictures (the weapon with no status
+/// bar): the frame's height over 200 whatever its width, and the margin
+/// that centres the 320 units, negative on a frame narrower than 16:10
+/// (ZDoom's placement of the player's sprites, which ViZDoom's screens
+/// show: at 320x240 the weapon is 1.2 times Doom's size, its bottom on the
+/// frame's bottom).
+pub fn view_scale(fb: &Framebuffer) -> (f64, f64) {
+    let s = (fb.height as f64 / 200.0).max(1e-9);
+    (s, (fb.width as f64 - 320.0 * s) / 2.0)
 }

@@ -6,7 +6,7 @@
 //!
 //! [`TextureKind::Screen`]: crate::texture::TextureKind::Screen
 
-use super::scale;
+use super::{scale, view_scale};
 use crate::actors::ActorTable;
 use crate::framebuffer::Framebuffer;
 use crate::level::Level;
@@ -22,22 +22,29 @@ pub const STATUS_LIFT: f64 = 16.0;
 pub fn draw(fb: &mut Framebuffer, level: &Level, table: &ActorTable, player: &Player, status_bar: bool) {
     let light = level.compiled.map.sectors.get(player.sector).map_or(255, |s| i32::from(s.light));
     let lit = ((light + 16 * player.extra_light) as f32 / 255.0).clamp(0.2, 1.0);
-    let lift = if status_bar { STATUS_LIFT } else { 0.0 };
+    let (lift, (s, margin)) = if status_bar { (STATUS_LIFT, scale(fb)) } else { (0.0, view_scale(fb)) };
     for p in &player.psprites {
         let Some(state) = p.state else { continue };
-        let s = table.state(state);
-        let slot = Materials::view_index(s.sprite, s.frame);
+        let st = table.state(state);
+        let slot = Materials::view_index(st.sprite, st.frame);
         let Some(id) = level.materials.screen_views.get(slot).copied().flatten() else { continue };
         let texture = level.materials.textures.get(id);
-        let shade = if s.bright { 1.0 } else { lit };
-        blit(fb, texture, p.sx - 1.0, p.sy - 32.0 - lift, shade);
+        let shade = if st.bright { 1.0 } else { lit };
+        blit(fb, texture, (p.sx - 1.0, p.sy - 32.0 - lift), (s, margin), shade);
     }
 }
 
 /// Draws a screen picture with its top-left at (`x`, `y`) in 320x200
-/// units, its opaque texels darkened by `shade`.
-fn blit(fb: &mut Framebuffer, texture: &crate::texture::Texture, x: f64, y: f64, shade: f32) {
-    let (s, margin) = scale(fb);
+/// units, `s` pixels a unit from `margin` pixels left of the frame (a
+/// negative margin: left of its edge), its opaque texels darkened by
+/// `shade`.
+fn blit(
+    fb: &mut Framebuffer,
+    texture: &crate::texture::Texture,
+    (x, y): (f64, f64),
+    (s, margin): (f64, f64),
+    shade: f32,
+) {
     let x0 = margin + x * s;
     let y0 = y * s;
     // Only the screen pixels over the texels that show: texel u covers
@@ -77,8 +84,7 @@ mod tests {
     use crate::texture::Texture;
 
     /// Every screen pixel looked up on its own: the texel under its centre.
-    fn reference(fb: &mut Framebuffer, texture: &Texture, x: f64, y: f64) {
-        let (s, margin) = scale(fb);
+    fn reference(fb: &mut Framebuffer, texture: &Texture, x: f64, y: f64, (s, margin): (f64, f64)) {
         for py in 0..fb.height {
             for px in 0..fb.width {
                 let u = ((px as f64 + 0.5 - (margin + x * s)) / s).floor();
@@ -103,19 +109,39 @@ mod tests {
             [(u % 256) as u8, (v % 256) as u8, 9, if shows { 255 } else { 0 }]
         });
         assert_eq!(picture.shown, [100, 170, 120, 200]);
-        for (w, h) in [(160, 120), (320, 200), (333, 211), (640, 480), (97, 61)] {
+        for (w, h) in [(160, 120), (320, 200), (333, 211), (640, 480), (97, 61), (400, 225)] {
             for (x, y) in [(0.0, 0.0), (-1.0, -32.0), (13.7, 5.25), (-120.0, 40.0), (250.0, -150.0)] {
-                let mut fast = Framebuffer::new(w, h);
-                let mut slow = Framebuffer::new(w, h);
-                blit(&mut fast, &picture, x, y, 1.0);
-                reference(&mut slow, &picture, x, y);
-                assert!(fast.pixels == slow.pixels, "{w}x{h} at ({x}, {y})");
+                for scaling in [scale, view_scale] {
+                    let frame = Framebuffer::new(w, h);
+                    let (mut fast, mut slow) = (frame.clone(), frame.clone());
+                    blit(&mut fast, &picture, (x, y), scaling(&frame), 1.0);
+                    reference(&mut slow, &picture, x, y, scaling(&frame));
+                    assert!(fast.pixels == slow.pixels, "{w}x{h} at ({x}, {y}), {:?}", scaling(&frame));
+                }
             }
         }
         let clear = Texture::from_fn(4, 4, |_, _| [1, 2, 3, 0]);
         assert_eq!(clear.shown, [0, 0, 0, 0]);
         let mut fb = Framebuffer::new(160, 120);
-        blit(&mut fb, &clear, 0.0, 0.0, 1.0);
+        let scaling = scale(&fb);
+        blit(&mut fb, &clear, (0.0, 0.0), scaling, 1.0);
         assert!(fb.pixels.iter().all(|&p| p == Framebuffer::new(160, 120).pixels[0]));
+    }
+
+    #[test]
+    fn without_the_status_bar_the_weapon_takes_the_height_s_scale_as_zdoom_draws_it() {
+        // ViZDoom 1.3.2 with its HUD off puts Freedoom's pistol (top offset
+        // -97) at rows 129-199 of 320x200, 155-239 of 320x240, 77-119 of
+        // 160x120 and 145-224 of 400x225: Doom's 320x200 place times the
+        // height over 200, centred across the width.
+        for ((w, h), top) in [((320, 200), 129), ((320, 240), 155), ((160, 120), 77), ((400, 225), 145)] {
+            let frame = Framebuffer::new(w, h);
+            let (s, margin) = view_scale(&frame);
+            assert_eq!((129.0 * s).round(), f64::from(top), "{w}x{h}");
+            assert!((margin + 160.0 * s - w as f64 / 2.0).abs() < 1e-9, "{w}x{h}: centred");
+        }
+        // With the status bar the screen keeps fitting the width: 320x240
+        // draws Doom's 320x200 at scale 1.
+        assert_eq!(scale(&Framebuffer::new(320, 240)), (1.0, 0.0));
     }
 }
