@@ -129,9 +129,10 @@ impl ColumnWriter<'_> {
         let done = sse2::four_columns(self.canvas, self.height, start, rows);
         #[cfg(not(target_arch = "x86_64"))]
         let done = 0;
-        for j in done..n {
+        let pixels = rows[0].iter().zip(rows[1]).zip(rows[2]).zip(rows[3]);
+        for (j, (((&a, &b), &c), &d)) in pixels.enumerate().skip(done) {
             let at = start + j * self.height;
-            self.canvas[at..at + 4].copy_from_slice(&[rows[0][j], rows[1][j], rows[2][j], rows[3][j]]);
+            self.canvas[at..at + 4].copy_from_slice(&[a, b, c, d]);
         }
         for k in 0..4 {
             self.count_row(start + k, n);
