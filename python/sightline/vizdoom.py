@@ -586,7 +586,18 @@ class DoomGame:
         self._state_number = 0
 
     def _as_action(self, action: Any) -> list:
+        # A flat list or tuple of numbers (what most agents pass) is read
+        # directly: through numpy it took about 7 us a step, a tenth of a
+        # step at 160x120. Anything else (arrays, nested lists) goes through
+        # numpy as before.
+        if type(action) is list or type(action) is tuple:
+            try:
+                return [float(v) for v in action]
+            except (TypeError, ValueError):
+                pass
         try:
+            if isinstance(action, np.ndarray):
+                return action.astype(np.float64, copy=False).reshape(-1).tolist()
             values = [float(v) for v in np.asarray(action, dtype=np.float64).reshape(-1)]
         except (TypeError, ValueError):
             raise ValueError(f"an action is a sequence of numbers, one per available button, not {action!r}") from None

@@ -6,13 +6,14 @@
 //!   engine's own `.cfg` reader (so a setter and a file line are checked
 //!   alike);
 //! - [`Game`]: one scenario game, stepped with the interpreter lock released;
-//! - [`Games`]: many games stepped together on the engine's threads (the
-//!   vector environment);
+//! - [`Games`]: many games stepped together on the caller's and helper
+//!   threads (the vector environment);
 //! - [`multi::MultiGame`]: several agents in one game (PettingZoo).
 //!
 //! Every buffer reaches Python as a numpy array that owns the engine's
 //! bytes (no copy after the engine writes them).
 
+mod crew;
 mod env;
 mod made;
 mod multi;
@@ -22,7 +23,6 @@ use numpy::{IntoPyArray, PyArrayDyn, PyReadonlyArray2};
 use pyo3::exceptions::{PyFileNotFoundError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use rayon::prelude::*;
 use sightline::scenario::{GameVariable, ScenarioConfig};
 
 use env::{Env, Opened};
@@ -381,26 +381,62 @@ impl Game {
     }
 }
 
-/// Many games of one scenario, stepped together on the engine's threads.
+/// Many games of one scenario, stepped together by the calling thread and
+/// helper threads ([`crew`]).
 #[pyclass(module = "sightline._native")]
 struct Games {
-    envs: Vec<Env>,
-    pool: rayon::ThreadPool,
+    crew: crew::Crew,
 }
 
 impl Games {
-    /// The actions' rows, one per game, each checked.
-    fn rows(&self, actions: &PyReadonlyArray2<'_, f64>) -> PyResult<Vec<Vec<f64>>> {
+    /// `envs` stepped on `threads` threads (0: one per core).
+    pub(crate) fn of(envs: Vec<Env>, threads: usize) -> PyResult<Games> {
+        let crew = crew::Crew::new(envs, threads)
+            .map_err(|e| PyRuntimeError::new_err(format!("cannot start the games' threads: {e}")))?;
+        Ok(Games { crew })
+    }
+
+    /// Checks the actions' rows, one per game, and gives each game its row.
+    fn set_actions(&self, actions: &PyReadonlyArray2<'_, f64>) -> PyResult<()> {
         let actions = actions.as_array();
-        if actions.nrows() != self.envs.len() {
-            let (rows, n) = (actions.nrows(), self.envs.len());
+        if actions.nrows() != self.crew.len() {
+            let (rows, n) = (actions.nrows(), self.crew.len());
             return Err(PyValueError::new_err(format!("actions has {rows} rows for {n} games")));
         }
-        let rows: Vec<Vec<f64>> = actions.rows().into_iter().map(|r| r.to_vec()).collect();
-        for (env, row) in self.envs.iter().zip(&rows) {
-            env.check_action(row)?;
+        for (mut slot, row) in self.crew.slots().zip(actions.rows()) {
+            slot.action.clear();
+            slot.action.extend(row.iter());
+            slot.env.check_action(&slot.action)?;
         }
-        Ok(rows)
+        Ok(())
+    }
+
+    /// Plays `tics` tics in every game (drawing each screen too if
+    /// `screens`): the rewards and whether each episode has ended.
+    fn play(&self, py: Python<'_>, tics: u32, screens: bool) -> PyResult<(Vec<f64>, Vec<bool>)> {
+        let crew = &self.crew;
+        py.detach(|| crew.run(crew::Task::Step { tics, screen: screens }));
+        let (mut rewards, mut done) = (Vec::with_capacity(crew.len()), Vec::with_capacity(crew.len()));
+        for mut slot in crew.slots() {
+            std::mem::replace(&mut slot.result, Ok(()))?;
+            rewards.push(slot.reward);
+            done.push(slot.env.finished());
+        }
+        Ok((rewards, done))
+    }
+
+    /// Every game's last screen, stacked on a first axis.
+    fn stacked<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<u8>>> {
+        let one = self.crew.slot(0).env.screen_shape();
+        let size: usize = one.iter().product();
+        let mut bytes = Vec::with_capacity(size * self.crew.len());
+        for mut slot in self.crew.slots() {
+            std::mem::replace(&mut slot.result, Ok(()))?;
+            bytes.extend_from_slice(&slot.screen);
+        }
+        let mut shape = vec![self.crew.len()];
+        shape.extend(one);
+        array(py, &shape, bytes)
     }
 }
 
@@ -416,22 +452,21 @@ impl Games {
         }
         let config = config.inner.clone();
         let opened = std::sync::Arc::new(py.detach(|| Opened::open(&config, iwad.as_deref()))?);
-        let pool = rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .build()
-            .map_err(|e| PyRuntimeError::new_err(format!("cannot start the games' threads: {e}")))?;
-        Ok(Games { envs: (0..count).map(|_| Env::new(opened.clone(), 1)).collect(), pool })
+        Games::of((0..count).map(|_| Env::new(opened.clone(), 1)).collect(), threads)
     }
 
     fn __len__(&self) -> usize {
-        self.envs.len()
+        self.crew.len()
     }
 
     /// Starts a new episode in game `i` seeded by `seed`.
     fn new_episode(&mut self, py: Python<'_>, i: usize, seed: u64) -> PyResult<()> {
-        let count = self.envs.len();
-        let env = self.envs.get_mut(i).ok_or_else(|| PyValueError::new_err(format!("no game {i} of {count}")))?;
-        py.detach(|| env.new_episode(seed))
+        let count = self.crew.len();
+        if i >= count {
+            return Err(PyValueError::new_err(format!("no game {i} of {count}")));
+        }
+        let crew = &self.crew;
+        py.detach(|| crew.slot(i).env.new_episode(seed))
     }
 
     /// Plays `tics` tics in every game, game `i` holding row `i` of
@@ -444,13 +479,8 @@ impl Games {
         actions: PyReadonlyArray2<'py, f64>,
         tics: u32,
     ) -> PyResult<(Bound<'py, PyArrayDyn<f64>>, Bound<'py, PyArrayDyn<bool>>)> {
-        let rows = self.rows(&actions)?;
-        let (envs, pool) = (&mut self.envs, &self.pool);
-        let rewards: Vec<PyResult<f64>> = py.detach(|| {
-            pool.install(|| envs.par_iter_mut().zip(rows.par_iter()).map(|(env, row)| env.step(row, tics)).collect())
-        });
-        let rewards = rewards.into_iter().collect::<PyResult<Vec<f64>>>()?;
-        let done: Vec<bool> = self.envs.iter().map(Env::finished).collect();
+        self.set_actions(&actions)?;
+        let (rewards, done) = self.play(py, tics, false)?;
         Ok((array(py, &[rewards.len()], rewards)?, array(py, &[done.len()], done)?))
     }
 
@@ -465,52 +495,23 @@ impl Games {
         actions: PyReadonlyArray2<'py, f64>,
         tics: u32,
     ) -> PyResult<(Bound<'py, PyArrayDyn<f64>>, Bound<'py, PyArrayDyn<bool>>, Bound<'py, PyArrayDyn<u8>>)> {
-        let rows = self.rows(&actions)?;
-        let one = self.envs[0].screen_shape();
-        let size: usize = one.iter().product();
-        let mut bytes = vec![0u8; size * self.envs.len()];
-        let (envs, pool) = (&mut self.envs, &self.pool);
-        let rewards: Vec<PyResult<f64>> = py.detach(|| {
-            pool.install(|| {
-                envs.par_iter_mut()
-                    .zip(rows.par_iter())
-                    .zip(bytes.par_chunks_mut(size))
-                    .map(|((env, row), out)| {
-                        let reward = env.step(row, tics)?;
-                        env.screen_into(out)?;
-                        Ok(reward)
-                    })
-                    .collect()
-            })
-        });
-        let rewards = rewards.into_iter().collect::<PyResult<Vec<f64>>>()?;
-        let done: Vec<bool> = self.envs.iter().map(Env::finished).collect();
-        let mut shape = vec![self.envs.len()];
-        shape.extend(one);
-        Ok((array(py, &[rewards.len()], rewards)?, array(py, &[done.len()], done)?, array(py, &shape, bytes)?))
+        self.set_actions(&actions)?;
+        let (rewards, done) = self.play(py, tics, true)?;
+        let screens = self.stacked(py)?;
+        Ok((array(py, &[rewards.len()], rewards)?, array(py, &[done.len()], done)?, screens))
     }
 
-    /// Every game's screen, stacked on a first axis (each game draws into
-    /// its part of one array, on the games' threads).
+    /// Every game's screen, stacked on a first axis (each game drawn on
+    /// the games' threads).
     fn screens<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<u8>>> {
-        let one = self.envs[0].screen_shape();
-        let size: usize = one.iter().product();
-        let mut bytes = vec![0u8; size * self.envs.len()];
-        let (envs, pool) = (&mut self.envs, &self.pool);
-        let drawn: PyResult<()> = py.detach(|| {
-            pool.install(|| {
-                envs.par_iter_mut().zip(bytes.par_chunks_mut(size)).try_for_each(|(env, out)| env.screen_into(out))
-            })
-        });
-        drawn?;
-        let mut shape = vec![self.envs.len()];
-        shape.extend(one);
-        array(py, &shape, bytes)
+        let crew = &self.crew;
+        py.detach(|| crew.run(crew::Task::Screen));
+        self.stacked(py)
     }
 
     /// Every game's available game variables, one row each.
     fn game_variables<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        let rows: Vec<Vec<f64>> = self.envs.iter().map(Env::variables).collect();
+        let rows: Vec<Vec<f64>> = self.crew.slots().map(|s| s.env.variables()).collect();
         let width = rows[0].len();
         array(py, &[rows.len(), width], rows.concat())
     }
@@ -518,22 +519,25 @@ impl Games {
     /// Every game's expert action (`Game.expert_action`), one row each,
     /// answered on the games' threads.
     fn expert_actions<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        let (envs, pool) = (&mut self.envs, &self.pool);
-        let rows: Vec<PyResult<Vec<f64>>> =
-            py.detach(|| pool.install(|| envs.par_iter_mut().map(Env::expert_action).collect()));
-        let rows = rows.into_iter().collect::<PyResult<Vec<Vec<f64>>>>()?;
-        let width = self.envs[0].config().available_buttons.len();
-        array(py, &[rows.len(), width], rows.concat())
+        let crew = &self.crew;
+        py.detach(|| crew.run(crew::Task::Expert));
+        let width = self.crew.slot(0).env.config().available_buttons.len();
+        let mut rows = Vec::with_capacity(width * self.crew.len());
+        for mut slot in self.crew.slots() {
+            std::mem::replace(&mut slot.result, Ok(()))?;
+            rows.extend_from_slice(&slot.expert);
+        }
+        array(py, &[self.crew.len(), width], rows)
     }
 
     /// Every game's total reward this episode.
     fn total_rewards(&self) -> Vec<f64> {
-        self.envs.iter().map(Env::total_reward).collect()
+        self.crew.slots().map(|s| s.env.total_reward()).collect()
     }
 
     /// How each game's episode ended ("exit", "death", "timeout") or None.
     fn ends(&self) -> Vec<Option<&'static str>> {
-        self.envs.iter().map(Env::end).collect()
+        self.crew.slots().map(|s| s.env.end()).collect()
     }
 }
 

@@ -100,11 +100,7 @@ impl MadeScenario {
         let settings = config.inner.clone();
         let scenario = py.detach(|| self.made.scenario(&settings)).map_err(py_error)?;
         let opened = Arc::new(Opened::of(scenario));
-        let pool = rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .build()
-            .map_err(|e| PyRuntimeError::new_err(format!("cannot start the games' threads: {e}")))?;
-        Ok(Games { envs: (0..count).map(|_| Env::new(opened.clone(), 1)).collect(), pool })
+        Games::of((0..count).map(|_| Env::new(opened.clone(), 1)).collect(), threads)
     }
 
     /// Writes the specification's rewards and timeout into `config`

@@ -110,36 +110,60 @@ fn tint_all(tint: Tint, pixels: &mut [u32]) {
 }
 
 #[cfg(target_arch = "x86_64")]
-mod lanes16 {
+pub(crate) mod lanes16 {
     use super::Tint;
     use std::arch::x86_64::{
         __m256i, _mm256_add_epi32, _mm256_and_si256, _mm256_mullo_epi16, _mm256_or_si256, _mm256_set1_epi16,
         _mm256_set1_epi32, _mm256_srli_epi16,
     };
 
-    /// [`Tint::apply`] to eight pixels at a time in 16-bit lanes, each lane
-    /// one channel beside its neighbour: `c * scale` (at most 255 * 256)
-    /// fits a lane, so one 16-bit multiply does what the 32-bit form does in
-    /// two (each of two instructions) and the results are the same. Leaves
-    /// fewer than eight pixels; returns how many it did.
+    /// A [`Tint`] spread over eight pixels' lanes, for loops that light
+    /// texels while they hold them (the spans' texel fetch).
+    #[derive(Clone, Copy)]
+    pub(crate) struct Eight {
+        scale: __m256i,
+        fog: __m256i,
+        low: __m256i,
+        high: __m256i,
+        alpha: __m256i,
+    }
+
+    impl Eight {
+        #[target_feature(enable = "avx2")]
+        pub(crate) fn new(tint: Tint) -> Eight {
+            Eight {
+                scale: _mm256_set1_epi16(tint.scale as i16),
+                fog: _mm256_set1_epi32(tint.fog as i32),
+                low: _mm256_set1_epi16(0x00ff),
+                high: _mm256_set1_epi16(0xff00_u16 as i16),
+                alpha: _mm256_set1_epi32(0xff00_0000_u32 as i32),
+            }
+        }
+
+        /// [`Tint::apply`] to eight pixels in 16-bit lanes, each lane one
+        /// channel beside its neighbour: `c * scale` (at most 255 * 256)
+        /// fits a lane, so one 16-bit multiply does what the 32-bit form
+        /// does in two (each of two instructions) and the results are the
+        /// same.
+        #[target_feature(enable = "avx2")]
+        #[inline]
+        pub(crate) fn apply(&self, c: __m256i) -> __m256i {
+            // Red and blue, the low byte of each lane, scaled and shifted back.
+            let rb = _mm256_srli_epi16::<8>(_mm256_mullo_epi16(_mm256_and_si256(c, self.low), self.scale));
+            // Green (and alpha, replaced below) scaled into the high byte.
+            let ga = _mm256_and_si256(_mm256_mullo_epi16(_mm256_srli_epi16::<8>(c), self.scale), self.high);
+            _mm256_or_si256(_mm256_add_epi32(_mm256_or_si256(rb, ga), self.fog), self.alpha)
+        }
+    }
+
+    /// [`Tint::apply`] to eight pixels at a time ([`Eight::apply`]).
+    /// Leaves fewer than eight pixels; returns how many it did.
     #[target_feature(enable = "avx2")]
     pub(super) fn tint_eights(tint: Tint, pixels: &mut [u32]) -> usize {
-        let scale = _mm256_set1_epi16(tint.scale as i16);
-        let fog = _mm256_set1_epi32(tint.fog as i32);
-        let (low, high, alpha) = (
-            _mm256_set1_epi16(0x00ff),
-            _mm256_set1_epi16(0xff00_u16 as i16),
-            _mm256_set1_epi32(0xff00_0000_u32 as i32),
-        );
+        let tint = Eight::new(tint);
         let (eights, _) = pixels.as_chunks_mut::<8>();
         for eight in eights.iter_mut() {
-            let c = bytemuck::cast::<[u32; 8], __m256i>(*eight);
-            // Red and blue, the low byte of each lane, scaled and shifted back.
-            let rb = _mm256_srli_epi16::<8>(_mm256_mullo_epi16(_mm256_and_si256(c, low), scale));
-            // Green (and alpha, replaced below) scaled into the high byte.
-            let ga = _mm256_and_si256(_mm256_mullo_epi16(_mm256_srli_epi16::<8>(c), scale), high);
-            let lit = _mm256_or_si256(_mm256_add_epi32(_mm256_or_si256(rb, ga), fog), alpha);
-            *eight = bytemuck::cast::<__m256i, [u32; 8]>(lit);
+            *eight = bytemuck::cast::<__m256i, [u32; 8]>(tint.apply(bytemuck::cast::<[u32; 8], __m256i>(*eight)));
         }
         eights.len() * 8
     }

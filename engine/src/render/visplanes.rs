@@ -115,13 +115,26 @@ impl Visplanes {
             let (mut t1, mut b1) = (0u16, 0u16);
             for i in p.min..=p.max + 1 {
                 let (t2, b2) = if i <= p.max && p.top[i] < p.bottom[i] { (p.top[i], p.bottom[i]) } else { (0, 0) };
+                if (t2, b2) == (t1, b1) {
+                    continue;
+                }
                 // Only the rows where the two columns differ matter:
                 // [t1, b1) minus [t2, b2) ends spans, the reverse opens them.
-                for ends in [t1..b1.min(t2), t1.max(b2)..b1] {
-                    draw_ending(&span, out, &mut self.row, &self.span_start, ends, i);
+                // Written out, each range tested before it is walked: as
+                // arrays of ranges and a chained iterator the walk cost 64k
+                // instructions a frame on deadly_corridor at 160x120, most
+                // of it on empty ranges.
+                if t1 < b1.min(t2) {
+                    draw_ending(&span, out, &mut self.row, &self.span_start, t1..b1.min(t2), i);
                 }
-                for y in (t2..b2.min(t1)).chain(t2.max(b1)..b2) {
-                    self.span_start[y as usize] = i;
+                if t1.max(b2) < b1 {
+                    draw_ending(&span, out, &mut self.row, &self.span_start, t1.max(b2)..b1, i);
+                }
+                if t2 < b2.min(t1) {
+                    self.span_start[usize::from(t2)..usize::from(b2.min(t1))].fill(i);
+                }
+                if t2.max(b1) < b2 {
+                    self.span_start[usize::from(t2.max(b1))..usize::from(b2)].fill(i);
                 }
                 (t1, b1) = (t2, b2);
             }
@@ -133,6 +146,7 @@ impl Visplanes {
 /// rows in a row that began at the same column go to the canvas together,
 /// each column's four pixels adjacent there: one cache line touched per
 /// column where four single rows touch it four times.
+#[inline(always)]
 fn draw_ending(
     span: &SpanPainter,
     out: &mut ColumnWriter,
@@ -240,7 +254,10 @@ impl SpanPainter<'_> {
             // whatever multiples of it the steps carry).
             let u = u0.wrapping_add(columns.wrapping_mul(du)) & (wf - 1);
             let v = v0.wrapping_add(columns.wrapping_mul(dv)) & (hf - 1);
-            flat_texels(row, texels, Steps { u, v, du, dv, umask: wf - 1, vmask: hf - 1, shift: h.trailing_zeros() });
+            let steps = Steps { u, v, du, dv, umask: wf - 1, vmask: hf - 1, shift: h.trailing_zeros() };
+            let lit = flat_texels(row, texels, steps, tint);
+            tint.apply_all(&mut row[lit..]);
+            return;
         } else {
             // Steps of a whole texture or more (far planes) wrap by modulo.
             let (du, dv) = (du % wf, dv % hf);
@@ -285,13 +302,15 @@ struct Steps {
 /// One span's texels from a power-of-two texture into `row`. Masks keep a
 /// sum modulo the size whatever multiples of it the steps carry, so there
 /// are no tests and no divisions. With AVX2 eight pixels' texel indices are
-/// found at once in 32-bit lanes ([`eights`]); the loads stay one a pixel.
+/// found at once in 32-bit lanes ([`eights`]) and the eight texels lit by
+/// `tint` while in a register; the loads stay one a pixel. Returns how many
+/// pixels from the start are lit already (the rest are texels as they are).
 #[multiversion::multiversion(targets("x86_64+avx2"))]
-fn flat_texels(row: &mut [u32], texels: &[u32], steps: Steps) {
+fn flat_texels(row: &mut [u32], texels: &[u32], steps: Steps, tint: super::light::Tint) -> usize {
     let Steps { mut u, mut v, du, dv, umask, vmask, shift } = steps;
     let done = multiversion::target::match_target! {
-        "x86_64+avx2" => eights::texels(row, texels, steps),
-        _ => 0,
+        "x86_64+avx2" => eights::texels(row, texels, steps, tint),
+        _ => { let _ = tint; 0 },
     };
     u = u.wrapping_add((done as i64).wrapping_mul(du)) & umask;
     v = v.wrapping_add((done as i64).wrapping_mul(dv)) & vmask;
@@ -308,23 +327,41 @@ fn flat_texels(row: &mut [u32], texels: &[u32], steps: Steps) {
     for p in pairs.into_remainder() {
         *p = texel(u, v);
     }
+    done
 }
 
 #[cfg(target_arch = "x86_64")]
 mod eights {
     use super::{Steps, FRAC};
+    use crate::render::light::{lanes16::Eight, Tint};
     use std::arch::x86_64::{
         __m256i, _mm256_add_epi32, _mm256_and_si256, _mm256_or_si256, _mm256_set1_epi32, _mm256_setr_epi32,
         _mm256_sll_epi32, _mm256_srli_epi32, _mm_cvtsi32_si128,
     };
 
+    /// Doom's flats are 64x64: their texels as a fixed-size array, whose
+    /// masked indices need no bounds test.
+    const FLAT: usize = 64 * 64;
+
     /// [`super::flat_texels`]'s pixels eight at a time: the eight `u` and
     /// `v` in 32-bit lanes (the texture's size in fixed point, at most
     /// 2^32, divides the lanes' wrap, so the masks give what the 64-bit
-    /// steps give), the indices in five instructions, then the loads.
-    /// Leaves fewer than eight pixels; returns how many it did.
+    /// steps give), the indices in five instructions, then the loads, then
+    /// the light on the eight in a register. Leaves fewer than eight
+    /// pixels; returns how many it did.
     #[target_feature(enable = "avx2")]
-    pub(super) fn texels(row: &mut [u32], texels: &[u32], s: Steps) -> usize {
+    pub(super) fn texels(row: &mut [u32], texels: &[u32], s: Steps, tint: Tint) -> usize {
+        match <&[u32; FLAT]>::try_from(texels) {
+            // Every index is below the texture's size, so the mask changes
+            // none; it only lets the compiler drop the bounds tests.
+            Ok(flat) => walk(row, s, tint, |i| flat[i as usize & (FLAT - 1)]),
+            Err(_) => walk(row, s, tint, |i| texels[i as usize]),
+        }
+    }
+
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    fn walk(row: &mut [u32], s: Steps, tint: Tint, texel: impl Fn(u32) -> u32) -> usize {
         const WIDE: i64 = 1 << 32;
         if s.umask >= WIDE || s.vmask >= WIDE {
             return 0;
@@ -339,15 +376,15 @@ mod eights {
             (_mm256_set1_epi32((s.du as i32).wrapping_mul(8)), _mm256_set1_epi32((s.dv as i32).wrapping_mul(8)));
         let (umask, vmask) = (_mm256_set1_epi32(s.umask as i32), _mm256_set1_epi32(s.vmask as i32));
         let shift = _mm_cvtsi32_si128(s.shift as i32);
+        let light = Eight::new(tint);
         let (mut u, mut v) = (_mm256_and_si256(u, umask), _mm256_and_si256(v, vmask));
         let (eights, _) = row.as_chunks_mut::<8>();
         for eight in eights.iter_mut() {
             let column = _mm256_sll_epi32(_mm256_srli_epi32::<{ FRAC as i32 }>(u), shift);
             let at: [u32; 8] =
                 bytemuck::cast::<__m256i, [u32; 8]>(_mm256_or_si256(column, _mm256_srli_epi32::<{ FRAC as i32 }>(v)));
-            for (p, &i) in eight.iter_mut().zip(&at) {
-                *p = texels[i as usize];
-            }
+            let fetched = bytemuck::cast::<[u32; 8], __m256i>(at.map(&texel));
+            *eight = bytemuck::cast::<__m256i, [u32; 8]>(light.apply(fetched));
             u = _mm256_and_si256(_mm256_add_epi32(u, du8), umask);
             v = _mm256_and_si256(_mm256_add_epi32(v, dv8), vmask);
         }
@@ -359,13 +396,16 @@ mod eights {
 mod tests {
     use super::*;
 
-    /// A span's texels, the AVX2 eights included, are those of the plain
-    /// formula `(u + k du) mod size`, `(v + k dv) mod size`, for steps of
-    /// either sign, smaller and larger than a texel and wider than the
-    /// texture, spans shorter and longer than eight, and textures not square.
+    /// A span's lit texels, the AVX2 eights included (64x64 flats through
+    /// the fixed-size path), are those of the plain formula `(u + k du) mod
+    /// size`, `(v + k dv) mod size`, lit, for steps of either sign, smaller
+    /// and larger than a texel and wider than the texture, spans shorter and
+    /// longer than eight, and textures not square.
     #[test]
     fn flat_texels_match_the_formula() {
-        for (w, h) in [(64i64, 64i64), (1, 1), (8, 2), (128, 32), (2, 256)] {
+        let lighting = crate::render::light::Lighting { diminishing: true, fog: None };
+        let tint = lighting.tint(150, 700.0);
+        for (w, h) in [(64i64, 64i64), (1, 1), (8, 2), (128, 32), (2, 256), (32, 128)] {
             let texels: Vec<u32> = (0..(w * h) as u32).map(|i| i.wrapping_mul(0x9E37_79B9) | 1).collect();
             let (wf, hf) = (w << FRAC, h << FRAC);
             let steps = [0, 1, 5_000, -5_000, 65_536, -70_001, 300_000, 9 * (64 << FRAC) + 3];
@@ -375,12 +415,14 @@ mod tests {
                     for len in [1usize, 7, 8, 9, 17, 240] {
                         let mut got = vec![0u32; len];
                         let shift = h.trailing_zeros();
-                        flat_texels(&mut got, &texels, Steps { u, v, du, dv, umask: wf - 1, vmask: hf - 1, shift });
+                        let steps = Steps { u, v, du, dv, umask: wf - 1, vmask: hf - 1, shift };
+                        let lit = flat_texels(&mut got, &texels, steps, tint);
+                        tint.apply_all(&mut got[lit..]);
                         let want: Vec<u32> = (0..len as i64)
                             .map(|k| {
                                 let (tu, tv) =
                                     ((u + k * du).rem_euclid(wf) >> FRAC, (v + k * dv).rem_euclid(hf) >> FRAC);
-                                texels[(tu * h + tv) as usize]
+                                tint.apply(texels[(tu * h + tv) as usize])
                             })
                             .collect();
                         assert_eq!(got, want, "{w}x{h} du {du} dv {dv} u {u} v {v} len {len}");
