@@ -12,16 +12,9 @@ import pytest
 import sightline
 import sightline.gym  # noqa: F401  (registers the environments)
 import sightline.vizdoom as vzd
+from vizdoom_games import open_game
 
 
-def _game(cfg: str, seed: int = 3, **settings) -> vzd.DoomGame:
-    game = vzd.DoomGame()
-    game.load_config(cfg)
-    for key, value in settings.items():
-        getattr(game, f"set_{key}")(value)
-    game.set_seed(seed)
-    game.init()
-    return game
 
 
 def _peaks(audio: np.ndarray, frames_per_tic: int) -> list:
@@ -32,7 +25,7 @@ def _peaks(audio: np.ndarray, frames_per_tic: int) -> list:
 def _shot(cfg: str, tics: int = 61, **settings) -> list:
     """basic: 20 idle tics, ATTACK, then idle; every state's audio buffer.
     Seed 3's shot misses, so the episode goes on."""
-    game = _game(cfg, audio_buffer_enabled=True, **settings)
+    game = open_game(cfg, audio_buffer_enabled=True, **settings)
     buffers = []
     for t in range(tics):
         game.make_action([0, 0, 1] if t == 20 else [0, 0, 0])
@@ -45,7 +38,7 @@ def _shot(cfg: str, tics: int = 61, **settings) -> list:
 )
 @pytest.mark.parametrize("tics", [1, 4])
 def test_the_audio_buffer_has_vizdoom_s_shape_and_type(basic_cfg, rate, hertz, tics):
-    game = _game(basic_cfg, audio_buffer_enabled=True, audio_sampling_rate=rate, audio_buffer_size=tics)
+    game = open_game(basic_cfg, audio_buffer_enabled=True, audio_sampling_rate=rate, audio_buffer_size=tics)
     assert game.is_audio_buffer_enabled()
     assert game.get_audio_sampling_rate() == hertz  # ViZDoom 1.3.2's getter gives hertz
     assert game.get_audio_buffer_size() == tics
@@ -60,7 +53,7 @@ def test_defaults_are_vizdoom_s_and_off_means_none(basic_cfg):
     game = vzd.DoomGame()
     assert not game.is_audio_buffer_enabled() and not game.is_notifications_buffer_enabled()
     assert (game.get_audio_buffer_size(), game.get_audio_sampling_rate(), game.get_notifications_buffer_size()) == (1, 44100, 1)
-    game = _game(basic_cfg)
+    game = open_game(basic_cfg)
     state = game.get_state()
     assert state.audio_buffer is None and state.notifications_buffer is None
     native = game._running()
@@ -103,7 +96,7 @@ def test_the_same_seed_and_actions_give_the_same_bytes(basic_cfg):
 
 
 def test_a_pickup_is_notified_for_the_buffer_s_tics(scenarios):
-    game = _game(os.path.join(scenarios, "health_gathering.cfg"), seed=1, notifications_buffer_enabled=True, notifications_buffer_size=3)
+    game = open_game(os.path.join(scenarios, "health_gathering.cfg"), seed=1, notifications_buffer_enabled=True, notifications_buffer_size=3)
     texts = []
     while not game.is_episode_finished() and len(texts) < 2000:
         game.make_action(game.get_expert_action())  # the autopilot fetches medikits
@@ -120,7 +113,7 @@ def test_script_logs_are_notified_as_vizdoom_gives_them(scenarios):
     # ViZDoom 1.3.2 gives these states (basic_notifications.cfg, buffer of
     # 4 tics, seed 1, these actions) "Shoot: Cacodemon\n", the map's Log,
     # on the states of tics 16 to 19 and nothing else in the first 40.
-    game = _game(os.path.join(scenarios, "basic_notifications.cfg"), seed=1, notifications_buffer_size=4)
+    game = open_game(os.path.join(scenarios, "basic_notifications.cfg"), seed=1, notifications_buffer_size=4)
     seen = []
     for i in range(40):
         game.make_action([0, 0, 1] if i % 10 == 0 else [0, 1, 0])

@@ -6,17 +6,9 @@ import os
 
 import pytest
 
-import sightline.vizdoom as vzd
+from vizdoom_games import open_game
 
 
-def _game(cfg: str, seed: int = 3, **settings) -> vzd.DoomGame:
-    game = vzd.DoomGame()
-    game.load_config(cfg)
-    for key, value in settings.items():
-        getattr(game, f"set_{key}")(value)
-    game.set_seed(seed)
-    game.init()
-    return game
 
 
 def test_objects_and_sectors_as_vizdoom_lists_them_on_basic(basic_cfg):
@@ -24,7 +16,7 @@ def test_objects_and_sectors_as_vizdoom_lists_them_on_basic(basic_cfg):
     # at x = 0 facing west and the DoomPlayer at (-384, 32, 0) facing east,
     # both in sector 0; one sector, floor 0 and ceiling 104, four blocking
     # walls from (-448, -192) to (64, 256).
-    game = _game(basic_cfg, objects_info_enabled=True, sectors_info_enabled=True)
+    game = open_game(basic_cfg, objects_info_enabled=True, sectors_info_enabled=True)
     game.make_action([0, 0, 0])
     state = game.get_state()
     by_name = {o.name: o for o in state.objects}
@@ -46,11 +38,11 @@ def test_objects_and_sectors_as_vizdoom_lists_them_on_basic(basic_cfg):
 
 
 def test_objects_and_sectors_are_none_when_off_and_sectors_follow_doors(scenarios, basic_cfg):
-    state = _game(basic_cfg).get_state()
+    state = open_game(basic_cfg).get_state()
     assert state.objects is None and state.sectors is None
     # my_way_home (ViZDoom: 18 sectors, 112 sector lines, the player and a
     # GreenArmor; two-sided lines do not block).
-    game = _game(os.path.join(scenarios, "my_way_home.cfg"), objects_info_enabled=True, sectors_info_enabled=True)
+    game = open_game(os.path.join(scenarios, "my_way_home.cfg"), objects_info_enabled=True, sectors_info_enabled=True)
     state = game.get_state()
     assert len(state.sectors) == 18
     assert sum(len(s.lines) for s in state.sectors) == 112
@@ -74,7 +66,7 @@ VIZDOOM = {
 
 @pytest.mark.parametrize("name", sorted(VIZDOOM))
 def test_the_first_state_lists_what_vizdoom_lists(scenarios, name):
-    game = _game(os.path.join(scenarios, f"{name}.cfg"), seed=1, objects_info_enabled=True, sectors_info_enabled=True)
+    game = open_game(os.path.join(scenarios, f"{name}.cfg"), seed=1, objects_info_enabled=True, sectors_info_enabled=True)
     state = game.get_state()
     lines = [l for s in state.sectors for l in s.lines]
     counts = {}
