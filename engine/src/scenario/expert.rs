@@ -87,12 +87,16 @@ pub struct Expert {
     bot: Autopilot,
     /// The tic of the last answer and the answer.
     last: Option<(u64, Vec<f64>)>,
+    /// Each answer is printed to stderr (`SIGHTLINE_EXPERT_TRACE` set when
+    /// the expert was made): what it saw, what the bot wanted, what it pressed.
+    trace: bool,
 }
 
 impl Expert {
     /// An expert for `episode`, as it stands (its start, usually).
     pub fn new(episode: &Episode) -> Expert {
-        Expert { bot: Autopilot::with_options(&episode.game, Options::SCENARIO), last: None }
+        let trace = std::env::var_os("SIGHTLINE_EXPERT_TRACE").is_some();
+        Expert { bot: Autopilot::with_options(&episode.game, Options::SCENARIO), last: None, trace }
     }
 
     /// What the autopilot would press now in `episode` (the one this
@@ -113,7 +117,7 @@ impl Expert {
         input.fire &= !trigger_to_let_go(&episode.game);
         let player = Observe::player(&episode.game);
         let action = project(&episode.config, episode.turn_held(), player, &input, self.bot.aim());
-        if std::env::var_os("SIGHTLINE_EXPERT_TRACE").is_some() {
+        if self.trace {
             eprintln!(
                 "tic {tic}: at ({:.1}, {:.1}, {:.1}) facing {:.2}, moving ({:.2}, {:.2}), ammo {:?}; bot {input:?}, aim {:?} z {:?}; action {action:?}",
                 player.pos.x,
