@@ -33,9 +33,9 @@ use crate::env::Env;
 #[derive(Clone, Copy, Debug)]
 pub enum Task {
     /// Play `tics` tics holding the game's `action`; then, if `screen`,
-    /// draw the screen into the game's `screen` bytes.
+    /// draw the screen into the game's part of the call's output.
     Step { tics: u32, screen: bool },
-    /// Draw the screen into the game's `screen` bytes.
+    /// Draw the screen into the game's part of the call's output.
     Screen,
     /// Ask the autopilot for its action, into the game's `expert`.
     Expert,
@@ -48,9 +48,6 @@ pub struct Slot {
     pub action: Vec<f64>,
     /// The last step's reward.
     pub reward: f64,
-    /// The last screen drawn, in the `.cfg`'s format (kept from call to
-    /// call, so it is allocated once).
-    pub screen: Vec<u8>,
     /// The autopilot's last action.
     pub expert: Vec<f64>,
     /// Whether the last task succeeded.
@@ -58,28 +55,54 @@ pub struct Slot {
 }
 
 impl Slot {
-    fn run(&mut self, task: Task) {
+    /// Runs `task`, drawing into `out` (the game's part of the call's
+    /// output; empty for a task that draws nothing).
+    fn run(&mut self, task: Task, out: &mut [u8]) {
         self.result = match task {
             Task::Step { tics, screen } => match self.env.step(&self.action, tics) {
                 Ok(reward) => {
                     self.reward = reward;
                     if screen {
-                        self.draw()
+                        self.env.screen_into(out)
                     } else {
                         Ok(())
                     }
                 }
                 Err(e) => Err(e),
             },
-            Task::Screen => self.draw(),
+            Task::Screen => self.env.screen_into(out),
             Task::Expert => self.env.expert_action().map(|a| self.expert = a),
         };
     }
+}
 
-    fn draw(&mut self) -> PyResult<()> {
-        let size: usize = self.env.screen_shape().iter().product();
-        self.screen.resize(size, 0);
-        self.env.screen_into(&mut self.screen)
+/// The call's output: one buffer cut into equal parts, game `i` drawing
+/// into part `i` on whichever thread takes it. A raw pointer because the
+/// parts are written from several threads at once; they never overlap,
+/// since each game is taken by one thread once per call, and the buffer
+/// outlives the call ([`Crew::run`] returns only when every game is done).
+#[derive(Clone, Copy)]
+struct Output {
+    start: *mut u8,
+    each: usize,
+}
+
+// SAFETY: see [`Output`]: disjoint parts of a buffer that outlives the
+// threads' use of it.
+unsafe impl Send for Output {}
+
+impl Output {
+    /// Game `i`'s part.
+    ///
+    /// # Safety
+    /// Called once per game per call, while the call's buffer lives.
+    unsafe fn part<'a>(self, i: usize) -> &'a mut [u8] {
+        if self.each == 0 {
+            return &mut [];
+        }
+        // SAFETY: the caller's promise; part `i` lies inside the buffer
+        // (`Crew::run` checked its length).
+        unsafe { std::slice::from_raw_parts_mut(self.start.add(i * self.each), self.each) }
     }
 }
 
@@ -88,6 +111,7 @@ impl Slot {
 struct Round {
     generation: u64,
     task: Task,
+    out: Output,
     next: usize,
     left: usize,
     quit: bool,
@@ -117,10 +141,12 @@ impl Shared {
     /// take. Returns with the round locked.
     fn work<'a>(&'a self, mut round: MutexGuard<'a, Round>, generation: u64) -> MutexGuard<'a, Round> {
         while round.generation == generation && round.next < self.games.len() {
-            let (i, task) = (round.next, round.task);
+            let (i, task, out) = (round.next, round.task, round.out);
             round.next += 1;
             drop(round);
-            lock(&self.games[i]).run(task);
+            // SAFETY: game `i` is taken once this call (`round.next` moves
+            // past it under the lock), and the call waits for it.
+            lock(&self.games[i]).run(task, unsafe { out.part(i) });
             round = lock(&self.round);
             round.left -= 1;
             if round.left == 0 {
@@ -170,10 +196,17 @@ impl Crew {
             .into_iter()
             .map(|env| {
                 let action = vec![0.0; env.config().available_buttons.len()];
-                Mutex::new(Slot { env, action, reward: 0.0, screen: Vec::new(), expert: Vec::new(), result: Ok(()) })
+                Mutex::new(Slot { env, action, reward: 0.0, expert: Vec::new(), result: Ok(()) })
             })
             .collect();
-        let round = Round { generation: 0, task: Task::Screen, next: 0, left: 0, quit: false };
+        let round = Round {
+            generation: 0,
+            task: Task::Screen,
+            out: Output { start: std::ptr::null_mut(), each: 0 },
+            next: 0,
+            left: 0,
+            quit: false,
+        };
         let shared = Arc::new(Shared {
             games,
             round: Mutex::new(round),
@@ -205,13 +238,18 @@ impl Crew {
         self.shared.games.iter().map(lock)
     }
 
-    /// Runs `task` on every game and returns when all are done.
-    pub fn run(&self, task: Task) {
+    /// Runs `task` on every game and returns when all are done; a task
+    /// that draws writes game `i`'s screen into the `i`-th of the equal
+    /// parts of `out` (empty for a task that draws nothing).
+    pub fn run(&self, task: Task, out: &mut [u8]) {
         let shared = &*self.shared;
+        let each = out.len() / shared.games.len();
+        assert_eq!(each * shared.games.len(), out.len(), "the output is not one equal part per game");
         let mut round = lock(&shared.round);
         round.generation += 1;
         shared.generation.store(round.generation, Ordering::Release);
         round.task = task;
+        round.out = Output { start: out.as_mut_ptr(), each };
         round.next = 0;
         round.left = shared.games.len();
         let generation = round.generation;
@@ -222,6 +260,7 @@ impl Crew {
         while round.left > 0 {
             round = shared.done.wait(round).unwrap_or_else(PoisonError::into_inner);
         }
+        round.out = Output { start: std::ptr::null_mut(), each: 0 };
     }
 }
 

@@ -411,11 +411,13 @@ impl Games {
         Ok(())
     }
 
-    /// Plays `tics` tics in every game (drawing each screen too if
-    /// `screens`): the rewards and whether each episode has ended.
-    fn play(&self, py: Python<'_>, tics: u32, screens: bool) -> PyResult<(Vec<f64>, Vec<bool>)> {
+    /// Plays `tics` tics in every game (drawing each screen into its part
+    /// of `out` too, if it is not empty): the rewards and whether each
+    /// episode has ended.
+    fn play(&self, py: Python<'_>, tics: u32, out: &mut [u8]) -> PyResult<(Vec<f64>, Vec<bool>)> {
         let crew = &self.crew;
-        py.detach(|| crew.run(crew::Task::Step { tics, screen: screens }));
+        let screen = !out.is_empty();
+        py.detach(|| crew.run(crew::Task::Step { tics, screen }, out));
         let (mut rewards, mut done) = (Vec::with_capacity(crew.len()), Vec::with_capacity(crew.len()));
         for mut slot in crew.slots() {
             std::mem::replace(&mut slot.result, Ok(()))?;
@@ -425,18 +427,13 @@ impl Games {
         Ok((rewards, done))
     }
 
-    /// Every game's last screen, stacked on a first axis.
-    fn stacked<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<u8>>> {
-        let one = self.crew.slot(0).env.screen_shape();
-        let size: usize = one.iter().product();
-        let mut bytes = Vec::with_capacity(size * self.crew.len());
-        for mut slot in self.crew.slots() {
-            std::mem::replace(&mut slot.result, Ok(()))?;
-            bytes.extend_from_slice(&slot.screen);
-        }
+    /// A buffer for every game's screen, stacked on a first axis, and
+    /// its shape: the games' threads draw straight into it.
+    fn screens_buffer(&self) -> (Vec<usize>, Vec<u8>) {
         let mut shape = vec![self.crew.len()];
-        shape.extend(one);
-        array(py, &shape, bytes)
+        shape.extend(self.crew.slot(0).env.screen_shape());
+        let bytes = vec![0; shape.iter().product()];
+        (shape, bytes)
     }
 }
 
@@ -480,7 +477,7 @@ impl Games {
         tics: u32,
     ) -> PyResult<(Bound<'py, PyArrayDyn<f64>>, Bound<'py, PyArrayDyn<bool>>)> {
         self.set_actions(&actions)?;
-        let (rewards, done) = self.play(py, tics, false)?;
+        let (rewards, done) = self.play(py, tics, &mut [])?;
         Ok((array(py, &[rewards.len()], rewards)?, array(py, &[done.len()], done)?))
     }
 
@@ -496,17 +493,22 @@ impl Games {
         tics: u32,
     ) -> PyResult<(Bound<'py, PyArrayDyn<f64>>, Bound<'py, PyArrayDyn<bool>>, Bound<'py, PyArrayDyn<u8>>)> {
         self.set_actions(&actions)?;
-        let (rewards, done) = self.play(py, tics, true)?;
-        let screens = self.stacked(py)?;
+        let (shape, mut bytes) = self.screens_buffer();
+        let (rewards, done) = self.play(py, tics, &mut bytes)?;
+        let screens = array(py, &shape, bytes)?;
         Ok((array(py, &[rewards.len()], rewards)?, array(py, &[done.len()], done)?, screens))
     }
 
-    /// Every game's screen, stacked on a first axis (each game drawn on
-    /// the games' threads).
+    /// Every game's screen, stacked on a first axis (each game draws into
+    /// its part of one array, on the games' threads).
     fn screens<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<u8>>> {
         let crew = &self.crew;
-        py.detach(|| crew.run(crew::Task::Screen));
-        self.stacked(py)
+        let (shape, mut bytes) = self.screens_buffer();
+        py.detach(|| crew.run(crew::Task::Screen, &mut bytes));
+        for mut slot in crew.slots() {
+            std::mem::replace(&mut slot.result, Ok(()))?;
+        }
+        array(py, &shape, bytes)
     }
 
     /// Every game's available game variables, one row each.
@@ -520,7 +522,7 @@ impl Games {
     /// answered on the games' threads.
     fn expert_actions<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let crew = &self.crew;
-        py.detach(|| crew.run(crew::Task::Expert));
+        py.detach(|| crew.run(crew::Task::Expert, &mut []));
         let width = self.crew.slot(0).env.config().available_buttons.len();
         let mut rows = Vec::with_capacity(width * self.crew.len());
         for mut slot in self.crew.slots() {
