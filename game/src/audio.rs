@@ -5,18 +5,18 @@
 use sightline::sound::music::{find_soundfont, load_soundfont, Music, NO_SOUNDFONT};
 use sightline::sound::{Audio, OUTPUT_RATE};
 
-use crate::cli::SoundArgs;
+use crate::config::Sound;
 
-/// The audio side as the options ask; music is off (with one line saying
+/// The audio side as the settings ask; music is off (with one line saying
 /// why on stderr) when asked or when no SoundFont can be had.
-pub fn audio(args: &SoundArgs) -> Audio {
-    let music = if args.no_music { None } else { music(args) };
+pub fn audio(args: &Sound) -> Audio {
+    let music = if args.music { music(args) } else { None };
     let mut audio = Audio::new(usize::from(args.channels), music);
-    audio.mixer.volume = f32::from(args.sfx_volume) / 100.0;
+    audio.mixer.volume = f32::from(args.effects_volume) / 100.0;
     audio
 }
 
-fn music(args: &SoundArgs) -> Option<Music> {
+fn music(args: &Sound) -> Option<Music> {
     let Some(path) = find_soundfont(args.soundfont.as_deref()) else {
         eprintln!("sightline: {NO_SOUNDFONT}");
         return None;

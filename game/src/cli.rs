@@ -244,11 +244,12 @@ pub struct PlayArgs {
     /// map does not, as vanilla does not).
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
-    /// Internal frame size, WxH; the window scales it to fit.
-    #[arg(long, default_value = "640x400", value_parser = parse_size)]
-    pub size: (usize, usize),
-    /// Initial window inner size, WxH. Default: the frame size times the
-    /// largest whole factor that fits the screen.
+    /// Internal frame size, WxH; the window scales it to fit. Default: the
+    /// config file's, else 640x400.
+    #[arg(long, value_parser = parse_size)]
+    pub size: Option<(usize, usize)>,
+    /// Initial window inner size, WxH. Default: the config file's, else the
+    /// frame size times the largest whole factor that fits the screen.
     #[arg(long, value_parser = parse_size)]
     pub window: Option<(usize, usize)>,
     /// Present as fast as possible instead of at the display's refresh rate.
@@ -261,13 +262,15 @@ pub struct PlayArgs {
     #[arg(long)]
     pub stats: bool,
     /// bsp, reference, raycast (grid maps only), painter or zbuffer; R
-    /// cycles them in the window. Default: raycast for a grid map, else bsp.
+    /// cycles them in the window. Default: the config file's, else raycast
+    /// for a grid map, else bsp.
     #[arg(long, value_parser = parse_renderer)]
     pub renderer: Option<Renderer>,
     /// Threads drawing each frame (its strips in parallel; the frame is the
-    /// same for any count). Default: the machine's available parallelism.
-    #[arg(long, default_value_t = available_threads(), value_parser = parse_threads)]
-    pub threads: usize,
+    /// same for any count). Default: the config file's, else the machine's
+    /// available parallelism.
+    #[arg(long, value_parser = parse_threads)]
+    pub threads: Option<usize>,
     /// Record the inputs of every tick into this demo file (written at exit).
     #[arg(long, conflicts_with = "demo")]
     pub record: Option<PathBuf>,
@@ -291,8 +294,16 @@ pub struct PlayArgs {
     #[arg(long)]
     pub no_hud: bool,
     /// Degrees turned per mouse count while the cursor is grabbed.
-    #[arg(long, default_value_t = 0.15)]
-    pub mouse_sensitivity: f32,
+    /// Default: the config file's, else 0.15.
+    #[arg(long)]
+    pub mouse_sensitivity: Option<f32>,
+    /// The settings file to read and write instead of
+    /// $XDG_CONFIG_HOME/sightline/config.ron (~/.config/sightline/config.ron).
+    #[arg(long, value_name = "FILE")]
+    pub config: Option<PathBuf>,
+    /// Neither read nor write the settings file: defaults and flags only.
+    #[arg(long, conflicts_with = "config")]
+    pub no_config: bool,
     /// Continue the game saved in this file (F6 or F2 in the window save
     /// one) instead of starting a map.
     #[arg(long, conflicts_with_all = ["map", "demo", "record", "iwad"])]
@@ -318,15 +329,29 @@ pub struct SoundArgs {
     /// first found of Debian's (timgm6mb-soundfont, fluid-soundfont-gm).
     #[arg(long)]
     pub soundfont: Option<PathBuf>,
-    /// Effects' volume, 0 to 100.
-    #[arg(long, default_value_t = 80, value_parser = clap::value_parser!(u8).range(0..=100))]
-    pub sfx_volume: u8,
-    /// Music's volume, 0 to 100.
-    #[arg(long, default_value_t = 60, value_parser = clap::value_parser!(u8).range(0..=100))]
-    pub music_volume: u8,
-    /// Sounds played at once (Doom's snd_channels: 8).
-    #[arg(long, default_value_t = 8, value_parser = clap::value_parser!(u16).range(1..=64))]
-    pub channels: u16,
+    /// Effects' volume, 0 to 100. Default: the config file's (`play`), else 80.
+    #[arg(long, value_parser = clap::value_parser!(u8).range(0..=100))]
+    pub sfx_volume: Option<u8>,
+    /// Music's volume, 0 to 100. Default: the config file's (`play`), else 60.
+    #[arg(long, value_parser = clap::value_parser!(u8).range(0..=100))]
+    pub music_volume: Option<u8>,
+    /// Sounds played at once. Default: the config file's (`play`), else
+    /// Doom's snd_channels, 8.
+    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=64))]
+    pub channels: Option<u16>,
+}
+
+impl SoundArgs {
+    /// `base`'s settings with these flags over them.
+    pub fn over(&self, base: &crate::config::Sound) -> crate::config::Sound {
+        crate::config::Sound {
+            effects_volume: self.sfx_volume.unwrap_or(base.effects_volume),
+            music_volume: self.music_volume.unwrap_or(base.music_volume),
+            channels: self.channels.unwrap_or(base.channels),
+            soundfont: self.soundfont.clone().or_else(|| base.soundfont.clone()),
+            music: base.music && !self.no_music,
+        }
+    }
 }
 
 #[derive(Args)]
@@ -524,7 +549,7 @@ pub fn parse_pose(s: &str) -> Result<Pose, String> {
 }
 
 /// Most threads a frame may be drawn with.
-const MAX_THREADS: usize = 256;
+pub const MAX_THREADS: usize = 256;
 
 /// The machine's available parallelism (1 when it cannot be told).
 pub fn available_threads() -> usize {
@@ -546,7 +571,7 @@ fn parse_splitter(s: &str) -> Result<SplitterKind, String> {
     })
 }
 
-fn parse_renderer(s: &str) -> Result<Renderer, String> {
+pub fn parse_renderer(s: &str) -> Result<Renderer, String> {
     Renderer::from_name(s).ok_or_else(|| {
         let names: Vec<_> = Renderer::ALL.iter().map(|r| r.name()).collect();
         format!("unknown renderer `{s}`; choose one of {}", names.join(", "))

@@ -9,6 +9,7 @@ mod capture;
 mod check;
 mod cli;
 mod compile;
+mod config;
 mod import;
 mod play;
 mod replay;

@@ -39,10 +39,13 @@ pub fn run(args: &ReplayArgs) -> Result<()> {
     if let Some(c) = &mut capture {
         c.frame(&play, 0)?;
     }
-    let mut sound = args
-        .audio
-        .as_ref()
-        .map(|_| (sightline::sound::Sounds::new(), crate::audio::audio(&args.sound), Vec::<f32>::new()));
+    let mut sound = args.audio.as_ref().map(|_| {
+        (
+            sightline::sound::Sounds::new(),
+            crate::audio::audio(&args.sound.over(&crate::config::Config::default().sound)),
+            Vec::<f32>::new(),
+        )
+    });
     for (i, input) in demo.inputs.iter().enumerate() {
         play.tick(input)?;
         if let Some((sounds, audio, samples)) = &mut sound {

@@ -22,7 +22,7 @@ use winit::window::WindowId;
 
 use super::clock::TickClock;
 use super::hud::Hud;
-use super::input::{digit, window_action, Action};
+use super::input::{digit, Action, Keymap};
 use super::saves::{self, Slot};
 use super::screen::{Screen, ScreenOptions};
 use super::screenshot;
@@ -58,8 +58,22 @@ pub struct App {
     watched: Instant,
     /// A ViZDoom scenario being played: its reward is shown.
     scenario: Option<sightline::scenario::ScenarioConfig>,
+    /// The keys' bindings (for the window's keys while a demo plays).
+    keys: Keymap,
+    /// Whether the window was last seen full screen.
+    fullscreen: bool,
     /// What stopped the loop, if something went wrong.
     pub error: Option<anyhow::Error>,
+}
+
+/// The settings the player can change in the game, as they are at exit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Changeable {
+    pub status_bar: bool,
+    pub hud: bool,
+    pub fullscreen: bool,
+    /// Effects' and music's volumes, 0 to 1 (None: no sound).
+    pub volumes: Option<(f32, f32)>,
 }
 
 /// F2 or F3 was pressed: the next digit names the slot.
@@ -76,6 +90,9 @@ pub struct AppOptions {
     pub threads: usize,
     pub frame_limit: Option<u64>,
     pub hud: bool,
+    /// Doom's status bar (else the minimal HUD).
+    pub status_bar: bool,
+    pub keys: Keymap,
     pub save_dir: std::path::PathBuf,
     /// A ViZDoom scenario being played: its reward is shown.
     pub scenario: Option<sightline::scenario::ScenarioConfig>,
@@ -99,7 +116,11 @@ impl App {
             fb: Framebuffer::new(w as usize, h as usize),
             clock: TickClock::new(sightline::play::TICRATE),
             hud: Hud::new(options.hud),
-            status: sightline::screen::Hud::StatusBar,
+            status: if options.status_bar {
+                sightline::screen::Hud::StatusBar
+            } else {
+                sightline::screen::Hud::Minimal
+            },
             automap,
             timings: Timings::default(),
             grabbed: false,
@@ -111,7 +132,19 @@ impl App {
             save_dir: options.save_dir,
             scenario: options.scenario,
             prompt: None,
+            keys: options.keys,
+            fullscreen: options.screen.fullscreen,
             error: None,
+        }
+    }
+
+    /// The settings the player can change in the game, as they are now.
+    pub fn changeable(&self) -> Changeable {
+        Changeable {
+            status_bar: self.status == sightline::screen::Hud::StatusBar,
+            hud: self.hud.visible,
+            fullscreen: self.screen.as_ref().map_or(self.fullscreen, Screen::fullscreen),
+            volumes: self.session.sound.as_ref().map(|s| s.volumes()),
         }
     }
 
@@ -406,7 +439,7 @@ impl ApplicationHandler for App {
                 let action = match self.session.controls() {
                     Some(controls) => controls.key(code, down, event.repeat),
                     // A demo drives the player; the window keys still work.
-                    None => window_action(code, down, event.repeat),
+                    None => self.keys.window_action(code, down, event.repeat),
                 };
                 match action {
                     Some(action) => self.act(event_loop, action),

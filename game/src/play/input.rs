@@ -3,6 +3,8 @@
 //! once per tick they become one `TickInput`. Keys that act on the window
 //! (HUD, automap, screenshot, ...) come back as `Action`s at once.
 
+use std::collections::HashMap;
+
 use sightline::play::TickInput;
 use winit::keyboard::KeyCode;
 
@@ -36,8 +38,8 @@ pub enum Action {
 }
 
 /// Movement keys, as bits of `Controls::held` and `Controls::pressed`.
-#[derive(Clone, Copy)]
-enum Move {
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Move {
     Forward = 1,
     Back = 2,
     StrafeLeft = 4,
@@ -49,22 +51,87 @@ enum Move {
     Fire = 256,
 }
 
-fn binding(key: KeyCode) -> Option<Move> {
-    Some(match key {
-        KeyCode::KeyW | KeyCode::ArrowUp => Move::Forward,
-        KeyCode::KeyS | KeyCode::ArrowDown => Move::Back,
-        KeyCode::KeyA => Move::StrafeLeft,
-        KeyCode::KeyD => Move::StrafeRight,
-        KeyCode::ArrowLeft => Move::TurnLeft,
-        KeyCode::ArrowRight => Move::TurnRight,
-        KeyCode::ShiftLeft | KeyCode::ShiftRight => Move::Run,
-        KeyCode::KeyE | KeyCode::Space => Move::Use,
-        KeyCode::ControlLeft | KeyCode::ControlRight | KeyCode::KeyF => Move::Fire,
-        _ => return None,
-    })
+/// What a bound key does: move the player, ask for a weapon, or act on
+/// the window.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Bind {
+    Move(Move),
+    Weapon(u8),
+    Window(Action),
 }
 
-/// The weapon number a key asks for (the number keys 1 to 7).
+/// Every bindable action: its name in the config file, what it does, and
+/// its default keys (at most two).
+pub const BINDS: &[(&str, Bind, &[KeyCode])] = {
+    use Action::*;
+    use Bind::{Move as M, Weapon as W, Window as A};
+    use KeyCode::*;
+    &[
+        ("forward", M(Move::Forward), &[KeyW, ArrowUp]),
+        ("back", M(Move::Back), &[KeyS, ArrowDown]),
+        ("strafe_left", M(Move::StrafeLeft), &[KeyA]),
+        ("strafe_right", M(Move::StrafeRight), &[KeyD]),
+        ("turn_left", M(Move::TurnLeft), &[ArrowLeft]),
+        ("turn_right", M(Move::TurnRight), &[ArrowRight]),
+        ("run", M(Move::Run), &[ShiftLeft, ShiftRight]),
+        ("use", M(Move::Use), &[KeyE, Space]),
+        ("fire", M(Move::Fire), &[ControlLeft, KeyF]),
+        ("weapon1", W(1), &[Digit1]),
+        ("weapon2", W(2), &[Digit2]),
+        ("weapon3", W(3), &[Digit3]),
+        ("weapon4", W(4), &[Digit4]),
+        ("weapon5", W(5), &[Digit5]),
+        ("weapon6", W(6), &[Digit6]),
+        ("weapon7", W(7), &[Digit7]),
+        ("quit", A(Quit), &[KeyQ]),
+        ("release_cursor", A(ReleaseCursor), &[Escape]),
+        ("fullscreen", A(ToggleFullscreen), &[F11]),
+        ("hud", A(ToggleHud), &[KeyH]),
+        ("automap", A(ToggleAutomap), &[Tab]),
+        ("screenshot", A(Screenshot), &[F12]),
+        ("renderer", A(CycleRenderer), &[KeyR]),
+        ("status_bar", A(ToggleStatusBar), &[Minus, Equal]),
+        ("effects_down", A(EffectsVolume(-1)), &[BracketLeft]),
+        ("effects_up", A(EffectsVolume(1)), &[BracketRight]),
+        ("music_down", A(MusicVolume(-1)), &[PageDown]),
+        ("music_up", A(MusicVolume(1)), &[PageUp]),
+        ("quick_save", A(QuickSave), &[F6]),
+        ("quick_load", A(QuickLoad), &[F9]),
+        ("save_slot", A(SaveSlot), &[F2]),
+        ("load_slot", A(LoadSlot), &[F3]),
+    ]
+};
+
+/// Which key does what: the defaults of [`BINDS`], or a config's.
+#[derive(Clone, Debug)]
+pub struct Keymap(HashMap<KeyCode, Bind>);
+
+impl Default for Keymap {
+    fn default() -> Keymap {
+        Keymap(BINDS.iter().flat_map(|(_, bind, keys)| keys.iter().map(move |k| (*k, *bind))).collect())
+    }
+}
+
+impl Keymap {
+    /// Each key's binding, the later of two bindings of one key winning.
+    pub fn of(bindings: &[(KeyCode, Bind)]) -> Keymap {
+        Keymap(bindings.iter().copied().collect())
+    }
+
+    pub fn get(&self, key: KeyCode) -> Option<Bind> {
+        self.0.get(&key).copied()
+    }
+
+    /// The window action of a key event: fresh presses only (auto-repeat
+    /// does not repeat actions).
+    pub fn window_action(&self, key: KeyCode, down: bool, repeat: bool) -> Option<Action> {
+        match self.get(key) {
+            Some(Bind::Window(action)) if down && !repeat => Some(action),
+            _ => None,
+        }
+    }
+}
+
 /// The digit of a number key, 0 to 9 (the top row and the keypad).
 pub fn digit(key: KeyCode) -> Option<u8> {
     use KeyCode::*;
@@ -83,48 +150,29 @@ pub fn digit(key: KeyCode) -> Option<u8> {
     keys.iter().position(|k| k.contains(&key)).map(|d| d as u8)
 }
 
-fn weapon_key(key: KeyCode) -> Option<u8> {
-    Some(match key {
-        KeyCode::Digit1 => 1,
-        KeyCode::Digit2 => 2,
-        KeyCode::Digit3 => 3,
-        KeyCode::Digit4 => 4,
-        KeyCode::Digit5 => 5,
-        KeyCode::Digit6 => 6,
-        KeyCode::Digit7 => 7,
-        _ => return None,
-    })
+/// How the keyboard and mouse are read: the keymap and the mouse's
+/// settings.
+#[derive(Clone, Debug)]
+pub struct Settings {
+    pub keys: Keymap,
+    /// Degrees of turn per mouse count.
+    pub sensitivity: f32,
+    /// Mouse right turns left.
+    pub invert_mouse: bool,
+    /// Run unless the run key is held.
+    pub always_run: bool,
 }
 
-/// The window action of a key event: fresh presses only (auto-repeat does
-/// not repeat actions).
-pub fn window_action(key: KeyCode, down: bool, repeat: bool) -> Option<Action> {
-    if !down || repeat {
-        return None;
+impl Settings {
+    /// Doom's keys and the given mouse sensitivity.
+    #[cfg(test)]
+    pub fn with_sensitivity(sensitivity: f32) -> Settings {
+        Settings { keys: Keymap::default(), sensitivity, invert_mouse: false, always_run: false }
     }
-    Some(match key {
-        KeyCode::KeyQ => Action::Quit,
-        KeyCode::Escape => Action::ReleaseCursor,
-        KeyCode::F11 => Action::ToggleFullscreen,
-        KeyCode::KeyH => Action::ToggleHud,
-        KeyCode::Tab => Action::ToggleAutomap,
-        KeyCode::F12 => Action::Screenshot,
-        KeyCode::KeyR => Action::CycleRenderer,
-        KeyCode::Minus | KeyCode::Equal => Action::ToggleStatusBar,
-        KeyCode::BracketLeft => Action::EffectsVolume(-1),
-        KeyCode::BracketRight => Action::EffectsVolume(1),
-        KeyCode::PageDown => Action::MusicVolume(-1),
-        KeyCode::PageUp => Action::MusicVolume(1),
-        KeyCode::F6 => Action::QuickSave,
-        KeyCode::F9 => Action::QuickLoad,
-        KeyCode::F2 => Action::SaveSlot,
-        KeyCode::F3 => Action::LoadSlot,
-        _ => return None,
-    })
 }
 
-#[derive(Default)]
 pub struct Controls {
+    settings: Settings,
     /// Movement keys down now.
     held: u16,
     /// Movement keys pressed since the last tick, so a tap shorter than a
@@ -132,31 +180,37 @@ pub struct Controls {
     pressed: u16,
     /// Mouse counts to the right since the last tick.
     mouse_dx: f64,
-    /// Degrees per mouse count.
-    sensitivity: f32,
     /// The weapon number last pressed since the last tick (0: none).
     weapon: u8,
 }
 
 impl Controls {
-    pub fn new(sensitivity: f32) -> Controls {
-        Controls { sensitivity, ..Default::default() }
+    pub fn new(settings: Settings) -> Controls {
+        Controls { settings, held: 0, pressed: 0, mouse_dx: 0.0, weapon: 0 }
+    }
+
+    /// The keymap these controls read.
+    #[cfg(test)]
+    pub fn keys(&self) -> &Keymap {
+        &self.settings.keys
     }
 
     /// A key went down (`down`) or up. Returns the window action of a fresh
     /// press (auto-repeat does not repeat actions).
     pub fn key(&mut self, key: KeyCode, down: bool, repeat: bool) -> Option<Action> {
-        if let Some(slot) = weapon_key(key) {
-            if down {
-                self.weapon = slot;
+        match self.settings.keys.get(key)? {
+            Bind::Weapon(slot) => {
+                if down {
+                    self.weapon = slot;
+                }
+                None
             }
-            return None;
+            Bind::Move(m) => {
+                self.set(m, down);
+                None
+            }
+            Bind::Window(action) => (down && !repeat).then_some(action),
         }
-        if let Some(m) = binding(key) {
-            self.set(m, down);
-            return None;
-        }
-        window_action(key, down, repeat)
     }
 
     fn set(&mut self, m: Move, down: bool) {
@@ -191,11 +245,12 @@ impl Controls {
     pub fn tick_input(&mut self) -> TickInput {
         let on = |m: Move| (self.held | self.pressed) & m as u16 != 0;
         let axis = |plus: Move, minus: Move| i8::from(on(plus)) - i8::from(on(minus));
-        let run = on(Move::Run);
+        let run = on(Move::Run) != self.settings.always_run;
         let keys_turn = f32::from(axis(Move::TurnLeft, Move::TurnRight)) * if run { TURN_RUN } else { TURN_WALK };
         // Mouse right turns clockwise, which is negative (angles grow
         // counter-clockwise).
-        let mouse_turn = -(self.mouse_dx as f32) * self.sensitivity;
+        let sign = if self.settings.invert_mouse { 1.0 } else { -1.0 };
+        let mouse_turn = sign * (self.mouse_dx as f32) * self.settings.sensitivity;
         let input = TickInput {
             forward: axis(Move::Forward, Move::Back),
             strafe: axis(Move::StrafeRight, Move::StrafeLeft),
@@ -217,7 +272,7 @@ mod tests {
 
     #[test]
     fn keys_make_tick_input() {
-        let mut c = Controls::new(0.5);
+        let mut c = Controls::new(Settings::with_sensitivity(0.5));
         assert_eq!(c.key(KeyCode::KeyW, true, false), None);
         c.key(KeyCode::KeyD, true, false);
         c.key(KeyCode::ShiftLeft, true, false);

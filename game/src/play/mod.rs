@@ -15,7 +15,7 @@
 mod app;
 mod clock;
 pub(crate) mod hud;
-mod input;
+pub(crate) mod input;
 mod saves;
 mod screen;
 mod screenshot;
@@ -31,8 +31,9 @@ use sightline::play::GameOptions;
 use winit::event_loop::{ControlFlow, EventLoop};
 
 use crate::cli::PlayArgs;
-use app::{App, AppOptions};
-use input::Controls;
+use crate::config::{self, Config};
+use app::{App, AppOptions, Changeable};
+use input::{Controls, Keymap};
 use screen::ScreenOptions;
 use session::Session;
 
@@ -40,6 +41,8 @@ const NO_DISPLAY_HINT: &str = "For frames without a window use `sightline captur
      (or `sightline replay DEMO --capture-every N -o DIR`).";
 
 pub fn run(args: &PlayArgs) -> Result<()> {
+    let settings = Settings::read(args);
+    let config = &settings.loaded.config;
     let vanilla = match &args.demo {
         Some(path) if crate::replay_lmp::is_vanilla(&path.to_string_lossy()) => {
             Some(crate::replay_lmp::VanillaRun::open(&path.to_string_lossy(), args.iwad.as_deref(), &args.deh)?)
@@ -79,25 +82,38 @@ pub fn run(args: &PlayArgs) -> Result<()> {
     let play = match &args.load {
         Some(save) => Playthrough::load(save)?,
         None => {
-            let no_autoaim = scenario.as_ref().is_some_and(|c| c.no_autoaim());
+            // A recording keeps Doom's autoaim: a demo does not say it was off.
+            let no_autoaim = scenario.as_ref().is_some_and(|c| c.no_autoaim())
+                || (!config.gameplay.autoaim && args.record.is_none() && args.demo.is_none());
             let setup = sightline::sim::game::Setup { no_autoaim, ..sightline::sim::game::Setup::SINGLE };
             Playthrough::of_set_up(&map, game_options, setup)
                 .with_context(|| format!("{}: cannot start the game", map.label()))?
         }
     };
-    let renderer = crate::replay::choose_renderer(args.renderer, play.game.level(), &play.map.label())?;
+    let chosen =
+        args.renderer.or_else(|| config.video.renderer.as_deref().and_then(sightline::render::Renderer::from_name));
+    let renderer = crate::replay::choose_renderer(chosen, play.game.level(), &play.map.label())?;
+    let keys = Keymap::of(&config.bindings());
     // A `.lmp` keeps turns to 1/256 of the circle: the game is fed them so.
     let lmp = args.record.as_deref().is_some_and(crate::replay_lmp::is_lmp_path);
     let mut session = match (demo, vanilla) {
         (_, Some((_, run))) => Session::vanilla(play, run),
         (Some(demo), None) => Session::demo(play, demo.inputs),
         (None, None) if args.autopilot => Session::autopilot(play, args.record.is_some(), lmp),
-        (None, None) => Session::live(play, Controls::new(args.mouse_sensitivity), args.record.is_some(), lmp),
+        (None, None) => {
+            let controls = input::Settings {
+                keys: keys.clone(),
+                sensitivity: args.mouse_sensitivity.unwrap_or(config.controls.mouse_sensitivity),
+                invert_mouse: config.controls.invert_mouse,
+                always_run: config.controls.always_run,
+            };
+            Session::live(play, Controls::new(controls), args.record.is_some(), lmp)
+        }
     };
 
     check_display()?;
     if !args.no_sound {
-        match sound::SoundOut::open(&args.sound) {
+        match sound::SoundOut::open(&args.sound.over(&config.sound)) {
             Ok(out) => {
                 println!("sound: playing to the system's audio");
                 session.sound = Some(out);
@@ -108,23 +124,33 @@ pub fn run(args: &PlayArgs) -> Result<()> {
     let event_loop = EventLoop::new()
         .map_err(|e| anyhow!("cannot open a window: no display could be reached ({e}).\n{NO_DISPLAY_HINT}"))?;
     event_loop.set_control_flow(ControlFlow::Poll);
-    let (w, h) = args.size;
+    let (w, h) = args.size.map_or(config.video.size, |(w, h)| (w as u32, h as u32));
+    let threads = match (args.threads, config.video.threads) {
+        (Some(n), _) => n,
+        (None, 0) => crate::cli::available_threads(),
+        (None, n) => n,
+    };
     let options = AppOptions {
         screen: ScreenOptions {
             title: app::title(&session.play),
-            frame: (w as u32, h as u32),
-            window: args.window.map(|(w, h)| (w as u32, h as u32)),
-            vsync: !args.no_vsync,
+            frame: (w, h),
+            window: args.window.map(|(w, h)| (w as u32, h as u32)).or(config.video.window),
+            vsync: !args.no_vsync && config.video.vsync,
+            fullscreen: config.video.fullscreen,
         },
         renderer,
-        threads: args.threads,
+        threads,
         frame_limit: args.frames,
-        hud: !args.no_hud,
+        hud: !args.no_hud && config.video.hud,
+        status_bar: config.video.status_bar,
+        keys,
         save_dir: args.save_dir.clone().unwrap_or_else(saves::default_dir),
         scenario,
     };
     let mut app = App::new(session, options);
+    let at_start = app.changeable();
     let ran = event_loop.run_app(&mut app);
+    settings.keep(at_start, app.changeable());
     if (args.frames.is_some() || args.stats) && app.timings.frames() > 0 {
         println!("{}", app.timings.summary());
     }
@@ -159,4 +185,63 @@ fn check_display() -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// The settings file this run reads and writes, and what it held.
+struct Settings {
+    path: Option<std::path::PathBuf>,
+    loaded: config::Loaded,
+}
+
+impl Settings {
+    /// Reads the settings file (`--config`, else the default one; none
+    /// with `--no-config`), printing its warnings.
+    fn read(args: &PlayArgs) -> Settings {
+        let path = if args.no_config { None } else { args.config.clone().or_else(config::default_path) };
+        let loaded = match &path {
+            Some(path) => config::load(path),
+            None => config::Loaded { config: Config::default(), warnings: Vec::new(), needs_backup: false },
+        };
+        if let Some(path) = path.as_ref().filter(|p| p.is_file()) {
+            println!("settings: {}", path.display());
+        }
+        for w in &loaded.warnings {
+            eprintln!("sightline: warning: {w}");
+        }
+        Settings { path, loaded }
+    }
+
+    /// Writes back what the player changed in the game (from `before` to
+    /// `after`), if anything; the settings the flags overrode for this run
+    /// keep the file's values.
+    fn keep(&self, before: Changeable, after: Changeable) {
+        let Some(path) = &self.path else { return };
+        let mut config = self.loaded.config.clone();
+        let v = &mut config.video;
+        if before.status_bar != after.status_bar {
+            v.status_bar = after.status_bar;
+        }
+        if before.hud != after.hud {
+            v.hud = after.hud;
+        }
+        if before.fullscreen != after.fullscreen {
+            v.fullscreen = after.fullscreen;
+        }
+        if let (Some(was), Some(now)) = (before.volumes, after.volumes) {
+            let percent = |v: f32| (v * 100.0).round().clamp(0.0, 100.0) as u8;
+            if was.0 != now.0 {
+                config.sound.effects_volume = percent(now.0);
+            }
+            if was.1 != now.1 {
+                config.sound.music_volume = percent(now.1);
+            }
+        }
+        if config == self.loaded.config {
+            return;
+        }
+        match config.save(path, self.loaded.needs_backup) {
+            Ok(()) => println!("settings saved to {}", path.display()),
+            Err(e) => eprintln!("sightline: warning: the settings were not saved: {e:#}"),
+        }
+    }
 }

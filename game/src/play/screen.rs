@@ -23,6 +23,8 @@ pub struct ScreenOptions {
     /// Window inner size; `None` picks a whole multiple of the frame that fits.
     pub window: Option<(u32, u32)>,
     pub vsync: bool,
+    /// Start full screen (borderless).
+    pub fullscreen: bool,
 }
 
 pub struct Screen {
@@ -37,7 +39,8 @@ impl Screen {
         let attributes = Window::default_attributes()
             .with_title(&options.title)
             .with_inner_size(PhysicalSize::new(w, h))
-            .with_min_inner_size(PhysicalSize::new(64, 40));
+            .with_min_inner_size(PhysicalSize::new(64, 40))
+            .with_fullscreen(options.fullscreen.then_some(Fullscreen::Borderless(None)));
         let window = Arc::new(event_loop.create_window(attributes).context("cannot open a window")?);
         let size = window.inner_size();
         let (frame, vsync) = (options.frame, options.vsync);
@@ -83,6 +86,11 @@ impl Screen {
             dst.copy_from_slice(&src.to_ne_bytes());
         }
         self.pixels.render().map_err(|e| anyhow!("cannot present the frame: {e}"))
+    }
+
+    /// Whether the window is full screen now.
+    pub fn fullscreen(&self) -> bool {
+        self.window.fullscreen().is_some()
     }
 
     pub fn toggle_fullscreen(&self) {

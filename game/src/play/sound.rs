@@ -12,7 +12,7 @@ use pulseaudio::{protocol, AsPlaybackSource, Client, PlaybackStream};
 use sightline::play::playthrough::Playthrough;
 use sightline::sound::{Audio, Cues, Sounds, OUTPUT_RATE};
 
-use crate::cli::SoundArgs;
+use crate::config::Sound;
 
 /// Bytes buffered in the server: 1/16 s of 16-bit stereo.
 const TARGET_BYTES: u32 = OUTPUT_RATE / 16 * 4;
@@ -37,7 +37,7 @@ pub struct SoundOut {
 impl SoundOut {
     /// Connects to the sound server and starts the stream; `Err` says why
     /// there is no sound (the game then runs silent).
-    pub fn open(args: &SoundArgs) -> Result<SoundOut, String> {
+    pub fn open(args: &Sound) -> Result<SoundOut, String> {
         let client = Client::from_env(c"sightline").map_err(|e| format!("no PulseAudio server to play to ({e})"))?;
         let audio = crate::audio::audio(args);
         let volumes = (audio.mixer.volume, audio.music.as_ref().map_or(0.0, |m| m.volume));
@@ -82,6 +82,11 @@ impl SoundOut {
     /// starts again with the next tick, as on a new map.
     pub fn restart(&mut self) {
         self.sounds = Sounds::new();
+    }
+
+    /// The effects' and music's volumes, 0 to 1.
+    pub fn volumes(&self) -> (f32, f32) {
+        self.volumes
     }
 
     /// Changes the effects' (`which` 0) or music's (1) volume by `step`;
