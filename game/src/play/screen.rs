@@ -43,24 +43,21 @@ impl Screen {
             .with_fullscreen(options.fullscreen.then_some(Fullscreen::Borderless(None)));
         let window = Arc::new(event_loop.create_window(attributes).context("cannot open a window")?);
         let size = window.inner_size();
-        let (frame, vsync) = (options.frame, options.vsync);
-        let build = |format| build_pixels(&window, frame, vsync, format).map_err(surface_error);
-        // pixels' default, an sRGB surface, exists everywhere; with it in hand
-        // the surface's formats are known, and a plain 8-bit one replaces it
-        // (see `build_pixels`). The second set-up costs about 60 ms once.
-        let mut pixels = build(None)?;
-        let plain = pixels
-            .context()
-            .surface_capabilities
-            .formats
-            .iter()
-            .copied()
-            .find(|f| matches!(f, TextureFormat::Bgra8Unorm | TextureFormat::Rgba8Unorm));
-        if let Some(format) = plain {
-            // One swapchain per window at a time (Vulkan refuses a second).
-            drop(pixels);
-            pixels = build(Some(format))?;
+        let mut failures = Vec::new();
+        let mut pixels = None;
+        for (name, backends) in backend_choices() {
+            match surface_on(&window, options, backends) {
+                Ok(p) => {
+                    if !failures.is_empty() {
+                        println!("window: presenting with {name}");
+                    }
+                    pixels = Some(p);
+                    break;
+                }
+                Err(e) => failures.push(format!("{name}: {e}")),
+            }
         }
+        let Some(mut pixels) = pixels else { return Err(no_surface(&failures)) };
         pixels.set_scaling_mode(scaling_mode(options.frame, (size.width, size.height)));
         let mut screen = Screen { window, pixels, frame: options.frame };
         screen.resize(size.width, size.height)?;
@@ -135,21 +132,89 @@ fn build_pixels(
     window: &Arc<Window>,
     frame: (u32, u32),
     vsync: bool,
+    backends: Backends,
     surface: Option<TextureFormat>,
 ) -> Result<Pixels<'static>, pixels::Error> {
     let size = window.inner_size();
     // pixels panics on a zero-sized surface; a window can report one before
     // it is mapped.
     let texture = SurfaceTexture::new(size.width.max(1), size.height.max(1), Arc::clone(window));
-    // Vulkan, Metal, DirectX 12, unless WGPU_BACKEND says otherwise. Not
-    // OpenGL: pixels 0.17 on Mesa's software GL was found not to present
-    // (and on a machine without Mesa's EGL finds no adapter at all), whereas
-    // software Vulkan (lavapipe) works under Xvfb.
-    let backends = Backends::from_env().unwrap_or(Backends::PRIMARY);
+    // Vulkan, Metal, DirectX 12 first (see `backend_choices`); OpenGL only
+    // when they fail: pixels 0.17 on Mesa's software GL was found not to
+    // present (and on a machine without Mesa's EGL finds no adapter at
+    // all), whereas software Vulkan (lavapipe) works under Xvfb.
     let builder = PixelsBuilder::new(frame.0, frame.1, texture).wgpu_backend(backends).enable_vsync(vsync);
     match surface {
         Some(format) => builder.texture_format(TextureFormat::Rgba8Unorm).surface_texture_format(format).build(),
         None => builder.build(),
+    }
+}
+
+/// The backends to try, in order: the one `WGPU_BACKEND` names (if set),
+/// then Vulkan, Metal or DirectX 12, then OpenGL.
+fn backend_choices() -> Vec<(String, Backends)> {
+    let mut choices = Vec::new();
+    if let Some(named) = Backends::from_env().filter(|b| !b.is_empty()) {
+        let var = std::env::var("WGPU_BACKEND").unwrap_or_default();
+        choices.push((format!("WGPU_BACKEND={var}"), named));
+    }
+    for (name, backends) in [("Vulkan, Metal or DirectX 12", Backends::PRIMARY), ("OpenGL", Backends::GL)] {
+        if choices.iter().all(|(_, b)| *b != backends) {
+            choices.push((name.to_string(), backends));
+        }
+    }
+    choices
+}
+
+/// The window's surface on `backends`, or why not: an error, or a panic
+/// inside the graphics stack turned into one (wgpu panics on some
+/// adapters, e.g. "Surface does not support the adapter's queue family";
+/// no panic of it reaches the player).
+fn surface_on(window: &Arc<Window>, options: &ScreenOptions, backends: Backends) -> Result<Pixels<'static>, String> {
+    let hook = std::panic::take_hook();
+    std::panic::set_hook(Box::new(|_| {}));
+    let made = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| plain_surface(window, options, backends)));
+    std::panic::set_hook(hook);
+    match made {
+        Ok(made) => made.map_err(|e| {
+            let detail = std::error::Error::source(&e).map(|s| format!(" ({s})")).unwrap_or_default();
+            format!("{e}{detail}")
+        }),
+        Err(panic) => {
+            let what = panic
+                .downcast_ref::<String>()
+                .map(String::as_str)
+                .or_else(|| panic.downcast_ref::<&str>().copied())
+                .unwrap_or("a panic");
+            Err(format!("the graphics stack failed: {what}"))
+        }
+    }
+}
+
+/// pixels' default, an sRGB surface, exists everywhere; with it in hand
+/// the surface's formats are known, and a plain 8-bit one replaces it
+/// (see `build_pixels`). The second set-up costs about 60 ms once.
+fn plain_surface(
+    window: &Arc<Window>,
+    options: &ScreenOptions,
+    backends: Backends,
+) -> Result<Pixels<'static>, pixels::Error> {
+    let build = |format| build_pixels(window, options.frame, options.vsync, backends, format);
+    let pixels = build(None)?;
+    let plain = pixels
+        .context()
+        .surface_capabilities
+        .formats
+        .iter()
+        .copied()
+        .find(|f| matches!(f, TextureFormat::Bgra8Unorm | TextureFormat::Rgba8Unorm));
+    match plain {
+        Some(format) => {
+            // One swapchain per window at a time (Vulkan refuses a second).
+            drop(pixels);
+            build(Some(format))
+        }
+        None => Ok(pixels),
     }
 }
 
@@ -179,21 +244,18 @@ fn default_window_size(event_loop: &ActiveEventLoop, frame: (u32, u32)) -> (u32,
     (frame.0 * k, frame.1 * k)
 }
 
-/// pixels' errors, with what to install when there is no adapter. Without
-/// a Vulkan driver (or without the Vulkan loader) wgpu has no instance to
-/// make a surface with, so that shows as a surface error, not a missing
-/// adapter.
-fn surface_error(e: pixels::Error) -> anyhow::Error {
-    const SOFTWARE_VULKAN: &str = "On Debian or Ubuntu, Mesa's software Vulkan driver provides one:\n    \
+/// No backend could present: each one's failure, and what to install.
+/// (Without a Vulkan driver, or without the Vulkan loader, wgpu has no
+/// instance to make a surface with, so that shows as a surface error, not
+/// a missing adapter.)
+fn no_surface(failures: &[String]) -> anyhow::Error {
+    anyhow!(
+        "no graphics backend could present the window:\n  {}\n\
+         On Debian or Ubuntu, Mesa's software Vulkan driver provides one:\n    \
          sudo apt-get install mesa-vulkan-drivers libvulkan1\n\
-         Headless frames need no GPU: sightline capture MAP -o frame.png";
-    let detail = std::error::Error::source(&e).map(|s| format!(" ({s})")).unwrap_or_default();
-    match e {
-        pixels::Error::AdapterNotFound | pixels::Error::CreateSurface(_) | pixels::Error::DeviceNotFound(_) => {
-            anyhow!("no graphics adapter to present with (Vulkan, Metal or DirectX 12): {e}{detail}\n{SOFTWARE_VULKAN}")
-        }
-        other => anyhow!("cannot set up the window's GPU surface: {other}{detail}\n{SOFTWARE_VULKAN}"),
-    }
+         Headless frames need no GPU: sightline capture MAP -o frame.png",
+        failures.join("\n  ")
+    )
 }
 
 #[cfg(test)]
