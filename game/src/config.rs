@@ -22,12 +22,14 @@ use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
 use winit::keyboard::KeyCode;
 
+use crate::play::gamepad::{default_buttons, PadMap, BUTTONS};
 use crate::play::input::{Bind, BINDS};
 
 /// Every setting, in the file's sections.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Config {
     pub controls: Controls,
+    pub gamepad: Gamepad,
     pub sound: Sound,
     pub video: Video,
     pub gameplay: Gameplay,
@@ -44,6 +46,21 @@ pub struct Controls {
     /// Each action's keys (winit's `KeyCode` names: `KeyW`, `ArrowUp`,
     /// `ShiftLeft`, `Digit1`, `F11`, ...), at most two each.
     pub keys: BTreeMap<String, Vec<String>>,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Gamepad {
+    /// Read gamepads at all.
+    pub enabled: bool,
+    /// Stick positions nearer the centre than this (0 to 0.9) are centred.
+    pub dead_zone: f32,
+    /// Degrees per tick of turn with the right stick fully over (0.5 to 20).
+    pub turn_speed: f32,
+    /// Each button's action (`South`, `East`, `West`, `North`,
+    /// `LeftShoulder`, `RightShoulder`, `LeftTrigger`, `RightTrigger`,
+    /// `Select`, `Start`, `LeftStick`, `RightStick`, `DpadUp`, ...), by the
+    /// action names of `controls.keys`.
+    pub buttons: BTreeMap<String, String>,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -93,6 +110,7 @@ impl Default for Config {
             .collect();
         Config {
             controls: Controls { mouse_sensitivity: 0.15, invert_mouse: false, always_run: false, keys },
+            gamepad: Gamepad { enabled: true, dead_zone: 0.2, turn_speed: 7.0, buttons: default_buttons() },
             sound: Sound { effects_volume: 80, music_volume: 60, channels: 8, soundfont: None, music: true },
             video: Video {
                 fullscreen: false,
@@ -197,6 +215,7 @@ struct Reader<'a> {
 
 const SECTIONS: &[(&str, &[&str])] = &[
     ("controls", &["mouse_sensitivity", "invert_mouse", "always_run", "keys"]),
+    ("gamepad", &["enabled", "dead_zone", "turn_speed", "buttons"]),
     ("sound", &["effects_volume", "music_volume", "channels", "soundfont", "music"]),
     ("video", &["fullscreen", "window", "size", "renderer", "vsync", "status_bar", "hud", "threads"]),
     ("gameplay", &["autoaim"]),
@@ -273,6 +292,24 @@ impl Reader<'_> {
                     let line = line_of(self.text, Some(section), key);
                     for e in bad {
                         self.warn(line, "controls.keys", format!("{e}; kept its default keys"));
+                    }
+                }
+            }
+            ("gamepad", "enabled") => c.gamepad.enabled = typed(value, "true or false")?,
+            ("gamepad", "dead_zone") => c.gamepad.dead_zone = ranged(value, 0.0, 0.9, "a number from 0 to 0.9")?,
+            ("gamepad", "turn_speed") => c.gamepad.turn_speed = ranged(value, 0.5, 20.0, "a number from 0.5 to 20")?,
+            ("gamepad", "buttons") => {
+                let buttons: BTreeMap<String, String> = typed(value, "a map of button names to action names")?;
+                let line = line_of(self.text, Some(section), key);
+                for (button, action) in buttons {
+                    if !BUTTONS.iter().any(|(n, _)| *n == button) {
+                        let known: Vec<_> = BUTTONS.iter().map(|(n, _)| *n).collect();
+                        let message = format!("unknown button `{button}` (known: {})", known.join(", "));
+                        self.warn(line, "gamepad.buttons", message);
+                    } else if !BINDS.iter().any(|(n, _, _)| *n == action) {
+                        self.warn(line, "gamepad.buttons", format!("`{button}`: unknown action `{action}`"));
+                    } else {
+                        self.config.gamepad.buttons.insert(button, action);
                     }
                 }
             }
@@ -406,6 +443,12 @@ impl Config {
         std::fs::rename(&tmp, path).with_context(|| format!("cannot replace {}", path.display())).inspect_err(|_| {
             let _ = std::fs::remove_file(&tmp);
         })
+    }
+
+    /// What the gamepad's buttons and sticks do.
+    pub fn pad_map(&self) -> PadMap {
+        let g = &self.gamepad;
+        PadMap::of(g.buttons.iter().map(|(b, a)| (b.as_str(), a.as_str())), g.dead_zone, g.turn_speed)
     }
 
     /// Each bound key and what it does.

@@ -67,7 +67,7 @@ fn an_unknown_key_is_one_warning_and_the_good_keys_are_kept() {
         vec![
             "/home/p/.config/sightline/config.ron:4: `sound.volume`: unknown key (known in `sound`: effects_volume, \
              music_volume, channels, soundfont, music)",
-            "/home/p/.config/sightline/config.ron:6: `colour`: unknown section (known: controls, sound, video, gameplay)",
+            "/home/p/.config/sightline/config.ron:6: `colour`: unknown section (known: controls, gamepad, sound, video, gameplay)",
         ]
     );
     assert!(loaded.needs_backup);
@@ -178,6 +178,7 @@ fn a_rebound_key_drives_the_game() {
         sensitivity: config.controls.mouse_sensitivity,
         invert_mouse: config.controls.invert_mouse,
         always_run: config.controls.always_run,
+        pad: config.pad_map(),
     };
     let mut controls = Controls::new(settings);
     controls.key(KeyCode::KeyI, true, false);

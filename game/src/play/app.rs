@@ -62,6 +62,8 @@ pub struct App {
     keys: Keymap,
     /// Whether the window was last seen full screen.
     fullscreen: bool,
+    /// The gamepads' events, if any pad was found.
+    pads: Option<std::sync::mpsc::Receiver<super::gamepad::PadEvent>>,
     /// What stopped the loop, if something went wrong.
     pub error: Option<anyhow::Error>,
 }
@@ -93,6 +95,7 @@ pub struct AppOptions {
     /// Doom's status bar (else the minimal HUD).
     pub status_bar: bool,
     pub keys: Keymap,
+    pub pads: Option<std::sync::mpsc::Receiver<super::gamepad::PadEvent>>,
     pub save_dir: std::path::PathBuf,
     /// A ViZDoom scenario being played: its reward is shown.
     pub scenario: Option<sightline::scenario::ScenarioConfig>,
@@ -133,9 +136,25 @@ impl App {
             scenario: options.scenario,
             prompt: None,
             keys: options.keys,
+            pads: options.pads,
             fullscreen: options.screen.fullscreen,
             error: None,
         }
+    }
+
+    /// Hands the gamepads' events since the last frame to the controls
+    /// (a demo or the autopilot ignores them) and carries out the window
+    /// actions their buttons ask for.
+    fn read_pads(&mut self, event_loop: &ActiveEventLoop) -> Result<()> {
+        let Some(pads) = &self.pads else { return Ok(()) };
+        let events: Vec<_> = pads.try_iter().collect();
+        for event in events {
+            let action = self.session.controls().and_then(|c| c.pad(event));
+            if let Some(action) = action {
+                self.act(event_loop, action)?;
+            }
+        }
+        Ok(())
     }
 
     /// The settings the player can change in the game, as they are now.
@@ -162,6 +181,7 @@ impl App {
         let interval = self.last_frame.map_or(Duration::ZERO, |t| now - t);
         self.last_frame = Some(now);
         let (ticks, alpha) = self.clock.advance(interval);
+        self.read_pads(event_loop)?;
         self.reload_if_edited(now);
         self.session.run(ticks);
         if let Some(e) = self.session.error.take() {

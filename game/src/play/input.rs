@@ -8,11 +8,15 @@ use std::collections::HashMap;
 use sightline::play::TickInput;
 use winit::keyboard::KeyCode;
 
+use super::gamepad::{PadAxis, PadEvent, PadMap};
+
 /// Keyboard turning, degrees per tick: Doom's `angleturn` of 640 (walking) and
 /// 1280 (running) in 16.16 binary angles, 640 / 65536 * 360 = 3.5 degrees, so
 /// the arrows turn 123 and 246 degrees per second at 35 Hz.
 const TURN_WALK: f32 = 640.0 / 65536.0 * 360.0;
 const TURN_RUN: f32 = 1280.0 / 65536.0 * 360.0;
+/// A left stick pushed further than this (after the dead zone) runs.
+const STICK_RUN: f32 = 0.8;
 
 /// Something a key does to the window rather than to the player.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -161,13 +165,21 @@ pub struct Settings {
     pub invert_mouse: bool,
     /// Run unless the run key is held.
     pub always_run: bool,
+    /// What the gamepad's buttons and sticks do.
+    pub pad: PadMap,
 }
 
 impl Settings {
     /// Doom's keys and the given mouse sensitivity.
     #[cfg(test)]
     pub fn with_sensitivity(sensitivity: f32) -> Settings {
-        Settings { keys: Keymap::default(), sensitivity, invert_mouse: false, always_run: false }
+        Settings {
+            keys: Keymap::default(),
+            sensitivity,
+            invert_mouse: false,
+            always_run: false,
+            pad: PadMap::default(),
+        }
     }
 }
 
@@ -175,6 +187,11 @@ pub struct Controls {
     settings: Settings,
     /// Movement keys down now.
     held: u16,
+    /// Movement buttons of the gamepad down now (apart from the keys, so
+    /// that letting go of one does not let go of the other).
+    pad_held: u16,
+    /// The sticks' positions, -1 to 1: left x, left y, right x, right y.
+    sticks: [f32; 4],
     /// Movement keys pressed since the last tick, so a tap shorter than a
     /// tick (28.6 ms) still moves or uses once.
     pressed: u16,
@@ -186,7 +203,7 @@ pub struct Controls {
 
 impl Controls {
     pub fn new(settings: Settings) -> Controls {
-        Controls { settings, held: 0, pressed: 0, mouse_dx: 0.0, weapon: 0 }
+        Controls { settings, held: 0, pad_held: 0, sticks: [0.0; 4], pressed: 0, mouse_dx: 0.0, weapon: 0 }
     }
 
     /// The keymap these controls read.
@@ -210,6 +227,42 @@ impl Controls {
                 None
             }
             Bind::Window(action) => (down && !repeat).then_some(action),
+        }
+    }
+
+    /// A gamepad event: a button does what its binding says (as a key
+    /// would), a stick moves. Returns the window action of a press.
+    pub fn pad(&mut self, event: PadEvent) -> Option<Action> {
+        match event {
+            PadEvent::Axis { axis, value } => {
+                let i = match axis {
+                    PadAxis::LeftX => 0,
+                    PadAxis::LeftY => 1,
+                    PadAxis::RightX => 2,
+                    PadAxis::RightY => 3,
+                };
+                self.sticks[i] = value;
+                None
+            }
+            PadEvent::Button { button, down } => match self.settings.pad.get(button)? {
+                Bind::Weapon(slot) => {
+                    if down {
+                        self.weapon = slot;
+                    }
+                    None
+                }
+                Bind::Move(m) => {
+                    let bit = m as u16;
+                    if down {
+                        self.pad_held |= bit;
+                        self.pressed |= bit;
+                    } else {
+                        self.pad_held &= !bit;
+                    }
+                    None
+                }
+                Bind::Window(action) => down.then_some(action),
+            },
         }
     }
 
@@ -237,24 +290,41 @@ impl Controls {
     /// never hear the key-up.
     pub fn release_all(&mut self) {
         self.held = 0;
+        self.pad_held = 0;
+        self.sticks = [0.0; 4];
         self.pressed = 0;
         self.mouse_dx = 0.0;
     }
 
     /// The input for the next tick; clears what was latched for this one.
     pub fn tick_input(&mut self) -> TickInput {
-        let on = |m: Move| (self.held | self.pressed) & m as u16 != 0;
+        let on = |m: Move| (self.held | self.pad_held | self.pressed) & m as u16 != 0;
         let axis = |plus: Move, minus: Move| i8::from(on(plus)) - i8::from(on(minus));
-        let run = on(Move::Run) != self.settings.always_run;
+        // The sticks: past the dead zone the left one walks (runs when
+        // pushed most of the way) and the right one turns in proportion.
+        let pad = &self.settings.pad;
+        let [lx, ly, rx, _] = self.sticks.map(|v| pad.live(v));
+        let stick = |v: f32| {
+            if v > 0.0 {
+                1
+            } else if v < 0.0 {
+                -1
+            } else {
+                0
+            }
+        };
+        let stick_run = lx.abs().max(ly.abs()) > STICK_RUN;
+        let run = (on(Move::Run) || stick_run) != self.settings.always_run;
         let keys_turn = f32::from(axis(Move::TurnLeft, Move::TurnRight)) * if run { TURN_RUN } else { TURN_WALK };
+        let stick_turn = -rx * pad.turn_speed;
         // Mouse right turns clockwise, which is negative (angles grow
         // counter-clockwise).
         let sign = if self.settings.invert_mouse { 1.0 } else { -1.0 };
         let mouse_turn = sign * (self.mouse_dx as f32) * self.settings.sensitivity;
         let input = TickInput {
-            forward: axis(Move::Forward, Move::Back),
-            strafe: axis(Move::StrafeRight, Move::StrafeLeft),
-            turn: keys_turn + mouse_turn,
+            forward: (axis(Move::Forward, Move::Back) - stick(ly)).clamp(-1, 1),
+            strafe: (axis(Move::StrafeRight, Move::StrafeLeft) + stick(lx)).clamp(-1, 1),
+            turn: keys_turn + mouse_turn + stick_turn,
             run,
             use_line: on(Move::Use),
             fire: on(Move::Fire),

@@ -14,6 +14,7 @@
 
 mod app;
 mod clock;
+pub(crate) mod gamepad;
 pub(crate) mod hud;
 pub(crate) mod input;
 mod saves;
@@ -106,6 +107,7 @@ pub fn run(args: &PlayArgs) -> Result<()> {
                 sensitivity: args.mouse_sensitivity.unwrap_or(config.controls.mouse_sensitivity),
                 invert_mouse: config.controls.invert_mouse,
                 always_run: config.controls.always_run,
+                pad: config.pad_map(),
             };
             Session::live(play, Controls::new(controls), args.record.is_some(), lmp)
         }
@@ -146,6 +148,7 @@ pub fn run(args: &PlayArgs) -> Result<()> {
         keys,
         save_dir: args.save_dir.clone().unwrap_or_else(saves::default_dir),
         scenario,
+        pads: if config.gamepad.enabled { gamepad::open_all() } else { None },
     };
     let mut app = App::new(session, options);
     let at_start = app.changeable();
