@@ -12,10 +12,10 @@ use std::sync::Arc;
 use serde::Deserialize;
 
 use crate::bsp::{build, BuildOptions};
-use crate::level::{open_level, Level, LevelError};
+use crate::level::{open_compiled, open_level, Level, LevelError};
 use crate::map::validate::validate;
 use crate::map::MapError;
-use crate::materials::Materials;
+use crate::materials::{Materials, MissingArt};
 use crate::play::world::Exit;
 use crate::texture::Library;
 use crate::wad::import::Report;
@@ -135,10 +135,51 @@ impl Opened {
     }
 }
 
+/// Where a map's pictures come from, besides its own (PNGs beside a RON
+/// map, a WAD map's WADs).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct ArtOptions {
+    /// WADs, later over earlier (an IWAD, then a PWAD), whose sprites and
+    /// textures a RON map's names take after its own PNGs and before the
+    /// built-in set (`--iwad`). A WAD map has its own.
+    pub wads: Vec<PathBuf>,
+    /// What an actor's frame no art has becomes; `None`: a stand-in with
+    /// no WAD, a placeholder with one ([`Materials::resolve_in`]).
+    pub missing: Option<MissingArt>,
+}
+
+impl ArtOptions {
+    /// No sprite is looked up: for a command that draws nothing.
+    pub fn none() -> ArtOptions {
+        ArtOptions { wads: Vec::new(), missing: Some(MissingArt::Skip) }
+    }
+}
+
 /// Opens `map`: a file as [`open_level`] does; a WAD map converted in
 /// memory, validated and compiled with `options`, its art read from the WAD.
 pub fn open(map: &MapRef, options: &BuildOptions) -> Result<Opened, CampaignError> {
+    open_with(map, options, &ArtOptions::default())
+}
+
+/// [`open`] with its pictures from `art`.
+pub fn open_with(map: &MapRef, options: &BuildOptions, art: &ArtOptions) -> Result<Opened, CampaignError> {
+    let resolve = |compiled: &crate::bsp::CompiledMap, library: &Library, label: &str| {
+        let missing =
+            art.missing.unwrap_or(if library.wad.is_some() { MissingArt::Placeholder } else { MissingArt::StandIn });
+        Materials::resolve_with(&compiled.map, library, label, missing).map_err(LevelError::from)
+    };
     match map {
+        MapRef::File(path) if !art.wads.is_empty() || art.missing.is_some() => {
+            let label = path.display().to_string();
+            let compiled = open_compiled(path, options)?;
+            let dirs = vec![path.parent().map(Path::to_path_buf).unwrap_or_default()];
+            let wad = match &art.wads[..] {
+                [] => None,
+                wads => Some(Arc::new(WadArt::new(stack(wads)?)?)),
+            };
+            let materials = resolve(&compiled, &Library { dirs, wad }, &label)?;
+            Ok(Opened::of_level(Level::new(compiled, materials), &label))
+        }
         MapRef::File(path) => Ok(Opened {
             level: open_level(path, options)?,
             map: map.clone(),
@@ -157,23 +198,23 @@ pub fn open(map: &MapRef, options: &BuildOptions) -> Result<Opened, CampaignErro
                     available: "none".into(),
                 })?,
             };
-            let art = Arc::new(WadArt::new(wad)?);
-            let records = art.wad.map_records(&name)?;
-            let converted = crate::wad::import::convert_records(&art.wad, &records, &art.art)?;
-            let label = format!("{}:{name}", art.wad.path);
+            let wad_art = Arc::new(WadArt::new(wad)?);
+            let records = wad_art.wad.map_records(&name)?;
+            let converted = crate::wad::import::convert_records(&wad_art.wad, &records, &wad_art.art)?;
+            let label = format!("{}:{name}", wad_art.wad.path);
             let checked = validate(&converted.source)
                 .map_err(|problems| LevelError::Map(MapError::Invalid { path: label.clone(), problems }))?;
             let compiled =
                 build(&checked, options).map_err(|error| LevelError::Compile { path: label.clone(), error })?;
-            let library = Library { dirs: Vec::new(), wad: Some(art.clone()) };
-            let materials = Materials::resolve_in(&compiled.map, &library, &label).map_err(LevelError::from)?;
+            let library = Library { dirs: Vec::new(), wad: Some(wad_art.clone()) };
+            let materials = resolve(&compiled, &library, &label)?;
             Ok(Opened {
                 level: Level::new(compiled, materials),
                 map: MapRef::Wad { wads: wads.clone(), map: Some(name) },
                 repairs: converted.repairs,
                 report: Some(converted.report),
                 links: Some(converted.links),
-                wad: Some(art),
+                wad: Some(wad_art),
             })
         }
     }

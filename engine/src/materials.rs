@@ -6,7 +6,11 @@
 use std::collections::{BTreeSet, HashMap};
 use std::path::PathBuf;
 
-use crate::actors::ActorTable;
+mod standin;
+
+pub use standin::MissingArt;
+
+use crate::actors::{ActorDef, ActorTable, StateId};
 use crate::map::{Map, Side, PLAYER_START, SKY};
 use crate::texture::animdefs::AnimDefs;
 use crate::texture::{Library, TextureError, TextureId, TextureKind, TextureSet};
@@ -62,6 +66,13 @@ pub struct Materials {
     /// (or itself, where it has no green to redraw), made when a body in
     /// that colour is first drawn ([`Materials::in_colour`]).
     pub coloured: HashMap<(TextureId, u8), TextureId>,
+    /// What an actor's frame that no art has becomes.
+    pub missing: MissingArt,
+    /// The sprite frames (`TROOA`) drawn as placeholders, each warned of once.
+    pub placeholders: BTreeSet<String>,
+    /// What a person should hear of: one line per frame drawn as a
+    /// placeholder, naming the actor and the frame.
+    pub warnings: Vec<String>,
 }
 
 /// Frames a sprite may have: `A` to `]` (Doom's 29).
@@ -109,8 +120,24 @@ impl Materials {
     }
 
     /// [`Materials::resolve`] in a library: PNG folders, then a WAD, then
-    /// the built-in set.
+    /// the built-in set. An actor's frame none of them has is a stand-in
+    /// figure when the library has no WAD, else a placeholder with a
+    /// warning ([`MissingArt`]).
     pub fn resolve_in(map: &Map, library: &Library, label: &str) -> Result<Materials, MaterialError> {
+        let missing = if library.wad.is_some() { MissingArt::Placeholder } else { MissingArt::StandIn };
+        Materials::resolve_with(map, library, label, missing)
+    }
+
+    /// [`Materials::resolve_in`] with `missing` saying what an actor's
+    /// frame no art has becomes; with [`MissingArt::Skip`] no sprite is
+    /// looked up at all (walls and flats still are: their sizes matter to
+    /// play, as Doom's raise-to-texture floors measure them).
+    pub fn resolve_with(
+        map: &Map,
+        library: &Library,
+        label: &str,
+        missing: MissingArt,
+    ) -> Result<Materials, MaterialError> {
         let mut m = Materials::default();
         // A name may be a texture of the other kind (a STONE floor): walls and
         // flats are both just images. Report the lookup of the expected kind.
@@ -161,29 +188,6 @@ impl Materials {
             let ceiling = plane(&s.ceiling_texture, "ceiling")?;
             sectors.push(SectorTextures { floor, ceiling });
         }
-        let mut sprites = Vec::with_capacity(map.things.len());
-        for (i, t) in map.things.iter().enumerate() {
-            let element = format!("thing {i} (kind {:?}) sprite", t.kind);
-            let sprite = if t.kind == PLAYER_START {
-                None
-            } else if map.version >= 2 {
-                // A thing type names its first frame; its front view is
-                // rotation 0 (all sides alike) or 1 (facing the viewer).
-                match ActorTable::active().get(&t.kind).and_then(|ty| ActorTable::active().first_frame(ty)) {
-                    None => None,
-                    Some(stem) => {
-                        let all_sides = format!("{stem}0");
-                        match get(&all_sides, TextureKind::Sprite, element.clone()) {
-                            Ok(id) => Some(id),
-                            Err(_) => Some(get(&format!("{stem}1"), TextureKind::Sprite, element)?),
-                        }
-                    }
-                }
-            } else {
-                Some(get(&t.kind.to_ascii_uppercase(), TextureKind::Sprite, element)?)
-            };
-            sprites.push(sprite);
-        }
         let sky = match (&map.sky, uses_sky) {
             (_, false) => None,
             (Some(name), true) => Some(get(name, TextureKind::Wall, format!("the sky ({name})"))?),
@@ -191,7 +195,8 @@ impl Materials {
         };
         let masked =
             sides.iter().zip(&map.lines).any(|(s, l)| l.back.is_some() && s.iter().any(|s| s.middle.is_some()));
-        let mut m = Materials { sides, sectors, sprites, sky, masked, ..m };
+        let mut m = Materials { sides, sectors, sky, masked, missing, ..m };
+        m.sprites = m.thing_sprites(map, library, label)?;
         let own = own_animations(map, library).map_err(|error| MaterialError {
             path: label.to_string(),
             element: "the animations file".into(),
@@ -202,6 +207,98 @@ impl Materials {
             m.add_sprite_views(map, library);
         }
         Ok(m)
+    }
+
+    /// Per thing, its sprite: `None` for things not drawn (the player
+    /// start, markers) and, with [`MissingArt::Skip`], for all. A version-2
+    /// thing's actor whose first frame no art has takes its stand-in or a
+    /// placeholder; a version-1 thing names a picture, which must exist.
+    fn thing_sprites(
+        &mut self,
+        map: &Map,
+        library: &Library,
+        label: &str,
+    ) -> Result<Vec<Option<TextureId>>, MaterialError> {
+        let table = ActorTable::active();
+        let mut sprites = Vec::with_capacity(map.things.len());
+        for (i, t) in map.things.iter().enumerate() {
+            let error = |error| MaterialError {
+                path: label.to_string(),
+                element: format!("thing {i} (kind {:?}) sprite", t.kind),
+                error,
+            };
+            if t.kind == PLAYER_START || self.missing == MissingArt::Skip {
+                sprites.push(None);
+                continue;
+            }
+            if map.version < 2 {
+                let id = self
+                    .textures
+                    .resolve_in(&t.kind.to_ascii_uppercase(), TextureKind::Sprite, library)
+                    .map_err(error)?;
+                sprites.push(Some(id));
+                continue;
+            }
+            // A thing type names its first frame; its front view is
+            // rotation 0 (all sides alike) or 1 (facing the viewer).
+            let Some(actor) = table.get(&t.kind).filter(|a| table.first_frame(a).is_some()) else {
+                sprites.push(None);
+                continue;
+            };
+            let Some(spawn) = actor.label("Spawn").map(|s| table.state(s)) else {
+                sprites.push(None);
+                continue;
+            };
+            let (sprite, frame) = (spawn.sprite, spawn.frame);
+            let stem = format!("{}{}", table.sprites[usize::from(sprite)], char::from(b'A' + frame));
+            let found = match self.textures.resolve_in(&format!("{stem}0"), TextureKind::Sprite, library) {
+                Err(TextureError::Missing { .. }) => {
+                    self.textures.resolve_in(&format!("{stem}1"), TextureKind::Sprite, library)
+                }
+                other => other,
+            };
+            sprites.push(match found {
+                Ok(id) => Some(id),
+                Err(TextureError::Missing { .. }) => self.unpainted(table, actor, sprite, frame).map(|views| views[0]),
+                Err(e) => return Err(error(e)),
+            });
+        }
+        Ok(sprites)
+    }
+
+    /// The views of `actor`'s frame that no art has, by [`Self::missing`]:
+    /// its stand-in, or a placeholder and a warning (once a frame).
+    fn unpainted(&mut self, table: &ActorTable, actor: &ActorDef, sprite: u16, frame: u8) -> Option<[TextureId; 8]> {
+        let stem = format!("{}{}", table.sprites[usize::from(sprite)], char::from(b'A' + frame));
+        match self.missing {
+            MissingArt::Skip => None,
+            MissingArt::StandIn => {
+                let views = standin::views(table, actor, sprite, frame);
+                let ids: Vec<TextureId> = if views.len() == 1 {
+                    vec![self.textures.insert(&format!("{stem}0"), TextureKind::Sprite, views[0].clone())]
+                } else {
+                    let name = |k: usize| format!("{stem}{}", k + 1);
+                    views
+                        .iter()
+                        .enumerate()
+                        .map(|(k, v)| self.textures.insert(&name(k), TextureKind::Sprite, v.clone()))
+                        .collect()
+                };
+                Some(std::array::from_fn(|k| ids[k % ids.len()]))
+            }
+            MissingArt::Placeholder => {
+                let id =
+                    self.textures.insert(&format!("{stem}0"), TextureKind::Sprite, standin::placeholder(Some(actor)));
+                if self.placeholders.insert(stem.clone()) {
+                    self.warnings.push(format!(
+                        "no picture of {}'s frame {} (sprite {stem}): drawn as a placeholder",
+                        actor.name,
+                        char::from(b'A' + frame)
+                    ));
+                }
+                Some([id; 8])
+            }
+        }
     }
 
     /// Texture `id` in player colour `colour` (Doom's translation bits: the
@@ -246,6 +343,9 @@ impl Materials {
     /// with sprites of its own, adds its actors this way; the table's
     /// sprites must extend the active table's, as a layered table's do).
     pub fn add_actor_views(&mut self, table: &ActorTable, actors: Vec<usize>, library: &Library) {
+        if self.missing == MissingArt::Skip {
+            return;
+        }
         let effects = ["bullet_puff", "blood", "teleport_fog", "item_fog"].into_iter().filter_map(|n| table.index(n));
         let weapons: Vec<usize> = (0..table.actors.len()).filter(|&i| table.actors[i].weapon.is_some()).collect();
         let slots = table.sprites.len() * SPRITE_FRAMES;
@@ -272,8 +372,24 @@ impl Materials {
                 }
             }
         }
-        for actor in table.closure(roots.chain(effects).chain(weapons.iter().copied())) {
-            for id in table.states_of(&table.actors[actor]) {
+        // What the map can bring into play is drawn whatever the art
+        // lacks; the other weapons only where the art has them (their
+        // screen pictures are what matters).
+        let placed = table.closure(roots.chain(effects));
+        for actor in table.closure(placed.iter().copied().chain(weapons.iter().copied())) {
+            let def = &table.actors[actor];
+            // A weapon's own states are on the screen (its screen views
+            // above); in the world it shows its Spawn frames alone.
+            let world: Option<Vec<StateId>> = def.weapon.as_ref().map(|_| {
+                let mut run = Vec::new();
+                let mut at = def.label("Spawn");
+                while let Some(id) = at.filter(|id| !run.contains(id)) {
+                    run.push(id);
+                    at = table.state(id).next;
+                }
+                run
+            });
+            for id in table.states_of(def) {
                 let state = table.state(id);
                 let slot = Materials::view_index(state.sprite, state.frame);
                 if self.sprite_views[slot].is_some() {
@@ -282,13 +398,16 @@ impl Materials {
                 let stem = format!("{}{}", table.sprites[usize::from(state.sprite)], char::from(b'A' + state.frame));
                 let mut find =
                     |view: char| self.textures.resolve_in(&format!("{stem}{view}"), TextureKind::Sprite, library).ok();
-                self.sprite_views[slot] = match find('0') {
+                let found = match find('0') {
                     Some(all) => Some([all; 8]),
                     None => {
                         let views: Vec<Option<TextureId>> = ('1'..='8').map(&mut find).collect();
                         views.iter().flatten().next().map(|&first| std::array::from_fn(|k| views[k].unwrap_or(first)))
                     }
                 };
+                let shown = placed.contains(&actor) && world.as_ref().is_none_or(|w| w.contains(&id));
+                self.sprite_views[slot] =
+                    found.or_else(|| if shown { self.unpainted(table, def, state.sprite, state.frame) } else { None });
             }
         }
     }

@@ -6,10 +6,11 @@
 use anyhow::{Context, Result};
 use serde_json::json;
 use sightline::autopilot::{self, Point};
-use sightline::campaign::MapRef;
+use sightline::campaign::{ArtOptions, MapRef};
 use sightline::play::playthrough::{Phase, Playthrough};
 use sightline::play::{vanilla, Exit, GameOptions, Stats, TickInput, TICRATE};
 use sightline::render::{RenderOptions, Renderer};
+use sightline::sim::game::Setup;
 
 use crate::cli::AutoplayArgs;
 use crate::replay::Capture;
@@ -42,7 +43,16 @@ pub fn run(args: &AutoplayArgs) -> Result<()> {
 
 /// The autopilot on one level of a playthrough, capturing frames if asked.
 fn play(args: &AutoplayArgs, map: &MapRef, options: GameOptions) -> Result<Run> {
-    let mut play = Playthrough::of(map, options).with_context(|| format!("{}: cannot start the game", map.label()))?;
+    // A run that writes no frames looks up no sprite: a map may name any
+    // actor with no art for it.
+    let drawing = args.capture_every.is_some() && args.output.is_some();
+    let wads = crate::capture::art_wads(map, args.iwad.as_deref());
+    let art = if drawing { ArtOptions { wads, missing: None } } else { ArtOptions { wads, ..ArtOptions::none() } };
+    let mut play = Playthrough::of_with(map, options, Setup::SINGLE, art)
+        .with_context(|| format!("{}: cannot start the game", map.label()))?;
+    if drawing {
+        crate::capture::warn(&play.game.level().materials.warnings);
+    }
     let first = play.map.clone();
     let mut capture = match (args.capture_every, &args.output) {
         (Some(every), Some(dir)) => {

@@ -4,7 +4,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context, Result};
 use sightline::bsp::BuildOptions;
-use sightline::campaign::{open, MapRef};
+use sightline::campaign::{open_with, ArtOptions, MapRef};
 use sightline::level::{check_not_input, write_atomic};
 use sightline::render::{render_frame, Frame, RenderOptions, Renderer, View};
 use sightline::Framebuffer;
@@ -19,7 +19,9 @@ pub fn run(args: &CaptureArgs) -> Result<()> {
     if let MapRef::File(path) = &map {
         check_not_input(path, &args.output)?;
     }
-    let mut level = open(&map, &BuildOptions::default())?.level;
+    let art = ArtOptions { wads: art_wads(&map, args.iwad.as_deref()), missing: None };
+    let mut level = open_with(&map, &BuildOptions::default(), &art)?.level;
+    warn(&level.materials.warnings);
     level.show_skill(sightline::play::DEFAULT_SKILL);
     let map_name = &args.map;
     let view = match args.pose {
@@ -38,6 +40,22 @@ pub fn run(args: &CaptureArgs) -> Result<()> {
     render_frame(&level, &view, &options, &mut Frame::new(), &mut fb);
     write_atomic(&args.output, &fb.to_png())?;
     Ok(())
+}
+
+/// The WADs a RON map's pictures come from: `--iwad`'s (a WAD map has
+/// it under itself already).
+pub fn art_wads(map: &MapRef, iwad: Option<&Path>) -> Vec<PathBuf> {
+    match map {
+        MapRef::File(_) => iwad.map(Path::to_path_buf).into_iter().collect(),
+        MapRef::Wad { .. } => Vec::new(),
+    }
+}
+
+/// Says on stderr what the art lacked (frames drawn as placeholders).
+pub fn warn(warnings: &[String]) {
+    for w in warnings {
+        eprintln!("sightline: warning: {w}");
+    }
 }
 
 /// The default level, `maps/outpost.ron`, under the current directory, else in the source tree.

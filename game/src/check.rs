@@ -6,7 +6,7 @@
 
 use anyhow::{Context, Result};
 use sightline::bsp::BuildOptions;
-use sightline::campaign::{open, MapRef};
+use sightline::campaign::{open_with, ArtOptions, MapRef};
 use sightline::level::{check_not_input, write_atomic};
 
 use crate::cli::CheckArgs;
@@ -16,7 +16,13 @@ pub fn run(args: &CheckArgs) -> Result<()> {
     if let (MapRef::File(path), Some(out)) = (&map, &args.output) {
         check_not_input(path, out)?;
     }
-    let level = open(&map, &BuildOptions::default()).with_context(|| format!("{}: does not load", map.label()))?.level;
+    // Nothing is drawn but the plan: no sprite is looked up, so a map may
+    // name any actor with no art for it. Walls and flats still load (their
+    // sizes matter to play), from the map's folder, then the IWAD's.
+    let art = ArtOptions { wads: crate::capture::art_wads(&map, args.iwad.as_deref()), ..ArtOptions::none() };
+    let level = open_with(&map, &BuildOptions::default(), &art)
+        .with_context(|| format!("{}: does not load", map.label()))?
+        .level;
     let (mut report, drawing) = sightline::autopilot::check::check(level, args.skill);
     report.map = map.label();
     if args.json {

@@ -8,7 +8,7 @@
 //! several maps replays exactly, headless too, and in Chocolate Doom.
 
 use crate::bsp::BuildOptions;
-use crate::campaign::{open, Campaign, CampaignError, MapRef};
+use crate::campaign::{open_with, ArtOptions, Campaign, CampaignError, MapRef};
 use crate::sim::game::{Setup, SimGame, SimGameError};
 use crate::sim::intermission::Intermission;
 
@@ -52,6 +52,8 @@ pub struct Playthrough {
     /// Ticks run since the playthrough began, over every map and intermission.
     pub ticks: u64,
     build: BuildOptions,
+    /// Where each map's pictures come from.
+    art: ArtOptions,
 }
 
 impl Playthrough {
@@ -68,12 +70,24 @@ impl Playthrough {
         options: GameOptions,
         setup: Setup,
     ) -> Result<Playthrough, PlaythroughError> {
+        Playthrough::set_up_with(campaign, map, options, setup, ArtOptions::default())
+    }
+
+    /// [`Playthrough::set_up`] with every map's pictures from `art` (a
+    /// WAD's under RON maps; none for a run that draws nothing).
+    pub fn set_up_with(
+        campaign: Campaign,
+        map: Option<MapRef>,
+        options: GameOptions,
+        setup: Setup,
+        art: ArtOptions,
+    ) -> Result<Playthrough, PlaythroughError> {
         let build = BuildOptions::default();
         let map = map.unwrap_or_else(|| campaign.first());
-        let opened = open(&map, &build)?;
+        let opened = open_with(&map, &build, &art)?;
         let map = opened.map.clone();
         let game = SimGame::netgame(opened, options, setup)?;
-        Ok(Playthrough { campaign, map, game, phase: Phase::Playing, ticks: 0, build })
+        Ok(Playthrough { campaign, map, game, phase: Phase::Playing, ticks: 0, build, art })
     }
 
     /// Starts on a command-line map: a WAD, `WAD:MAP`, a campaign file or a map.
@@ -83,12 +97,22 @@ impl Playthrough {
 
     /// [`Playthrough::of`] with a game set up otherwise.
     pub fn of_set_up(map: &MapRef, options: GameOptions, setup: Setup) -> Result<Playthrough, PlaythroughError> {
+        Playthrough::of_with(map, options, setup, ArtOptions::default())
+    }
+
+    /// [`Playthrough::of_set_up`] with every map's pictures from `art`.
+    pub fn of_with(
+        map: &MapRef,
+        options: GameOptions,
+        setup: Setup,
+        art: ArtOptions,
+    ) -> Result<Playthrough, PlaythroughError> {
         let campaign = Campaign::of(map)?;
         let start = match (&campaign, map) {
             (Campaign::List { .. }, _) | (Campaign::Wad { .. }, MapRef::Wad { map: None, .. }) => None,
             _ => Some(map.clone()),
         };
-        Playthrough::set_up(campaign, start, options, setup)
+        Playthrough::set_up_with(campaign, start, options, setup, art)
     }
 
     pub fn options(&self) -> GameOptions {
@@ -98,7 +122,7 @@ impl Playthrough {
     /// A playthrough of `campaign` resumed on `map` with `game` (a loaded save).
     pub(super) fn resume(campaign: Campaign, map: MapRef, game: SimGame, ticks: u64) -> Playthrough {
         let build = BuildOptions::default();
-        Playthrough { campaign, map, game, phase: Phase::Playing, ticks, build }
+        Playthrough { campaign, map, game, phase: Phase::Playing, ticks, build, art: ArtOptions::default() }
     }
 
     /// One tick, in `G_Ticker`'s order: a reborn player's level reloaded,
@@ -141,7 +165,7 @@ impl Playthrough {
     /// Loads `map` and plays it; the player keeps what Doom's
     /// `G_PlayerFinishLevel` lets through (not its keys or powers).
     fn enter(&mut self, map: MapRef) -> Result<(), PlaythroughError> {
-        let opened = open(&map, &self.build)?;
+        let opened = open_with(&map, &self.build, &self.art)?;
         let map = opened.map.clone();
         let game = SimGame::next_level(opened, self.options(), &self.game)?;
         self.map = map;
@@ -155,7 +179,7 @@ impl Playthrough {
     /// inside the map (`Ok(true)`), else at the start (`Ok(false)`). On an
     /// error the playthrough is untouched.
     pub fn reload(&mut self) -> Result<bool, PlaythroughError> {
-        let opened = open(&self.map, &self.build)?;
+        let opened = open_with(&self.map, &self.build, &self.art)?;
         let mut game = SimGame::new(opened, self.options())?;
         let p = self.game.player();
         let kept = game.place_player(p.pos, p.angle);
@@ -167,7 +191,7 @@ impl Playthrough {
     /// The current map from its start, with a fresh player (Doom's
     /// reborn: the random index and tic count go on).
     fn restart(&mut self) -> Result<(), PlaythroughError> {
-        let opened = open(&self.map, &self.build)?;
+        let opened = open_with(&self.map, &self.build, &self.art)?;
         self.game = SimGame::next_level(opened, self.options(), &self.game)?;
         Ok(())
     }

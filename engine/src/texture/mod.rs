@@ -340,6 +340,20 @@ impl TextureSet {
         id
     }
 
+    /// Adds `texture` drawn for `name` of `kind` where nothing else had
+    /// that name (a stand-in, a placeholder): later lookups of the name
+    /// find it.
+    pub fn insert(&mut self, name: &str, kind: TextureKind, texture: Arc<Texture>) -> TextureId {
+        if let Some(&id) = self.ids.get(&(name.to_string(), kind)) {
+            return id;
+        }
+        let id = TextureId(self.textures.len() as u32);
+        self.textures.push(texture);
+        self.names.push(name.to_string());
+        self.ids.insert((name.to_string(), kind), id);
+        id
+    }
+
     /// The id `name` already resolved to, if it has.
     pub fn find(&self, name: &str, kind: TextureKind) -> Option<TextureId> {
         self.ids.get(&(name.to_string(), kind)).copied()

@@ -95,7 +95,7 @@ pub fn sprite(name: &str) -> Option<Texture> {
         return None;
     }
     let mut parts = (f.model)(&pose);
-    fall(&mut parts, &pose);
+    fall(&mut parts, &pose, 26.0);
     // A body falling across the view needs more room than one standing.
     let size = if turns { f.size } else { (f.size.0.max(80), f.size.1) };
     Some(render(&parts, &Camera::sprite(view.max(1), size)))
@@ -103,12 +103,13 @@ pub fn sprite(name: &str) -> Option<Texture> {
 
 /// Tips a figure over onto its left side by its pose's `fall` (seen from
 /// the front, as death frames are, it falls across the view), settles it on
-/// the floor and pools its blood.
-fn fall(parts: &mut Vec<Part>, pose: &Pose) {
+/// the floor and pools its blood. `slide` is how far it slides back, in
+/// map units, when it lies flat (a figure's half-height, about).
+pub(super) fn fall(parts: &mut Vec<Part>, pose: &Pose, slide: f32) {
     let lean = Mat3::from_rotation_y(pose.lean);
     let tip = Mat3::from_rotation_x(-pose.fall * std::f32::consts::FRAC_PI_2 * 0.97);
     // Slid back along the fall, so that the body lies across its place.
-    let slide = Vec3::new(0.0, -26.0 * pose.fall * pose.fall, 0.0);
+    let slide = Vec3::new(0.0, -slide * pose.fall * pose.fall, 0.0);
     for p in parts.iter_mut() {
         *p = p.moved(tip * lean, slide);
     }
@@ -171,7 +172,16 @@ fn spitter_frames() -> Vec<Frame> {
 
 /// A pair of legs from hips at height `hip`, `apart` between them, feet
 /// striding by `pose.stride` times `step`.
-fn legs(parts: &mut Vec<Part>, pose: &Pose, hip: f32, apart: f32, step: f32, thick: f32, colour: Rgb, boot: Rgb) {
+pub(super) fn legs(
+    parts: &mut Vec<Part>,
+    pose: &Pose,
+    hip: f32,
+    apart: f32,
+    step: f32,
+    thick: f32,
+    colour: Rgb,
+    boot: Rgb,
+) {
     for side in [1.0f32, -1.0] {
         let swing = pose.stride * side * step;
         let h = Vec3::new(0.0, side * apart, hip);

@@ -15,9 +15,12 @@ mod paint;
 mod sky;
 mod special;
 mod sprites;
+pub mod standins;
 mod walls;
 
 use std::collections::BTreeMap;
+
+pub use figures::Pose;
 
 use super::{Texture, TextureKind};
 

@@ -95,6 +95,15 @@ impl Part {
         }
     }
 
+    /// A sphere holding the whole part: its centre and radius.
+    fn bounding_sphere(&self) -> (Vec3, f32) {
+        match self.solid {
+            Solid::Ball { centre, radii } => (centre, radii.max_element()),
+            Solid::Limb { a, b, radius } => ((a + b) * 0.5, (b - a).length() * 0.5 + radius),
+            Solid::Block { centre, half } => (centre, half.length()),
+        }
+    }
+
     /// Where a ray from `o` along unit `d` first enters the part: the
     /// distance and the outward normal there.
     fn hit(&self, o: Vec3, d: Vec3) -> Option<(f32, Vec3)> {
@@ -248,9 +257,40 @@ pub fn render_at(parts: &[Part], camera: &Camera, anchor: (f32, f32)) -> Texture
     // The light: from the viewer's upper left, a little in front.
     let light = (toward * 0.7 - right * 0.45 + up * 0.55).normalize();
     const N: usize = 3;
+    // Looking from afar, a part can only cover the texels within its
+    // bounding sphere's outline: each texel tests those parts alone. (A
+    // stand-in of forty parts 60x80 texels took 20 ms testing all of them.)
+    let bounds: Option<Vec<[f32; 4]>> = camera.eye.is_none().then(|| {
+        parts
+            .iter()
+            .map(|p| {
+                let (c, r) = p.bounding_sphere();
+                let d = c - camera.origin;
+                let (x, y) = (anchor.0 + d.dot(right) * camera.zoom, anchor.1 - d.dot(up) * camera.zoom);
+                let r = r * camera.zoom + 1.5;
+                [x - r, x + r, y - r, y + r]
+            })
+            .collect()
+    });
     let mut texels: Vec<Option<Sample>> = vec![None; w * h];
+    let mut near: Vec<&Part> = Vec::with_capacity(parts.len());
     for v in 0..h {
         for u in 0..w {
+            near.clear();
+            let (fu, fv) = (u as f32 + 0.5, v as f32 + 0.5);
+            match &bounds {
+                Some(b) => near.extend(
+                    parts
+                        .iter()
+                        .zip(b)
+                        .filter(|(_, b)| b[0] <= fu && fu <= b[1] && b[2] <= fv && fv <= b[3])
+                        .map(|(p, _)| p),
+                ),
+                None => near.extend(parts.iter()),
+            }
+            if near.is_empty() {
+                continue;
+            }
             let (mut sum, mut hits, mut depth) = ([0.0f32; 3], 0usize, f32::MAX);
             for sv in 0..N {
                 for su in 0..N {
@@ -264,9 +304,9 @@ pub fn render_at(parts: &[Part], camera: &Camera, anchor: (f32, f32)) -> Texture
                         }
                         None => (on_plane + toward * 1000.0, -toward),
                     };
-                    let nearest = parts
+                    let nearest = near
                         .iter()
-                        .filter_map(|p| p.hit(o, d).map(|(t, n)| (t, n, p)))
+                        .filter_map(|&p| p.hit(o, d).map(|(t, n)| (t, n, p)))
                         .filter(|h| h.0 > 0.0)
                         .min_by(|a, b| a.0.total_cmp(&b.0));
                     if let Some((t, n, p)) = nearest {
