@@ -385,7 +385,15 @@ fn find(name: &str, kind: TextureKind, library: &Library) -> Result<Source, Text
     // outside it ("../../etc/x"), name a hidden file, or (on Windows) a drive.
     let plain = !name.is_empty() && !name.starts_with('.') && !name.contains(['/', '\\', '\0', ':']);
     if !plain {
-        return Err(TextureError::BadName { name: name.to_string(), kind });
+        // A WAD's lump names are no paths: Doom's sprite frame `\` (the
+        // arch-vile's VILE\1) is found there, never beside the map. The
+        // WAD's index keeps names as `wad::lump_name` escapes them (a
+        // backslash doubled).
+        let lump = name.to_ascii_uppercase().replace('\\', "\\\\");
+        return match library.wad.as_ref().filter(|w| w.has(&lump, kind)) {
+            Some(_) => Ok(Source::Wad(lump, kind)),
+            None => Err(TextureError::BadName { name: name.to_string(), kind }),
+        };
     }
     let lower = name.to_lowercase();
     let mut tried = Vec::new();

@@ -61,9 +61,9 @@ pub enum MadeError {
 
 /// Where a made scenario's map comes from, and its art: PNGs in
 /// `textures/`, `flats/` and `sprites/` of a folder, then the built-in
-/// set. A map naming a picture neither has (a Doom monster's sprite: of
-/// the monsters only the zombieman is built in) takes the IWAD's art,
-/// `freedoom2.wad` where Doom ports look, when it is there.
+/// set. An actor neither has a picture of is drawn as its stand-in
+/// figure; a map naming a wall or flat neither has (a Doom texture) takes
+/// the IWAD's art, `freedoom2.wad` where Doom ports look, when it is there.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum MapInput {
     /// A RON (or compiled) map file; its art folder is its own.
