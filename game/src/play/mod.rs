@@ -87,8 +87,15 @@ pub fn run(args: &PlayArgs) -> Result<()> {
             let no_autoaim = scenario.as_ref().is_some_and(|c| c.no_autoaim())
                 || (!config.gameplay.autoaim && args.record.is_none() && args.demo.is_none());
             let setup = sightline::sim::game::Setup { no_autoaim, ..sightline::sim::game::Setup::SINGLE };
-            Playthrough::of_set_up(&map, game_options, setup)
-                .with_context(|| format!("{}: cannot start the game", map.label()))?
+            // A RON map's pictures may come from --iwad too.
+            let art = sightline::campaign::ArtOptions {
+                wads: crate::capture::art_wads(&map, args.iwad.as_deref()),
+                missing: None,
+            };
+            let play = Playthrough::of_with(&map, game_options, setup, art)
+                .with_context(|| format!("{}: cannot start the game", map.label()))?;
+            crate::capture::warn(&play.game.level().materials.warnings);
+            play
         }
     };
     let chosen =
