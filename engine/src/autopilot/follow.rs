@@ -90,6 +90,16 @@ impl Autopilot {
                     return TickInput::default();
                 }
                 None => {
+                    // Before giving up: a drop the body survives, to look
+                    // again from where it lands (rounds start afresh there).
+                    if let Some(a) = self.way_down(game) {
+                        self.rounds = 0;
+                        self.bad.clear();
+                        self.failures.clear();
+                        self.active = Some(a);
+                        self.status = Status::Playing;
+                        return TickInput::default();
+                    }
                     self.active = None;
                     self.status = Status::Stuck {
                         at: pos,
