@@ -298,8 +298,10 @@ pub struct Autopilot {
     hurts: Vec<bool>,
     /// Times everything was tried again after running out of goals.
     rounds: u32,
-    /// Sectors dropped into with nothing left to do (see `ways`).
+    /// Sectors dropped into with nothing left to do, and since when
+    /// nothing has been (see `ways`).
     dropped: BTreeSet<usize>,
+    stuck_since: Option<u64>,
     /// The tick of the last such round.
     last_round: u64,
     /// Ticks into the current stand-and-fight cycle.
@@ -400,6 +402,7 @@ impl Autopilot {
             hurts,
             rounds: 0,
             dropped: BTreeSet::new(),
+            stuck_since: None,
             last_round: 0,
             fighting: 0,
             calm: 0,

@@ -3,7 +3,8 @@
 //! up: off a raised lift or platform, off a ledge, into a pit that has a
 //! way on. A drop is what `check` counts as one: a move of the search
 //! (`NavGrid::climbable` over the plan's heights) that `Span::drops_to`
-//! says no step climbs back. Landing somewhere new, the bot starts its
+//! says no step climbs back, after 15 s stuck (what it waits for may still
+//! come). Landing somewhere new, the bot starts its
 //! rounds again from there: a switch or a line that did nothing from the
 //! ledge's side may be within reach, a lift that stayed up may come down.
 
@@ -14,6 +15,10 @@ use super::*;
 const MAX_DROPS: usize = 8;
 /// Landings looked at, nearest first, for a way on from them.
 const LOOK_AT: usize = 12;
+/// Ticks stuck (looking again each second) before a drop is tried: what
+/// the bot waits for (a lift on its way, a floor still moving) may come,
+/// and a drop is one way.
+pub(super) const WAY_DOWN_AFTER: u64 = 35 * 15;
 
 impl Autopilot {
     /// The way to the nearest drop's landing not tried yet, into a sector
