@@ -14,6 +14,7 @@ use sightline::Framebuffer;
 
 pub mod chocolate;
 pub mod freedoom_wads;
+pub mod puzzle;
 pub mod sim_play;
 
 /// The repository root.

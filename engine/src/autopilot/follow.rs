@@ -69,6 +69,7 @@ impl Autopilot {
                     ));
                     self.active = Some(a);
                     self.status = Status::Playing;
+                    self.stuck_since = None;
                 }
                 None if self.rounds < MAX_ROUNDS && (self.rounds == 0 || now >= self.last_round + ROUND_GAP) => {
                     // Nothing left to try: try everything again once more
@@ -90,6 +91,21 @@ impl Autopilot {
                     return TickInput::default();
                 }
                 None => {
+                    // Before giving up (and after looking again for a
+                    // while: what it waits for may still come): a drop the
+                    // body survives, to look again from where it lands
+                    // (rounds start afresh there).
+                    let since = *self.stuck_since.get_or_insert(now);
+                    let drop = if now >= since + ways::WAY_DOWN_AFTER { self.way_down(game) } else { None };
+                    if let Some(a) = drop {
+                        self.stuck_since = None;
+                        self.rounds = 0;
+                        self.bad.clear();
+                        self.failures.clear();
+                        self.active = Some(a);
+                        self.status = Status::Playing;
+                        return TickInput::default();
+                    }
                     self.active = None;
                     self.status = Status::Stuck {
                         at: pos,
