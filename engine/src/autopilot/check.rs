@@ -93,6 +93,8 @@ struct Closure {
     keys: Vec<KeyColour>,
     reached: Vec<bool>,
     applied: BTreeSet<LineId>,
+    /// The mechanisms, with the once-only teleporters used so far.
+    mech: Mechanisms,
     /// Sectors a set-off special opens (a door, a ceiling raised): a manual
     /// door among them is no longer shut to those who cannot use it.
     opened: Vec<bool>,
@@ -211,9 +213,21 @@ fn closure(
         reached: Vec::new(),
         applied: BTreeSet::new(),
         opened: vec![false; level.compiled.map.sectors.len()],
+        mech: mech.clone(),
     };
     loop {
-        c.reached = flood(search, nav, level, mech, &c.heights, &t.solid, hurts, start, &c.opened);
+        let mut changed_teleports = false;
+        c.reached = flood(search, nav, level, &c.mech, &c.heights, &t.solid, hurts, start, &c.opened);
+        // Once-only teleporters whose front is reached have been used: the
+        // walk over them leads on as well (a door with a teleport line in
+        // it, gone through again).
+        for (&line, _) in &mech.teleports {
+            let once = line_of(&level.compiled.map, line).3.is_some_and(|s| !s.repeat);
+            if once && !c.mech.used_teleports.contains(&line) && met(nav, &c.reached, &Targets::default(), Some(line)) {
+                c.mech.used_teleports.insert(line);
+                changed_teleports = true;
+            }
+        }
         let mut changed = false;
         for &(colour, pos) in &t.keys {
             if !c.keys.contains(&colour)
@@ -282,7 +296,7 @@ fn closure(
                 c.heights.ceiling[s] = c.heights.ceiling[s].max(after.ceiling[s]);
             }
         }
-        if !changed {
+        if !changed && !changed_teleports {
             return c;
         }
     }
@@ -341,7 +355,7 @@ fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
     let why = super::obstacle::Reach {
         nav: &nav,
         level,
-        mech: &mech,
+        mech: &c.mech,
         heights: &c.heights,
         keys: &c.keys,
         reached: &c.reached,
@@ -430,7 +444,7 @@ fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
     let mut finish = vec![false; nav.cells()];
     let mut soft_locks = Vec::new();
     if exit_reachable {
-        let edges = forward_edges(&nav, level, &mech, &c.heights, &t.solid, &c.reached);
+        let edges = forward_edges(&nav, level, &c.mech, &c.heights, &t.solid, &c.reached);
         let mut into: Vec<Vec<Cell>> = vec![Vec::new(); nav.cells()];
         for &(a, b, _) in &edges {
             into[b as usize].push(a);
@@ -552,6 +566,9 @@ fn forward_edges(
                         to = t;
                     }
                 }
+            }
+            if to != b && crossed.iter().any(|l| mech.used_teleports.contains(l)) {
+                edges.push((a, b, crossed.clone()));
             }
             edges.push((a, to, crossed));
         }

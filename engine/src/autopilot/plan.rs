@@ -100,6 +100,10 @@ pub struct Mechanisms {
     pub exits: Vec<(LineId, bool)>,
     /// Teleport lines (walked over from the front), with where they lead.
     pub teleports: BTreeMap<LineId, DVec2>,
+    /// Once-only teleport lines assumed already used (by `check`'s closure,
+    /// once their front is reached): crossed again they lead on over the
+    /// line as well as away.
+    pub used_teleports: BTreeSet<LineId>,
     /// Lines that move tagged sectors once set off: switches, walk lines and
     /// shot lines, the candidates for opening the level further.
     pub triggers: Vec<LineId>,
@@ -529,6 +533,11 @@ impl Search {
                             teleported = true;
                         }
                     }
+                }
+                // A once-only teleporter used before: the walk goes on over
+                // the line too.
+                if teleported && w.nav.crossings_of(c, d).any(|(l, _)| w.mech.used_teleports.contains(&l)) {
+                    self.relax(c, n, cost + if d < 4 { STRAIGHT } else { DIAGONAL }, false, 0);
                 }
                 let centre = w.nav.centre[next as usize];
                 let mut step = if d < 4 { STRAIGHT } else { DIAGONAL } + u32::from(w.nav.narrow[next as usize]);
