@@ -33,12 +33,17 @@ pub struct Report {
     pub map: String,
     /// Some exit can be reached (with every key and switch that can be).
     pub exit_reachable: bool,
+    /// The map has an exit line (or a boss brain whose death ends it).
+    pub has_exit: bool,
     pub exits: Vec<Place>,
     pub keys: Vec<KeyReport>,
     pub secrets: Vec<Place>,
     /// Items (pickups) that can and cannot be reached.
     pub items: Vec<Place>,
     pub soft_locks: Vec<SoftLock>,
+    /// Special lines set off whose end cannot be foretold, and why: the
+    /// closure assumes they change nothing.
+    pub unforeseen: Vec<String>,
     /// The switches and walk lines the closure had to set off.
     pub triggers_used: usize,
     /// Reachable and standable cells.
@@ -53,6 +58,9 @@ pub struct Place {
     pub x: f64,
     pub y: f64,
     pub reachable: bool,
+    /// Unreachable: the first obstacle on the best way there.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub obstacle: Option<String>,
 }
 
 #[derive(Clone, Debug, serde::Serialize)]
@@ -63,6 +71,9 @@ pub struct KeyReport {
     pub reachable: bool,
     /// Unreachable, but reachable if doors of its own colour opened without it.
     pub behind_own_door: bool,
+    /// Unreachable: the first obstacle on the best way there.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub obstacle: Option<String>,
 }
 
 /// A one-way move (a drop, a teleport) from where the exit can be reached
@@ -82,6 +93,11 @@ struct Closure {
     keys: Vec<KeyColour>,
     reached: Vec<bool>,
     applied: BTreeSet<LineId>,
+    /// The mechanisms, with the once-only teleporters used so far.
+    mech: Mechanisms,
+    /// Sectors a set-off special opens (a door, a ceiling raised): a manual
+    /// door among them is no longer shut to those who cannot use it.
+    opened: Vec<bool>,
 }
 
 /// The map's things that matter: keys and pickups.
@@ -123,11 +139,12 @@ fn flood(
     solid: &BTreeSet<Cell>,
     hurts: &[bool],
     start: Cell,
+    opened: &[bool],
 ) -> Vec<bool> {
     // Nothing given up, spent or wasted: the level as it starts.
     let none = BTreeSet::new();
     let no_lines = BTreeSet::new();
-    let shut = mech.shut_doors(&level.compiled.map);
+    let shut = shut_now(level, mech, opened);
     let w = plan::World {
         nav,
         map: &level.compiled.map,
@@ -147,6 +164,16 @@ fn flood(
         reached[c as usize] = true;
     }
     reached
+}
+
+/// Manual doors shut to those who cannot use them: those shut in the map
+/// that no special set off opens.
+fn shut_now(level: &Level, mech: &Mechanisms, opened: &[bool]) -> Vec<bool> {
+    let mut shut = mech.shut_doors(&level.compiled.map);
+    for (s, open) in opened.iter().enumerate() {
+        shut[s] &= !open;
+    }
+    shut
 }
 
 /// Can a goal's targets be met from the reached cells?
@@ -185,9 +212,22 @@ fn closure(
         keys,
         reached: Vec::new(),
         applied: BTreeSet::new(),
+        opened: vec![false; level.compiled.map.sectors.len()],
+        mech: mech.clone(),
     };
     loop {
-        c.reached = flood(search, nav, level, mech, &c.heights, &t.solid, hurts, start);
+        let mut changed_teleports = false;
+        c.reached = flood(search, nav, level, &c.mech, &c.heights, &t.solid, hurts, start, &c.opened);
+        // Once-only teleporters whose front is reached have been used: the
+        // walk over them leads on as well (a door with a teleport line in
+        // it, gone through again).
+        for (&line, _) in &mech.teleports {
+            let once = line_of(&level.compiled.map, line).3.is_some_and(|s| !s.repeat);
+            if once && !c.mech.used_teleports.contains(&line) && met(nav, &c.reached, &Targets::default(), Some(line)) {
+                c.mech.used_teleports.insert(line);
+                changed_teleports = true;
+            }
+        }
         let mut changed = false;
         for &(colour, pos) in &t.keys {
             if !c.keys.contains(&colour)
@@ -195,6 +235,9 @@ fn closure(
             {
                 c.keys.push(colour);
                 changed = true;
+                if std::env::var_os("SIGHTLINE_CHECK_TRACE").is_some() {
+                    eprintln!("check: key {colour:?} at ({:.0}, {:.0})", pos.x, pos.y);
+                }
             }
         }
         if changed {
@@ -221,14 +264,39 @@ fn closure(
             }
             c.applied.insert(line);
             changed = true;
-            let Some(after) = plan::predict(level, &c.heights, sl, special) else { continue };
+            let after = plan::predict(level, &c.heights, sl, special);
+            if std::env::var_os("SIGHTLINE_CHECK_TRACE").is_some() {
+                let (_, a, b, _) = line_of(&level.compiled.map, line);
+                eprintln!(
+                    "check: line {line} ({:.0}, {:.0})-({:.0}, {:.0}) {:?} {:?} tag {}: {}",
+                    a.x,
+                    a.y,
+                    b.x,
+                    b.y,
+                    special.on,
+                    special.action,
+                    special.tag,
+                    if after.is_some() { "predicted" } else { "unknown" }
+                );
+            }
+            if let crate::map::special::Action::Door {
+                kind: crate::map::special::DoorKind::Open | crate::map::special::DoorKind::Raise,
+                ..
+            }
+            | crate::map::special::Action::Ceiling { .. } = special.action
+            {
+                for s in super::sectors::target_sectors(level, sl, special) {
+                    c.opened[s] = true;
+                }
+            }
+            let Some(after) = after else { continue };
             for s in 0..after.floor.len() {
                 c.heights.low[s] = c.heights.low[s].min(after.floor[s]).min(after.low[s]);
                 c.heights.floor[s] = c.heights.floor[s].max(after.floor[s]);
                 c.heights.ceiling[s] = c.heights.ceiling[s].max(after.ceiling[s]);
             }
         }
-        if !changed {
+        if !changed && !changed_teleports {
             return c;
         }
     }
@@ -237,7 +305,14 @@ fn closure(
 /// Checks `level` as played at `skill`.
 pub fn check(level: Level, skill: u8) -> (Report, Drawing) {
     let (report, mut drawing) = analyse(&level, skill);
+    // SIGHTLINE_CHECK_TRACE: the closure's steps, and where the bot's own
+    // route first leaves what the closure reached (to find what the model
+    // misses when the two disagree).
+    let traced = std::env::var_os("SIGHTLINE_CHECK_TRACE").is_some().then(|| level.clone());
     drawing.route = offline_route(level, skill);
+    if let Some(level) = traced {
+        trace_divergence(&level, &drawing, &report);
+    }
     (report, drawing)
 }
 
@@ -262,11 +337,13 @@ fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
         let report = Report {
             map: map.name.clone(),
             exit_reachable: false,
+            has_exit: !mech.exits.is_empty(),
             exits: Vec::new(),
             keys: Vec::new(),
             secrets: Vec::new(),
             items: Vec::new(),
             soft_locks: Vec::new(),
+            unforeseen: Vec::new(),
             triggers_used: 0,
             reachable_cells: 0,
             standable_cells,
@@ -274,7 +351,19 @@ fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
         return (report, Drawing::new(level, nav, Vec::new(), Vec::new()));
     };
     let c = closure(&nav, level, &mech, &t, start, Vec::new(), &hurts, &mut search);
-    let place = |what: String, p: DVec2, reachable: bool| Place { what, x: p.x, y: p.y, reachable };
+    let shut = shut_now(level, &mech, &c.opened);
+    let why = super::obstacle::Reach {
+        nav: &nav,
+        level,
+        mech: &c.mech,
+        heights: &c.heights,
+        keys: &c.keys,
+        reached: &c.reached,
+        shut: &shut,
+        solid: &t.solid,
+        applied: &c.applied,
+    };
+    let place = |what: String, p: DVec2, reachable: bool| Place { what, x: p.x, y: p.y, reachable, obstacle: None };
     let near_reached = |reached: &[bool], p: DVec2| {
         plan::touch_cells(&nav, &level.compiled.map, p).cells().any(|x| reached[x as usize])
     };
@@ -285,7 +374,11 @@ fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
         let (targets, walk) = goal_targets(&nav, level, line);
         let (_, a, b, _) = line_of(map, line);
         let ok = met(&nav, &c.reached, &targets, walk);
-        exits.push(place(if secret { "secret exit".into() } else { "exit".into() }, (a + b) / 2.0, ok));
+        let mut exit = place(if secret { "secret exit".into() } else { "exit".into() }, (a + b) / 2.0, ok);
+        if !ok {
+            exit.obstacle = Some(why.first_obstacle(&targets, walk));
+        }
+        exits.push(exit);
         exit_targets.push((targets, walk));
     }
     // The boss brain's death ends the level too, if a rocket fired from a
@@ -301,11 +394,20 @@ fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
                 targets.add(plan::cells_near(&nav, nav.centre_of(spot.cell), 1.0));
             }
             let ok = targets.cells().any(|x| c.reached[x as usize]);
-            exits.push(place("exit (the boss brain, by a rocket from a lift)".into(), thing.pos, ok));
+            let mut exit = place("exit (the boss brain, by a rocket from a lift)".into(), thing.pos, ok);
+            if !ok {
+                exit.obstacle = Some(if targets.is_empty() {
+                    "no lift near it from which a rocket hurts it".into()
+                } else {
+                    why.first_obstacle(&targets, None)
+                });
+            }
+            exits.push(exit);
             exit_targets.push((targets, None));
         }
     }
     let exit_reachable = exits.iter().any(|e| e.reachable);
+    let has_exit = !exits.is_empty();
     let mut keys = Vec::new();
     for &(colour, pos) in &t.keys {
         let reachable = near_reached(&c.reached, pos);
@@ -313,7 +415,16 @@ fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
             let with = closure(&nav, level, &mech, &t, start, vec![colour], &hurts, &mut search);
             near_reached(&with.reached, pos)
         };
-        keys.push(KeyReport { colour: colour.name().to_string(), x: pos.x, y: pos.y, reachable, behind_own_door });
+        let obstacle =
+            (!reachable).then(|| why.first_obstacle(&plan::touch_cells(&nav, &level.compiled.map, pos), None));
+        keys.push(KeyReport {
+            colour: colour.name().to_string(),
+            x: pos.x,
+            y: pos.y,
+            reachable,
+            behind_own_door,
+            obstacle,
+        });
     }
     let mut secrets = Vec::new();
     for (s, sector) in map.sectors.iter().enumerate() {
@@ -333,7 +444,7 @@ fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
     let mut finish = vec![false; nav.cells()];
     let mut soft_locks = Vec::new();
     if exit_reachable {
-        let edges = forward_edges(&nav, level, &mech, &c.heights, &t.solid, &c.reached);
+        let edges = forward_edges(&nav, level, &c.mech, &c.heights, &t.solid, &c.reached);
         let mut into: Vec<Vec<Cell>> = vec![Vec::new(); nav.cells()];
         for &(a, b, _) in &edges {
             into[b as usize].push(a);
@@ -386,14 +497,26 @@ fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
         }
     }
     let reachable_cells = c.reached.iter().filter(|&&r| r).count();
+    let unforeseen = c
+        .applied
+        .iter()
+        .filter_map(|&line| {
+            let (_, a, b, special) = line_of(map, line);
+            let why = plan::unforeseeable(level, special?)?;
+            let m = (a + b) / 2.0;
+            Some(format!("line {line} at ({:.0}, {:.0}): {why}", m.x, m.y))
+        })
+        .collect();
     let report = Report {
         map: map.name.clone(),
         exit_reachable,
+        has_exit,
         exits,
         keys,
         secrets,
         items,
         soft_locks,
+        unforeseen,
         triggers_used: c.applied.len(),
         reachable_cells,
         standable_cells,
@@ -444,10 +567,65 @@ fn forward_edges(
                     }
                 }
             }
+            if to != b && crossed.iter().any(|l| mech.used_teleports.contains(l)) {
+                edges.push((a, b, crossed.clone()));
+            }
             edges.push((a, to, crossed));
         }
     }
     edges
+}
+
+/// Where the autopilot's route first leaves what the closure reached, with
+/// the heights under the last reached and first unreached points.
+fn trace_divergence(level: &Level, d: &Drawing, report: &Report) {
+    let nav = &d.nav;
+    let map = &level.compiled.map;
+    let unreached = report
+        .keys
+        .iter()
+        .filter(|k| !k.reachable)
+        .map(|k| (format!("{} key", k.colour), DVec2::new(k.x, k.y)))
+        .chain(report.exits.iter().filter(|e| !e.reachable).map(|e| (e.what.clone(), DVec2::new(e.x, e.y))));
+    for (what, p) in unreached {
+        let Some(q) = d.route.iter().copied().min_by(|a, b| a.distance(p).total_cmp(&b.distance(p))) else { continue };
+        let c = nav.cell_at(q);
+        eprintln!(
+            "check: {what} at ({:.0}, {:.0}): the route comes within {:.0} at ({:.0}, {:.0}), cell reached {:?}, touching {:?}",
+            p.x,
+            p.y,
+            q.distance(p),
+            q.x,
+            q.y,
+            c.map(|c| d.reached[c as usize]),
+            c.map(|c| nav.touched(c).to_vec())
+        );
+    }
+    let near = |c: Cell| (0..8).filter_map(|k| nav.neighbour(c, k)).chain([c]).any(|n| d.reached[n as usize]);
+    let mut last = None;
+    for &p in &d.route {
+        let Some(c) = nav.cell_at(p) else { continue };
+        if near(c) {
+            last = Some((p, c));
+            continue;
+        }
+        let show = |c: Cell| {
+            nav.touched(c)
+                .iter()
+                .map(|&s| {
+                    let x = &map.sectors[s as usize];
+                    format!("{s}(f {} c {} tag {})", x.floor, x.ceiling, x.tag)
+                })
+                .collect::<Vec<_>>()
+                .join(" ")
+        };
+        if let Some((q, lc)) = last {
+            eprintln!("check: route leaves the reached cells at ({:.0}, {:.0}) [{}]", q.x, q.y, show(lc));
+        }
+        eprintln!("check: first unreached route point ({:.0}, {:.0}) [{}]", p.x, p.y, show(c));
+        return;
+    }
+    eprintln!("check: the whole route is in the reached cells");
 }
 
 /// The autopilot's route through the level, planned offline: a game with
@@ -456,19 +634,17 @@ fn offline_route(level: Level, skill: u8) -> Vec<DVec2> {
     let options = crate::play::GameOptions { skill, seed: 0, no_monsters: true };
     let label = level.compiled.map.name.clone();
     let Ok(mut game) = crate::sim::game::SimGame::on_level(level, &label, options) else { return Vec::new() };
-    let mut bot = super::Autopilot::new(&game);
     let mut path = vec![Observe::player(&game).pos];
-    for _ in 0..42_000 {
-        let input = bot.tick(&game);
-        game.tick(&input);
-        let p = Observe::player(&game).pos;
+    // Played as `autoplay` plays: a bot stuck for a while may find its way
+    // again (it gives up after a minute), so the route is not cut at the
+    // first stop.
+    super::run_sim(&mut game, 42_000, |game, _| {
+        let p = Observe::player(game).pos;
         if path.last().is_none_or(|q| q.distance(p) >= 8.0) {
             path.push(p);
         }
-        if game.exit().is_some() || matches!(bot.status(), super::Status::Stuck { .. }) {
-            break;
-        }
-    }
+        true
+    });
     path
 }
 
@@ -607,13 +783,29 @@ impl Report {
     pub fn text(&self) -> String {
         let mut out = String::new();
         let yes = |b: bool| if b { "reachable" } else { "NOT reachable" };
-        out += &format!("{}: the exit is {}\n", self.map, yes(self.exit_reachable));
+        let because = |o: &Option<String>| o.as_ref().map(|o| format!(": {o}")).unwrap_or_default();
+        if self.has_exit {
+            out += &format!("{}: the exit is {}\n", self.map, yes(self.exit_reachable));
+        } else {
+            out += &format!(
+                "{}: this map has no exit (no exit line, switch or boss brain); it ends only by other means, if any \
+                 (a boss's death on the maps Doom gives one, a death exit, a script)\n",
+                self.map
+            );
+        }
         for e in &self.exits {
-            out += &format!("  {} at ({:.0}, {:.0}): {}\n", e.what, e.x, e.y, yes(e.reachable));
+            out += &format!("  {} at ({:.0}, {:.0}): {}{}\n", e.what, e.x, e.y, yes(e.reachable), because(&e.obstacle));
         }
         for k in &self.keys {
             let own = if k.behind_own_door { " (it is behind a door of its own colour)" } else { "" };
-            out += &format!("  {} key at ({:.0}, {:.0}): {}{own}\n", k.colour, k.x, k.y, yes(k.reachable));
+            out += &format!(
+                "  {} key at ({:.0}, {:.0}): {}{own}{}\n",
+                k.colour,
+                k.x,
+                k.y,
+                yes(k.reachable),
+                because(&k.obstacle)
+            );
         }
         for s in &self.secrets {
             out += &format!("  {} at ({:.0}, {:.0}): {}\n", s.what, s.x, s.y, yes(s.reachable));
@@ -622,6 +814,9 @@ impl Report {
         out += &format!("  items: {reached} of {} reachable\n", self.items.len());
         for i in self.items.iter().filter(|i| !i.reachable) {
             out += &format!("    {} at ({:.0}, {:.0}): NOT reachable\n", i.what, i.x, i.y);
+        }
+        for u in &self.unforeseen {
+            out += &format!("  cannot be foretold, taken as changing nothing: {u}\n");
         }
         if self.soft_locks.is_empty() {
             out += "  no soft locks\n";

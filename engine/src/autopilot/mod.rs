@@ -35,6 +35,7 @@ pub use gather::Options;
 pub mod leap;
 pub mod nav;
 pub mod observe;
+pub mod obstacle;
 pub mod plan;
 pub mod sectors;
 pub mod sight;
