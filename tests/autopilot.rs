@@ -362,15 +362,49 @@ fn the_autopilot_finishes_freedoom_e1m1_without_monsters() {
 }
 
 /// Every map of a Freedoom IWAD autoplayed without monsters on skill 3, two
-/// at a time: the maps that exit within 20 minutes of game time, and a
-/// table of how each went (printed; `--nocapture` shows it). The issue's
-/// targets are 30 of freedoom1's 36 and 26 of freedoom2's 32; freedoom2's
-/// floor is what the bot exits on the simulation now: 24 (MAP07 needs the
-/// bosses killed, MAP28's teleporter has only a multiplayer destination).
+/// at a time, and `check`'s report on it: the maps that exit within 20
+/// minutes of game time, and a table of how each went (printed;
+/// `--nocapture` shows it). The issue's targets are 30 of freedoom1's 36
+/// and 26 of freedoom2's 32; freedoom2's floor is what the bot exits on the
+/// simulation now (MAP07 needs the bosses killed, MAP28's teleporter has
+/// only a multiplayer destination).
 const FREEDOOM1_FLOOR: usize = 30;
 const FREEDOOM2_FLOOR: usize = 24;
 
-fn autoplay_wad(wad: &str) -> Vec<(String, bool, String)> {
+/// Maps on which `check` still disagrees with the bot (calls the exit it
+/// reaches, or a key it takes, unreachable), each with where the bot's
+/// route first leaves the cells `check` reaches
+/// (`SIGHTLINE_CHECK_TRACE=1 sightline check WAD:MAP`): the model's gap
+/// there is not yet found. The test fails when one of them agrees again
+/// (take it off the list) as when another disagrees.
+const KNOWN_GAPS: &[(&str, &str)] = &[
+    (
+        "freedoom1.wad:E2M5",
+        "the red key: the route leaves at (-2737, 2944), from sector 532 by lift sector 545 onto 533",
+    ),
+    ("freedoom1.wad:E3M5", "the route leaves at (-1524, -1697), between sectors 170 and 175 (120 units apart)"),
+    ("freedoom1.wad:E4M6", "the route leaves at (763, -284), off lift sector 280 into sector 502"),
+    ("freedoom1.wad:E4M8", "the route leaves at (553, 1025), between sectors 116 and 119"),
+    (
+        "freedoom2.wad:MAP16",
+        "no exit line: the bot ends it by the boss brains' death, check counts rockets from lifts only",
+    ),
+    ("freedoom2.wad:MAP22", "the route leaves at (-213, -2183), from sector 238 onto sector 240 (tag 8)"),
+    ("freedoom2.wad:MAP24", "the route leaves at (922, -541), inside sector 160 (a monster teleporter's destination)"),
+    ("freedoom2.wad:MAP30", "the route leaves at (-2304, 3503), from sectors 12 and 15 (tags 35 and 34)"),
+];
+
+/// How the bot did on one map, and what `check` says of it.
+struct Played {
+    map: String,
+    exited: bool,
+    how: String,
+    /// The keys the bot held at the end.
+    keys: Vec<String>,
+    report: check::Report,
+}
+
+fn autoplay_wad(wad: &str) -> Vec<Played> {
     let path = freedoom_wads::path(wad);
     let names = sightline::wad::Wad::open(&path).unwrap().map_names();
     let next = std::sync::atomic::AtomicUsize::new(0);
@@ -391,25 +425,67 @@ fn autoplay_wad(wad: &str) -> Vec<(String, bool, String)> {
                     (None, false, Some((at, why))) => format!("stuck at ({:.0}, {:.0}): {why}", at.x, at.y),
                     (None, false, None) => "out of time".to_string(),
                 };
-                results.lock().unwrap().push((name.clone(), outcome.exit.is_some(), how));
+                let keys = play.game.player().keys.iter().map(|k| k.colour.name().to_string()).collect();
+                let level = sightline::campaign::open(&map, &Default::default()).unwrap().level;
+                let report = check::report(&level, options.skill);
+                let map = format!("{wad}:{name}");
+                let played = Played { map, exited: outcome.exit.is_some(), how, keys, report };
+                results.lock().unwrap().push(played);
             });
         }
     });
     let mut results = results.into_inner().unwrap();
-    results.sort();
-    for (name, _, how) in &results {
-        eprintln!("{wad} {name}: {how}");
-    }
+    results.sort_by(|a, b| a.map.cmp(&b.map));
     results
 }
 
+/// Where `check` and the bot disagree on one map (no exit the bot reaches
+/// and no key it takes may be called unreachable, and every "not
+/// reachable" names its obstacle); a listed gap that agrees now is wrong
+/// too, so the list only shrinks.
+fn disagreements(p: &Played) -> Vec<String> {
+    let r = &p.report;
+    let gap = KNOWN_GAPS.iter().find(|g| g.0 == p.map);
+    let mut disagree = Vec::new();
+    if p.exited && !r.exit_reachable {
+        disagree.push(format!("{}: the bot exits it, check calls it unfinishable", p.map));
+    }
+    for colour in &p.keys {
+        if !r.keys.iter().any(|k| &k.colour == colour && k.reachable) {
+            disagree.push(format!("{}: the bot picks up the {colour} key, check calls it unreachable", p.map));
+        }
+    }
+    let mut wrong = match gap {
+        None => disagree,
+        Some(_) if disagree.is_empty() => vec![format!("{}: agrees now; take it off KNOWN_GAPS", p.map)],
+        Some(_) => Vec::new(),
+    };
+    for k in r.keys.iter().filter(|k| !k.reachable && k.obstacle.as_deref().is_none_or(str::is_empty)) {
+        wrong.push(format!("{}: the {} key is unreachable with no obstacle named", p.map, k.colour));
+    }
+    for e in r.exits.iter().filter(|e| !e.reachable && e.obstacle.as_deref().is_none_or(str::is_empty)) {
+        wrong.push(format!("{}: the {} is unreachable with no obstacle named", p.map, e.what));
+    }
+    wrong
+}
+
+/// The Freedoom batch: the bot's floors, and `check` agreeing with it
+/// (one autoplay of each map serves both).
 #[test]
 #[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
-fn the_autopilot_finishes_most_of_freedoom_without_monsters() {
+fn the_autopilot_finishes_most_of_freedoom_without_monsters_and_check_agrees() {
+    let mut wrong = Vec::new();
     for (wad, floor) in [("freedoom1.wad", FREEDOOM1_FLOOR), ("freedoom2.wad", FREEDOOM2_FLOOR)] {
         let results = autoplay_wad(wad);
-        let exited = results.iter().filter(|r| r.1).count();
+        for p in &results {
+            let gap = KNOWN_GAPS.iter().find(|g| g.0 == p.map).map(|g| format!(" (known gap: {})", g.1));
+            let verdict = if p.report.exit_reachable { "finishable" } else { "NOT finishable" };
+            eprintln!("{}: {}; check: {verdict}{}", p.map, p.how, gap.unwrap_or_default());
+            wrong.extend(disagreements(p));
+        }
+        let exited = results.iter().filter(|r| r.exited).count();
         eprintln!("{wad}: {exited} of {} maps exited", results.len());
         assert!(exited >= floor, "{wad}: only {exited} of {} maps exited (the target is {floor})", results.len());
     }
+    assert!(wrong.is_empty(), "check and the autopilot disagree:\n{}", wrong.join("\n"));
 }
