@@ -436,6 +436,9 @@ impl App {
 
     /// The pointer at window position (`x`, `y`): the item under it is chosen.
     fn point(&mut self, x: f64, y: f64) {
+        if self.front.pointer.replace((x, y)).is_none_or(|was| was == (x, y)) {
+            return;
+        }
         let Some(screen) = &self.screen else { return };
         let size = screen.window.inner_size();
         let (fw, fh) = (self.fb.width as f64, self.fb.height as f64);

@@ -26,12 +26,15 @@ pub struct Front {
     pub menu: Menu,
     pub open: bool,
     pub title: bool,
+    /// Where the pointer was last seen: the first position reported (a
+    /// window opening under a still mouse) chooses nothing, only motion does.
+    pub pointer: Option<(f64, f64)>,
 }
 
 impl Front {
     pub fn new(config: &Config, title: bool, episodes: Vec<String>, save_dir: &Path) -> Front {
         let setup = Setup { episodes, slots: slots(save_dir), in_game: !title };
-        Front { menu: Menu::new(settings_of(config), setup), open: title, title }
+        Front { menu: Menu::new(settings_of(config), setup), open: title, title, pointer: None }
     }
 }
 
