@@ -169,3 +169,61 @@ pub fn first_map(map: &sightline::campaign::MapRef, episodes: &[String], n: usiz
         None => map.clone(),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use sightline::screen::menu::Event;
+
+    #[test]
+    fn keys_become_menu_commands() {
+        let menu = Menu::new(settings_of(&Config::default()), Setup::default());
+        assert_eq!(command(&menu, KeyCode::ArrowUp, None), Some(Command::Up));
+        assert_eq!(command(&menu, KeyCode::Enter, None), Some(Command::Select));
+        assert_eq!(command(&menu, KeyCode::Escape, None), Some(Command::Back));
+        assert_eq!(command(&menu, KeyCode::KeyY, Some("y")), Some(Command::Text('y')));
+        assert_eq!(command(&menu, KeyCode::F5, None), None);
+    }
+
+    /// A key rebound in the menu reaches the keymap the game reads, and the
+    /// settings file keeps it.
+    #[test]
+    fn a_rebound_key_drives_the_game_and_is_kept() {
+        let mut menu = Menu::new(settings_of(&Config::default()), Setup::default());
+        for c in [Command::Down, Command::Select, Command::Select, Command::Select, Command::Select] {
+            menu.command(c);
+        }
+        assert!(menu.wants_key());
+        let bind = command(&menu, KeyCode::KeyI, Some("i")).expect("a command");
+        assert!(menu.command(bind).contains(&Event::Settings));
+        let mut config = Config::default();
+        controls_into(&menu.settings, &mut config);
+        assert_eq!(config.controls.keys["forward"], ["KeyI", "KeyW"]);
+        let keys = crate::play::input::Keymap::of(&config.bindings());
+        let forward = BINDS.iter().find(|b| b.0 == "forward").map(|b| b.1);
+        assert_eq!(keys.get(KeyCode::KeyI), forward);
+        assert_eq!(keys.get(KeyCode::ArrowUp), None, "its old second key is free");
+        assert_eq!(settings_of(&config), menu.settings);
+    }
+
+    #[test]
+    fn a_named_slot_shows_its_name_and_picture() {
+        let dir = std::env::temp_dir().join(format!("sightline-menus-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        let map = sightline::campaign::MapRef::File(crate::capture::default_map_path());
+        let play = sightline::play::playthrough::Playthrough::of(&map, sightline::play::GameOptions::default())
+            .expect("the default level opens");
+        play.save(&saves::path(&dir, Slot::Numbered(2))).unwrap();
+        let mut fb = Framebuffer::new(320, 200);
+        fb.pixels.fill(sightline::framebuffer::rgb(200, 10, 10));
+        label_slot(&dir, 1, "By the lift", &fb).unwrap();
+        let slots = slots(&dir);
+        assert!(slots[0].is_none() && slots[2].is_none());
+        let slot = slots[1].as_ref().expect("slot 2 is filled");
+        assert_eq!((slot.name.as_str(), slot.map.as_str(), slot.skill), ("By the lift", "outpost.ron", 3));
+        let thumb = slot.thumbnail.as_ref().expect("a picture");
+        assert_eq!((thumb.width, thumb.height, thumb.pixels[0]), (160, 100, sightline::framebuffer::rgb(200, 10, 10)));
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
