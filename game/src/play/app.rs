@@ -167,6 +167,17 @@ impl App {
         let Some(pads) = &self.pads else { return Ok(()) };
         let events: Vec<_> = pads.try_iter().collect();
         for event in events {
+            use super::gamepad::{PadButton, PadEvent};
+            if self.front.open {
+                if let Some(command) = menus::pad_command(&event) {
+                    self.menu_command(event_loop, command);
+                }
+                continue;
+            }
+            if let PadEvent::Button { button: PadButton::Start, down: true } = event {
+                self.open_menu();
+                continue;
+            }
             let action = self.session.controls().and_then(|c| c.pad(event));
             if let Some(action) = action {
                 self.act(event_loop, action)?;

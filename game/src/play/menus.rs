@@ -149,6 +149,24 @@ pub fn command(menu: &Menu, key: KeyCode, text: Option<&str>) -> Option<Command>
     })
 }
 
+/// A gamepad's button pressed, as a menu command: the pad's cross moves,
+/// A (south) chooses, B (east) or Start goes back, Y (north) erases.
+/// (Start while playing opens the menu: the app's side.)
+pub fn pad_command(event: &super::gamepad::PadEvent) -> Option<Command> {
+    use super::gamepad::{PadButton as B, PadEvent};
+    let PadEvent::Button { button, down: true } = event else { return None };
+    Some(match button {
+        B::DpadUp => Command::Up,
+        B::DpadDown => Command::Down,
+        B::DpadLeft => Command::Left,
+        B::DpadRight => Command::Right,
+        B::South => Command::Select,
+        B::East | B::Start => Command::Back,
+        B::North => Command::Erase,
+        _ => return None,
+    })
+}
+
 /// The episodes of a WAD (`E1M1` to `E4M1` where present; none for Doom
 /// II's `MAPxx` or a RON map).
 pub fn episodes(map: &sightline::campaign::MapRef) -> Vec<String> {
@@ -183,6 +201,11 @@ mod tests {
         assert_eq!(command(&menu, KeyCode::Escape, None), Some(Command::Back));
         assert_eq!(command(&menu, KeyCode::KeyY, Some("y")), Some(Command::Text('y')));
         assert_eq!(command(&menu, KeyCode::F5, None), None);
+        use crate::play::gamepad::{PadButton, PadEvent};
+        let press = |button| PadEvent::Button { button, down: true };
+        assert_eq!(pad_command(&press(PadButton::DpadDown)), Some(Command::Down));
+        assert_eq!(pad_command(&press(PadButton::South)), Some(Command::Select));
+        assert_eq!(pad_command(&PadEvent::Button { button: PadButton::South, down: false }), None);
     }
 
     /// A key rebound in the menu reaches the keymap the game reads, and the
