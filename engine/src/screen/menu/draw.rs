@@ -114,7 +114,7 @@ pub fn draw(fb: &mut Framebuffer, menu: &Menu) {
         Page::QuitConfirm => {
             let (w, h) = (p.len(220.0), p.len(90.0));
             panel(fb, fb.width.saturating_sub(w) / 2, p.y(60.0, fb), w, h);
-            centred(fb, &p, 74.0, p.k(8.0), "Leave the game and close the window?", PALE);
+            centred(fb, &p, 74.0, p.k(8.0), "Leave the game?", PALE);
             items(fb, &p, menu);
         }
         _ => items(fb, &p, menu),
@@ -223,7 +223,13 @@ fn slots(fb: &mut Framebuffer, p: &Place, menu: &Menu) {
             (false, true) => RED,
             (false, false) => GREY,
         };
-        let k = k.min(fit(p, l.text, &name, 142.0));
+        // 17 letters fit the box: a longer name is cut (its end shown while typed).
+        let letters: Vec<char> = name.chars().collect();
+        let name: String = match (letters.len() > 17, editing == Some(n)) {
+            (false, _) => name,
+            (true, true) => letters[letters.len() - 17..].iter().collect(),
+            (true, false) => letters[..14].iter().collect::<String>() + "...",
+        };
         text(fb, p.x(20.0), p.y(v, fb), k, &name, shade);
     }
     // The right panel.
