@@ -232,7 +232,12 @@ pub struct CaptureArgs {
 pub struct PlayArgs {
     /// A RON map, a compiled map, a campaign file, a WAD (its first map,
     /// then its episode), `WAD:MAP`, or a ViZDoom scenario's `.cfg` (its
-    /// map at its skill, the reward on the HUD). Default: maps/outpost.ron.
+    /// map at its skill, the reward on the HUD). With none (and no --demo,
+    /// --load or --autopilot): the title with the menu over it, where New
+    /// Game starts maps/outpost.ron at the skill chosen. In the window Esc
+    /// opens the menu (the game pauses): New Game, Options (keys, mouse,
+    /// run, volumes, status bar, HUD, full screen, autoaim; kept in the
+    /// settings file), Load Game and Save Game (eight named slots), Quit.
     pub map: Option<String>,
     /// The IWAD under a PWAD (`--iwad freedoom2.wad mymap.wad:MAP01`).
     #[arg(long)]

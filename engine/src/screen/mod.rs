@@ -12,6 +12,7 @@
 //! ZDoom draws it, its sides cut off on a narrow frame ([`view_scale`]).
 
 pub mod automap;
+pub mod menu;
 pub mod status;
 pub mod text;
 pub mod tint;

@@ -116,6 +116,14 @@ impl Sounds {
         Sounds { bank, ..Sounds::new() }
     }
 
+    /// The voice of sound `name` from the map's bank (the menu's sounds:
+    /// a WAD's own, else ours).
+    pub fn voice(&mut self, name: &str) -> Option<bank::Voice> {
+        let voice = self.bank.get(name).cloned();
+        self.warnings.append(&mut self.bank.warnings);
+        voice
+    }
+
     /// The cues of the tick `play` just ran.
     pub fn cues(&mut self, play: &Playthrough) -> Cues {
         let mut cues = Cues::default();

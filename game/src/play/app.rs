@@ -23,6 +23,7 @@ use winit::window::WindowId;
 use super::clock::TickClock;
 use super::hud::Hud;
 use super::input::{digit, Action, Keymap};
+use super::menus::{self, Front};
 use super::saves::{self, Slot};
 use super::screen::{Screen, ScreenOptions};
 use super::screenshot;
@@ -66,11 +67,19 @@ pub struct App {
     pads: Option<std::sync::mpsc::Receiver<super::gamepad::PadEvent>>,
     /// What stopped the loop, if something went wrong.
     pub error: Option<anyhow::Error>,
+    /// The title and the menus over the game (Esc).
+    front: Front,
+    /// What a new game from the menu starts: the map and the options.
+    new_game: (sightline::campaign::MapRef, sightline::play::GameOptions),
+    /// The settings as read, for the keymap of rebound keys.
+    config: crate::config::Config,
 }
 
 /// The settings the player can change in the game, as they are at exit.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Changeable {
+    /// The menu's options (controls, autoaim and the rest).
+    pub menu: sightline::screen::menu::Settings,
     pub status_bar: bool,
     pub hud: bool,
     pub fullscreen: bool,
@@ -99,6 +108,10 @@ pub struct AppOptions {
     pub save_dir: std::path::PathBuf,
     /// A ViZDoom scenario being played: its reward is shown.
     pub scenario: Option<sightline::scenario::ScenarioConfig>,
+    /// Start on the title, the menu open (no map was named).
+    pub title: bool,
+    pub config: crate::config::Config,
+    pub new_game: (sightline::campaign::MapRef, sightline::play::GameOptions),
 }
 
 impl App {
@@ -107,6 +120,8 @@ impl App {
         let level = session.play.game.level();
         let renderers = renderers_for(level);
         let automap = Automap::new(&level.map);
+        let episodes = menus::episodes(&options.new_game.0);
+        let front = Front::new(&options.config, options.title, episodes, &options.save_dir);
         let watch = if session.reloadable() { sightline::play::reload::Watch::new(&session.play.map) } else { None };
         App {
             screen_options: options.screen.clone(),
@@ -139,6 +154,9 @@ impl App {
             pads: options.pads,
             fullscreen: options.screen.fullscreen,
             error: None,
+            front,
+            new_game: options.new_game,
+            config: options.config,
         }
     }
 
@@ -149,6 +167,17 @@ impl App {
         let Some(pads) = &self.pads else { return Ok(()) };
         let events: Vec<_> = pads.try_iter().collect();
         for event in events {
+            use super::gamepad::{PadButton, PadEvent};
+            if self.front.open {
+                if let Some(command) = menus::pad_command(&event) {
+                    self.menu_command(event_loop, command);
+                }
+                continue;
+            }
+            if let PadEvent::Button { button: PadButton::Start, down: true } = event {
+                self.open_menu();
+                continue;
+            }
             let action = self.session.controls().and_then(|c| c.pad(event));
             if let Some(action) = action {
                 self.act(event_loop, action)?;
@@ -159,11 +188,15 @@ impl App {
 
     /// The settings the player can change in the game, as they are now.
     pub fn changeable(&self) -> Changeable {
+        let m = &self.front.menu.settings;
+        let menu_volumes = (f32::from(m.effects_volume) / 100.0, f32::from(m.music_volume) / 100.0);
         Changeable {
+            menu: m.clone(),
             status_bar: self.status == sightline::screen::Hud::StatusBar,
             hud: self.hud.visible,
             fullscreen: self.screen.as_ref().map_or(self.fullscreen, Screen::fullscreen),
-            volumes: self.session.sound.as_ref().map(|s| s.volumes()),
+            // Without sound the menu's volumes are still the player's choice.
+            volumes: Some(self.session.sound.as_ref().map_or(menu_volumes, |s| s.volumes())),
         }
     }
 
@@ -183,7 +216,9 @@ impl App {
         let (ticks, alpha) = self.clock.advance(interval);
         self.read_pads(event_loop)?;
         self.reload_if_edited(now);
-        self.session.run(ticks);
+        // The menu pauses the game.
+        self.session.run(if self.front.open { 0 } else { ticks });
+        self.front.menu.ticks += u64::from(ticks);
         if let Some(e) = self.session.error.take() {
             return Err(e);
         }
@@ -196,7 +231,9 @@ impl App {
         let play = &self.session.play;
         let level = play.game.level();
         let start = Instant::now();
-        render_frame(level, &view, &self.options, &mut self.frame, &mut self.fb);
+        if !self.front.title {
+            render_frame(level, &view, &self.options, &mut self.frame, &mut self.fb);
+        }
         let render = start.elapsed();
         sightline::screen::draw(&mut self.fb, level, &play.game.sim.info.table, play.game.player(), self.status);
         self.automap.accumulate(self.frame.seen_lines());
@@ -212,6 +249,12 @@ impl App {
             self.hud.draw_reward(&mut self.fb, reward);
         }
         super::hud::draw_phase(&mut self.fb, &play.phase);
+        if self.front.title {
+            sightline::screen::menu::title::backdrop(&mut self.fb);
+        }
+        if self.front.open {
+            sightline::screen::menu::draw::draw(&mut self.fb, &self.front.menu);
+        }
 
         let Some(screen) = &mut self.screen else { return Ok(()) };
         let start = Instant::now();
@@ -256,7 +299,9 @@ impl App {
                 }
             }
             Action::QuickSave => self.save(Slot::Quick),
-            Action::QuickLoad => self.load(Slot::Quick),
+            Action::QuickLoad => {
+                self.load(Slot::Quick);
+            }
             Action::SaveSlot => self.ask(Prompt::Save),
             Action::LoadSlot => self.ask(Prompt::Load),
             Action::CycleRenderer => {
@@ -313,7 +358,9 @@ impl App {
     fn answer(&mut self, prompt: Prompt, key: winit::keyboard::KeyCode) {
         match digit(key).filter(|&d| d >= 1) {
             Some(d) if prompt == Prompt::Save => self.save(Slot::Numbered(d)),
-            Some(d) => self.load(Slot::Numbered(d)),
+            Some(d) => {
+                self.load(Slot::Numbered(d));
+            }
             None => self.say("Cancelled".into()),
         }
     }
@@ -327,8 +374,9 @@ impl App {
         }
     }
 
-    /// Loads the game in `slot`; a load that fails is reported and the game goes on.
-    fn load(&mut self, slot: Slot) {
+    /// Loads the game in `slot`; a load that fails is reported and the game
+    /// goes on (false).
+    fn load(&mut self, slot: Slot) -> bool {
         let path = saves::path(&self.save_dir, slot);
         match self.session.load(&path) {
             Ok(()) => {
@@ -344,8 +392,12 @@ impl App {
                     at / 60,
                     at % 60
                 ));
+                true
             }
-            Err(e) => self.say(format!("Not loaded: {e:#}")),
+            Err(e) => {
+                self.say(format!("Not loaded: {e:#}"));
+                false
+            }
         }
     }
 
@@ -373,6 +425,139 @@ impl App {
             screen.window.set_title(&title);
         }
         self.title = title;
+    }
+
+    /// Esc in the game: the menu opens on its main page and the game pauses.
+    fn open_menu(&mut self) {
+        self.front.menu.reset();
+        self.front.menu.setup.slots = menus::slots(&self.save_dir);
+        self.front.open = true;
+        if let Some(controls) = self.session.controls() {
+            controls.release_all();
+        }
+        self.grab(false);
+        self.menu_sound(sightline::screen::menu::Sound::Open);
+    }
+
+    fn menu_sound(&mut self, sound: sightline::screen::menu::Sound) {
+        if let Some(out) = &mut self.session.sound {
+            out.menu_sound(sound.name());
+        }
+    }
+
+    /// The pointer at window position (`x`, `y`): the item under it is chosen.
+    fn point(&mut self, x: f64, y: f64) {
+        if self.front.pointer.replace((x, y)).is_none_or(|was| was == (x, y)) {
+            return;
+        }
+        let Some(screen) = &self.screen else { return };
+        let size = screen.window.inner_size();
+        let (fw, fh) = (self.fb.width as f64, self.fb.height as f64);
+        // The frame is scaled to fit the window, centred (as `Screen` presents it).
+        let k = (f64::from(size.width) / fw).min(f64::from(size.height) / fh).max(1e-9);
+        let fx = (x - (f64::from(size.width) - fw * k) / 2.0) / k;
+        let fy = (y - (f64::from(size.height) - fh * k) / 2.0) / k;
+        if fx < 0.0 || fy < 0.0 {
+            return;
+        }
+        let at = sightline::screen::menu::draw::item_at(
+            &self.front.menu,
+            self.fb.width,
+            self.fb.height,
+            fx as usize,
+            fy as usize,
+        );
+        if let Some(n) = at {
+            self.menu_command_quiet(sightline::screen::menu::Command::Point(n));
+        }
+    }
+
+    fn menu_command_quiet(&mut self, command: sightline::screen::menu::Command) {
+        for event in self.front.menu.command(command) {
+            if let sightline::screen::menu::Event::Sound(s) = event {
+                self.menu_sound(s);
+            }
+        }
+    }
+
+    /// A menu command from the keys, the mouse or a gamepad, and what it asks for.
+    pub fn menu_command(&mut self, event_loop: &ActiveEventLoop, command: sightline::screen::menu::Command) {
+        use sightline::screen::menu::Event;
+        for event in self.front.menu.command(command) {
+            match event {
+                Event::Sound(s) => self.menu_sound(s),
+                // The title keeps its menu.
+                Event::Closed => self.front.open = self.front.title,
+                Event::Quit => event_loop.exit(),
+                Event::Settings => self.apply_settings(),
+                Event::NewGame { episode, skill } => self.start_new_game(episode, skill),
+                Event::Load { slot } => {
+                    if self.load(Slot::Numbered(slot as u8 + 1)) {
+                        self.front.title = false;
+                        self.front.open = false;
+                        self.front.menu.setup.in_game = true;
+                    }
+                }
+                Event::Save { slot, name } => {
+                    self.save(Slot::Numbered(slot as u8 + 1));
+                    if let Err(e) = menus::label_slot(&self.save_dir, slot, &name, &self.fb) {
+                        self.say(format!("The save's name and picture were not kept: {e:#}"));
+                    }
+                }
+            }
+        }
+    }
+
+    /// The menu's options put in force at once.
+    fn apply_settings(&mut self) {
+        use sightline::screen::Hud;
+        let m = self.front.menu.settings.clone();
+        self.status = if m.status_bar { Hud::StatusBar } else { Hud::Minimal };
+        self.hud.visible = m.hud;
+        if let Some(screen) = &self.screen {
+            if screen.fullscreen() != m.fullscreen {
+                screen.toggle_fullscreen();
+            }
+        }
+        self.fullscreen = m.fullscreen;
+        if let Some(sound) = &mut self.session.sound {
+            sound.set_volumes(f32::from(m.effects_volume) / 100.0, f32::from(m.music_volume) / 100.0);
+        }
+        let mut config = self.config.clone();
+        menus::controls_into(&m, &mut config);
+        self.keys = Keymap::of(&config.bindings());
+        if let Some(controls) = self.session.controls() {
+            let s = controls.settings_mut();
+            s.keys = Keymap::of(&config.bindings());
+            s.sensitivity = m.mouse_sensitivity;
+            s.always_run = m.always_run;
+        }
+    }
+
+    /// New Game: the chosen episode's first map at the chosen skill.
+    fn start_new_game(&mut self, episode: usize, skill: u8) {
+        let (start, options) = &self.new_game;
+        let map = menus::first_map(start, &self.front.menu.setup.episodes, episode);
+        let options = sightline::play::GameOptions { skill, ..*options };
+        let setup = sightline::sim::game::Setup {
+            no_autoaim: !self.front.menu.settings.autoaim,
+            ..sightline::sim::game::Setup::SINGLE
+        };
+        let started = Playthrough::of_set_up(&map, options, setup)
+            .map_err(anyhow::Error::from)
+            .and_then(|play| self.session.new_game(play));
+        match started {
+            Ok(()) => {
+                let name = sightline::screen::menu::SKILLS[usize::from(skill.clamp(1, 5)) - 1];
+                self.say(format!("New game: {} on skill {skill} ({name})", map.short_name()));
+                self.front.title = false;
+                self.front.open = false;
+                self.front.menu.setup.in_game = true;
+                self.title.clear();
+                self.follow_map();
+            }
+            Err(e) => self.say(format!("No new game: {e:#}")),
+        }
     }
 
     fn grab(&mut self, grab: bool) {
@@ -435,6 +620,19 @@ impl ApplicationHandler for App {
                 self.grab(false);
                 Ok(())
             }
+            WindowEvent::CursorMoved { position, .. } if self.front.open => {
+                self.point(position.x, position.y);
+                Ok(())
+            }
+            WindowEvent::MouseInput { state: ElementState::Pressed, button, .. } if self.front.open => {
+                use sightline::screen::menu::Command;
+                match button {
+                    MouseButton::Left => self.menu_command(event_loop, Command::Select),
+                    MouseButton::Right => self.menu_command(event_loop, Command::Back),
+                    _ => {}
+                }
+                Ok(())
+            }
             WindowEvent::MouseInput { state, button: MouseButton::Left, .. } => {
                 let down = state == ElementState::Pressed;
                 if !self.grabbed {
@@ -450,6 +648,16 @@ impl ApplicationHandler for App {
             WindowEvent::KeyboardInput { event, .. } => {
                 let PhysicalKey::Code(code) = event.physical_key else { return };
                 let down = event.state == ElementState::Pressed;
+                if down && self.front.open {
+                    if let Some(command) = menus::command(&self.front.menu, code, event.text.as_deref()) {
+                        self.menu_command(event_loop, command);
+                    }
+                    return;
+                }
+                if down && !event.repeat && code == winit::keyboard::KeyCode::Escape {
+                    self.open_menu();
+                    return;
+                }
                 if down && !event.repeat {
                     if let Some(prompt) = self.prompt.take() {
                         self.answer(prompt, code);

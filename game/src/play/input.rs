@@ -206,6 +206,11 @@ impl Controls {
         Controls { settings, held: 0, pad_held: 0, sticks: [0.0; 4], pressed: 0, mouse_dx: 0.0, weapon: 0 }
     }
 
+    /// The settings to change (from the menu's options).
+    pub fn settings_mut(&mut self) -> &mut Settings {
+        &mut self.settings
+    }
+
     /// The keymap these controls read.
     #[cfg(test)]
     pub fn keys(&self) -> &Keymap {

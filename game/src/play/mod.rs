@@ -17,6 +17,7 @@ mod clock;
 pub(crate) mod gamepad;
 pub(crate) mod hud;
 pub(crate) mod input;
+mod menus;
 mod saves;
 mod screen;
 mod screenshot;
@@ -102,6 +103,9 @@ pub fn run(args: &PlayArgs) -> Result<()> {
         args.renderer.or_else(|| config.video.renderer.as_deref().and_then(sightline::render::Renderer::from_name));
     let renderer = crate::replay::choose_renderer(chosen, play.game.level(), &play.map.label())?;
     let keys = Keymap::of(&config.bindings());
+    // No map, demo, save or scenario named: the title, with the menu open
+    // (New Game starts the default level at the skill chosen).
+    let title = args.map.is_none() && args.demo.is_none() && args.load.is_none() && !args.autopilot;
     // A `.lmp` keeps turns to 1/256 of the circle: the game is fed them so.
     let lmp = args.record.as_deref().is_some_and(crate::replay_lmp::is_lmp_path);
     let mut session = match (demo, vanilla) {
@@ -156,9 +160,17 @@ pub fn run(args: &PlayArgs) -> Result<()> {
         save_dir: args.save_dir.clone().unwrap_or_else(saves::default_dir),
         scenario,
         pads: if config.gamepad.enabled { gamepad::open_all() } else { None },
+        title,
+        config: config.clone(),
+        new_game: (map.clone(), game_options),
     };
     let mut app = App::new(session, options);
     let at_start = app.changeable();
+    println!(
+        "settings: effects volume {}%, music volume {}%",
+        (at_start.menu.effects_volume),
+        (at_start.menu.music_volume)
+    );
     let ran = event_loop.run_app(&mut app);
     settings.keep(at_start, app.changeable());
     if (args.frames.is_some() || args.stats) && app.timings.frames() > 0 {
@@ -236,6 +248,9 @@ impl Settings {
         }
         if before.fullscreen != after.fullscreen {
             v.fullscreen = after.fullscreen;
+        }
+        if before.menu != after.menu {
+            menus::controls_into(&after.menu, &mut config);
         }
         if let (Some(was), Some(now)) = (before.volumes, after.volumes) {
             let percent = |v: f32| (v * 100.0).round().clamp(0.0, 100.0) as u8;

@@ -228,7 +228,21 @@ impl Session {
         if self.recording.is_some() {
             bail!("a demo is being recorded, and would not replay a loaded game (saving still works)");
         }
-        self.play = Playthrough::load(path)?;
+        let play = Playthrough::load(path)?;
+        self.replace(play)
+    }
+
+    /// Replaces the game with `play` (a new game from the menu); refused
+    /// while a demo plays or is recorded, as a load is.
+    pub fn new_game(&mut self, play: Playthrough) -> Result<()> {
+        if matches!(self.source, Source::Demo { .. }) || self.recording.is_some() {
+            bail!("a demo is playing or being recorded: a new game would leave it");
+        }
+        self.replace(play)
+    }
+
+    fn replace(&mut self, play: Playthrough) -> Result<()> {
+        self.play = play;
         self.finished = false;
         if let Source::Autopilot(bot) = &mut self.source {
             // A new bot for the loaded game.

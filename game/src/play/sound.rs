@@ -84,6 +84,20 @@ impl SoundOut {
         self.sounds = Sounds::new();
     }
 
+    /// Plays the menu's sound `name` (not placed in the world).
+    pub fn menu_sound(&mut self, name: &str) {
+        let Some(voice) = self.sounds.voice(name) else { return };
+        let start = sightline::sound::Start { voice, key: sightline::sound::mix::Key::Listener, pos: None };
+        let cues = Cues { starts: vec![start], ..Cues::default() };
+        let _ = self.to_audio.send(Message::Cues(Box::new(cues)));
+    }
+
+    /// Sets the effects' and music's volumes, 0 to 1.
+    pub fn set_volumes(&mut self, effects: f32, music: f32) {
+        self.volumes = (effects, music);
+        let _ = self.to_audio.send(Message::Volumes(effects, music));
+    }
+
     /// The effects' and music's volumes, 0 to 1.
     pub fn volumes(&self) -> (f32, f32) {
         self.volumes
