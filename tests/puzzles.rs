@@ -23,12 +23,6 @@ const SEEDS: std::ops::Range<u64> = 0..16;
 /// The long suite's seeds.
 const LONG_SEEDS: std::ops::Range<u64> = 16..160;
 
-/// Seeds whose `check` assertions fail today because `check` does not yet
-/// predict switch-built stairs past their first step (`plan::predict`).
-/// The `truth` work on `check` empties this list; a seed listed here whose
-/// check passes fails the test, so the list cannot go stale.
-const CHECK_AWAITS_STAIRS: &[u64] = &[0, 3, 4, 5, 6, 9, 13, 14, 15];
-
 /// Skill 2, as the issue asks.
 const SKILL: u8 = 2;
 /// Game time the autopilot gets on one level.
@@ -86,25 +80,15 @@ fn autoplay(path: &PathBuf, no_monsters: bool) -> Result<u64, String> {
     ))
 }
 
-/// Everything asked of seed `seed`: the failures, one paragraph each. In
-/// the long batch (`long`), `check` failing on a map with switch-built
-/// stairs is let pass, as [`CHECK_AWAITS_STAIRS`] lets the default seeds'.
-fn play_seed(seed: u64, long: bool) -> Vec<String> {
+/// Everything asked of seed `seed`: the failures, one paragraph each.
+fn play_seed(seed: u64) -> Vec<String> {
     let mut failures = Vec::new();
     for monsters in [false, true] {
         let p = puzzle::generate(seed, monsters);
         let path = write(&p, monsters);
         let at = format!("{} ({})", p.describe(), path.display());
-        let listed = CHECK_AWAITS_STAIRS.contains(&seed);
-        if listed {
-            assert!(p.has_stairs(), "seed {seed} is listed in CHECK_AWAITS_STAIRS but has no stairs");
-        }
-        match check_level(&path, &p) {
-            Err(e) if !listed && !(long && p.has_stairs()) => failures.push(format!("{at}: {e}")),
-            Ok(()) if listed => {
-                failures.push(format!("{at}: check now passes: remove seed {seed} from CHECK_AWAITS_STAIRS"))
-            }
-            _ => {}
+        if let Err(e) = check_level(&path, &p) {
+            failures.push(format!("{at}: {e}"));
         }
         // Without monsters on the map made without them, and with monsters
         // (and without them) on the one made with them.
@@ -119,7 +103,7 @@ fn play_seed(seed: u64, long: bool) -> Vec<String> {
 }
 
 /// Plays `seeds` two at a time; panics with every failure.
-fn play_seeds(seeds: std::ops::Range<u64>, long: bool) {
+fn play_seeds(seeds: std::ops::Range<u64>) {
     let list: Vec<u64> = seeds.collect();
     let next = std::sync::atomic::AtomicUsize::new(0);
     let failures = std::sync::Mutex::new(Vec::new());
@@ -128,7 +112,7 @@ fn play_seeds(seeds: std::ops::Range<u64>, long: bool) {
             s.spawn(|| loop {
                 let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
                 let Some(&seed) = list.get(i) else { break };
-                let f = play_seed(seed, long);
+                let f = play_seed(seed);
                 failures.lock().unwrap().extend(f);
             });
         }
@@ -153,13 +137,13 @@ fn the_default_seeds_cover_every_link_a_ledge_and_a_decoy() {
 
 #[test]
 fn generated_puzzles_are_checked_and_exited() {
-    play_seeds(SEEDS, false);
+    play_seeds(SEEDS);
 }
 
 #[test]
 #[ignore = "long: the larger batch of generated puzzles (the README's long suites)"]
 fn puzzles_long_batch() {
-    play_seeds(LONG_SEEDS, true);
+    play_seeds(LONG_SEEDS);
 }
 
 /// With nothing to do where it stands (a bare ledge, the exit out of
