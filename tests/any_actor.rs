@@ -19,8 +19,7 @@ use sightline::play::playthrough::Playthrough;
 use sightline::play::GameOptions;
 use sightline::render::{Renderer, Shade};
 use sightline::sim::game::Setup;
-use sightline::Framebuffer;
-use sightline_tests::{difference, freedoom_wads, render, root, view};
+use sightline_tests::{freedoom_wads, golden, render, root, view};
 
 const MAPS: [&str; 2] = ["roster_monsters", "roster_items"];
 
@@ -143,22 +142,10 @@ fn poses(name: &str) -> Vec<(f64, f64, f64)> {
 }
 
 fn compare_golden(level: &Level, name: &str, art: &str, failures: &mut Vec<String>) {
-    let bless = std::env::var_os("SIGHTLINE_BLESS").is_some();
-    let dir = root().join("tests/images");
     for (i, (x, y, angle)) in poses(name).into_iter().enumerate() {
         let frame = render(level, &view(level, x, y, angle), (320, 200), Renderer::Bsp, Shade::Textured);
-        let file: PathBuf = dir.join(format!("{name}-{art}-{i}.png"));
-        if bless {
-            std::fs::write(&file, frame.to_png()).unwrap();
-            continue;
-        }
-        let golden = Framebuffer::read_png(&file)
-            .unwrap_or_else(|e| panic!("missing golden image ({e}); create it with SIGHTLINE_BLESS=1 and look at it"));
-        let diff = difference(&frame, &golden);
-        if diff.pixels != 0 {
-            let out = std::env::temp_dir().join(format!("golden-{name}-{art}-{i}.png"));
-            std::fs::write(&out, frame.to_png()).unwrap();
-            failures.push(format!("{}: {} pixels differ (got {})", file.display(), diff.pixels, out.display()));
+        if let Err(e) = golden(&format!("{name}-{art}-{i}"), &frame) {
+            failures.push(e);
         }
     }
 }

@@ -5,8 +5,7 @@
 
 use sightline::render::{Renderer, Shade};
 use sightline::tour::tour;
-use sightline::Framebuffer;
-use sightline_tests::{difference, load, render, root, shipped_maps};
+use sightline_tests::{golden, load, render, root, shipped_maps};
 
 const SIZE: (usize, usize) = (320, 200);
 /// Poses per map: the player start, then tour poses.
@@ -14,8 +13,6 @@ const POSES: usize = 3;
 
 #[test]
 fn frames_match_golden_images() {
-    let bless = std::env::var_os("SIGHTLINE_BLESS").is_some();
-    let dir = root().join("tests/images");
     let mut failures = Vec::new();
     for path in shipped_maps() {
         let level = load(&path);
@@ -33,20 +30,8 @@ fn frames_match_golden_images() {
                     Renderer::Bsp => shade.name().to_string(),
                     other => format!("{}-{}", other.name(), shade.name()),
                 };
-                let file = dir.join(format!("{stem}-{i}-{kind}.png"));
-                if bless {
-                    std::fs::create_dir_all(&dir).unwrap();
-                    std::fs::write(&file, frame.to_png()).unwrap();
-                    continue;
-                }
-                let golden = Framebuffer::read_png(&file).unwrap_or_else(|e| {
-                    panic!("missing golden image ({e}); create it with SIGHTLINE_BLESS=1 and look at it")
-                });
-                let diff = difference(&frame, &golden);
-                if diff.pixels != 0 {
-                    let out = std::env::temp_dir().join(format!("golden-{stem}-{i}-{kind}.png"));
-                    std::fs::write(&out, frame.to_png()).unwrap();
-                    failures.push(format!("{}: {} pixels differ (got {})", file.display(), diff.pixels, out.display()));
+                if let Err(e) = golden(&format!("{stem}-{i}-{kind}"), &frame) {
+                    failures.push(e);
                 }
             }
         }
@@ -64,7 +49,6 @@ fn play_frames_with_the_status_bar_and_a_weapon_match_golden_images() {
     use sightline::play::TickInput;
     use sightline::screen::{draw, Hud};
     use sightline_tests::sim_play::{game, teleport};
-    let bless = std::env::var_os("SIGHTLINE_BLESS").is_some();
     let mut g = game("monsters");
     g.set_health(1_000_000);
     teleport(&mut g, glam::DVec2::new(700.0, 256.0), 0.0);
@@ -89,21 +73,10 @@ fn play_frames_with_the_status_bar_and_a_weapon_match_golden_images() {
         draw(&mut frame, Observe::level(&g), Observe::table(&g), Observe::player(&g), hud);
         frames.push((name, frame));
     }
-    let dir = root().join("tests/images");
     for (name, frame) in frames {
-        let file = dir.join(format!("{name}.png"));
-        if bless {
-            std::fs::write(&file, frame.to_png()).unwrap();
-            continue;
+        if let Err(e) = golden(name, &frame) {
+            panic!("{e}");
         }
-        let golden = Framebuffer::read_png(&file)
-            .unwrap_or_else(|e| panic!("missing golden image ({e}); create it with SIGHTLINE_BLESS=1 and look at it"));
-        let diff = difference(&frame, &golden);
-        let out = std::env::temp_dir().join(format!("golden-{name}.png"));
-        if diff.pixels != 0 {
-            std::fs::write(&out, frame.to_png()).unwrap();
-        }
-        assert_eq!(diff.pixels, 0, "{}: frame changed (got {})", file.display(), out.display());
     }
 }
 
@@ -121,12 +94,10 @@ fn the_default_level_s_main_views_match_golden_images() {
     use sightline::screen::{draw, Hud};
     use sightline::sim::game::SimGame;
     use sightline_tests::sim_play::teleport;
-    let bless = std::env::var_os("SIGHTLINE_BLESS").is_some();
     let level = load(&root().join("maps/outpost.ron"));
     let options = GameOptions::default();
     let mut g = SimGame::on_level(level, "outpost.ron", options).unwrap_or_else(|e| panic!("{e}"));
     let shotgun = g.sim.info.table.index("shotgun").unwrap();
-    let dir = root().join("tests/images");
     let views = [
         ("start", None),
         ("courtyard", Some((416.0, 440.0, 70.0))),
@@ -151,18 +122,8 @@ fn the_default_level_s_main_views_match_golden_images() {
         assert!(k != 1 || Observe::player(&g).ready_weapon == Some(shotgun), "the shotgun is not up");
         let mut frame = render(Observe::level(&g), &g.view(1.0), SIZE, Renderer::Bsp, Shade::Textured);
         draw(&mut frame, Observe::level(&g), Observe::table(&g), Observe::player(&g), Hud::StatusBar);
-        let file = dir.join(format!("outpost-play-{k}-{name}.png"));
-        if bless {
-            std::fs::write(&file, frame.to_png()).unwrap();
-            continue;
+        if let Err(e) = golden(&format!("outpost-play-{k}-{name}"), &frame) {
+            panic!("{e}");
         }
-        let golden = Framebuffer::read_png(&file)
-            .unwrap_or_else(|e| panic!("missing golden image ({e}); create it with SIGHTLINE_BLESS=1 and look at it"));
-        let diff = difference(&frame, &golden);
-        let out = std::env::temp_dir().join(format!("golden-outpost-{name}.png"));
-        if diff.pixels != 0 {
-            std::fs::write(&out, frame.to_png()).unwrap();
-        }
-        assert_eq!(diff.pixels, 0, "{}: frame changed (got {})", file.display(), out.display());
     }
 }

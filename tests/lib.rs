@@ -86,6 +86,26 @@ pub fn difference(a: &Framebuffer, b: &Framebuffer) -> Difference {
     Difference { pixels, total: a.pixels.len(), widest_column_run: widest }
 }
 
+/// `frame` against the golden image `tests/images/NAME.png`: `Err` says
+/// how many pixels differ and where the new frame was written. With
+/// `SIGHTLINE_BLESS` set the golden image is written instead (look at it).
+pub fn golden(name: &str, frame: &Framebuffer) -> Result<(), String> {
+    let file = root().join("tests/images").join(format!("{name}.png"));
+    if std::env::var_os("SIGHTLINE_BLESS").is_some() {
+        std::fs::write(&file, frame.to_png()).unwrap();
+        return Ok(());
+    }
+    let golden = Framebuffer::read_png(&file)
+        .unwrap_or_else(|e| panic!("missing golden image ({e}); create it with SIGHTLINE_BLESS=1 and look at it"));
+    let diff = difference(frame, &golden);
+    if diff.pixels == 0 {
+        return Ok(());
+    }
+    let out = std::env::temp_dir().join(format!("golden-{name}.png"));
+    std::fs::write(&out, frame.to_png()).unwrap();
+    Err(format!("{}: {} pixels differ (got {})", file.display(), diff.pixels, out.display()))
+}
+
 /// Renders `view` with both renderers in `ids` shading and returns how they differ.
 pub fn bsp_vs_reference(level: &Level, view: &View, size: (usize, usize)) -> (Difference, Framebuffer, Framebuffer) {
     let bsp = render(level, view, size, Renderer::Bsp, Shade::Ids);

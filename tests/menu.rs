@@ -9,7 +9,7 @@
 use sightline::screen::menu::draw::{draw, item_at};
 use sightline::screen::menu::{title, Binding, Command, Event, Menu, Page, Settings, Setup, SlotInfo, Sound, SLOTS};
 use sightline::Framebuffer;
-use sightline_tests::{difference, root};
+use sightline_tests::golden;
 
 use Command::*;
 
@@ -228,8 +228,6 @@ fn the_pointer_chooses_what_it_is_over() {
 /// Each page, drawn at 640x400 over the title's backdrop, against its golden image.
 #[test]
 fn pages_match_golden_images() {
-    let bless = std::env::var_os("SIGHTLINE_BLESS").is_some();
-    let dir = root().join("tests/images");
     let pages: Vec<(&str, Vec<Command>, usize)> = vec![
         ("main", vec![], 1),
         ("episode", vec![Select], 4),
@@ -251,27 +249,15 @@ fn pages_match_golden_images() {
         let mut fb = Framebuffer::new(640, 400);
         title::backdrop(&mut fb);
         draw(&mut fb, &menu);
-        let file = dir.join(format!("menu-{name}.png"));
-        if bless {
-            std::fs::write(&file, fb.to_png()).unwrap();
-            continue;
-        }
-        let golden = Framebuffer::read_png(&file)
-            .unwrap_or_else(|e| panic!("missing golden image ({e}); create it with SIGHTLINE_BLESS=1 and look at it"));
-        if difference(&fb, &golden).pixels != 0 {
-            let out = std::env::temp_dir().join(format!("menu-{name}.png"));
-            std::fs::write(&out, fb.to_png()).unwrap();
-            failures.push(format!("{}: differs (got {})", file.display(), out.display()));
+        if let Err(e) = golden(&format!("menu-{name}"), &fb) {
+            failures.push(e);
         }
     }
     // The title alone.
     let mut fb = Framebuffer::new(640, 400);
     title::draw(&mut fb);
-    let file = dir.join("menu-title.png");
-    if bless {
-        std::fs::write(&file, fb.to_png()).unwrap();
-    } else if Framebuffer::read_png(&file).map_or(true, |g| difference(&fb, &g).pixels != 0) {
-        failures.push(format!("{}: differs", file.display()));
+    if let Err(e) = golden("menu-title", &fb) {
+        failures.push(e);
     }
     assert!(failures.is_empty(), "menu pages changed:\n{}", failures.join("\n"));
 }
