@@ -220,7 +220,15 @@ impl Controls {
     /// A key went down (`down`) or up. Returns the window action of a fresh
     /// press (auto-repeat does not repeat actions).
     pub fn key(&mut self, key: KeyCode, down: bool, repeat: bool) -> Option<Action> {
-        match self.settings.keys.get(key)? {
+        let bind = self.settings.keys.get(key)?;
+        self.bound(bind, down && !repeat, down, false)
+    }
+
+    /// A bound key or button went down (`down`) or up: a weapon asked
+    /// for, a move held (on the pad's bits if `pad`), or the window action
+    /// of a fresh press (`fresh`).
+    fn bound(&mut self, bind: Bind, fresh: bool, down: bool, pad: bool) -> Option<Action> {
+        match bind {
             Bind::Weapon(slot) => {
                 if down {
                     self.weapon = slot;
@@ -228,10 +236,17 @@ impl Controls {
                 None
             }
             Bind::Move(m) => {
-                self.set(m, down);
+                let bit = m as u16;
+                let held = if pad { &mut self.pad_held } else { &mut self.held };
+                if down {
+                    *held |= bit;
+                    self.pressed |= bit;
+                } else {
+                    *held &= !bit;
+                }
                 None
             }
-            Bind::Window(action) => (down && !repeat).then_some(action),
+            Bind::Window(action) => fresh.then_some(action),
         }
     }
 
@@ -249,41 +264,16 @@ impl Controls {
                 self.sticks[i] = value;
                 None
             }
-            PadEvent::Button { button, down } => match self.settings.pad.get(button)? {
-                Bind::Weapon(slot) => {
-                    if down {
-                        self.weapon = slot;
-                    }
-                    None
-                }
-                Bind::Move(m) => {
-                    let bit = m as u16;
-                    if down {
-                        self.pad_held |= bit;
-                        self.pressed |= bit;
-                    } else {
-                        self.pad_held &= !bit;
-                    }
-                    None
-                }
-                Bind::Window(action) => down.then_some(action),
-            },
-        }
-    }
-
-    fn set(&mut self, m: Move, down: bool) {
-        let bit = m as u16;
-        if down {
-            self.held |= bit;
-            self.pressed |= bit;
-        } else {
-            self.held &= !bit;
+            PadEvent::Button { button, down } => {
+                let bind = self.settings.pad.get(button)?;
+                self.bound(bind, down, down, true)
+            }
         }
     }
 
     /// The left mouse button (fire) went down or up, while the cursor is grabbed.
     pub fn mouse_button(&mut self, down: bool) {
-        self.set(Move::Fire, down);
+        self.bound(Bind::Move(Move::Fire), false, down, false);
     }
 
     /// Mouse motion while the cursor is grabbed.
