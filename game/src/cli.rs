@@ -234,14 +234,22 @@ pub struct PlayArgs {
     /// then its episode), `WAD:MAP`, or a ViZDoom scenario's `.cfg` (its
     /// map at its skill, the reward on the HUD). With none (and no --demo,
     /// --load or --autopilot): the title with the menu over it, where New
-    /// Game starts maps/outpost.ron at the skill chosen. In the window Esc
+    /// Game starts maps/outpost.ron at the skill chosen (with only --iwad:
+    /// that WAD's title and attract loop). In the window Esc
     /// opens the menu (the game pauses): New Game, Options (keys, mouse,
     /// run, volumes, status bar, HUD, full screen, autoaim; kept in the
     /// settings file), Load Game and Save Game (eight named slots), Quit.
     pub map: Option<String>,
     /// The IWAD under a PWAD (`--iwad freedoom2.wad mymap.wad:MAP01`).
+    /// Given with no map: that WAD's title and attract loop (TITLEPIC,
+    /// CREDIT and its demos in Doom's order; a key opens the menu, whose
+    /// New Game starts its episodes).
     #[arg(long)]
     pub iwad: Option<PathBuf>,
+    /// Start on the title even though a map is named: a WAD's own title
+    /// and attract loop (`sightline play freedoom2.wad --title`).
+    #[arg(long, conflicts_with_all = ["demo", "load", "autopilot"])]
+    pub title: bool,
     /// Skill level 1 to 5 (Doom's: 3 is Hurt Me Plenty); things appear by it.
     #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(1..=5))]
     pub skill: u8,

@@ -11,6 +11,7 @@
 //! the weapon without the status bar always takes the height's scale, as
 //! ZDoom draws it, its sides cut off on a narrow frame ([`view_scale`]).
 
+pub mod attract;
 pub mod automap;
 pub mod menu;
 pub mod status;

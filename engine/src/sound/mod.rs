@@ -124,6 +124,21 @@ impl Sounds {
         voice
     }
 
+    /// The cues that play the music lump `lump` of `map`'s WADs (the
+    /// title's music), every sound stopped; the next map's cues change it.
+    pub fn music(&mut self, map: &MapRef, lump: &str) -> Cues {
+        if self.map.as_ref() != Some(map) {
+            self.bank = SoundBank::for_map(map);
+            self.warnings.append(&mut self.bank.warnings);
+            self.map = Some(map.clone());
+        }
+        let midi = self.bank.wad_music(lump);
+        let music = midi.map(Arc::new).map_err(|e| self.warnings.push(format!("music {lump}: {e}; no music"))).ok();
+        self.song = Some(lump.to_string());
+        self.sounding.clear();
+        Cues { stop_all: true, music: Some(music), ..Cues::default() }
+    }
+
     /// The cues of the tick `play` just ran.
     pub fn cues(&mut self, play: &Playthrough) -> Cues {
         let mut cues = Cues::default();

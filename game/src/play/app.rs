@@ -69,6 +69,8 @@ pub struct App {
     pub error: Option<anyhow::Error>,
     /// The title and the menus over the game (Esc).
     front: Front,
+    /// A WAD's attract loop behind its title (pages and demos).
+    attract: Option<super::attract::Loop>,
     /// What a new game from the menu starts: the map and the options.
     new_game: (sightline::campaign::MapRef, sightline::play::GameOptions),
     /// The settings as read, for the keymap of rebound keys.
@@ -121,7 +123,17 @@ impl App {
         let renderers = renderers_for(level);
         let automap = Automap::new(&level.map);
         let episodes = menus::episodes(&options.new_game.0);
-        let front = Front::new(&options.config, options.title, episodes, &options.save_dir);
+        let mut front = Front::new(&options.config, options.title, episodes, &options.save_dir);
+        // A WAD's title runs its attract loop; a key opens the menu over it.
+        let attract = match options.title.then(|| super::attract::Loop::of(&options.new_game.0)) {
+            Some(Ok(found)) => found,
+            Some(Err(e)) => {
+                eprintln!("sightline: no attract loop: {e:#}");
+                None
+            }
+            None => None,
+        };
+        front.open &= attract.is_none();
         let watch = if session.reloadable() { sightline::play::reload::Watch::new(&session.play.map) } else { None };
         App {
             screen_options: options.screen.clone(),
@@ -155,6 +167,7 @@ impl App {
             fullscreen: options.screen.fullscreen,
             error: None,
             front,
+            attract,
             new_game: options.new_game,
             config: options.config,
         }
@@ -168,8 +181,15 @@ impl App {
         let events: Vec<_> = pads.try_iter().collect();
         for event in events {
             use super::gamepad::{PadButton, PadEvent};
+            if self.attract.is_some() && !self.front.open {
+                // On the attract loop any button opens the menu.
+                if let PadEvent::Button { down: true, .. } = event {
+                    self.open_menu();
+                }
+                continue;
+            }
             if self.front.open {
-                if let Some(command) = menus::pad_command(&event) {
+                if let Some(command) = self.front.stick.command(&event) {
                     self.menu_command(event_loop, command);
                 }
                 continue;
@@ -216,8 +236,12 @@ impl App {
         let (ticks, alpha) = self.clock.advance(interval);
         self.read_pads(event_loop)?;
         self.reload_if_edited(now);
-        // The menu pauses the game.
-        self.session.run(if self.front.open { 0 } else { ticks });
+        // The menu pauses the game; the attract loop plays its demos on
+        // behind the menu, as Doom's does.
+        match &mut self.attract {
+            Some(attract) => attract.run(&mut self.session, ticks),
+            None => self.session.run(if self.front.open { 0 } else { ticks }),
+        }
         self.front.menu.ticks += u64::from(ticks);
         if let Some(e) = self.session.error.take() {
             return Err(e);
@@ -231,7 +255,8 @@ impl App {
         let play = &self.session.play;
         let level = play.game.level();
         let start = Instant::now();
-        if !self.front.title {
+        let demo = self.attract.as_ref().is_some_and(super::attract::Loop::playing);
+        if !self.front.title || demo {
             render_frame(level, &view, &self.options, &mut self.frame, &mut self.fb);
         }
         let render = start.elapsed();
@@ -242,15 +267,20 @@ impl App {
         }
         self.hud.frame(interval, render);
         let name = map_label(play);
-        self.hud.draw(&mut self.fb, &name, self.options.renderer.name());
+        // The attract loop's demos show the game alone, as Doom's do.
+        if self.attract.is_none() {
+            self.hud.draw(&mut self.fb, &name, self.options.renderer.name());
+        }
         self.hud.draw_status(&mut self.fb, play.game.player());
         if let Some(config) = &self.scenario {
             let reward = sightline::scenario::reward_so_far(&play.game, config);
             self.hud.draw_reward(&mut self.fb, reward);
         }
         super::hud::draw_phase(&mut self.fb, &play.phase);
-        if self.front.title {
-            sightline::screen::menu::title::backdrop(&mut self.fb);
+        match &self.attract {
+            Some(attract) => attract.draw(&mut self.fb),
+            None if self.front.title => sightline::screen::menu::title::backdrop(&mut self.fb),
+            None => {}
         }
         if self.front.open {
             sightline::screen::menu::draw::draw(&mut self.fb, &self.front.menu);
@@ -486,13 +516,15 @@ impl App {
         for event in self.front.menu.command(command) {
             match event {
                 Event::Sound(s) => self.menu_sound(s),
-                // The title keeps its menu.
-                Event::Closed => self.front.open = self.front.title,
+                // The title keeps its menu (the attract loop goes on without).
+                Event::Closed => self.front.open = self.front.title && self.attract.is_none(),
                 Event::Quit => event_loop.exit(),
                 Event::Settings => self.apply_settings(),
                 Event::NewGame { episode, skill } => self.start_new_game(episode, skill),
                 Event::Load { slot } => {
+                    self.stop_attract();
                     if self.load(Slot::Numbered(slot as u8 + 1)) {
+                        self.attract = None;
                         self.front.title = false;
                         self.front.open = false;
                         self.front.menu.setup.in_game = true;
@@ -543,11 +575,13 @@ impl App {
             no_autoaim: !self.front.menu.settings.autoaim,
             ..sightline::sim::game::Setup::SINGLE
         };
+        self.stop_attract();
         let started = Playthrough::of_set_up(&map, options, setup)
             .map_err(anyhow::Error::from)
             .and_then(|play| self.session.new_game(play));
         match started {
             Ok(()) => {
+                self.attract = None;
                 let name = sightline::screen::menu::SKILLS[usize::from(skill.clamp(1, 5)) - 1];
                 self.say(format!("New game: {} on skill {skill} ({name})", map.short_name()));
                 self.front.title = false;
@@ -557,6 +591,14 @@ impl App {
                 self.follow_map();
             }
             Err(e) => self.say(format!("No new game: {e:#}")),
+        }
+    }
+
+    /// A demo of the attract loop stops (a game is about to start): the
+    /// player's session comes back; the loop goes on if the game does not.
+    fn stop_attract(&mut self) {
+        if let Some(attract) = &mut self.attract {
+            attract.stop(&mut self.session);
         }
     }
 
@@ -624,6 +666,12 @@ impl ApplicationHandler for App {
                 self.point(position.x, position.y);
                 Ok(())
             }
+            WindowEvent::MouseInput { state: ElementState::Pressed, .. }
+                if self.attract.is_some() && !self.front.open =>
+            {
+                self.open_menu();
+                Ok(())
+            }
             WindowEvent::MouseInput { state: ElementState::Pressed, button, .. } if self.front.open => {
                 use sightline::screen::menu::Command;
                 match button {
@@ -654,7 +702,9 @@ impl ApplicationHandler for App {
                     }
                     return;
                 }
-                if down && !event.repeat && code == winit::keyboard::KeyCode::Escape {
+                // On the attract loop any key opens the menu, as in Doom.
+                let attract = self.attract.is_some();
+                if down && !event.repeat && (code == winit::keyboard::KeyCode::Escape || attract) {
                     self.open_menu();
                     return;
                 }

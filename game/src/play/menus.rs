@@ -1,7 +1,7 @@
 //! The window's side of the menus (`sightline::screen::menu`): the settings
 //! file's values in and out of the menu's [`Settings`], the named save
 //! slots on disk, and the window's keys and mouse as menu [`Command`]s (a
-//! gamepad sends the same commands).
+//! gamepad's cross, buttons and left stick send the same commands).
 //!
 //! A named slot is `slotN.slsave` (the save format, unchanged) with two
 //! files beside it: `slotN.name` (the name typed, UTF-8) and `slotN.png`
@@ -29,12 +29,20 @@ pub struct Front {
     /// Where the pointer was last seen: the first position reported (a
     /// window opening under a still mouse) chooses nothing, only motion does.
     pub pointer: Option<(f64, f64)>,
+    /// The pad's left stick, as the menu reads it.
+    pub stick: Stick,
 }
 
 impl Front {
     pub fn new(config: &Config, title: bool, episodes: Vec<String>, save_dir: &Path) -> Front {
         let setup = Setup { episodes, slots: slots(save_dir), in_game: !title };
-        Front { menu: Menu::new(settings_of(config), setup), open: title, title, pointer: None }
+        Front {
+            menu: Menu::new(settings_of(config), setup),
+            open: title,
+            title,
+            pointer: None,
+            stick: Stick::default(),
+        }
     }
 }
 
@@ -167,6 +175,53 @@ pub fn pad_command(event: &super::gamepad::PadEvent) -> Option<Command> {
     })
 }
 
+/// The left stick in the menus: pushed past half way it moves the cursor
+/// once, as the pad's cross does; it must come back inside a third of the
+/// way before it moves again.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Stick {
+    /// Where each axis (x, y) points now: -1, 0 or 1.
+    at: [i8; 2],
+}
+
+impl Stick {
+    const PUSHED: f32 = 0.5;
+    const CENTRED: f32 = 0.3;
+
+    /// A pad event as a menu command: a button's (see [`pad_command`]), or
+    /// the left stick newly pushed up, down, left or right.
+    pub fn command(&mut self, event: &super::gamepad::PadEvent) -> Option<Command> {
+        use super::gamepad::{PadAxis, PadEvent};
+        let PadEvent::Axis { axis, value } = *event else { return pad_command(event) };
+        let i = match axis {
+            PadAxis::LeftX => 0,
+            PadAxis::LeftY => 1,
+            PadAxis::RightX | PadAxis::RightY => return None,
+        };
+        let was = self.at[i];
+        let now = if value >= Self::PUSHED {
+            1
+        } else if value <= -Self::PUSHED {
+            -1
+        } else if value.abs() < Self::CENTRED {
+            0
+        } else {
+            was
+        };
+        self.at[i] = now;
+        if now == was || now == 0 {
+            return None;
+        }
+        // Up is negative on the pad's Y axis.
+        Some(match (i, now) {
+            (0, -1) => Command::Left,
+            (0, _) => Command::Right,
+            (_, -1) => Command::Up,
+            _ => Command::Down,
+        })
+    }
+}
+
 /// The episodes of a WAD (`E1M1` to `E4M1` where present; none for Doom
 /// II's `MAPxx` or a RON map).
 pub fn episodes(map: &sightline::campaign::MapRef) -> Vec<String> {
@@ -206,6 +261,24 @@ mod tests {
         assert_eq!(pad_command(&press(PadButton::DpadDown)), Some(Command::Down));
         assert_eq!(pad_command(&press(PadButton::South)), Some(Command::Select));
         assert_eq!(pad_command(&PadEvent::Button { button: PadButton::South, down: false }), None);
+    }
+
+    /// The stick moves the cursor once per push, and buttons still work.
+    #[test]
+    fn the_left_stick_moves_the_cursor_once_per_push() {
+        use crate::play::gamepad::{PadAxis, PadButton, PadEvent};
+        let mut stick = Stick::default();
+        let y = |value| PadEvent::Axis { axis: PadAxis::LeftY, value };
+        let x = |value| PadEvent::Axis { axis: PadAxis::LeftX, value };
+        let moves: Vec<_> = [y(0.2), y(0.6), y(0.9), y(0.4), y(0.7), y(0.1), y(0.8), y(-0.9), x(-0.6), x(0.0), x(0.55)]
+            .iter()
+            .filter_map(|e| stick.command(e))
+            .collect();
+        assert_eq!(moves, [Command::Down, Command::Down, Command::Up, Command::Left, Command::Right]);
+        let rx = PadEvent::Axis { axis: PadAxis::RightX, value: 1.0 };
+        assert_eq!(stick.command(&rx), None, "the right stick is not the menu's");
+        let a = PadEvent::Button { button: PadButton::South, down: true };
+        assert_eq!(stick.command(&a), Some(Command::Select));
     }
 
     /// A key rebound in the menu reaches the keymap the game reads, and the

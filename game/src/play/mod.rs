@@ -13,6 +13,7 @@
 //! ```
 
 mod app;
+mod attract;
 mod clock;
 pub(crate) mod gamepad;
 pub(crate) mod hud;
@@ -71,6 +72,10 @@ pub fn run(args: &PlayArgs) -> Result<()> {
             .unwrap_or_else(|| MapRef::File(crate::capture::default_map_path())),
         (Some(map), _, _) => MapRef::parse(map, args.iwad.as_deref()),
         (None, Some(demo), Some(demo_path)) => crate::replay::demo_map(&demo.map, demo_path),
+        // Only --iwad: that WAD's game (its title first).
+        (None, None, None) if args.iwad.is_some() => {
+            MapRef::Wad { wads: args.iwad.iter().cloned().collect(), map: None }
+        }
         _ => MapRef::File(crate::capture::default_map_path()),
     };
     let game_options = match (&demo, &scenario) {
@@ -105,7 +110,7 @@ pub fn run(args: &PlayArgs) -> Result<()> {
     let keys = Keymap::of(&config.bindings());
     // No map, demo, save or scenario named: the title, with the menu open
     // (New Game starts the default level at the skill chosen).
-    let title = args.map.is_none() && args.demo.is_none() && args.load.is_none() && !args.autopilot;
+    let title = args.title || (args.map.is_none() && args.demo.is_none() && args.load.is_none() && !args.autopilot);
     // A `.lmp` keeps turns to 1/256 of the circle: the game is fed them so.
     let lmp = args.record.as_deref().is_some_and(crate::replay_lmp::is_lmp_path);
     let mut session = match (demo, vanilla) {

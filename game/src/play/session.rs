@@ -94,6 +94,11 @@ impl Session {
         matches!(self.source, Source::Live(_)) && self.recording.is_none()
     }
 
+    /// Whether the demo played has run out.
+    pub fn finished(&self) -> bool {
+        self.finished
+    }
+
     /// The keyboard and mouse state, when they drive the game.
     pub fn controls(&mut self) -> Option<&mut Controls> {
         match &mut self.source {
@@ -137,6 +142,10 @@ impl Session {
                     }
                 }
                 self.play.phase = vanilla_phase(&run.game, &run.shown);
+                // The map's music (the demo's sound effects are not heard).
+                if let Some(sound) = &mut self.sound {
+                    sound.tick(&self.play);
+                }
                 let game = &run.game.sim;
                 run.scene.draw(game, self.play.game.level_mut());
                 show_status(game, self.play.game.player_mut());

@@ -84,6 +84,14 @@ impl SoundOut {
         self.sounds = Sounds::new();
     }
 
+    /// Plays the music lump `lump` of `map`'s WADs (the title's), until
+    /// the next map's music.
+    pub fn music(&mut self, map: &sightline::campaign::MapRef, lump: &str) {
+        let cues = self.sounds.music(map, lump);
+        crate::audio::warn(&mut self.sounds);
+        let _ = self.to_audio.send(Message::Cues(Box::new(cues)));
+    }
+
     /// Plays the menu's sound `name` (not placed in the world).
     pub fn menu_sound(&mut self, name: &str) {
         let Some(voice) = self.sounds.voice(name) else { return };
