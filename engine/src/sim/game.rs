@@ -526,38 +526,7 @@ impl SimGame {
 
     /// The tic's sounds, switches and messages in the outside's terms.
     fn take_events(&mut self) {
-        let viewer = self.sim.player(self.sim.console).map(|p| p.mo);
-        for e in std::mem::take(&mut self.sim.events) {
-            match e {
-                SimEvent::Sound { origin, sector, sound } => {
-                    // Events carry Doom's names from the shipped sound list (the
-                    // table's names are checked against it when it loads).
-                    let name = self.sim.info.table.sounds.get(sound.wrapping_sub(1));
-                    let Some(name) = name.and_then(|n| sounds::doom().iter().find(|d| d.name == *n)) else { continue };
-                    let origin = match (origin, sector) {
-                        (Some(id), _) if Some(id) == viewer => Origin::Player,
-                        (Some(id), _) => {
-                            let m = self.sim.mo(id);
-                            Origin::Actor { index: id.0, pos: DVec2::new(m.x.to_f64(), m.y.to_f64()) }
-                        }
-                        (None, Some(s)) => Origin::Sector(self.scene.sector(s).unwrap_or(0)),
-                        (None, None) => Origin::Player,
-                    };
-                    self.events.push(Event::Sound { sound: name.name.as_str(), origin });
-                }
-                SimEvent::Special { line, started } => {
-                    if let Some(line) = self.scene.line_of_linedef(line) {
-                        let line = line.map_or_else(SpecialLine::Trigger, SpecialLine::Wall);
-                        self.events.push(Event::Special { line, started });
-                    }
-                }
-                SimEvent::Exit { .. } => {}
-            }
-        }
-        let console = self.sim.console;
-        if let Some(message) = self.sim.players[console].as_mut().and_then(|p| p.message.take()) {
-            self.events.push(Event::Message(message));
-        }
+        outside_events(&mut self.sim, &self.scene, &mut self.events);
     }
 
     /// Whether a line of the converted map still has its special in the
@@ -703,6 +672,45 @@ impl Observe for SimGame {
                     SpecialLine::Trigger(_) => false,
                 }
         })
+    }
+}
+
+/// The tic's sounds, switches and messages of `sim` in the outside's terms
+/// (`scene` maps the WAD's sectors and lines onto the converted map),
+/// appended to `out`; the simulation's own list is emptied. A game and a
+/// Doom demo shown in the window both read their tics so.
+pub fn outside_events(sim: &mut Sim, scene: &Scene, out: &mut Vec<Event>) {
+    let viewer = sim.player(sim.console).map(|p| p.mo);
+    for e in std::mem::take(&mut sim.events) {
+        match e {
+            SimEvent::Sound { origin, sector, sound } => {
+                // Events carry Doom's names from the shipped sound list (the
+                // table's names are checked against it when it loads).
+                let name = sim.info.table.sounds.get(sound.wrapping_sub(1));
+                let Some(name) = name.and_then(|n| sounds::doom().iter().find(|d| d.name == *n)) else { continue };
+                let origin = match (origin, sector) {
+                    (Some(id), _) if Some(id) == viewer => Origin::Player,
+                    (Some(id), _) => {
+                        let m = sim.mo(id);
+                        Origin::Actor { index: id.0, pos: DVec2::new(m.x.to_f64(), m.y.to_f64()) }
+                    }
+                    (None, Some(s)) => Origin::Sector(scene.sector(s).unwrap_or(0)),
+                    (None, None) => Origin::Player,
+                };
+                out.push(Event::Sound { sound: name.name.as_str(), origin });
+            }
+            SimEvent::Special { line, started } => {
+                if let Some(line) = scene.line_of_linedef(line) {
+                    let line = line.map_or_else(SpecialLine::Trigger, SpecialLine::Wall);
+                    out.push(Event::Special { line, started });
+                }
+            }
+            SimEvent::Exit { .. } => {}
+        }
+    }
+    let console = sim.console;
+    if let Some(message) = sim.players[console].as_mut().and_then(|p| p.message.take()) {
+        out.push(Event::Message(message));
     }
 }
 

@@ -77,6 +77,17 @@ pub struct Cues {
     pub music: Option<Option<Arc<Vec<u8>>>>,
 }
 
+/// What a tic made heard, apart from the game that made it.
+pub struct Heard<'a> {
+    /// The tic's events (sounds among them).
+    pub events: &'a [Event],
+    pub listener: Listener,
+    /// The tic's number, for how long a sound follows its thing.
+    pub tick: u64,
+    /// Where thing `n` is now (None: it is gone).
+    pub at: &'a dyn Fn(u32) -> Option<DVec2>,
+}
+
 /// The game's side: the map's voices, which origins are sounding, which
 /// music plays.
 pub struct Sounds {
@@ -141,6 +152,21 @@ impl Sounds {
 
     /// The cues of the tick `play` just ran.
     pub fn cues(&mut self, play: &Playthrough) -> Cues {
+        let mut cues = self.map_cues(play);
+        self.effects_into(&play.game, &mut cues);
+        cues
+    }
+
+    /// The cues of a tic heard elsewhere and shown on `play`'s level (a
+    /// Doom demo in the window): `play`'s map and music, `heard`'s sounds.
+    pub fn cues_heard(&mut self, play: &Playthrough, heard: &Heard) -> Cues {
+        let mut cues = self.map_cues(play);
+        self.heard_into(heard, play.game.level(), &mut cues);
+        cues
+    }
+
+    /// A new map's stop and voices, and a change of music.
+    fn map_cues(&mut self, play: &Playthrough) -> Cues {
         let mut cues = Cues::default();
         if self.map.as_ref() != Some(&play.map) {
             // Another WAD or map: its own voices (warned about once).
@@ -179,7 +205,6 @@ impl Sounds {
             }));
             self.song = song;
         }
-        self.effects_into(&play.game, &mut cues);
         cues
     }
 
@@ -194,10 +219,21 @@ impl Sounds {
 
     fn effects_into(&mut self, game: &crate::sim::game::SimGame, cues: &mut Cues) {
         let player = game.player();
-        cues.listener = Listener { pos: player.pos, angle: player.angle };
-        let level = game.level();
-        let tick = game.ticks();
-        for event in game.events() {
+        let seen = Observe::seen(game);
+        let at = |a: u32| seen.get(a as usize).filter(|actor| !actor.removed).map(|actor| actor.pos);
+        let heard = Heard {
+            events: game.events(),
+            listener: Listener { pos: player.pos, angle: player.angle },
+            tick: game.ticks(),
+            at: &at,
+        };
+        self.heard_into(&heard, game.level(), cues);
+    }
+
+    fn heard_into(&mut self, heard: &Heard, level: &crate::level::Level, cues: &mut Cues) {
+        cues.listener = heard.listener;
+        let tick = heard.tick;
+        for event in heard.events {
             let Event::Sound { sound, origin } = event else { continue };
             let Some(voice) = self.bank.get(sound).cloned() else {
                 self.warnings.append(&mut self.bank.warnings);
@@ -219,10 +255,9 @@ impl Sounds {
             cues.starts.push(Start { voice, key, pos });
         }
         self.sounding.retain(|&(_, since)| tick.saturating_sub(since) <= FOLLOW_TICKS && since <= tick);
-        let seen = Observe::seen(game);
         for &(a, _) in &self.sounding {
-            if let Some(actor) = seen.get(a as usize).filter(|actor| !actor.removed) {
-                cues.moved.push((Key::Actor(a), actor.pos));
+            if let Some(pos) = (heard.at)(a) {
+                cues.moved.push((Key::Actor(a), pos));
             }
         }
     }

@@ -142,15 +142,28 @@ impl Session {
                     }
                 }
                 self.play.phase = vanilla_phase(&run.game, &run.shown);
-                // The map's music (the demo's sound effects are not heard).
-                if let Some(sound) = &mut self.sound {
-                    sound.tick(&self.play);
-                }
+                let mut events = Vec::new();
+                sightline::sim::game::outside_events(&mut run.game.sim, &run.scene, &mut events);
                 let game = &run.game.sim;
                 run.scene.draw(game, self.play.game.level_mut());
                 show_status(game, self.play.game.player_mut());
                 *before = *after;
                 *after = run.scene.view(game).unwrap_or(*after);
+                // The map's music and the tic's sounds, heard where the view is.
+                if let Some(sound) = &mut self.sound {
+                    let at = |a: u32| {
+                        let m = game.mobjs.get(a as usize).filter(|m| !m.removed && m.state.is_some())?;
+                        Some(glam::DVec2::new(m.x.to_f64(), m.y.to_f64()))
+                    };
+                    let listener = sightline::sound::mix::Listener { pos: after.pos, angle: after.angle };
+                    let heard = sightline::sound::Heard { events: &events, listener, tick: run.next as u64, at: &at };
+                    sound.tick_heard(&self.play, &heard);
+                }
+                for event in events {
+                    if let Event::Message(text) = event {
+                        self.messages.push(text);
+                    }
+                }
                 if self.play.phase != Phase::Playing {
                     *before = *after;
                 }

@@ -78,6 +78,14 @@ impl SoundOut {
         let _ = self.to_audio.send(Message::Cues(Box::new(cues)));
     }
 
+    /// A tic heard elsewhere and shown on `play` (a Doom demo), to the
+    /// audio thread.
+    pub fn tick_heard(&mut self, play: &Playthrough, heard: &sightline::sound::Heard) {
+        let cues = self.sounds.cues_heard(play, heard);
+        crate::audio::warn(&mut self.sounds);
+        let _ = self.to_audio.send(Message::Cues(Box::new(cues)));
+    }
+
     /// A game loaded in place of this one: every sound stops and the music
     /// starts again with the next tick, as on a new map.
     pub fn restart(&mut self) {
