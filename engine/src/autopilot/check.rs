@@ -296,6 +296,8 @@ fn closure(
                 c.heights.ceiling[s] = c.heights.ceiling[s].max(after.ceiling[s]);
             }
         }
+        // A lift raised, or beside a floor lowered, has new ends.
+        changed |= c.mech.settle_planned_lifts(level, &mut c.heights);
         if !changed && !changed_teleports {
             return c;
         }

@@ -190,10 +190,17 @@ impl Mechanisms {
     /// Sorts lift `s`'s lines into those that call it from below and from
     /// the top, for its top as it is now.
     fn sort_lift_lines(&mut self, level: &Level, s: usize) {
+        let floors = &level.compiled.map.sectors;
+        self.sort_lift_lines_where(level, s, &|t| floors[t].floor);
+    }
+
+    /// [`Mechanisms::sort_lift_lines`] with the sectors' floors given by
+    /// `floor` (the lift's own: its top and bottom, as kept).
+    fn sort_lift_lines_where(&mut self, level: &Level, s: usize, floor: &dyn Fn(usize) -> f64) {
         self.lifts[s].clear();
         self.lift_down[s].clear();
         for &(id, on) in &self.lift_lines[s] {
-            let (below, above) = lift_calls(level, id, on, s, self.lift_top[s]);
+            let (below, above) = lift_calls(level, id, on, s, (self.lift_top[s], self.lift_low[s]), floor);
             if below {
                 self.lifts[s].push(id);
             }
@@ -225,6 +232,40 @@ impl Mechanisms {
     }
 }
 
+impl Mechanisms {
+    /// The lifts' ends as a plan's `heights` have them (what
+    /// [`Mechanisms::settle_lifts`] does for the level as it is): another
+    /// special raising a lift's floor raises its top, and a neighbour that
+    /// can be lowered (a pool drained beside it) lowers where it comes down
+    /// to; either can bring a switch into reach, so the lines are sorted
+    /// again, each side's floor as low as it can be. A lift that now has a
+    /// line calling it gets its range in `heights`. Returns whether any
+    /// lift changed.
+    pub fn settle_planned_lifts(&mut self, level: &Level, heights: &mut Heights) -> bool {
+        let mut changed = false;
+        for s in 0..self.lift_lines.len() {
+            if self.lift_lines[s].is_empty() || self.perpetual[s] {
+                continue;
+            }
+            let low = sectors::neighbours(level, s).map(|n| heights.low[n]).fold(self.lift_low[s], f64::min);
+            let top = self.lift_top[s].max(heights.floor[s]);
+            if low >= self.lift_low[s] && top <= self.lift_top[s] {
+                continue;
+            }
+            self.lift_low[s] = low;
+            self.lift_top[s] = top;
+            let lows = heights.low.clone();
+            self.sort_lift_lines_where(level, s, &|t| lows[t]);
+            if !self.lifts[s].is_empty() || !self.lift_down[s].is_empty() {
+                heights.low[s] = heights.low[s].min(low);
+                heights.floor[s] = heights.floor[s].max(top.min(heights.ceiling[s] - 56.0));
+            }
+            changed = true;
+        }
+        changed
+    }
+}
+
 /// How far from its lift a switch can be for the player to call the lift
 /// and still board it: it waits 3 seconds at the bottom, in which a
 /// running player covers some 1,700 units, less the turns of a real route.
@@ -239,9 +280,16 @@ const LIFT_REACH: f64 = 1024.0;
 /// line works from below with a side off the lift low enough to stand on (a
 /// walk line only reached from the top is for coming down), and from the
 /// top with a side on the lift or level with its top.
-fn lift_calls(level: &Level, id: LineId, on: Activation, lift: usize, top: f64) -> (bool, bool) {
+/// `(top, low)` are the lift's ends and `floor` the sectors' floors.
+fn lift_calls(
+    level: &Level,
+    id: LineId,
+    on: Activation,
+    lift: usize,
+    (top, low): (f64, f64),
+    floor: &dyn Fn(usize) -> f64,
+) -> (bool, bool) {
     let map = &level.compiled.map;
-    let low = sectors::lowest_floor_around(level, lift);
     let (sl, a, b, _) = line_of(map, id);
     let sides: Vec<(usize, bool)> = match sl {
         SpecialLine::Wall(i) => {
@@ -266,7 +314,7 @@ fn lift_calls(level: &Level, id: LineId, on: Activation, lift: usize, top: f64) 
         nearest_on(mid, p, q).distance(mid) <= LIFT_REACH
     });
     let step = MAX_STEP;
-    let floor = |sector: usize| if sector == lift { top } else { map.sectors[sector].floor };
+    let floor = |sector: usize| if sector == lift { top } else { floor(sector) };
     let mut calls = (false, false);
     for &(sector, front) in &sides {
         match on {
