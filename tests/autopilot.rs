@@ -385,10 +385,6 @@ const KNOWN_GAPS: &[(&str, &str)] = &[
         "no exit line: the bot ends it by the boss brains' death, check counts rockets from lifts only",
     ),
     (
-        "freedoom2.wad:MAP13",
-        "the blue key: the route leaves at (580, 2344), from sector 65 into sector 68 (tag 2, a floor a switch raises)",
-    ),
-    (
         "freedoom2.wad:MAP21",
         "the yellow key: the route leaves at (-526, -2013), from sector 57 (tag 14) into sector 58, between \
          ceilings at the floor",
@@ -473,19 +469,22 @@ fn disagreements(p: &Played) -> Vec<String> {
     wrong
 }
 
-/// A lift's ends move with what other specials do: E2M5's lift 545 is
-/// raised by a switch elsewhere before its own switch can call it up to
-/// the red key's ledge; E4M6's lift 280 comes down to the blood pool only
+/// A lift's ends move with what other specials do: E2M5's lift 545 (and
+/// MAP13's 68, out of the nukage to the blue key) is raised by a switch
+/// elsewhere before its own switch can call it up to the key's ledge; E4M6's lift 280 comes down to the blood pool only
 /// once the ledge beside it is lowered into the pool, which brings its
 /// switch down there into reach.
 #[test]
 #[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
 fn check_follows_lifts_whose_ends_other_specials_move() {
-    for (name, key) in [("E2M5", "red"), ("E4M6", "yellow")] {
-        let map = MapRef::Wad { wads: vec![freedoom_wads::path("freedoom1.wad")], map: Some(name.into()) };
+    for (wad, name, key) in
+        [("freedoom1.wad", "E2M5", "red"), ("freedoom1.wad", "E4M6", "yellow"), ("freedoom2.wad", "MAP13", "blue")]
+    {
+        let map = MapRef::Wad { wads: vec![freedoom_wads::path(wad)], map: Some(name.into()) };
         let level = sightline::campaign::open(&map, &Default::default()).unwrap().level;
         let report = check::report(&level, 3);
-        assert!(report.exit_reachable, "{name}: {}", report.text());
+        // MAP13's exit wants keys beyond; the bot does not finish it either.
+        assert!(report.exit_reachable || name == "MAP13", "{name}: {}", report.text());
         let k = report.keys.iter().find(|k| k.colour.eq_ignore_ascii_case(key)).expect("the key");
         assert!(k.reachable, "{name}: {}", report.text());
     }
