@@ -389,7 +389,12 @@ const KNOWN_GAPS: &[(&str, &str)] = &[
         "the yellow key: the route leaves at (-526, -2013), from sector 57 (tag 14) into sector 58, between \
          ceilings at the floor",
     ),
-    ("freedoom2.wad:MAP22", "the route leaves at (-213, -2183), from sector 238 onto sector 240 (tag 8)"),
+    (
+        "freedoom2.wad:MAP22",
+        "the route leaves at (-213, -2183), from sector 238 onto sector 240 (tag 8): the switch that lowers 240 \
+         is at the back of a door slot beside the start, and its use cells are found on the map as it starts \
+         (the slot shut)",
+    ),
     ("freedoom2.wad:MAP24", "the route leaves at (922, -541), inside sector 160 (a monster teleporter's destination)"),
     ("freedoom2.wad:MAP30", "the route leaves at (-2304, 3503), from sectors 12 and 15 (tags 35 and 34)"),
 ];
