@@ -9,6 +9,8 @@
 
 use std::path::PathBuf;
 
+use glam::DVec2;
+
 use sightline::autopilot::{self, check};
 use sightline::campaign::MapRef;
 use sightline::level::open_level;
@@ -40,8 +42,8 @@ fn write(p: &Puzzle, monsters: bool) -> PathBuf {
 /// `check`'s verdict on the level at `path`: `Err` says what is wrong.
 fn check_level(path: &PathBuf, p: &Puzzle) -> Result<(), String> {
     let level = open_level(path, &Default::default()).map_err(|e| format!("{}: {e}", path.display()))?;
-    let (report, _) = check::check(level, SKILL);
-    let mut wrong = Vec::new();
+    let (report, drawing) = check::check(level, SKILL);
+    let mut wrong = route_faults(&report, &drawing);
     if !report.exit_reachable {
         wrong.push("the exit is not reachable".to_string());
     }
@@ -56,6 +58,44 @@ fn check_level(path: &PathBuf, p: &Puzzle) -> Result<(), String> {
     } else {
         Err(format!("check: {}\n{}", wrong.join("; "), report.text()))
     }
+}
+
+/// What is wrong with the route `check` draws, as the report tells it: it
+/// must run without a break (a hop longer than a running jump is a
+/// teleport's) from the start through every key the report calls
+/// reachable to the exit, if the report calls the exit reachable.
+fn route_faults(report: &check::Report, drawing: &check::Drawing) -> Vec<String> {
+    let route = &drawing.route;
+    let mut wrong = Vec::new();
+    if route.missed > 0 {
+        wrong.push(format!("the route misses {} of the closure's goals", route.missed));
+    }
+    for i in 1..route.points.len() {
+        let hop = route.points[i - 1].distance(route.points[i]);
+        if !route.teleport[i] && hop > 128.0 {
+            wrong.push(format!("the route breaks off at {:?}: a hop of {hop:.0} units", route.points[i - 1]));
+        }
+    }
+    let nearest = |x: f64, y: f64| {
+        let p = DVec2::new(x, y);
+        route.points.iter().map(|q| q.distance(p)).fold(f64::MAX, f64::min)
+    };
+    for k in report.keys.iter().filter(|k| k.reachable) {
+        // A touch: the body's radius and the key's, and half a cell.
+        let d = nearest(k.x, k.y);
+        if d > 16.0 + 20.0 + 8.0 {
+            wrong.push(format!("the route passes the {} key no nearer than {d:.0} units", k.colour));
+        }
+    }
+    if report.exit_reachable {
+        // The exit switch, used from within use range of its middle.
+        let end = route.points.last().copied().unwrap_or_default();
+        let to_exit = report.exits.iter().filter(|e| e.reachable).map(|e| end.distance(DVec2::new(e.x, e.y)));
+        if to_exit.fold(f64::MAX, f64::min) > sightline::play::USE_RANGE + 32.0 {
+            wrong.push(format!("the route ends at {end:?}, not at a reachable exit"));
+        }
+    }
+    wrong
 }
 
 /// Plays the level at `path` with the autopilot: `Err` says how it ended
@@ -133,6 +173,27 @@ fn the_default_seeds_cover_every_link_a_ledge_and_a_decoy() {
     assert!(puzzles.iter().any(|p| !p.keys.is_empty()), "no key");
     // Deterministic from the seed.
     assert_eq!(puzzle::generate(5, true).ron, puzzles[5].ron);
+}
+
+/// `check` alone on the default seeds: the report and the route it draws
+/// agree (the autopilot's part is in the test below).
+#[test]
+fn check_draws_the_route_its_report_tells() {
+    let mut failures = Vec::new();
+    for seed in SEEDS {
+        for monsters in [false, true] {
+            let p = puzzle::generate(seed, monsters);
+            // Its own file: the test below writes `write`'s at the same time.
+            let dir = root().join("target").join("puzzles");
+            std::fs::create_dir_all(&dir).unwrap();
+            let path = dir.join(format!("route_seed_{seed}{}.ron", if monsters { "_monsters" } else { "" }));
+            std::fs::write(&path, &p.ron).unwrap();
+            if let Err(e) = check_level(&path, &p) {
+                failures.push(format!("{} ({}): {e}", p.describe(), path.display()));
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n\n"));
 }
 
 #[test]

@@ -5,6 +5,7 @@
 //! reach, as text or JSON, and `-o` draws it from above.
 
 use anyhow::{Context, Result};
+use sightline::autopilot::check::{self, RouteFrom};
 use sightline::bsp::BuildOptions;
 use sightline::campaign::{open_with, ArtOptions, MapRef};
 use sightline::level::{check_not_input, write_atomic};
@@ -23,14 +24,24 @@ pub fn run(args: &CheckArgs) -> Result<()> {
     let level = open_with(&map, &BuildOptions::default(), &art)
         .with_context(|| format!("{}: does not load", map.label()))?
         .level;
-    let (mut report, drawing) = sightline::autopilot::check::check(level, args.skill);
+    // The route is drawn only into a picture, or for SIGHTLINE_CHECK_TRACE
+    // (see `check::check_with`).
+    let traced = std::env::var_os("SIGHTLINE_CHECK_TRACE").is_some();
+    let (mut report, drawing) = match args.output.is_some() || traced {
+        true => {
+            let from = if args.bot_route { RouteFrom::Autopilot } else { RouteFrom::Closure };
+            let (report, drawing) = check::check_with(level, args.skill, from);
+            (report, Some(drawing))
+        }
+        false => (check::report(&level, args.skill), None),
+    };
     report.map = map.label();
     if args.json {
         println!("{}", serde_json::to_string(&report)?);
     } else {
         print!("{}", report.text());
     }
-    if let Some(out) = &args.output {
+    if let (Some(out), Some(drawing)) = (&args.output, &drawing) {
         let fb = drawing.draw(args.plan_size as usize, args.partitions);
         write_atomic(out, &fb.to_png())?;
         if !args.json {

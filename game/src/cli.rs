@@ -96,6 +96,9 @@ pub enum BenchCommand {
     /// goal choice), and ticks per second of autoplay with rendering off
     /// and on.
     Autopilot(BenchAutopilotArgs),
+    /// Time `check` per map (the report, then the route it draws), with the
+    /// median and worst over the maps.
+    Check(BenchCheckArgs),
     /// The autopilot as an expert on ViZDoom scenarios: its answer's cost
     /// per step, and the mean reward of following it against the random
     /// policy's, as a Markdown table.
@@ -136,6 +139,24 @@ pub struct BenchAutopilotArgs {
     /// Play without monsters.
     #[arg(long)]
     pub no_monsters: bool,
+    /// Also print one JSON object per map.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Args)]
+pub struct BenchCheckArgs {
+    /// Maps: RON files, compiled maps or `WAD:MAP`; `WAD:all` is every map
+    /// of the WAD.
+    #[arg(required = true)]
+    pub maps: Vec<String>,
+    /// Skill level 1 to 5.
+    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u8).range(1..=5))]
+    pub skill: u8,
+    /// Time the autopilot's played route (`check --bot-route`) instead of
+    /// the closure's.
+    #[arg(long)]
+    pub bot_route: bool,
     /// Also print one JSON object per map.
     #[arg(long)]
     pub json: bool,
@@ -514,6 +535,11 @@ pub struct CheckArgs {
     /// The plan's longer side, pixels.
     #[arg(long, default_value_t = 1400, value_parser = clap::value_parser!(u32).range(64..=16_384))]
     pub plan_size: u32,
+    /// Draw the autopilot's own route, played offline with no monsters for
+    /// up to 20 minutes of game time, instead of the report's route. Slow:
+    /// minutes on the biggest maps (274 s on freedoom2 MAP29).
+    #[arg(long, requires = "output")]
+    pub bot_route: bool,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]

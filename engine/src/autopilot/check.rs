@@ -12,16 +12,19 @@
 //! - a *soft lock* is a place the player can reach but cannot get from to an
 //!   exit: the report names the one-way drops (or teleports) into such places.
 //!
-//! The route drawn and listed is the autopilot's own plan, run offline.
+//! The route drawn is the closure's own (see [`super::route`]): its goals
+//! in the order it reached them, joined by the search's paths; the
+//! autopilot's played route is drawn on request instead.
 
 use std::collections::BTreeSet;
+use std::time::Instant;
 
 use glam::DVec2;
 
 use super::brain;
 use super::nav::{solid, Cell, Heights, LineId, NavGrid, CELL, NONE};
-use super::observe::Observe;
 use super::plan::{self, line_of, Mechanisms, Search, Targets};
+use super::route::{self, Goal, Ground, Route, Stage};
 use crate::actors::{ActorFlag, ActorTable, Category};
 use crate::framebuffer::{rgb, Framebuffer};
 use crate::level::Level;
@@ -98,6 +101,10 @@ struct Closure {
     /// Sectors a set-off special opens (a door, a ceiling raised): a manual
     /// door among them is no longer shut to those who cannot use it.
     opened: Vec<bool>,
+    /// Each round of the fixed point: the level as its flood saw it, and
+    /// what it took or set off that changed the map (the route is drawn
+    /// through them).
+    stages: Vec<Stage>,
 }
 
 /// The map's things that matter: keys and pickups.
@@ -186,7 +193,7 @@ fn met(nav: &NavGrid, reached: &[bool], targets: &Targets, line: Option<LineId>)
         .any(|c| reached[c as usize] && (0..4).any(|d| nav.crossings_of(c, d).any(|(l, _)| l == line)))
 }
 
-fn goal_targets(nav: &NavGrid, level: &Level, line: LineId) -> (Targets, Option<LineId>) {
+pub(super) fn goal_targets(nav: &NavGrid, level: &Level, line: LineId) -> (Targets, Option<LineId>) {
     let map = &level.compiled.map;
     match line_of(map, line).3.map(|s| s.on) {
         Some(Activation::Use) => (plan::use_cells(nav, map, line), None),
@@ -214,10 +221,17 @@ fn closure(
         applied: BTreeSet::new(),
         opened: vec![false; level.compiled.map.sectors.len()],
         mech: mech.clone(),
+        stages: Vec::new(),
     };
     loop {
         let mut changed_teleports = false;
         c.reached = flood(search, nav, level, &c.mech, &c.heights, &t.solid, hurts, start, &c.opened);
+        let mut stage = Stage {
+            heights: c.heights.clone(),
+            opened: c.opened.clone(),
+            used_teleports: c.mech.used_teleports.clone(),
+            goals: Vec::new(),
+        };
         // Once-only teleporters whose front is reached have been used: the
         // walk over them leads on as well (a door with a teleport line in
         // it, gone through again).
@@ -226,6 +240,7 @@ fn closure(
             if once && !c.mech.used_teleports.contains(&line) && met(nav, &c.reached, &Targets::default(), Some(line)) {
                 c.mech.used_teleports.insert(line);
                 changed_teleports = true;
+                stage.goals.push(Goal::Teleport(line));
             }
         }
         let mut changed = false;
@@ -235,6 +250,7 @@ fn closure(
             {
                 c.keys.push(colour);
                 changed = true;
+                stage.goals.push(Goal::Key(colour, pos));
                 if std::env::var_os("SIGHTLINE_CHECK_TRACE").is_some() {
                     eprintln!("check: key {colour:?} at ({:.0}, {:.0})", pos.x, pos.y);
                 }
@@ -265,6 +281,7 @@ fn closure(
             c.applied.insert(line);
             changed = true;
             let after = plan::predict(level, &c.heights, sl, special);
+            let mut effect = false;
             if std::env::var_os("SIGHTLINE_CHECK_TRACE").is_some() {
                 let (_, a, b, _) = line_of(&level.compiled.map, line);
                 eprintln!(
@@ -286,46 +303,82 @@ fn closure(
             | crate::map::special::Action::Ceiling { .. } = special.action
             {
                 for s in super::sectors::target_sectors(level, sl, special) {
+                    effect |= !c.opened[s];
                     c.opened[s] = true;
                 }
             }
-            let Some(after) = after else { continue };
-            for s in 0..after.floor.len() {
-                c.heights.low[s] = c.heights.low[s].min(after.floor[s]).min(after.low[s]);
-                c.heights.floor[s] = c.heights.floor[s].max(after.floor[s]);
-                c.heights.ceiling[s] = c.heights.ceiling[s].max(after.ceiling[s]);
+            if let Some(after) = after {
+                for s in 0..after.floor.len() {
+                    let (low, floor, ceiling) = (c.heights.low[s], c.heights.floor[s], c.heights.ceiling[s]);
+                    c.heights.low[s] = low.min(after.floor[s]).min(after.low[s]);
+                    c.heights.floor[s] = floor.max(after.floor[s]);
+                    c.heights.ceiling[s] = ceiling.max(after.ceiling[s]);
+                    effect |= (low, floor, ceiling) != (c.heights.low[s], c.heights.floor[s], c.heights.ceiling[s]);
+                }
+            }
+            if effect {
+                let key = match special.action {
+                    crate::map::special::Action::Door { key, .. } => key,
+                    _ => None,
+                };
+                stage.goals.push(Goal::Line(line, key));
             }
         }
         // A lift raised, or beside a floor lowered, has new ends.
         changed |= c.mech.settle_planned_lifts(level, &mut c.heights);
+        c.stages.push(stage);
         if !changed && !changed_teleports {
             return c;
         }
     }
 }
 
-/// Checks `level` as played at `skill`.
+/// Which route the picture draws.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum RouteFrom {
+    /// The closure's goals in the order it reached them, joined by the
+    /// search's paths: the route the report tells, in a few searches.
+    #[default]
+    Closure,
+    /// The autopilot's, played offline with no monsters for up to 20
+    /// minutes of game time: minutes on the biggest maps.
+    Autopilot,
+}
+
+/// Checks `level` as played at `skill`, the closure's route drawn.
 pub fn check(level: Level, skill: u8) -> (Report, Drawing) {
-    let (report, mut drawing) = analyse(&level, skill);
+    check_with(level, skill, RouteFrom::Closure)
+}
+
+/// Checks `level` as played at `skill`, the route drawn from `from`.
+pub fn check_with(level: Level, skill: u8, from: RouteFrom) -> (Report, Drawing) {
+    let (report, mut drawing) = analyse(&level, skill, from == RouteFrom::Closure);
     // SIGHTLINE_CHECK_TRACE: the closure's steps, and where the bot's own
     // route first leaves what the closure reached (to find what the model
     // misses when the two disagree).
-    let traced = std::env::var_os("SIGHTLINE_CHECK_TRACE").is_some().then(|| level.clone());
-    drawing.route = offline_route(level, skill);
-    if let Some(level) = traced {
-        trace_divergence(&level, &drawing, &report);
+    let traced = std::env::var_os("SIGHTLINE_CHECK_TRACE").is_some();
+    if from == RouteFrom::Autopilot || traced {
+        let started = Instant::now();
+        let bot = route::bot_route(level.clone(), skill);
+        if traced {
+            trace_divergence(&level, &drawing, &bot.points, &report);
+        }
+        if from == RouteFrom::Autopilot {
+            drawing.route = bot;
+            drawing.timing.route = started.elapsed().as_secs_f64();
+        }
     }
     (report, drawing)
 }
 
-/// [`check`]'s report alone: what can be reached, without the route the
-/// plan draws (which plays the level with the autopilot, up to 20 minutes
-/// of game time).
+/// [`check`]'s report alone: what can be reached, without the route.
 pub fn report(level: &Level, skill: u8) -> Report {
-    analyse(level, skill).0
+    analyse(level, skill, false).0
 }
 
-fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
+/// The report, the picture, and with `route` the closure's route on it.
+fn analyse(level: &Level, skill: u8, route: bool) -> (Report, Drawing) {
+    let started = Instant::now();
     let map = &level.compiled.map;
     let nav = NavGrid::new(&level.compiled);
     let mut mech = Mechanisms::of(level);
@@ -350,7 +403,9 @@ fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
             reachable_cells: 0,
             standable_cells,
         };
-        return (report, Drawing::new(level, nav, Vec::new(), Vec::new()));
+        let mut drawing = Drawing::new(level, nav, Vec::new(), Vec::new());
+        drawing.timing.analyse = started.elapsed().as_secs_f64();
+        return (report, drawing);
     };
     let c = closure(&nav, level, &mech, &t, start, Vec::new(), &hurts, &mut search);
     let shut = shut_now(level, &mech, &c.opened);
@@ -523,7 +578,23 @@ fn analyse(level: &Level, skill: u8) -> (Report, Drawing) {
         reachable_cells,
         standable_cells,
     };
-    (report, Drawing::new(level, nav, c.reached, finish))
+    let analysed = Instant::now();
+    let route = if route {
+        // To the exits the report calls reachable, a secret one only if no
+        // other is.
+        let reachable: Vec<usize> = (0..report.exits.len()).filter(|&i| report.exits[i].reachable).collect();
+        let normal: Vec<usize> = reachable.iter().copied().filter(|&i| report.exits[i].what != "secret exit").collect();
+        let ends = if normal.is_empty() { reachable } else { normal };
+        let exit: Vec<(Targets, Option<LineId>)> = ends.iter().map(|&i| exit_targets[i].clone()).collect();
+        let ground = Ground { nav: &nav, level, mech: &mech, solid: &t.solid, hurts: &hurts };
+        route::closure_route(&ground, &c.stages, start, &exit)
+    } else {
+        Route::default()
+    };
+    let mut drawing = Drawing::new(level, nav, c.reached, finish);
+    drawing.route = route;
+    drawing.timing = Timing { analyse: (analysed - started).as_secs_f64(), route: analysed.elapsed().as_secs_f64() };
+    (report, drawing)
 }
 
 /// Every move of the forward search from the reached cells: from, to, and
@@ -580,7 +651,7 @@ fn forward_edges(
 
 /// Where the autopilot's route first leaves what the closure reached, with
 /// the heights under the last reached and first unreached points.
-fn trace_divergence(level: &Level, d: &Drawing, report: &Report) {
+fn trace_divergence(level: &Level, d: &Drawing, route: &[DVec2], report: &Report) {
     let nav = &d.nav;
     let map = &level.compiled.map;
     let unreached = report
@@ -590,7 +661,7 @@ fn trace_divergence(level: &Level, d: &Drawing, report: &Report) {
         .map(|k| (format!("{} key", k.colour), DVec2::new(k.x, k.y)))
         .chain(report.exits.iter().filter(|e| !e.reachable).map(|e| (e.what.clone(), DVec2::new(e.x, e.y))));
     for (what, p) in unreached {
-        let Some(q) = d.route.iter().copied().min_by(|a, b| a.distance(p).total_cmp(&b.distance(p))) else { continue };
+        let Some(q) = route.iter().copied().min_by(|a, b| a.distance(p).total_cmp(&b.distance(p))) else { continue };
         let c = nav.cell_at(q);
         eprintln!(
             "check: {what} at ({:.0}, {:.0}): the route comes within {:.0} at ({:.0}, {:.0}), cell reached {:?}, touching {:?}",
@@ -605,7 +676,7 @@ fn trace_divergence(level: &Level, d: &Drawing, report: &Report) {
     }
     let near = |c: Cell| (0..8).filter_map(|k| nav.neighbour(c, k)).chain([c]).any(|n| d.reached[n as usize]);
     let mut last = None;
-    for &p in &d.route {
+    for &p in route {
         let Some(c) = nav.cell_at(p) else { continue };
         if near(c) {
             last = Some((p, c));
@@ -630,24 +701,12 @@ fn trace_divergence(level: &Level, d: &Drawing, report: &Report) {
     eprintln!("check: the whole route is in the reached cells");
 }
 
-/// The autopilot's route through the level, planned offline: a game with
-/// no monsters, played until the exit or 20 minutes, its path kept.
-fn offline_route(level: Level, skill: u8) -> Vec<DVec2> {
-    let options = crate::play::GameOptions { skill, seed: 0, no_monsters: true };
-    let label = level.compiled.map.name.clone();
-    let Ok(mut game) = crate::sim::game::SimGame::on_level(level, &label, options) else { return Vec::new() };
-    let mut path = vec![Observe::player(&game).pos];
-    // Played as `autoplay` plays: a bot stuck for a while may find its way
-    // again (it gives up after a minute), so the route is not cut at the
-    // first stop.
-    super::run_sim(&mut game, 42_000, |game, _| {
-        let p = Observe::player(game).pos;
-        if path.last().is_none_or(|q| q.distance(p) >= 8.0) {
-            path.push(p);
-        }
-        true
-    });
-    path
+/// Seconds spent: the report (the closure and every question put to it),
+/// then the route.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Timing {
+    pub analyse: f64,
+    pub route: f64,
 }
 
 /// What the plan picture shows.
@@ -655,8 +714,10 @@ pub struct Drawing {
     nav: NavGrid,
     reached: Vec<bool>,
     finish: Vec<bool>,
-    /// The autopilot's path.
-    pub route: Vec<DVec2>,
+    /// The route drawn (see [`RouteFrom`]).
+    pub route: Route,
+    /// What the check cost.
+    pub timing: Timing,
     /// The map's lines with their colours, and the BSP's partitions (each
     /// clipped to its node's box).
     lines: Vec<(DVec2, DVec2, u32)>,
@@ -691,13 +752,15 @@ impl Drawing {
                 clip_line(node.a, node.b, bbox.min, bbox.max)
             })
             .collect();
-        Drawing { nav, reached, finish, route: Vec::new(), lines, partitions }
+        Drawing { nav, reached, finish, route: Route::default(), timing: Timing::default(), lines, partitions }
     }
 
     /// The map from above, `size` pixels on its longer side: reachable
     /// floor dark green, unreachable floor dark red, soft-lock floor orange,
     /// walls white, two-sided lines grey, special lines blue, the route
-    /// yellow, and with `partitions` the BSP's partition lines cyan.
+    /// yellow from the white square of the start, a yellow square where it
+    /// meets each goal and a larger one at the exit, and with `partitions`
+    /// the BSP's partition lines cyan.
     pub fn draw(&self, size: usize, partitions: bool) -> Framebuffer {
         let nav = &self.nav;
         let extent = DVec2::new(nav.width as f64, nav.height as f64) * CELL;
@@ -732,10 +795,22 @@ impl Drawing {
         for &(a, b, colour) in &self.lines {
             line(&mut fb, to_px(a), to_px(b), colour);
         }
-        for pair in self.route.windows(2) {
-            if pair[0].distance(pair[1]) < 64.0 {
-                line(&mut fb, to_px(pair[0]), to_px(pair[1]), rgb(255, 220, 0));
+        let points = &self.route.points;
+        for i in 1..points.len() {
+            if !self.route.teleport.get(i).copied().unwrap_or(false) {
+                line(&mut fb, to_px(points[i - 1]), to_px(points[i]), rgb(255, 220, 0));
             }
+        }
+        // Where the route meets each goal a small yellow square, at the
+        // exit a larger one; the start is white.
+        let stops = self.route.stops.len();
+        for (i, &p) in self.route.stops.iter().enumerate() {
+            let r = DVec2::splat(if self.route.exits && i + 1 == stops { 6.0 } else { 3.0 });
+            fill(&mut fb, to_px(p) - r, to_px(p) + r, rgb(255, 220, 0));
+        }
+        if let Some(&p) = self.route.points.first() {
+            let r = DVec2::splat(5.0);
+            fill(&mut fb, to_px(p) - r, to_px(p) + r, rgb(255, 255, 255));
         }
         fb
     }

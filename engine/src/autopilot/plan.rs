@@ -410,7 +410,7 @@ pub enum Purpose {
 
 /// What the search needs of a goal: cells where it is met, and lines whose
 /// crossing meets it.
-#[derive(Default)]
+#[derive(Clone, Default)]
 pub struct Targets {
     cells: BTreeSet<Cell>,
     lines: BTreeSet<LineId>,

@@ -91,7 +91,7 @@ pub fn run(args: &BenchAutopilotArgs) -> Result<()> {
 }
 
 /// `WAD:all` as every map of the WAD.
-fn expand(maps: &[String]) -> Result<Vec<String>> {
+pub(super) fn expand(maps: &[String]) -> Result<Vec<String>> {
     let mut out = Vec::new();
     for m in maps {
         match m.strip_suffix(":all") {
