@@ -295,8 +295,9 @@ fn check_finds_the_unreachable_secret_and_the_soft_lock() {
     }
     let text = report.text();
     assert!(text.contains("secret sector 1") && text.contains("NOT reachable") && text.contains("soft lock"), "{text}");
-    // The route drawn is the bot's own, from the start to the exit.
-    assert!(drawing.route.len() > 10, "{:?}", drawing.route);
+    // The route drawn is the closure's, from the start to the exit.
+    assert!(drawing.route.points.len() > 10, "{:?}", drawing.route);
+    assert!(drawing.route.exits && drawing.route.missed == 0, "{:?}", drawing.route);
     let png = drawing.draw(400, true).to_png();
     assert!(png.len() > 1000);
 }

@@ -64,6 +64,7 @@ pub(super) struct Ground<'a> {
     pub nav: &'a NavGrid,
     pub level: &'a Level,
     pub mech: &'a Mechanisms,
+    pub meets: &'a super::check::Meets,
     pub solid: &'a BTreeSet<Cell>,
     pub hurts: &'a [bool],
 }
@@ -74,7 +75,7 @@ impl Ground<'_> {
         let map = &self.level.compiled.map;
         match goal {
             Goal::Key(_, pos) => (plan::touch_cells(self.nav, map, pos), None),
-            Goal::Line(line, _) => super::check::goal_targets(self.nav, self.level, line),
+            Goal::Line(line, _) => self.meets.of(self.nav, self.level, line),
             Goal::Teleport(line) => (Targets::default(), Some(line)),
         }
     }
