@@ -265,6 +265,7 @@ fn closure(
             opened: c.opened.clone(),
             used_teleports: c.mech.used_teleports.clone(),
             goals: Vec::new(),
+            moved: Vec::new(),
         };
         // Once-only teleporters whose front is reached have been used: the
         // walk over them leads on as well (a door with a teleport line in
@@ -276,6 +277,7 @@ fn closure(
                 c.mech.used_teleports.insert(line);
                 changed_teleports = true;
                 stage.goals.push(Goal::Teleport(line));
+                stage.moved.push(Vec::new());
             }
         }
         let mut changed = false;
@@ -286,6 +288,7 @@ fn closure(
                 c.keys.push(colour);
                 changed = true;
                 stage.goals.push(Goal::Key(colour, pos));
+                stage.moved.push(Vec::new());
                 if std::env::var_os("SIGHTLINE_CHECK_TRACE").is_some() {
                     eprintln!("check: key {colour:?} at ({:.0}, {:.0})", pos.x, pos.y);
                 }
@@ -316,7 +319,8 @@ fn closure(
             c.applied.insert(line);
             changed = true;
             let after = plan::predict(level, &c.heights, sl, special);
-            let mut effect = false;
+            // The sectors it changes.
+            let mut moved = Vec::new();
             if std::env::var_os("SIGHTLINE_CHECK_TRACE").is_some() {
                 let (_, a, b, _) = line_of(&level.compiled.map, line);
                 eprintln!(
@@ -338,7 +342,9 @@ fn closure(
             | crate::map::special::Action::Ceiling { .. } = special.action
             {
                 for s in super::sectors::target_sectors(level, sl, special) {
-                    effect |= !c.opened[s];
+                    if !c.opened[s] {
+                        moved.push(s);
+                    }
                     c.opened[s] = true;
                 }
             }
@@ -348,15 +354,20 @@ fn closure(
                     c.heights.low[s] = low.min(after.floor[s]).min(after.low[s]);
                     c.heights.floor[s] = floor.max(after.floor[s]);
                     c.heights.ceiling[s] = ceiling.max(after.ceiling[s]);
-                    effect |= (low, floor, ceiling) != (c.heights.low[s], c.heights.floor[s], c.heights.ceiling[s]);
+                    if (low, floor, ceiling) != (c.heights.low[s], c.heights.floor[s], c.heights.ceiling[s]) {
+                        moved.push(s);
+                    }
                 }
             }
-            if effect {
+            if !moved.is_empty() {
                 let key = match special.action {
                     crate::map::special::Action::Door { key, .. } => key,
                     _ => None,
                 };
                 stage.goals.push(Goal::Line(line, key));
+                moved.sort_unstable();
+                moved.dedup();
+                stage.moved.push(moved);
             }
         }
         // A lift raised, or beside a floor lowered, has new ends.

@@ -28,6 +28,9 @@ pub(super) struct Stage {
     pub opened: Vec<bool>,
     pub used_teleports: BTreeSet<LineId>,
     pub goals: Vec<Goal>,
+    /// Per goal: the sectors whose heights it changed or whose door it
+    /// opened (none for keys and teleporters).
+    pub moved: Vec<Vec<usize>>,
 }
 
 /// A goal the closure met.
@@ -137,7 +140,71 @@ fn union(goals: &[(Targets, Option<LineId>)]) -> Targets {
 
 /// The closure's route: each stage's goals, nearest first, then the exit
 /// (`exit`: the targets of the exits the report calls reachable).
+///
+/// Switches and walk lines that change nothing the route walks on are left
+/// out (the closure sets off every one it reaches: on freedoom2 MAP12 the
+/// route would tour 34 of them). A line is left out only if, with it left
+/// out, no cell of the route from its round on stands on a sector it moved,
+/// so every search stays true without it; the check is made on the route
+/// drawn without them, and any it touches is put back, until none is.
 pub(super) fn closure_route(g: &Ground, stages: &[Stage], start: Cell, exit: &[(Targets, Option<LineId>)]) -> Route {
+    let full = walk_goals(g, stages, start, exit, &BTreeSet::new());
+    let mut dropped: BTreeSet<(usize, usize)> = BTreeSet::new();
+    for (k, stage) in stages.iter().enumerate() {
+        for (i, moved) in stage.moved.iter().enumerate() {
+            if !moved.is_empty() && !full.touches(g.nav, full.begun[k], moved) {
+                dropped.insert((k, i));
+            }
+        }
+    }
+    // Each pass puts back at least one line or returns: at most as many
+    // passes as lines left out, and a few in practice.
+    while !dropped.is_empty() {
+        let fewer = walk_goals(g, stages, start, exit, &dropped);
+        let touched: Vec<(usize, usize)> = dropped
+            .iter()
+            .copied()
+            .filter(|&(k, i)| fewer.touches(g.nav, fewer.begun[k], &stages[k].moved[i]))
+            .collect();
+        if touched.is_empty() {
+            if fewer.route.exits >= full.route.exits && fewer.route.missed <= full.route.missed {
+                return fewer.route;
+            }
+            break;
+        }
+        for t in touched {
+            dropped.remove(&t);
+        }
+    }
+    full.route
+}
+
+/// A route as walked, with what the pruning asks of it.
+struct Walked {
+    route: Route,
+    cells: Vec<Cell>,
+    /// Per stage: the index in `cells` where its searches began.
+    begun: Vec<usize>,
+}
+
+impl Walked {
+    /// Does the route from `cells[from]` on stand on any of `sectors`?
+    fn touches(&self, nav: &NavGrid, from: usize, sectors: &[usize]) -> bool {
+        self.cells[from.min(self.cells.len())..]
+            .iter()
+            .any(|&c| nav.touched(c).iter().any(|&s| sectors.binary_search(&(s as usize)).is_ok()))
+    }
+}
+
+/// The route through `stages`' goals but those `dropped` (stage, goal),
+/// then to the exit.
+fn walk_goals(
+    g: &Ground,
+    stages: &[Stage],
+    start: Cell,
+    exit: &[(Targets, Option<LineId>)],
+    dropped: &BTreeSet<(usize, usize)>,
+) -> Walked {
     let nav = g.nav;
     let mut search = Search::default();
     let mut mech = g.mech.clone();
@@ -153,14 +220,18 @@ pub(super) fn closure_route(g: &Ground, stages: &[Stage], start: Cell, exit: &[(
             route.stops.push(nav.centre_of(end));
         }
     };
-    let Some(last) = stages.last() else { return route };
+    let mut begun = Vec::new();
+    let Some(last) = stages.last() else { return Walked { route, cells, begun } };
     let mut held: Vec<KeyColour> = Vec::new();
-    for stage in stages {
+    for (k, stage) in stages.iter().enumerate() {
+        begun.push(cells.len() - 1);
         mech.used_teleports.clone_from(&stage.used_teleports);
         let mut left: Vec<(Goal, Targets, Option<LineId>)> = stage
             .goals
             .iter()
-            .map(|&goal| {
+            .enumerate()
+            .filter(|&(i, _)| !dropped.contains(&(k, i)))
+            .map(|(_, &goal)| {
                 let (targets, line) = g.targets(goal);
                 (goal, targets, line)
             })
@@ -228,7 +299,7 @@ pub(super) fn closure_route(g: &Ground, stages: &[Stage], start: Cell, exit: &[(
         }
     }
     route.points = cells.iter().map(|&c| nav.centre_of(c)).collect();
-    route
+    Walked { route, cells, begun }
 }
 
 /// The autopilot's route through the level, played offline: a game with no
