@@ -263,7 +263,7 @@ fn closure(
         let mut stage = Stage {
             heights: c.heights.clone(),
             opened: c.opened.clone(),
-            used_teleports: c.mech.used_teleports.clone(),
+            mech: c.mech.clone(),
             goals: Vec::new(),
             moved: Vec::new(),
         };
@@ -371,7 +371,18 @@ fn closure(
             }
         }
         // A lift raised, or beside a floor lowered, has new ends.
+        let ends = (c.mech.lift_low.clone(), c.mech.lift_top.clone());
         changed |= c.mech.settle_planned_lifts(level, &mut c.heights);
+        // The round's lines did that: each counts those lifts as moved.
+        let settled: Vec<usize> =
+            (0..ends.0.len()).filter(|&s| (ends.0[s], ends.1[s]) != (c.mech.lift_low[s], c.mech.lift_top[s])).collect();
+        for (goal, moved) in stage.goals.iter().zip(&mut stage.moved) {
+            if matches!(goal, Goal::Line(..)) && !settled.is_empty() {
+                moved.extend(&settled);
+                moved.sort_unstable();
+                moved.dedup();
+            }
+        }
         c.stages.push(stage);
         if !changed && !changed_teleports {
             return c;
@@ -633,7 +644,7 @@ fn analyse(level: &Level, skill: u8, route: bool) -> (Report, Drawing) {
         let normal: Vec<usize> = reachable.iter().copied().filter(|&i| report.exits[i].what != "secret exit").collect();
         let ends = if normal.is_empty() { reachable } else { normal };
         let exit: Vec<(Targets, Option<LineId>)> = ends.iter().map(|&i| exit_targets[i].clone()).collect();
-        let ground = Ground { nav: &nav, level, mech: &mech, meets: &meets, solid: &t.solid, hurts: &hurts };
+        let ground = Ground { nav: &nav, level, meets: &meets, solid: &t.solid, hurts: &hurts };
         route::closure_route(&ground, &c.stages, start, &exit)
     } else {
         Route::default()

@@ -22,11 +22,12 @@ use crate::level::Level;
 use crate::map::special::KeyColour;
 
 /// What the closure set off or took in one round, and the level as that
-/// round's flood saw it (the goals were met in that flood).
+/// round's flood saw it (the goals were met in that flood): its heights,
+/// doors opened, and mechanisms (once-only teleporters used, lifts' ends).
 pub(super) struct Stage {
     pub heights: Heights,
     pub opened: Vec<bool>,
-    pub used_teleports: BTreeSet<LineId>,
+    pub mech: Mechanisms,
     pub goals: Vec<Goal>,
     /// Per goal: the sectors whose heights it changed or whose door it
     /// opened (none for keys and teleporters).
@@ -66,7 +67,6 @@ pub struct Route {
 pub(super) struct Ground<'a> {
     pub nav: &'a NavGrid,
     pub level: &'a Level,
-    pub mech: &'a Mechanisms,
     pub meets: &'a super::check::Meets,
     pub solid: &'a BTreeSet<Cell>,
     pub hurts: &'a [bool],
@@ -85,14 +85,8 @@ impl Ground<'_> {
 
     /// The cheapest path from `from` to any of `targets` over the level as
     /// `stage` has it, as the closure's flood searches it.
-    fn search(
-        &self,
-        search: &mut Search,
-        mech: &Mechanisms,
-        stage: &Stage,
-        from: Cell,
-        targets: &Targets,
-    ) -> Option<plan::Route> {
+    fn search(&self, search: &mut Search, stage: &Stage, from: Cell, targets: &Targets) -> Option<plan::Route> {
+        let mech = &stage.mech;
         let none = BTreeSet::new();
         let no_lines = BTreeSet::new();
         let mut shut = mech.shut_doors(&self.level.compiled.map);
@@ -207,7 +201,6 @@ fn walk_goals(
 ) -> Walked {
     let nav = g.nav;
     let mut search = Search::default();
-    let mut mech = g.mech.clone();
     let mut cells = vec![start];
     let mut route = Route { teleport: vec![false], ..Route::default() };
     let mut at = start;
@@ -225,7 +218,6 @@ fn walk_goals(
     let mut held: Vec<KeyColour> = Vec::new();
     for (k, stage) in stages.iter().enumerate() {
         begun.push(cells.len() - 1);
-        mech.used_teleports.clone_from(&stage.used_teleports);
         let mut left: Vec<(Goal, Targets, Option<LineId>)> = stage
             .goals
             .iter()
@@ -247,8 +239,7 @@ fn walk_goals(
             let all = union(&open);
             // From where the route stands; failing that (a one-way drop
             // since), over the level as the closure ends it.
-            let path =
-                g.search(&mut search, &mech, stage, at, &all).or_else(|| g.search(&mut search, &mech, last, at, &all));
+            let path = g.search(&mut search, stage, at, &all).or_else(|| g.search(&mut search, last, at, &all));
             let Some(path) = path else {
                 if std::env::var_os("SIGHTLINE_CHECK_TRACE").is_some() {
                     let p = nav.centre_of(at);
@@ -283,8 +274,7 @@ fn walk_goals(
     }
     if !exit.is_empty() {
         let all = union(exit);
-        mech.used_teleports.clone_from(&last.used_teleports);
-        match g.search(&mut search, &mech, last, at, &all) {
+        match g.search(&mut search, last, at, &all) {
             Some(path) => {
                 walk(&path, &mut cells, &mut route, &mut at);
                 route.exits = true;
