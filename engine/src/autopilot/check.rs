@@ -124,7 +124,9 @@ fn things(level: &Level, nav: &NavGrid, skill: u8) -> Things {
             t.keys.push((colour, thing.pos));
         } else if def.has(ActorFlag::Special) {
             t.items.push((def.name.clone(), thing.pos));
-        } else if def.has(ActorFlag::Solid) && !def.has(ActorFlag::CountKill) {
+        } else if def.has(ActorFlag::Solid) && !def.has(ActorFlag::CountKill) && def.category != Category::Monster {
+            // Scenery stands in the way for good; a monster (a lost soul
+            // counts no kill) moves or dies, and -nomonsters has none.
             let reach = def.radius + super::nav::CLEAR;
             for c in plan::cells_near(nav, thing.pos, reach * 1.42).cells() {
                 let d = (nav.centre_of(c) - thing.pos).abs();

@@ -965,7 +965,12 @@ pub fn predict(level: &Level, heights: &Heights, line: SpecialLine, special: &Li
             // Shut for 30 seconds, then open as it was.
             Action::Door { kind: DoorKind::CloseThenOpen, .. } => {}
             Action::Floor { to, offset, .. } => {
-                let dest = sectors::floor_destination(level, s, *to, *offset);
+                // A move by so much goes from where the floor is by then
+                // (two switches raising one floor by 32 each lift it 64).
+                let dest = match to {
+                    crate::map::special::FloorTarget::Current => h.floor[s] + offset,
+                    _ => sectors::floor_destination(level, s, *to, *offset),
+                };
                 if dest != sector.floor {
                     h.floor[s] = dest;
                     h.low[s] = h.low[s].min(dest);
