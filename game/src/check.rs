@@ -37,16 +37,55 @@ pub fn run(args: &CheckArgs) -> Result<()> {
     };
     report.map = map.label();
     if args.json {
-        println!("{}", serde_json::to_string(&report)?);
+        out(&format!("{}\n", serde_json::to_string(&report)?))?;
     } else {
-        print!("{}", report.text());
+        out(&report.text())?;
     }
     if let (Some(out), Some(drawing)) = (&args.output, &drawing) {
         let fb = drawing.draw(args.plan_size as usize, args.partitions);
         write_atomic(out, &fb.to_png())?;
         if !args.json {
-            println!("wrote the plan to {}", out.display());
+            self::out(&format!("wrote the plan to {}\n", out.display()))?;
         }
     }
     Ok(())
+}
+
+/// Writes `text` to standard output; a reader that has stopped reading
+/// (`sightline check MAP | head`) is no error, and the plan is still drawn.
+fn out(text: &str) -> Result<()> {
+    write_quietly(&mut std::io::stdout().lock(), text)
+}
+
+fn write_quietly(to: &mut impl std::io::Write, text: &str) -> Result<()> {
+    match to.write_all(text.as_bytes()).and_then(|()| to.flush()) {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        written => Ok(written?),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::io::{Error, ErrorKind, Write};
+
+    /// A reader that has gone.
+    struct Gone(ErrorKind);
+
+    impl Write for Gone {
+        fn write(&mut self, _: &[u8]) -> std::io::Result<usize> {
+            Err(Error::from(self.0))
+        }
+        fn flush(&mut self) -> std::io::Result<()> {
+            Ok(())
+        }
+    }
+
+    #[test]
+    fn a_reader_that_stopped_reading_is_no_error_but_a_full_disk_is() {
+        assert!(super::write_quietly(&mut Gone(ErrorKind::BrokenPipe), "the exit is reachable\n").is_ok());
+        assert!(super::write_quietly(&mut Gone(ErrorKind::StorageFull), "the exit is reachable\n").is_err());
+        let mut kept = Vec::new();
+        super::write_quietly(&mut kept, "text").unwrap();
+        assert_eq!(kept, b"text");
+    }
 }
