@@ -138,16 +138,30 @@ impl Sounds {
     /// The cues that play the music lump `lump` of `map`'s WADs (the
     /// title's music), every sound stopped; the next map's cues change it.
     pub fn music(&mut self, map: &MapRef, lump: &str) -> Cues {
-        if self.map.as_ref() != Some(map) {
-            self.bank = SoundBank::for_map(map);
-            self.warnings.append(&mut self.bank.warnings);
-            self.map = Some(map.clone());
-        }
+        self.enter(map);
         let midi = self.bank.wad_music(lump);
         let music = midi.map(Arc::new).map_err(|e| self.warnings.push(format!("music {lump}: {e}; no music"))).ok();
         self.song = Some(lump.to_string());
         self.sounding.clear();
         Cues { stop_all: true, music: Some(music), ..Cues::default() }
+    }
+
+    /// Sounds from `map` on: another WAD or map brings its own voices
+    /// (warned about once); whether it is another map.
+    fn enter(&mut self, map: &MapRef) -> bool {
+        if self.map.as_ref() == Some(map) {
+            return false;
+        }
+        let same_source = match (&self.map, map) {
+            (Some(MapRef::Wad { wads: a, .. }), MapRef::Wad { wads: b, .. }) => a == b,
+            _ => false,
+        };
+        if !same_source {
+            self.bank = SoundBank::for_map(map);
+            self.warnings.append(&mut self.bank.warnings);
+        }
+        self.map = Some(map.clone());
+        true
     }
 
     /// The cues of the tick `play` just ran.
@@ -168,17 +182,7 @@ impl Sounds {
     /// A new map's stop and voices, and a change of music.
     fn map_cues(&mut self, play: &Playthrough) -> Cues {
         let mut cues = Cues::default();
-        if self.map.as_ref() != Some(&play.map) {
-            // Another WAD or map: its own voices (warned about once).
-            let same_source = match (&self.map, &play.map) {
-                (Some(MapRef::Wad { wads: a, .. }), MapRef::Wad { wads: b, .. }) => a == b,
-                _ => false,
-            };
-            if !same_source {
-                self.bank = SoundBank::for_map(&play.map);
-                self.warnings.append(&mut self.bank.warnings);
-            }
-            self.map = Some(play.map.clone());
+        if self.enter(&play.map) {
             self.sounding.clear();
             cues.stop_all = true;
         }

@@ -74,6 +74,11 @@ impl SoundOut {
     /// The tick `play` just ran, to the audio thread; the warnings printed once.
     pub fn tick(&mut self, play: &Playthrough) {
         let cues = self.sounds.cues(play);
+        self.send(cues);
+    }
+
+    /// `cues` to the audio thread, with the warnings making them printed once.
+    fn send(&mut self, cues: Cues) {
         crate::audio::warn(&mut self.sounds);
         let _ = self.to_audio.send(Message::Cues(Box::new(cues)));
     }
@@ -82,8 +87,7 @@ impl SoundOut {
     /// audio thread.
     pub fn tick_heard(&mut self, play: &Playthrough, heard: &sightline::sound::Heard) {
         let cues = self.sounds.cues_heard(play, heard);
-        crate::audio::warn(&mut self.sounds);
-        let _ = self.to_audio.send(Message::Cues(Box::new(cues)));
+        self.send(cues);
     }
 
     /// A game loaded in place of this one: every sound stops and the music
@@ -96,16 +100,14 @@ impl SoundOut {
     /// the next map's music.
     pub fn music(&mut self, map: &sightline::campaign::MapRef, lump: &str) {
         let cues = self.sounds.music(map, lump);
-        crate::audio::warn(&mut self.sounds);
-        let _ = self.to_audio.send(Message::Cues(Box::new(cues)));
+        self.send(cues);
     }
 
     /// Plays the menu's sound `name` (not placed in the world).
     pub fn menu_sound(&mut self, name: &str) {
         let Some(voice) = self.sounds.voice(name) else { return };
         let start = sightline::sound::Start { voice, key: sightline::sound::mix::Key::Listener, pos: None };
-        let cues = Cues { starts: vec![start], ..Cues::default() };
-        let _ = self.to_audio.send(Message::Cues(Box::new(cues)));
+        self.send(Cues { starts: vec![start], ..Cues::default() });
     }
 
     /// Sets the effects' and music's volumes, 0 to 1.
