@@ -34,6 +34,9 @@ pub struct Loop {
     parked: Option<Session>,
     /// The title's music has been asked for.
     music: bool,
+    /// Each demo lump of the loop, and the WAD (of `wads`) it is read from:
+    /// the last that has it.
+    demos: Vec<(String, usize)>,
 }
 
 impl Loop {
@@ -42,6 +45,13 @@ impl Loop {
     pub fn of(map: &MapRef) -> Result<Option<Loop>> {
         let MapRef::Wad { wads, .. } = map else { return Ok(None) };
         let opened = wads.iter().map(|w| Wad::open(w)).collect::<Result<Vec<_>, _>>()?;
+        let demos = (1..=4)
+            .filter_map(|n| {
+                let lump = format!("DEMO{n}");
+                let at = opened.iter().rposition(|w| w.find(&lump).is_some())?;
+                Some((lump, at))
+            })
+            .collect();
         let wad = Wad::stack(opened);
         Ok(Attract::of(&wad).map(|attract| Loop {
             attract,
@@ -50,6 +60,7 @@ impl Loop {
             page: None,
             parked: None,
             music: false,
+            demos,
         }))
     }
 
@@ -126,10 +137,12 @@ impl Loop {
 
     /// A session playing the demo lump `lump` of the WADs.
     fn demo(&self, lump: &str) -> Result<Session> {
-        // The last WAD that has the lump; the IWAD under it when it is a PWAD.
-        let at = (0..self.wads.len())
-            .rev()
-            .find(|&k| Wad::open(&self.wads[k]).is_ok_and(|w| w.find(lump).is_some()))
+        // The IWAD under the WAD that has it, when that is a PWAD.
+        let at = self
+            .demos
+            .iter()
+            .find(|(l, _)| l == lump)
+            .map(|&(_, at)| at)
             .ok_or_else(|| anyhow!("no WAD has {lump}"))?;
         let spec = format!("{}:{lump}", self.wads[at].display());
         let iwad = (at > 0).then(|| self.wads[0].as_path());
