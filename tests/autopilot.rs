@@ -519,6 +519,10 @@ fn check_adds_up_relative_moves_and_walks_past_monsters() {
 /// (one autoplay of each map serves both).
 #[test]
 #[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
+#[cfg_attr(
+    not(freedoom_missing),
+    ignore = "long suite (every Freedoom map): scripts/long-suites.sh runs it, as CI does"
+)]
 fn the_autopilot_finishes_most_of_freedoom_without_monsters_and_check_agrees() {
     let mut wrong = Vec::new();
     for (wad, floor) in [("freedoom1.wad", FREEDOOM1_FLOOR), ("freedoom2.wad", FREEDOOM2_FLOOR)] {

@@ -102,6 +102,10 @@ const FREEDOOM2_EXITS: usize = 5;
 
 #[test]
 #[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
+#[cfg_attr(
+    not(freedoom_missing),
+    ignore = "long suite (played again in Chocolate Doom): scripts/long-suites.sh runs it, as CI does"
+)]
 fn freedoom1_exits_play_to_the_same_intermission_in_chocolate_doom() {
     if !chocolate::present_or_skip("freedoom1_exits_play_to_the_same_intermission_in_chocolate_doom") {
         return;
@@ -114,6 +118,10 @@ fn freedoom1_exits_play_to_the_same_intermission_in_chocolate_doom() {
 
 #[test]
 #[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
+#[cfg_attr(
+    not(freedoom_missing),
+    ignore = "long suite (played again in Chocolate Doom): scripts/long-suites.sh runs it, as CI does"
+)]
 fn freedoom2_exits_play_to_the_same_intermission_in_chocolate_doom() {
     if !chocolate::present_or_skip("freedoom2_exits_play_to_the_same_intermission_in_chocolate_doom") {
         return;

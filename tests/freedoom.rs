@@ -91,12 +91,20 @@ fn check_wad(name: &str, maps: usize) {
 
 #[test]
 #[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
+#[cfg_attr(
+    not(freedoom_missing),
+    ignore = "long suite (every Freedoom map): scripts/long-suites.sh runs it, as CI does"
+)]
 fn every_freedoom1_map_imports_compiles_renders_and_plays() {
     check_wad("freedoom1.wad", 36);
 }
 
 #[test]
 #[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
+#[cfg_attr(
+    not(freedoom_missing),
+    ignore = "long suite (every Freedoom map): scripts/long-suites.sh runs it, as CI does"
+)]
 fn every_freedoom2_map_imports_compiles_renders_and_plays() {
     check_wad("freedoom2.wad", 32);
 }

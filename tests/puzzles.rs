@@ -202,7 +202,7 @@ fn generated_puzzles_are_checked_and_exited() {
 }
 
 #[test]
-#[ignore = "long: the larger batch of generated puzzles (the README's long suites)"]
+#[ignore = "long suite (144 more generated puzzles): scripts/long-suites.sh runs it, as CI does"]
 fn puzzles_long_batch() {
     play_seeds(LONG_SEEDS);
 }
