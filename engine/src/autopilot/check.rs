@@ -24,6 +24,7 @@ use glam::DVec2;
 use super::brain;
 use super::nav::{solid, Cell, Heights, LineId, NavGrid, CELL, NONE};
 use super::plan::{self, line_of, Mechanisms, Search, Targets};
+use super::press::{self, Presses};
 use super::route::{self, Goal, Ground, Route, Stage};
 use crate::actors::{ActorFlag, ActorTable, Category};
 use crate::framebuffer::{rgb, Framebuffer};
@@ -191,14 +192,20 @@ fn shut_now(level: &Level, mech: &Mechanisms, opened: &[bool]) -> Vec<bool> {
 /// the whole grid) was 55% of freedoom2 MAP28's check (7.0 s of report).
 pub(super) struct Meets {
     targets: HashMap<LineId, (Targets, Option<LineId>)>,
+    /// Use lines: where a press reaches them from, as Doom's use does
+    /// (some cells only once a shut opening on the way is open).
+    presses: HashMap<LineId, Presses>,
     /// Per line: the cells with a straight move out of them across it.
     crossers: HashMap<LineId, Vec<Cell>>,
 }
 
 impl Meets {
     fn new(nav: &NavGrid, level: &Level, mech: &Mechanisms) -> Meets {
-        let lines = mech.triggers.iter().chain(mech.exits.iter().map(|(l, _)| l));
-        let targets = lines.map(|&l| (l, goal_targets(nav, level, l))).collect();
+        let lines: Vec<LineId> = mech.triggers.iter().chain(mech.exits.iter().map(|(l, _)| l)).copied().collect();
+        let map = &level.compiled.map;
+        let used = |l: &LineId| line_of(map, *l).3.is_some_and(|s| s.on == Activation::Use);
+        let presses = lines.iter().filter(|l| used(l)).map(|&l| (l, press::press_cells(nav, map, l))).collect();
+        let targets = lines.iter().filter(|l| !used(l)).map(|&l| (l, goal_targets(nav, level, l))).collect();
         let mut crossers: HashMap<LineId, Vec<Cell>> = HashMap::new();
         for c in 0..nav.cells() as Cell {
             for d in 0..4 {
@@ -210,12 +217,38 @@ impl Meets {
                 }
             }
         }
-        Meets { targets, crossers }
+        Meets { targets, presses, crossers }
     }
 
-    /// The cells and line that meet `line`'s special.
-    pub(super) fn of(&self, nav: &NavGrid, level: &Level, line: LineId) -> (Targets, Option<LineId>) {
+    /// The cells and line that meet `line`'s special, with the sectors at
+    /// `heights`.
+    pub(super) fn of(
+        &self,
+        nav: &NavGrid,
+        level: &Level,
+        line: LineId,
+        heights: &Heights,
+    ) -> (Targets, Option<LineId>) {
+        let map = &level.compiled.map;
+        if let Some(p) = self.presses.get(&line) {
+            return (p.at(map, heights), None);
+        }
         self.targets.get(&line).cloned().unwrap_or_else(|| goal_targets(nav, level, line))
+    }
+
+    /// Can `line`'s special be set off from the reached cells, with the
+    /// sectors at `heights`?
+    fn met_line(&self, level: &Level, reached: &[bool], line: LineId, heights: &Heights) -> bool {
+        if let Some(p) = self.presses.get(&line) {
+            let map = &level.compiled.map;
+            return p.now.cells().any(|c| reached[c as usize])
+                || p.once_open.iter().any(|(c, _)| reached[*c as usize])
+                    && p.at(map, heights).cells().any(|c| reached[c as usize]);
+        }
+        match self.targets.get(&line) {
+            Some((targets, walk)) => self.met(reached, targets, *walk),
+            None => false,
+        }
     }
 
     /// Can a goal's targets be met from the reached cells?
@@ -231,7 +264,7 @@ impl Meets {
 fn goal_targets(nav: &NavGrid, level: &Level, line: LineId) -> (Targets, Option<LineId>) {
     let map = &level.compiled.map;
     match line_of(map, line).3.map(|s| s.on) {
-        Some(Activation::Use) => (plan::use_cells(nav, map, line), None),
+        Some(Activation::Use) => (press::press_cells(nav, map, line).now, None),
         Some(Activation::Walk) => (Targets::default(), Some(line)),
         Some(Activation::Shoot) => (plan::shoot_cells(nav, map, line), None),
         _ => (Targets::default(), None),
@@ -314,8 +347,9 @@ fn closure(
                     continue;
                 }
             }
-            let (targets, walk) = &meets.targets[&line];
-            if !meets.met(&c.reached, targets, *walk) {
+            // The level as this round's flood saw it (the route's search
+            // of this round meets it there too).
+            if !meets.met_line(level, &c.reached, line, &stage.heights) {
                 continue;
             }
             c.applied.insert(line);
@@ -488,7 +522,7 @@ fn analyse(level: &Level, skill: u8, route: bool) -> (Report, Drawing) {
     let mut exits = Vec::new();
     let mut exit_targets: Vec<(Targets, Option<LineId>)> = Vec::new();
     for &(line, secret) in &mech.exits {
-        let (targets, walk) = meets.of(&nav, level, line);
+        let (targets, walk) = meets.of(&nav, level, line, &c.heights);
         let (_, a, b, _) = line_of(map, line);
         let ok = meets.met(&c.reached, &targets, walk);
         let mut exit = place(if secret { "secret exit".into() } else { "exit".into() }, (a + b) / 2.0, ok);
@@ -736,12 +770,16 @@ fn trace_divergence(level: &Level, d: &Drawing, route: &[DVec2], report: &Report
     }
     let near = |c: Cell| (0..8).filter_map(|k| nav.neighbour(c, k)).chain([c]).any(|n| d.reached[n as usize]);
     let mut last = None;
-    for &p in route {
+    for (i, &p) in route.iter().enumerate() {
         let Some(c) = nav.cell_at(p) else { continue };
         if near(c) {
             last = Some((p, c));
             continue;
         }
+        // The way the bot came (a leap, a ride, a press from below).
+        let came: Vec<String> =
+            route[i.saturating_sub(16)..i].iter().map(|q| format!("({:.0}, {:.0})", q.x, q.y)).collect();
+        eprintln!("check: the bot's route before it leaves: {}", came.join(" "));
         let show = |c: Cell| {
             nav.touched(c)
                 .iter()

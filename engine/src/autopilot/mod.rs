@@ -37,6 +37,7 @@ pub mod nav;
 pub mod observe;
 pub mod obstacle;
 pub mod plan;
+pub mod press;
 pub mod route;
 pub mod sectors;
 pub mod sight;

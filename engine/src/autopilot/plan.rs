@@ -838,6 +838,10 @@ impl Targets {
         self.cells.retain(|c| !cells.contains(c));
     }
 
+    pub fn insert(&mut self, c: Cell) {
+        self.cells.insert(c);
+    }
+
     pub fn contains_cell(&self, c: Cell) -> bool {
         self.cells.contains(&c)
     }

@@ -73,12 +73,13 @@ pub(super) struct Ground<'a> {
 }
 
 impl Ground<'_> {
-    /// The cells and line that meet `goal`.
-    fn targets(&self, goal: Goal) -> (Targets, Option<LineId>) {
+    /// The cells and line that meet `goal` with the sectors at `heights`
+    /// (a press through a door's slot reaches once the door is open).
+    fn targets(&self, goal: Goal, heights: &Heights) -> (Targets, Option<LineId>) {
         let map = &self.level.compiled.map;
         match goal {
             Goal::Key(_, pos) => (plan::touch_cells(self.nav, map, pos), None),
-            Goal::Line(line, _) => self.meets.of(self.nav, self.level, line),
+            Goal::Line(line, _) => self.meets.of(self.nav, self.level, line, heights),
             Goal::Teleport(line) => (Targets::default(), Some(line)),
         }
     }
@@ -224,7 +225,7 @@ fn walk_goals(
             .enumerate()
             .filter(|&(i, _)| !dropped.contains(&(k, i)))
             .map(|(_, &goal)| {
-                let (targets, line) = g.targets(goal);
+                let (targets, line) = g.targets(goal, &stage.heights);
                 (goal, targets, line)
             })
             .collect();
