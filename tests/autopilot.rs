@@ -382,9 +382,9 @@ const KNOWN_GAPS: &[(&str, &str)] = &[
     (
         "freedoom1.wad:E3M5",
         "the route leaves at (-1284, -2012), from the lava (sector 170) onto sector 176: the bot runs east along \
-         271, raised to 72 by the switch check now presses from the lava, and leaps the 56 units of lava onto 176 \
-         (88); the leap's model reads the floor by 16-unit cells half a cell ahead, so the gap it sees is wider \
-         than the 24 units the body's box is over lava, and the jump falls short",
+         271 (raised to 72 by the switch check now presses from the lava) and carries over the 56-unit strip of \
+         lava onto 176 (88), its body over lava for 24 units; the leap model reads floors by 16-unit cells half a \
+         cell ahead, sees 32 units of lava starting 16 early, and from 271's 9-cell run-up falls 21 short",
     ),
     (
         "freedoom2.wad:MAP16",

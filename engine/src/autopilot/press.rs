@@ -11,7 +11,8 @@
 //! door's slot from in front of the door once it is open. The player may
 //! face any way, so a cell counts when some point of the line (a little
 //! inside its ends, where the walls beside meet it) is within 64 of its
-//! centre, on its front, with the way there clear.
+//! centre, on its front, with the way there clear; less what the body's
+//! centre must keep further from a wall than the cell's.
 //!
 //! The autopilot's own targets ([`super::plan::use_cells`]) keep a margin
 //! for steering (it walks to a spot and lines up); `check` asks only
@@ -19,10 +20,11 @@
 
 use glam::DVec2;
 
-use super::nav::{Cell, Heights, LineId, NavGrid};
+use super::nav::{solid, Cell, Heights, LineId, NavGrid};
 use super::plan::{line_of, Targets};
 use crate::geom::{crossing, distance_to_segment, front_distance};
 use crate::map::Map;
+use crate::play::player::RADIUS;
 use crate::play::USE_RANGE;
 
 /// The cells a press on one line reaches it from.
@@ -120,10 +122,23 @@ pub fn press_cells(nav: &NavGrid, map: &Map, line: LineId) -> Presses {
         if front_distance(a, b, p) <= 0.0 || distance_to_segment(p, a, b) > USE_RANGE {
             continue;
         }
+        // A cell's centre may be closer to a wall than a body's can be
+        // (a centre need only be 7.5 clear): the body stands that much
+        // further off, and reaches that much less (MAP25's switches are
+        // 61 units from a cell centre by a railing, 65 from the body).
+        let wall = near
+            .iter()
+            .filter(|&&i| i < map.lines.len() && solid(&map.lines[i]))
+            .map(|&i| {
+                let (a, b) = map.line_points(&map.lines[i]);
+                distance_to_segment(p, a, b)
+            })
+            .fold(f64::MAX, f64::min);
+        let reach = USE_RANGE - (RADIUS - wall).max(0.0);
         let nearest = super::plan::nearest_on(p, along(0.02), along(0.98));
         let mut best: Option<Vec<u32>> = None;
         for q in std::iter::once(nearest).chain(points.iter().copied()) {
-            if q.distance(p) > USE_RANGE {
+            if q.distance(p) > reach {
                 continue;
             }
             let Some(shut) = stoppers(map, &near, p, q, line) else { continue };
