@@ -384,7 +384,8 @@ const KNOWN_GAPS: &[(&str, &str)] = &[
         "the route leaves at (-1284, -2012), from the lava (sector 170) onto sector 176: the bot runs east along \
          271 (raised to 72 by the switch check now presses from the lava) and carries over the 56-unit strip of \
          lava onto 176 (88), its body over lava for 24 units; the leap model reads floors by 16-unit cells half a \
-         cell ahead, sees 32 units of lava starting 16 early, and from 271's 9-cell run-up falls 21 short",
+         cell ahead, sees 32 units of lava starting 16 early, and from 271's 9-cell run-up meets 176's face 21 \
+         below its top (20 at most in the air)",
     ),
     (
         "freedoom2.wad:MAP16",
