@@ -9,19 +9,25 @@
 //! enough to hurt it ([`spots`]), and, as the body rides, whether a rocket
 //! fired now would ([`blast`]); and it drives the bot there
 //! ([`Autopilot::brain_goal`]) and on the ride.
+//!
+//! A brain also dies under a crusher (Freedoom's MAP16 crushes its four
+//! brains in their closets once a walk line is crossed): [`crushers`] finds
+//! the lines that start one over it, for `check`.
 
 use glam::DVec2;
 
 use super::sight::{self, Body};
 use super::Observe;
 use crate::actors::{ActorTable, Arg, Category};
-use crate::map::special::Activation;
+use crate::level::Level;
+use crate::map::special::{Action, Activation};
 use crate::map::Map;
 use crate::play::TickInput;
 use crate::CompiledMap;
 
-use super::nav::{Cell, Heights, NavGrid};
-use super::plan::{Goal, Mechanisms, Purpose};
+use super::nav::{Cell, Heights, LineId, NavGrid};
+use super::plan::{line_of, Goal, Mechanisms, Purpose};
+use super::sectors::target_sectors;
 use super::{live_heights, turn_to, Active, Autopilot};
 
 /// The reach of a rocket's blast (Doom's `A_Explode`: 128, and 128 damage
@@ -47,6 +53,10 @@ pub const LAUNCHER_SLOT: u8 = 5;
 /// Ticks on a lift firing at the boss brain before the ride is given up
 /// (a lift goes down, waits three seconds and comes back up).
 const RIDE_TICKS: u32 = 35 * 20;
+
+/// A crusher's ceiling comes down to 8 above its floor (Doom's
+/// `EV_DoCeiling`: `bottomheight = floorheight + 8*FRACUNIT`).
+const CRUSHER_GAP: f64 = 8.0;
 
 /// A live boss brain.
 #[derive(Clone, Copy, Debug)]
@@ -266,6 +276,86 @@ pub fn blast_along(
     Shot { compiled, rocket, lift: None }.damage(scratch, from, along, z, brain, &ways)
 }
 
+/// The sectors whose floors and ceilings bound `body`: the one under its
+/// centre and both sides of every two-sided line its square touches (as
+/// Doom's `P_CheckPosition` takes the opening of each line the box
+/// touches, so a ceiling moving in any of them can squeeze the body).
+fn sectors_under(compiled: &CompiledMap, body: &Body) -> Vec<usize> {
+    let map = &compiled.map;
+    let (min, max) = (body.pos - DVec2::splat(body.radius), body.pos + DVec2::splat(body.radius));
+    let inside = |p: DVec2| p.x >= min.x && p.x <= max.x && p.y >= min.y && p.y <= max.y;
+    let corners = [min, DVec2::new(max.x, min.y), max, DVec2::new(min.x, max.y)];
+    let mut out = vec![compiled.sector_at(body.pos)];
+    for l in &map.lines {
+        let Some(back) = &l.back else { continue };
+        let (a, b) = map.line_points(l);
+        let touches = inside(a)
+            || inside(b)
+            || (0..4).any(|k| crate::geom::crossing(corners[k], corners[(k + 1) % 4], a, b).is_some());
+        if touches {
+            out.extend([l.front.sector, back.sector]);
+        }
+    }
+    out.sort_unstable();
+    out.dedup();
+    out
+}
+
+/// The lines a player can set off that start a crusher over `brain`: a
+/// body that no longer fits under a ceiling that crushes takes 10 damage
+/// every 4 tics (Doom's `PIT_ChangeSector`), and a crusher's ceiling comes
+/// down to 8 above the floor and goes on for ever, so a brain taller than
+/// that dies under it (250 health: 100 tics of crushing).
+///
+/// Floors and ceilings that crush once are not counted: vanilla's stop
+/// within 8 units of the body's top (`raiseFloorCrush` rises to 8 below
+/// the ceiling at full speed, 2 or 3 blows; `lowerAndCrush` comes down to
+/// 8 above the floor at an eighth of its speed, 16 blows, 160 damage),
+/// short of a brain's 250.
+pub fn crushers(level: &Level, brain: &Body) -> Vec<LineId> {
+    let map = &level.compiled.map;
+    if brain.height <= CRUSHER_GAP {
+        return Vec::new();
+    }
+    let under = sectors_under(&level.compiled, brain);
+    (0..(map.lines.len() + map.trigger_lines.len()) as LineId)
+        .filter(|&id| {
+            let (line, _, _, special) = line_of(map, id);
+            special.is_some_and(|special| {
+                matches!(special.action, Action::Crusher { .. })
+                    && special.by.players()
+                    && target_sectors(level, line, special).iter().any(|s| under.contains(s))
+            })
+        })
+        .collect()
+}
+
+/// The ways `check` counts to kill `brain`, with the sectors' floors at
+/// `floors`: the lines that start a crusher over it ([`crushers`]), and the
+/// cells of the lift spots from which `rocket` (the table's launcher's)
+/// hurts it ([`spots`]).
+pub fn ways(
+    nav: &NavGrid,
+    level: &Level,
+    mech: &Mechanisms,
+    rocket: Option<&Rocket>,
+    brain: &Body,
+    floors: &[f64],
+) -> (Vec<LineId>, super::plan::Targets) {
+    let mut shot = super::plan::Targets::default();
+    for spot in rocket.iter().flat_map(|r| spots(nav, &level.compiled, mech, r, brain, floors)) {
+        shot.add(super::plan::cells_near(nav, nav.centre_of(spot.cell), 1.0));
+    }
+    (crushers(level, brain), shot)
+}
+
+/// A brain's death by the crusher that `line` starts, in words.
+pub fn crushed_by(map: &Map, line: LineId) -> String {
+    let (_, a, b, _) = line_of(map, line);
+    let m = (a + b) / 2.0;
+    format!("crushed by the crusher that line {line} at ({:.0}, {:.0}) starts", m.x, m.y)
+}
+
 /// The highest floor lift `lift` reaches with its floor at `floor`: its
 /// top at rest, or, raised above that (something else moves its floor up,
 /// as MAP30's switch raises its lift 512), as high as its ceiling lets a
@@ -376,6 +466,9 @@ impl Autopilot {
     /// first (the body steps off it to the call), and moving with the place
     /// out of reach, the body waits by the call.
     pub(super) fn brain_goal(&mut self, game: &dyn Observe) -> Option<Active> {
+        if let Some(a) = self.crusher_goal(game) {
+            return Some(a);
+        }
         let rocket = launcher(game)?;
         let level = game.level();
         let map = &level.compiled.map;
@@ -412,6 +505,45 @@ impl Autopilot {
             }
         }
         None
+    }
+
+    /// A live boss brain with a crusher over it ([`crushers`]): the nearest
+    /// line that starts one, unless one is running there already (the brain
+    /// dies under it: nothing to do but wait) or the line is used up.
+    fn crusher_goal(&mut self, game: &dyn Observe) -> Option<Active> {
+        let level = game.level();
+        let map = &level.compiled.map;
+        let spent = self.spent(game);
+        let mut best: Option<(super::plan::Route, Goal)> = None;
+        // Each line once, however many brains it crushes (MAP16's twelve
+        // lines start the crushers over all four).
+        let lines: std::collections::BTreeSet<LineId> =
+            live(game).iter().flat_map(|b| crushers(level, &b.body)).collect();
+        for line in lines {
+            let (l, _, _, Some(special)) = line_of(map, line) else { continue };
+            if spent.contains(&line) || Self::used_up(game, line) {
+                continue;
+            }
+            if target_sectors(level, l, special).iter().any(|&s| game.is_busy(s)) {
+                return None;
+            }
+            let goal = match special.on {
+                Activation::Use => Goal::Use(line),
+                Activation::Walk => Goal::Cross(line),
+                _ => continue,
+            };
+            if self.failed(&goal) {
+                continue;
+            }
+            if let Some(route) = self.route_to(game, &goal) {
+                if best.as_ref().is_none_or(|(r, _)| route.cost < r.cost) {
+                    best = Some((route, goal));
+                }
+            }
+        }
+        let (route, goal) = best?;
+        self.log.push(format!("tick {}: starting a crusher over the boss brain", game.ticks()));
+        Some(Active::new(goal, Purpose::Exit, route, game.ticks()))
     }
 
     /// On the lift under `spot`: keep the place, face the boss brain with

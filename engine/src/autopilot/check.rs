@@ -39,6 +39,8 @@ pub struct Report {
     pub exit_reachable: bool,
     /// The map has an exit line (or a boss brain whose death ends it).
     pub has_exit: bool,
+    /// Its exit lines (the other `exits` are boss brains).
+    pub exit_lines: usize,
     pub exits: Vec<Place>,
     pub keys: Vec<KeyReport>,
     pub secrets: Vec<Place>,
@@ -486,6 +488,7 @@ fn analyse(level: &Level, skill: u8, route: bool) -> (Report, Drawing) {
             map: map.name.clone(),
             exit_reachable: false,
             has_exit: !mech.exits.is_empty(),
+            exit_lines: mech.exits.len(),
             exits: Vec::new(),
             keys: Vec::new(),
             secrets: Vec::new(),
@@ -520,7 +523,8 @@ fn analyse(level: &Level, skill: u8, route: bool) -> (Report, Drawing) {
     };
 
     let mut exits = Vec::new();
-    let mut exit_targets: Vec<(Targets, Option<LineId>)> = Vec::new();
+    // Per exit, the ways to meet it.
+    let mut exit_targets: Vec<Vec<(Targets, Option<LineId>)>> = Vec::new();
     for &(line, secret) in &mech.exits {
         let (targets, walk) = meets.of(&nav, level, line, &c.heights);
         let (_, a, b, _) = line_of(map, line);
@@ -530,32 +534,42 @@ fn analyse(level: &Level, skill: u8, route: bool) -> (Report, Drawing) {
             exit.obstacle = Some(why.first_obstacle(&targets, walk));
         }
         exits.push(exit);
-        exit_targets.push((targets, walk));
+        exit_targets.push(vec![(targets, walk)]);
     }
-    // The boss brain's death ends the level too, if a rocket fired from a
-    // lift the player reaches hurts it (whether a launcher can be had is
-    // not asked).
+    // The boss brain's death ends the level too: crushed under a crusher
+    // the player starts, or hurt by a rocket fired from a lift the player
+    // reaches (whether a launcher can be had is not asked).
     let table = ActorTable::active();
-    if let Some(rocket) = brain::table_rocket(table) {
-        for (i, thing) in map.things.iter().enumerate().filter(|(_, t)| t.in_single_player(skill)) {
-            let Some(def) = table.get(&thing.kind).filter(|d| d.category == Category::BossBrain) else { continue };
-            let body = brain::body(&level.compiled, def, thing.pos, i);
-            let mut targets = Targets::default();
-            for spot in brain::spots(&nav, &level.compiled, &mech, &rocket, &body, &c.heights.floor) {
-                targets.add(plan::cells_near(&nav, nav.centre_of(spot.cell), 1.0));
-            }
-            let ok = targets.cells().any(|x| c.reached[x as usize]);
-            let mut exit = place("exit (the boss brain, by a rocket from a lift)".into(), thing.pos, ok);
-            if !ok {
-                exit.obstacle = Some(if targets.is_empty() {
-                    "no lift near it from which a rocket hurts it".into()
-                } else {
-                    why.first_obstacle(&targets, None)
-                });
-            }
-            exits.push(exit);
-            exit_targets.push((targets, None));
+    let rocket = brain::table_rocket(table);
+    for (i, thing) in map.things.iter().enumerate().filter(|(_, t)| t.in_single_player(skill)) {
+        let Some(def) = table.get(&thing.kind).filter(|d| d.category == Category::BossBrain) else { continue };
+        let body = brain::body(&level.compiled, def, thing.pos, i);
+        let (crushers, shot) = brain::ways(&nav, level, &mech, rocket.as_ref(), &body, &c.heights.floor);
+        let mut ways: Vec<(Targets, Option<LineId>)> =
+            crushers.iter().map(|&l| meets.of(&nav, level, l, &c.heights)).collect();
+        let crushed = crushers.iter().zip(&ways).find(|(_, (t, w))| meets.met(&c.reached, t, *w)).map(|(&l, _)| l);
+        let hit = shot.cells().any(|x| c.reached[x as usize]);
+        // How it dies: the way met, else the first way there is (a
+        // crusher before rockets).
+        let how = match crushed.or(crushers.first().copied()) {
+            Some(l) if crushed.is_some() || !hit => format!("; {}", brain::crushed_by(map, l)),
+            _ if !shot.is_empty() => "; by a rocket from a lift".into(),
+            _ => String::new(),
+        };
+        let ok = crushed.is_some() || hit;
+        let mut exit = place(format!("boss brain (its death ends the map{how})"), thing.pos, ok);
+        if !ok {
+            exit.obstacle = Some(match ways.first() {
+                Some((targets, walk)) => why.first_obstacle(targets, *walk),
+                None if !shot.is_empty() => why.first_obstacle(&shot, None),
+                None => "no crusher over it, and no lift near it from which a rocket hurts it".into(),
+            });
         }
+        if !shot.is_empty() {
+            ways.push((shot, None));
+        }
+        exits.push(exit);
+        exit_targets.push(ways);
     }
     let exit_reachable = exits.iter().any(|e| e.reachable);
     let has_exit = !exits.is_empty();
@@ -601,7 +615,7 @@ fn analyse(level: &Level, skill: u8, route: bool) -> (Report, Drawing) {
             into[b as usize].push(a);
         }
         let mut stack: Vec<Cell> = Vec::new();
-        for (targets, walk) in &exit_targets {
+        for (targets, walk) in exit_targets.iter().flatten() {
             for x in targets.cells() {
                 if c.reached[x as usize] && !finish[x as usize] {
                     finish[x as usize] = true;
@@ -662,6 +676,7 @@ fn analyse(level: &Level, skill: u8, route: bool) -> (Report, Drawing) {
         map: map.name.clone(),
         exit_reachable,
         has_exit,
+        exit_lines: mech.exits.len(),
         exits,
         keys,
         secrets,
@@ -679,7 +694,7 @@ fn analyse(level: &Level, skill: u8, route: bool) -> (Report, Drawing) {
         let reachable: Vec<usize> = (0..report.exits.len()).filter(|&i| report.exits[i].reachable).collect();
         let normal: Vec<usize> = reachable.iter().copied().filter(|&i| report.exits[i].what != "secret exit").collect();
         let ends = if normal.is_empty() { reachable } else { normal };
-        let exit: Vec<(Targets, Option<LineId>)> = ends.iter().map(|&i| exit_targets[i].clone()).collect();
+        let exit: Vec<(Targets, Option<LineId>)> = ends.iter().flat_map(|&i| exit_targets[i].clone()).collect();
         let ground = Ground { nav: &nav, level, meets: &meets, solid: &t.solid, hurts: &hurts };
         route::closure_route(&ground, &c.stages, start, &exit)
     } else {
@@ -959,7 +974,13 @@ impl Report {
         let mut out = String::new();
         let yes = |b: bool| if b { "reachable" } else { "NOT reachable" };
         let because = |o: &Option<String>| o.as_ref().map(|o| format!(": {o}")).unwrap_or_default();
-        if self.has_exit {
+        if self.has_exit && self.exit_lines == 0 {
+            out += &format!(
+                "{}: no exit line; the map ends when a boss brain dies, and killing one is {}\n",
+                self.map,
+                if self.exit_reachable { "within reach" } else { "NOT within reach" }
+            );
+        } else if self.has_exit {
             out += &format!("{}: the exit is {}\n", self.map, yes(self.exit_reachable));
         } else {
             out += &format!(
