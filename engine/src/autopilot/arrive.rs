@@ -236,3 +236,41 @@ impl Autopilot {
         );
     }
 }
+
+/// A bullet leaves this high above the shooter's feet: half the player's
+/// height and 8 more (Doom's `P_LineAttack` from `P_GunShot`).
+const SHOT_HEIGHT: f64 = crate::play::player::HEIGHT / 2.0 + 8.0;
+
+/// Does a level shot fired from cell `c` (with nothing to aim at, Doom's
+/// autoaim leaves the slope at 0) get through every two-sided line on its
+/// way to the middle of `line`, the levels as they stand? Doom's
+/// `PTR_ShootTraverse` stops a shot at a step up whose top is above the
+/// shot's height, or at a ceiling coming down below it: a gun line behind
+/// a step (MAP28's door behind a 16-unit step, shot at from the floor 24
+/// below) is shot at from the step, not from below it. The shot line
+/// itself is set off whatever its opening (`P_ShootSpecialLine` comes
+/// first). The body stands on the highest floor under its circle; a cell
+/// over a step is tried from its lowest floor as well, since the body may
+/// stand either side.
+pub(super) fn shot_passes(nav: &NavGrid, map: &crate::map::Map, c: Cell, line: LineId) -> bool {
+    let floors = || nav.touched(c).iter().map(|&s| map.sectors[s as usize].floor);
+    let (Some(low), Some(high)) = (floors().min_by(f64::total_cmp), floors().max_by(f64::total_cmp)) else {
+        return false;
+    };
+    let (_, a, b, _) = line_of(map, line);
+    let from = nav.centre_of(c);
+    let to = from + ((a + b) / 2.0 - from) * 0.98;
+    [low, high].into_iter().all(|floor| {
+        let z = floor + SHOT_HEIGHT;
+        map.lines.iter().enumerate().all(|(i, l)| {
+            let Some(back) = &l.back else { return true };
+            if i as u32 == line {
+                return true;
+            }
+            let (f, k) = (&map.sectors[l.front.sector], &map.sectors[back.sector]);
+            let (p, q) = map.line_points(l);
+            (f.floor.max(k.floor) <= z && f.ceiling.min(k.ceiling) >= z)
+                || crate::geom::crossing(from, to, p, q).is_none()
+        })
+    })
+}

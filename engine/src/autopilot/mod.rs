@@ -1208,6 +1208,9 @@ impl Autopilot {
             self.search.run(&world, start, None);
             let reached = self.search.reached.len();
             let gain = reached.saturating_sub(base) + if key_opens { 1_000_000 } else { 0 };
+            if std::env::var_os("SIGHTLINE_AUTOPILOT_TRACE").is_some() {
+                eprintln!("  candidate {} cost {cost}: reaches {reached} (gain {gain})", describe(map, line));
+            }
             if gain > 8 && best.as_ref().is_none_or(|b| gain > b.0 * 2 || (gain * 2 > b.0 && cost < b.1)) {
                 best = Some((gain, cost, line, goal));
             } else if !key_opens && reached + 8 < base && !special.repeat {

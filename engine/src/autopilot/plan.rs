@@ -857,7 +857,11 @@ pub fn targets_of(nav: &NavGrid, map: &Map, goal: &Goal) -> Targets {
         Goal::Use(line) => use_cells(nav, map, *line),
         Goal::Cross(line) => crossing_of(*line),
         Goal::Touch(p, _) => touch_cells(nav, map, *p),
-        Goal::Shoot(line) => shoot_cells(nav, map, *line),
+        Goal::Shoot(line) => {
+            let mut t = shoot_cells(nav, map, *line);
+            t.cells.retain(|&c| super::arrive::shot_passes(nav, map, c, *line));
+            t
+        }
         Goal::Brain(p, _) => cells_near(nav, *p, 1.0),
     }
 }
