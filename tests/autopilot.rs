@@ -431,8 +431,9 @@ const KNOWN_GAPS: &[(&str, &str)] = &[
         "the three keys (blue first, the others behind the blue and yellow doors): the route leaves at \
          (-101, -2781), from sector 124 (floor -72) onto sector 348 (floor -40, the blue key's platform): the \
          bot runs south down sector 75's narrowing walkway (floor -48) and carries over the 70-unit pit of 124 \
-         onto 348, a running leap the leap model does not find there (not for its margins: with the floor \
-         read under the body and no margin in the air it still finds none)",
+         onto 348. The leap model finds that leap (asked from (-104, -2712) southward: 6 cells of run-up, \
+         down on 348's rim), but the search asks for leaps only where the next cell is a drop no step climbs \
+         back, and the pit is 24 below the walkway: a step",
     ),
 ];
 
