@@ -859,7 +859,7 @@ pub fn targets_of(nav: &NavGrid, map: &Map, goal: &Goal) -> Targets {
         Goal::Touch(p, _) => touch_cells(nav, map, *p),
         Goal::Shoot(line) => {
             let mut t = shoot_cells(nav, map, *line);
-            t.cells.retain(|&c| super::arrive::shot_passes(nav, map, c, *line));
+            t.cells.retain(|&c| shot_passes(nav, map, c, *line));
             t
         }
         Goal::Brain(p, _) => cells_near(nav, *p, 1.0),
@@ -895,7 +895,13 @@ pub fn nearest_on(p: DVec2, a: DVec2, b: DVec2) -> DVec2 {
 /// wall that stops a use (one-sided, or two-sided with no opening: Doom's
 /// P_UseTraverse; an impassable flag does not stop it)?
 pub fn clear_between(map: &Map, p: DVec2, q: DVec2, line: LineId) -> bool {
-    // Stop a hair short of the line itself.
+    clear_through(map, p, q, line, |bottom, top| top > bottom)
+}
+
+/// Does the segment from `p` to `q` on `line` cross only two-sided lines
+/// whose opening (its bottom and top) `passes` lets through? `line` itself
+/// does not count, and the segment stops a hair short of it.
+fn clear_through(map: &Map, p: DVec2, q: DVec2, line: LineId, passes: impl Fn(f64, f64) -> bool) -> bool {
     let q = p + (q - p) * 0.98;
     map.lines.iter().enumerate().all(|(i, l)| {
         if i as u32 == line {
@@ -903,12 +909,40 @@ pub fn clear_between(map: &Map, p: DVec2, q: DVec2, line: LineId) -> bool {
         }
         if let Some(back) = &l.back {
             let (f, b) = (&map.sectors[l.front.sector], &map.sectors[back.sector]);
-            if f.ceiling.min(b.ceiling) > f.floor.max(b.floor) {
+            if passes(f.floor.max(b.floor), f.ceiling.min(b.ceiling)) {
                 return true;
             }
         }
         let (a, b) = map.line_points(l);
         crate::geom::crossing(p, q, a, b).is_none()
+    })
+}
+
+/// A bullet leaves this high above the shooter's feet: half the player's
+/// height and 8 more (Doom's `P_LineAttack` from `P_GunShot`).
+const SHOT_HEIGHT: f64 = HEIGHT / 2.0 + 8.0;
+
+/// Does a level shot fired from cell `c` (with nothing to aim at, Doom's
+/// autoaim leaves the slope at 0) get through every two-sided line on its
+/// way to the middle of `line`, the levels as they stand? Doom's
+/// `PTR_ShootTraverse` stops a shot at a step up whose top is above the
+/// shot's height, or at a ceiling coming down below it: a gun line behind
+/// a step (MAP28's door behind a 16-unit step, shot at from the floor 24
+/// below) is shot at from the step, not from below it. The shot line
+/// itself is set off whatever its opening (`P_ShootSpecialLine` comes
+/// first). The body stands on the highest floor under its circle; a cell
+/// over a step is tried from its lowest floor as well, since the body may
+/// stand either side.
+fn shot_passes(nav: &NavGrid, map: &Map, c: Cell, line: LineId) -> bool {
+    let floors = || nav.touched(c).iter().map(|&s| map.sectors[s as usize].floor);
+    let (Some(low), Some(high)) = (floors().min_by(f64::total_cmp), floors().max_by(f64::total_cmp)) else {
+        return false;
+    };
+    let (_, a, b, _) = line_of(map, line);
+    let from = nav.centre_of(c);
+    [low, high].into_iter().all(|floor| {
+        let z = floor + SHOT_HEIGHT;
+        clear_through(map, from, (a + b) / 2.0, line, |bottom, top| bottom <= z && top >= z)
     })
 }
 

@@ -51,6 +51,16 @@ impl Presses {
         }
         t
     }
+
+    /// Does a press reach the line from a cell `reached` marks, with the
+    /// sectors at `heights`? As [`Presses::at`], without building the set.
+    pub fn met(&self, map: &Map, heights: &Heights, reached: &[bool]) -> bool {
+        self.now.cells().any(|c| reached[c as usize])
+            || self
+                .once_open
+                .iter()
+                .any(|(c, lines)| reached[*c as usize] && lines.iter().all(|&l| open(map, heights, l as usize)))
+    }
 }
 
 /// Does two-sided line `l` have an opening with the sectors at `heights`?

@@ -185,10 +185,7 @@ impl Meets {
     /// sectors at `heights`?
     fn met_line(&self, level: &Level, reached: &[bool], line: LineId, heights: &Heights) -> bool {
         if let Some(p) = self.presses.get(&line) {
-            let map = &level.compiled.map;
-            return p.now.cells().any(|c| reached[c as usize])
-                || p.once_open.iter().any(|(c, _)| reached[*c as usize])
-                    && p.at(map, heights).cells().any(|c| reached[c as usize]);
+            return p.met(&level.compiled.map, heights, reached);
         }
         match self.targets.get(&line) {
             Some((targets, walk)) => self.met(reached, targets, *walk),
