@@ -181,6 +181,19 @@ fn the_autopilot_clears_a_gap_with_a_running_jump() {
 }
 
 #[test]
+fn the_autopilot_leaps_a_pit_only_a_step_deep_onto_a_ledge() {
+    // The pit is a step below the start, so walking into it is no drop;
+    // its far side is a ledge, so only a run from the start clears it.
+    let mut lowest = f64::MAX;
+    finish("lip", |play| lowest = lowest.min(play.game.player().z));
+    assert!(lowest > -24.0, "the player fell into the pit (feet down to {lowest})");
+    let level = open_level(&map_path("tests/maps/autopilot_lip.ron"), &Default::default()).unwrap();
+    let (report, _) = check::check(level, 3);
+    assert!(report.exit_reachable, "{}", report.text());
+    assert!(report.soft_locks.is_empty(), "a step climbs out of the pit: {}", report.text());
+}
+
+#[test]
 fn the_autopilot_crosses_stepping_stones_narrower_than_the_body() {
     // Every stone is narrower than a body and the margin a standing body
     // keeps from an edge, so each landing is on a rim; the chain turns a
@@ -417,25 +430,14 @@ const FREEDOOM2_FLOOR: usize = 26;
 /// (`SIGHTLINE_CHECK_TRACE=1 sightline check WAD:MAP`): the model's gap
 /// there is not yet found. The test fails when one of them agrees again
 /// (take it off the list) as when another disagrees.
-const KNOWN_GAPS: &[(&str, &str)] = &[
-    (
-        "freedoom1.wad:E3M5",
-        "the route leaves at (-1284, -2012), from the lava (sector 170) onto sector 176: the bot runs east along \
+const KNOWN_GAPS: &[(&str, &str)] = &[(
+    "freedoom1.wad:E3M5",
+    "the route leaves at (-1284, -2012), from the lava (sector 170) onto sector 176: the bot runs east along \
          271 (raised to 72 by the switch check now presses from the lava) and carries over the 56-unit strip of \
          lava onto 176 (88), its body over lava for 24 units; the leap model reads floors by 16-unit cells half a \
          cell ahead, sees 32 units of lava starting 16 early, and from 271's 9-cell run-up meets 176's face 21 \
          below its top (20 at most in the air)",
-    ),
-    (
-        "freedoom2.wad:MAP28",
-        "the three keys (blue first, the others behind the blue and yellow doors): the route leaves at \
-         (-101, -2781), from sector 124 (floor -72) onto sector 348 (floor -40, the blue key's platform): the \
-         bot runs south down sector 75's narrowing walkway (floor -48) and carries over the 70-unit pit of 124 \
-         onto 348. The leap model finds that leap (asked from (-104, -2712) southward: 6 cells of run-up, \
-         down on 348's rim), but the search asks for leaps only where the next cell is a drop no step climbs \
-         back, and the pit is 24 below the walkway: a step",
-    ),
-];
+)];
 
 /// How the bot did on one map, and what `check` says of it.
 struct Played {
@@ -503,6 +505,9 @@ fn disagreements(p: &Played) -> Vec<String> {
         Some(_) if disagree.is_empty() => vec![format!("{}: agrees now; take it off KNOWN_GAPS", p.map)],
         Some(_) => Vec::new(),
     };
+    for s in r.soft_locks.iter().filter(|s| s.from_sector == s.to_sector) {
+        wrong.push(format!("{}: a soft lock from sector {} into itself at ({}, {})", p.map, s.from_sector, s.x, s.y));
+    }
     for k in r.keys.iter().filter(|k| !k.reachable && k.obstacle.as_deref().is_none_or(str::is_empty)) {
         wrong.push(format!("{}: the {} key is unreachable with no obstacle named", p.map, k.colour));
     }
@@ -608,6 +613,23 @@ fn check_presses_a_switch_as_far_as_doom_reaches() {
     let report = check::report(&level, 3);
     let on_top = report.items.iter().find(|i| (i.x, i.y) == (-1416.0, -1688.0)).expect("the bullets on the pillar");
     assert!(on_top.reachable, "E3M5: {}", report.text());
+}
+
+/// A soft lock is a move the search makes, between cells it reaches:
+/// E1M3's lift (sector 163) held up, and E2M2's ledges over sector 122,
+/// were once named one-way drops "from sector 162 into sector 162" and
+/// the like, moves into cells the search never reached. A drop into the
+/// very sector it falls from cannot be, so none may be named on any map
+/// the batch plays either (`disagreements`).
+#[test]
+#[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
+fn check_names_only_soft_locks_the_player_can_fall_into() {
+    for name in ["E1M3", "E2M2"] {
+        let report = check::report(&freedoom_level("freedoom1.wad", name), 3);
+        assert!(report.exit_reachable, "{name}: {}", report.text());
+        let stranded = |s: &check::SoftLock| s.from_sector == s.to_sector || s.to_sector == 122;
+        assert!(!report.soft_locks.iter().any(stranded), "{name}: {}", report.text());
+    }
 }
 
 /// The Freedoom batch: the bot's floors, and `check` agreeing with it

@@ -87,10 +87,19 @@ impl Span {
         self.bottom < self.high - MAX_STEP
     }
 
-    /// Is a move from here to `to` a drop no step climbs back (where a
-    /// running jump may clear a gap)?
+    /// Is a move from here to `to` a drop no step climbs back?
     pub fn drops_to(&self, to: &Span) -> bool {
         self.high - to.high > MAX_STEP
+    }
+
+    /// Is `to` a full step lower or more, so that a running jump from here
+    /// may clear a gap beyond it? A pit a step deep is no drop (a step
+    /// climbs back), but its far side may be a ledge only a leap reaches
+    /// (Freedoom's MAP28 reaches its blue key so). Shallower pits are not
+    /// tried: asking at every step down cost `check` 10% more over
+    /// Freedoom's 68 maps, for no key or exit the bot takes.
+    pub fn leaps_off(&self, to: &Span) -> bool {
+        to.high <= self.high - MAX_STEP
     }
 }
 

@@ -506,8 +506,8 @@ impl Search {
                 }
             }
             let from = w.nav.span(c, w.heights);
-            // Directions in which the next cell is a drop no step climbs
-            // back: a running jump may clear the gap.
+            // Directions in which the next cell is a step down or more: a
+            // running jump may clear a gap there or a cell on.
             let mut drops = 0u8;
             for d in 0..8 {
                 if !w.nav.open(c, d) || w.bad.contains(&(c * 8 + d as u32)) {
@@ -541,7 +541,7 @@ impl Search {
                 if w.nav.touched(n).iter().any(|&s| fixed(s as usize)) {
                     to = w.nav.span_where(n, w.heights, |s| fixed(s).then_some(w.heights.floor[s]));
                 }
-                if from.drops_to(&to) {
+                if from.leaps_off(&to) {
                     drops |= 1 << d;
                 }
                 if !w.nav.climbable(c, d, from, to, w.heights) {

@@ -646,8 +646,10 @@ fn analyse(level: &Level, skill: u8, route: bool) -> (Report, Drawing) {
     (report, drawing)
 }
 
-/// Every move of the forward search from the reached cells: from, to, and
-/// the walk lines it crosses.
+/// Every move of the forward search from the reached cells to reached
+/// cells: from, to, and the walk lines it crosses. A move the search did
+/// not make (onto a lift it holds up, say) is left out: a cell the search
+/// never reached is no place a player could be stranded.
 fn forward_edges(
     nav: &NavGrid,
     level: &Level,
@@ -669,9 +671,11 @@ fn forward_edges(
             }
             let Some(b) = nav.neighbour(a, d) else { continue };
             let to = nav.span(b, heights);
-            if from.drops_to(&to) {
+            if from.leaps_off(&to) {
                 // A running jump across the gap, as the search takes one.
-                if let Some(leap) = plan::leap_from(nav, mech, heights, a, d).filter(|l| !solid.contains(&l.to)) {
+                if let Some(leap) = plan::leap_from(nav, mech, heights, a, d)
+                    .filter(|l| !solid.contains(&l.to) && reached[l.to as usize])
+                {
                     edges.push((a, leap.to, Vec::new()));
                 }
             }
@@ -689,10 +693,12 @@ fn forward_edges(
                     }
                 }
             }
-            if to != b && crossed.iter().any(|l| mech.used_teleports.contains(l)) {
+            if to != b && reached[b as usize] && crossed.iter().any(|l| mech.used_teleports.contains(l)) {
                 edges.push((a, b, crossed.clone()));
             }
-            edges.push((a, to, crossed));
+            if reached[to as usize] {
+                edges.push((a, to, crossed));
+            }
         }
     }
     edges
