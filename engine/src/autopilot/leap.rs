@@ -19,7 +19,7 @@
 
 use glam::DVec2;
 
-use super::nav::{Cell, Heights, LineId, NavGrid, CELL, DIRS};
+use super::nav::{Cell, Heights, LineId, NavGrid, Span, CELL, DIRS};
 use super::plan::Route;
 use super::Observe;
 use super::{turn_to, Active, Autopilot};
@@ -198,14 +198,18 @@ impl NavGrid {
     /// bottom, and the cell it stops in. The line must be open cell to cell
     /// (no solid wall across it) and cross no line `refuse` names (a
     /// teleport: the body would be elsewhere); the run-up must be walkable
-    /// both ways.
+    /// both ways, on floors at their highest.
     pub fn leap(&self, c: Cell, d: usize, heights: &Heights, refuse: impl Fn(LineId) -> bool) -> Option<Leap> {
         let mut behind = vec![c];
         let b = back(d);
         while behind.len() <= RUNUP_CELLS {
             let last = *behind.last().unwrap();
             let Some(n) = self.neighbour(last, b).filter(|_| self.open(last, b)) else { break };
-            let (p, q) = (self.span(last, heights), self.span(n, heights));
+            // The run is made on the floors as they stand at their highest
+            // (the line's floors): a lift's range, which lets a walk step
+            // on at its bottom, is no run-up at its top.
+            let level = |s: Span| Span { low: s.high, ..s };
+            let (p, q) = (level(self.span(last, heights)), level(self.span(n, heights)));
             if !NavGrid::passable(p, q)
                 || !NavGrid::passable(q, p)
                 || self.crossings_of(last, b).any(|(l, _)| refuse(l))
