@@ -500,8 +500,9 @@ fn disagreements(p: &Played) -> Vec<String> {
         Some(_) if disagree.is_empty() => vec![format!("{}: agrees now; take it off KNOWN_GAPS", p.map)],
         Some(_) => Vec::new(),
     };
-    for s in r.soft_locks.iter().filter(|s| s.from_sector == s.to_sector) {
-        wrong.push(format!("{}: a soft lock from sector {} into itself at ({}, {})", p.map, s.from_sector, s.x, s.y));
+    for s in r.soft_locks.iter().filter(|s| s.from_sector == s.to_sector && s.how == "a one-way drop") {
+        wrong
+            .push(format!("{}: a one-way drop from sector {} into itself at ({}, {})", p.map, s.from_sector, s.x, s.y));
     }
     for k in r.keys.iter().filter(|k| !k.reachable && k.obstacle.as_deref().is_none_or(str::is_empty)) {
         wrong.push(format!("{}: the {} key is unreachable with no obstacle named", p.map, k.colour));
@@ -623,6 +624,7 @@ fn check_names_only_soft_locks_the_player_can_fall_into() {
         let report = check::report(&freedoom_level("freedoom1.wad", name), 3);
         assert!(report.exit_reachable, "{name}: {}", report.text());
         let stranded = |s: &check::SoftLock| s.from_sector == s.to_sector || s.to_sector == 122;
+        assert!(report.soft_locks.iter().all(|s| s.how == "a one-way drop"), "{name}: {}", report.text());
         assert!(!report.soft_locks.iter().any(stranded), "{name}: {}", report.text());
     }
 }

@@ -506,7 +506,7 @@ impl Search {
                 }
             }
             let from = w.nav.span(c, w.heights);
-            // Directions in which the next cell is a step down or more: a
+            // Directions in which the next cell is a full step down or more: a
             // running jump may clear a gap there or a cell on.
             let mut drops = 0u8;
             for d in 0..8 {

@@ -581,7 +581,8 @@ fn analyse(level: &Level, skill: u8, route: bool) -> (Report, Drawing) {
             }
         }
         let mut seen = BTreeSet::new();
-        for &(a, b, _) in &edges {
+        for (a, b, crossed) in &edges {
+            let (a, b) = (*a, *b);
             if finish[a as usize] && !finish[b as usize] {
                 // From the highest floor under the body before the move
                 // (the ledge), into the sector under it after.
@@ -595,7 +596,13 @@ fn analyse(level: &Level, skill: u8, route: bool) -> (Report, Drawing) {
                 if seen.insert((sa, sb)) {
                     let adjacent = nav.direction(a, b).is_some();
                     let p = nav.centre_of(b);
-                    let how = if adjacent { "a one-way drop" } else { "a teleport" };
+                    // A move to a cell not beside it crosses a teleport
+                    // line, or is a running jump (which crosses none).
+                    let how = match (adjacent, crossed.is_empty()) {
+                        (true, _) => "a one-way drop",
+                        (false, true) => "a running jump",
+                        (false, false) => "a teleport",
+                    };
                     soft_locks.push(SoftLock { from_sector: sa, to_sector: sb, x: p.x, y: p.y, how: how.into() });
                 }
             }

@@ -53,7 +53,7 @@ pub struct KeyReport {
     pub obstacle: Option<String>,
 }
 
-/// A one-way move (a drop, a teleport) from where the exit can be reached
+/// A one-way move (a drop, a running jump, a teleport) from where the exit can be reached
 /// to where it cannot.
 #[derive(Clone, Debug, serde::Serialize)]
 pub struct SoftLock {
