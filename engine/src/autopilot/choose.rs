@@ -11,6 +11,7 @@ use glam::DVec2;
 use super::nav::{Cell, Heights, LineId};
 use super::observe::Observe;
 use super::plan::{self, line_of, Goal, Purpose, Route, Targets};
+use super::predict;
 use super::{describe, live_heights, sectors, Active, Assumed, Autopilot, MAX_LIFT_MISSES, MAX_RETAKES};
 use crate::map::special::{Action, Activation, DoorKind, KeyColour};
 use crate::play::player::MAX_STEP;
@@ -312,7 +313,7 @@ impl Autopilot {
         for (cost, line, goal) in candidates.iter().take(16).cloned() {
             let (sl, _, _, special) = line_of(map, line);
             let Some(special) = special else { continue };
-            let Some(after) = plan::predict(level, heights, sl, special) else {
+            let Some(after) = predict::predict(level, heights, sl, special) else {
                 if unknown.is_none() {
                     unknown = Some((cost, line, goal));
                 }

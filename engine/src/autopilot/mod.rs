@@ -38,6 +38,7 @@ pub mod nav;
 pub mod observe;
 pub mod obstacle;
 pub mod plan;
+pub mod predict;
 pub mod press;
 pub mod route;
 pub mod sectors;

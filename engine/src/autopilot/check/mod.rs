@@ -24,6 +24,7 @@ use glam::DVec2;
 use super::brain;
 use super::nav::{Cell, Heights, LineId, NavGrid};
 use super::plan::{self, line_of, Mechanisms, Search, Targets};
+use super::predict;
 use super::press::{self, Presses};
 use super::route::{self, Goal, Ground, Route, Stage};
 use crate::actors::{ActorFlag, ActorTable, Category};
@@ -296,7 +297,7 @@ fn closure(
             }
             c.applied.insert(line);
             changed = true;
-            let after = plan::predict(level, &c.heights, sl, special);
+            let after = predict::predict(level, &c.heights, sl, special);
             // The sectors it changes.
             let mut moved = Vec::new();
             if std::env::var_os("SIGHTLINE_CHECK_TRACE").is_some() {
@@ -614,7 +615,7 @@ fn analyse(level: &Level, skill: u8, route: bool) -> (Report, Drawing) {
         .iter()
         .filter_map(|&line| {
             let (_, a, b, special) = line_of(map, line);
-            let why = plan::unforeseeable(level, special?)?;
+            let why = predict::unforeseeable(level, special?)?;
             let m = (a + b) / 2.0;
             Some(format!("line {line} at ({:.0}, {:.0}): {why}", m.x, m.y))
         })
