@@ -331,6 +331,19 @@ fn check_counts_a_crusher_over_the_boss_brain_as_its_death() {
 }
 
 #[test]
+fn check_names_a_leap_with_no_way_back_a_soft_lock_by_running_jump() {
+    // A move to a cell not beside the last that crosses no teleport line
+    // is a running jump; it was once named a teleport.
+    let level = open_level(&map_path("tests/maps/autopilot_leap_trap.ron"), &Default::default()).unwrap();
+    let report = check::report(&level, 3);
+    assert!(report.exit_reachable, "{}", report.text());
+    let how: Vec<(&str, usize)> = report.soft_locks.iter().map(|s| (s.how.as_str(), s.to_sector)).collect();
+    assert!(how.contains(&("a running jump", 2)), "the leap into the trap room: {}", report.text());
+    assert!(how.contains(&("a one-way drop", 1)), "the drop into the pit: {}", report.text());
+    assert_eq!(how.len(), 2, "{}", report.text());
+}
+
+#[test]
 fn check_finds_the_unreachable_secret_and_the_soft_lock() {
     let level = open_level(&map_path("tests/maps/autopilot_flawed.ron"), &Default::default()).unwrap();
     let (report, drawing) = check::check(level, 3);
