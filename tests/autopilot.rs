@@ -312,9 +312,7 @@ fn the_autopilot_crushes_the_boss_brain_under_a_crusher() {
 #[test]
 #[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
 fn check_counts_a_crusher_over_the_boss_brain_as_its_death() {
-    let map = MapRef::Wad { wads: vec![freedoom_wads::path("freedoom2.wad")], map: Some("MAP16".into()) };
-    let level = sightline::campaign::open(&map, &Default::default()).unwrap().level;
-    let report = check::report(&level, 3);
+    let report = check::report(&freedoom_level("freedoom2.wad", "MAP16"), 3);
     let text = report.text();
     assert!(report.exit_reachable && report.exit_lines == 0, "{text}");
     assert!(text.contains("no exit line; the map ends when a boss brain dies"), "{text}");
@@ -537,9 +535,7 @@ fn check_follows_lifts_whose_ends_other_specials_move() {
     for (wad, name, key) in
         [("freedoom1.wad", "E2M5", "red"), ("freedoom1.wad", "E4M6", "yellow"), ("freedoom2.wad", "MAP13", "blue")]
     {
-        let map = MapRef::Wad { wads: vec![freedoom_wads::path(wad)], map: Some(name.into()) };
-        let level = sightline::campaign::open(&map, &Default::default()).unwrap().level;
-        let report = check::report(&level, 3);
+        let report = check::report(&freedoom_level(wad, name), 3);
         // MAP13's exit wants keys beyond; the bot does not finish it either.
         assert!(report.exit_reachable || name == "MAP13", "{name}: {}", report.text());
         let k = report.keys.iter().find(|k| k.colour.eq_ignore_ascii_case(key)).expect("the key");
@@ -557,9 +553,7 @@ fn check_follows_lifts_whose_ends_other_specials_move() {
 #[cfg_attr(freedoom_missing, ignore = "needs Freedoom's WADs: apt-get install freedoom, or set SIGHTLINE_DOOM_DIR")]
 fn check_adds_up_relative_moves_and_walks_past_monsters() {
     for (wad, name) in [("freedoom1.wad", "E4M8"), ("freedoom2.wad", "MAP24")] {
-        let map = MapRef::Wad { wads: vec![freedoom_wads::path(wad)], map: Some(name.into()) };
-        let level = sightline::campaign::open(&map, &Default::default()).unwrap().level;
-        let report = check::report(&level, 3);
+        let report = check::report(&freedoom_level(wad, name), 3);
         assert!(report.exit_reachable, "{name}: {}", report.text());
     }
 }

@@ -19,6 +19,7 @@ use glam::DVec2;
 use super::sight::{self, Body};
 use super::Observe;
 use crate::actors::{ActorTable, Arg, Category};
+use crate::geom::Aabb;
 use crate::level::Level;
 use crate::map::special::{Action, Activation};
 use crate::map::Map;
@@ -282,15 +283,15 @@ pub fn blast_along(
 /// touches, so a ceiling moving in any of them can squeeze the body).
 fn sectors_under(compiled: &CompiledMap, body: &Body) -> Vec<usize> {
     let map = &compiled.map;
-    let (min, max) = (body.pos - DVec2::splat(body.radius), body.pos + DVec2::splat(body.radius));
-    let inside = |p: DVec2| p.x >= min.x && p.x <= max.x && p.y >= min.y && p.y <= max.y;
+    let square = Aabb { min: body.pos - DVec2::splat(body.radius), max: body.pos + DVec2::splat(body.radius) };
+    let (min, max) = (square.min, square.max);
     let corners = [min, DVec2::new(max.x, min.y), max, DVec2::new(min.x, max.y)];
     let mut out = vec![compiled.sector_at(body.pos)];
     for l in &map.lines {
         let Some(back) = &l.back else { continue };
         let (a, b) = map.line_points(l);
-        let touches = inside(a)
-            || inside(b)
+        let touches = square.contains(a)
+            || square.contains(b)
             || (0..4).any(|k| crate::geom::crossing(corners[k], corners[(k + 1) % 4], a, b).is_some());
         if touches {
             out.extend([l.front.sector, back.sector]);

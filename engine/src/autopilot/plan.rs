@@ -940,7 +940,7 @@ fn shot_passes(nav: &NavGrid, map: &Map, c: Cell, line: LineId) -> bool {
     };
     let (_, a, b, _) = line_of(map, line);
     let from = nav.centre_of(c);
-    [low, high].into_iter().all(|floor| {
+    std::iter::once(low).chain((high != low).then_some(high)).all(|floor| {
         let z = floor + SHOT_HEIGHT;
         clear_through(map, from, (a + b) / 2.0, line, |bottom, top| bottom <= z && top >= z)
     })

@@ -75,7 +75,7 @@ fn open(map: &Map, heights: &Heights, l: usize) -> bool {
 /// when something always does (a one-sided wall, another special line),
 /// else the two-sided lines shut as the map starts that it passes
 /// (`Some(empty)`: nothing stops it now).
-fn stoppers(map: &Map, near: &[usize], p: DVec2, q: DVec2, target: LineId) -> Option<Vec<u32>> {
+fn stoppers(map: &Map, start: &Heights, near: &[usize], p: DVec2, q: DVec2, target: LineId) -> Option<Vec<u32>> {
     let mut shut = Vec::new();
     for &i in near {
         if i as u32 == target {
@@ -90,12 +90,10 @@ fn stoppers(map: &Map, near: &[usize], p: DVec2, q: DVec2, target: LineId) -> Op
             return None;
         }
         let line = &map.lines[i];
-        let Some(back) = &line.back else { return None };
-        if line.special.is_some() {
+        if line.back.is_none() || line.special.is_some() {
             return None;
         }
-        let (f, b) = (&map.sectors[line.front.sector], &map.sectors[back.sector]);
-        if f.ceiling.min(b.ceiling) <= f.floor.max(b.floor) {
+        if !open(map, start, i) {
             shut.push(i as u32);
         }
     }
@@ -123,6 +121,7 @@ pub fn press_cells(nav: &NavGrid, map: &Map, line: LineId) -> Presses {
     // Points along the line a press may aim at, every 8 units or so.
     let n = ((a.distance(b) / 8.0).ceil() as usize).max(2);
     let points: Vec<DVec2> = (0..=n).map(|i| along(0.02 + 0.96 * i as f64 / n as f64)).collect();
+    let start = Heights::of(map);
     let mut presses = Presses::default();
     for c in nav.cells_in_box(lo, hi) {
         if !nav.standable(c) {
@@ -151,7 +150,7 @@ pub fn press_cells(nav: &NavGrid, map: &Map, line: LineId) -> Presses {
             if q.distance(p) > reach {
                 continue;
             }
-            let Some(shut) = stoppers(map, &near, p, q, line) else { continue };
+            let Some(shut) = stoppers(map, &start, &near, p, q, line) else { continue };
             if best.as_ref().is_none_or(|b| shut.len() < b.len()) {
                 best = Some(shut);
             }
