@@ -418,6 +418,11 @@ pub struct ReplayArgs {
     /// realtics" and the CPU and wall time per frame.
     #[arg(long, conflicts_with_all = ["capture_every", "check_against"])]
     pub timedemo: bool,
+    /// With --timedemo: also print where a frame's time went (the tic, the
+    /// scene's update from the game, and the renderer's parts as `sightline
+    /// bench tour` names them), from stopwatches that cost a little.
+    #[arg(long, requires = "timedemo")]
+    pub profile: bool,
     /// The Doom executable a Doom demo plays as: 1.9, ultimate or final.
     /// Default: as Chocolate Doom picks it from the IWAD (freedoom1.wad
     /// plays as The Ultimate Doom, freedoom2.wad as Doom II 1.9).

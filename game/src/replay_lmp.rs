@@ -19,7 +19,7 @@ use sightline::play::lmp::VanillaDemo;
 use sightline::play::syncdump::SyncDump;
 use sightline::play::vanilla::{demo_of, open_demo};
 use sightline::play::{GameOptions, TickInput};
-use sightline::render::{render_frame, Frame, RenderOptions};
+use sightline::render::{render_frame, Breakdown, Frame, RenderOptions};
 use sightline::sim::demo::{DemoGame, SyncCheck};
 use sightline::sim::{self, Sim};
 use sightline::Framebuffer;
@@ -134,8 +134,11 @@ pub fn run(args: &ReplayArgs) -> Result<()> {
     if let Some(f) = &mut frames {
         f.tic(&game, 0, tics == 0)?;
     }
+    let mut tic_time = std::time::Duration::ZERO;
     for t in 0..tics {
+        let tic_start = std::time::Instant::now();
         game.tick(&sim::demo::commands(&source.demo, t)).map_err(|e| anyhow!("{spec}: at tic {}: {e}", t + 1))?;
+        tic_time += tic_start.elapsed();
         let diffs = match sync.as_mut().map(|s| s.tic(&game)) {
             None => Vec::new(),
             Some(Some(diffs)) => diffs,
@@ -165,6 +168,9 @@ pub fn run(args: &ReplayArgs) -> Result<()> {
                 cpu.as_secs_f64() * 1000.0 / frames,
                 wall.as_secs_f64() * 1000.0 / frames
             );
+            if args.profile {
+                f.print_profile(tic_time, tics);
+            }
         }
         if f.written > 0 {
             println!("wrote {} frames to {}", f.written, f.dir.display());
@@ -194,6 +200,10 @@ struct Frames {
     dir: PathBuf,
     rendered: usize,
     written: usize,
+    /// With `--profile`: the scene's updates from the game, and the
+    /// renderer's parts, summed over the frames.
+    scene_time: std::time::Duration,
+    parts: Breakdown,
 }
 
 impl Frames {
@@ -209,13 +219,15 @@ impl Frames {
             map: map.clone(),
             level: opened.level,
             scene: sim::draw::Scene::new(links),
-            options: RenderOptions { renderer, threads: args.threads, ..Default::default() },
+            options: RenderOptions { renderer, threads: args.threads, profile: args.profile, ..Default::default() },
             frame: Frame::new(),
             fb: Framebuffer::new(args.size.0, args.size.1),
             every: if args.timedemo { None } else { args.capture_every },
             dir,
             rendered: 0,
             written: 0,
+            scene_time: std::time::Duration::ZERO,
+            parts: Breakdown::default(),
         })
     }
 
@@ -234,14 +246,36 @@ impl Frames {
             self.scene = sim::draw::Scene::new(opened.links.unwrap_or_default());
         }
         let Some(view) = self.scene.view(game) else { return Ok(()) };
+        let scene_start = std::time::Instant::now();
         self.scene.draw(game, &mut self.level);
+        self.scene_time += scene_start.elapsed();
         render_frame(&self.level, &view, &self.options, &mut self.frame, &mut self.fb);
+        self.parts += self.frame.breakdown;
         self.rendered += 1;
         if keep {
             write_atomic(&self.dir.join(format!("tick-{tic:06}.png")), &self.fb.to_png())?;
             self.written += 1;
         }
         Ok(())
+    }
+}
+
+impl Frames {
+    /// `--profile`'s lines: the mean per frame of the tic, the scene's
+    /// update and each part of the renderer (with threads, summed over them).
+    fn print_profile(&self, tic_time: std::time::Duration, tics: usize) {
+        let frames = self.rendered.max(1) as f64;
+        let ms = |ns: f64| ns / 1e6 / frames;
+        let mut rows = vec![
+            ("tic", tic_time.as_nanos() as f64 * frames / tics.max(1) as f64),
+            ("scene", self.scene_time.as_nanos() as f64),
+        ];
+        rows.extend(self.parts.parts().iter().map(|&(name, ns)| (name, ns as f64)));
+        let total: f64 = rows.iter().map(|r| r.1).sum::<f64>().max(1.0);
+        println!("breakdown (mean per frame; the tic's time is per tic):");
+        for (name, ns) in rows {
+            println!("  {name:<8}{:>9.4} ms {:>5.1}%", ms(ns), ns / total * 100.0);
+        }
     }
 }
 
