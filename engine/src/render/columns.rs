@@ -110,9 +110,15 @@ impl ColumnWriter<'_> {
     pub fn put_row(&mut self, y: i32, x0: usize, pixels: &[u32]) {
         let start = (x0 - self.x0) * self.height + y as usize;
         // A plain strided store: through `fill_row`'s closure the compiler
-        // kept the iterator on the stack, a third of the spans' time.
-        for (p, &c) in self.canvas[start..].iter_mut().step_by(self.height).zip(pixels) {
-            *p = c;
+        // kept the iterator on the stack, a third of the spans' time; and
+        // `step_by`'s iterator cost more than the stores (deadly_corridor
+        // at 160x120: 61k instructions a frame in its `Option`s).
+        if let Some((&last, most)) = pixels.split_last() {
+            let end = start + most.len() * self.height;
+            for (column, &c) in self.canvas[start..end].chunks_exact_mut(self.height).zip(most) {
+                column[0] = c;
+            }
+            self.canvas[end] = last;
         }
         self.count_row(start, pixels.len());
     }
@@ -331,18 +337,40 @@ fn copy_row<T: Copy>(canvas: &[T], height: usize, y: usize, row: &mut [T]) {
     }
 }
 
+/// Frames of more bytes than this are copied out with streaming stores
+/// ([`present_pixels_to`]): twice the 2 MiB L2 of the machine measured, so
+/// a frame that could stay in cache for whatever reads it next does. Freedoom
+/// 2's DEMO2 timedemo, one thread, ms per frame (copy, whole frame), two
+/// runs each, cached stores against streamed: 320x200 0.009 / 0.28 against
+/// 0.012 / 0.29; 640x480 0.067-0.074 / 0.70-0.74 against 0.065-0.071 /
+/// 0.66-0.73; 1280x800 0.28-0.29 / 1.75-1.78 against 0.24-0.26 /
+/// 1.74-1.79; 1920x1080 0.71-0.81 / 3.27-3.48 against 0.51-0.52 / 2.96-3.00
+/// (the walls and spans gain too, their canvas no longer pushed out of L2).
+pub const STREAM_BYTES: usize = 4 * 1024 * 1024;
+
 /// [`present_strip`] for pixels, four rows at a time: each 4x4 block is four
 /// loads (four rows of four columns, adjacent in the canvas), a transpose in
 /// SSE2 registers (every x86-64 has SSE2) and four stores, where the
 /// pixel-at-a-time copy does sixteen loads and sixteen stores. The figures are
 /// in ARCHITECTURE.md's performance section.
 pub fn present_pixels<'a>(canvas: &[u32], height: usize, rows: impl Iterator<Item = &'a mut [u32]>) {
+    present_pixels_to(canvas, height, rows, false)
+}
+
+/// [`present_pixels`], with the stores `stream`ed past the caches when
+/// asked: for a frame too big to stay in cache, whose every line would
+/// otherwise be read from memory before it is overwritten and then push the
+/// strip's canvas out of L2 (see [`STREAM_BYTES`]).
+pub fn present_pixels_to<'a>(canvas: &[u32], height: usize, rows: impl Iterator<Item = &'a mut [u32]>, stream: bool) {
     #[cfg(target_arch = "x86_64")]
     {
         let mut rows = rows;
         let mut y = 0;
         while let Some(r0) = rows.next() {
             match (rows.next(), rows.next(), rows.next()) {
+                (Some(r1), Some(r2), Some(r3)) if stream => {
+                    sse2::four_rows_streamed(canvas, height, y, [r0, r1, r2, r3])
+                }
                 (Some(r1), Some(r2), Some(r3)) => sse2::four_rows(canvas, height, y, [r0, r1, r2, r3]),
                 (r1, r2, r3) => {
                     for (k, row) in [Some(r0), r1, r2, r3].into_iter().flatten().enumerate() {
@@ -351,6 +379,9 @@ pub fn present_pixels<'a>(canvas: &[u32], height: usize, rows: impl Iterator<Ite
                 }
             }
             y += 4;
+        }
+        if stream {
+            sse2::fence();
         }
     }
     #[cfg(not(target_arch = "x86_64"))]
@@ -396,6 +427,55 @@ mod sse2 {
                 row[i] = canvas[i * height + y + k];
             }
         }
+    }
+
+    /// [`four_rows`] with streaming (non-temporal) stores, where every row
+    /// piece starts on a 16-byte boundary as they require (else as
+    /// [`four_rows`]). Safe Rust has no streaming store, hence the one
+    /// `unsafe` of the renderer.
+    #[inline]
+    pub(super) fn four_rows_streamed(canvas: &[u32], height: usize, y: usize, rows: [&mut [u32]; 4]) {
+        use std::arch::x86_64::{__m128i, _mm_stream_si128};
+        if rows.iter().any(|r| !(r.as_ptr() as usize).is_multiple_of(16)) {
+            return four_rows(canvas, height, y, rows);
+        }
+        let n = rows[0].len();
+        let blocks = n / 4;
+        let [r0, r1, r2, r3] = rows;
+        let (p0, p1, p2, p3) = (
+            r0.as_chunks_mut::<4>().0,
+            r1.as_chunks_mut::<4>().0,
+            r2.as_chunks_mut::<4>().0,
+            r3.as_chunks_mut::<4>().0,
+        );
+        let groups = canvas[..blocks * 4 * height].chunks_exact(4 * height);
+        for ((((group, q0), q1), q2), q3) in
+            groups.zip(p0.iter_mut()).zip(p1.iter_mut()).zip(p2.iter_mut()).zip(p3.iter_mut())
+        {
+            let column = |k: usize| -> m128i {
+                let texels: [u32; 4] = group[k * height + y..][..4].try_into().unwrap_or_default();
+                bytemuck::cast(texels)
+            };
+            let block = transpose([column(0), column(1), column(2), column(3)]);
+            for (q, v) in [q0, q1, q2, q3].into_iter().zip(block) {
+                // SAFETY: `q` is a live, exclusively borrowed 16-byte run of
+                // the row, which starts 16-byte aligned (tested above), and
+                // each run is a whole number of 16 bytes from it.
+                unsafe { _mm_stream_si128(q.as_mut_ptr().cast::<__m128i>(), bytemuck::cast(v)) };
+            }
+        }
+        for i in blocks * 4..n {
+            for (k, row) in [&mut *r0, &mut *r1, &mut *r2, &mut *r3].into_iter().enumerate() {
+                row[i] = canvas[i * height + y + k];
+            }
+        }
+    }
+
+    /// Orders the streamed stores before whatever the caller does next
+    /// (another thread may read the frame once the strip is done).
+    pub(super) fn fence() {
+        // SAFETY: SSE is part of every x86-64; the fence has no operands.
+        unsafe { std::arch::x86_64::_mm_sfence() };
     }
 
     /// [`super::ColumnWriter::put_four_rows`]'s columns four at a time:
@@ -492,6 +572,13 @@ mod tests {
                 present_pixels(&canvas, height, fast.chunks_exact_mut(width));
                 present_strip(&canvas, height, slow.chunks_exact_mut(width));
                 assert_eq!(fast, slow, "{width}x{height}");
+                // Streamed, into rows that start aligned (a 4-wide frame) or
+                // not (the others, and the frame moved by a pixel).
+                for shift in [0, 1] {
+                    let mut streamed = vec![0u32; width * height + shift];
+                    present_pixels_to(&canvas, height, streamed[shift..].chunks_exact_mut(width), true);
+                    assert_eq!(streamed[shift..], slow, "{width}x{height} streamed, shifted {shift}");
+                }
                 assert_eq!(fast[width * (height - 1)], canvas[height - 1]);
             }
         }

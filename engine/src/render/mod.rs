@@ -199,6 +199,7 @@ pub fn render_frame(
         profile: options.profile,
         sky: planes::SkyView { angle: cam.angle_radians(), texture_height: sky_height.unwrap_or(0), rows: sky_rows },
     };
+    let stream = w * h * 4 > columns::STREAM_BYTES;
     let mut setup_ns = setup.ns();
     let lines = level.map.lines.len();
     let draw = |strip: &mut StripFrame, (x0, x1)| draw_strip(&scene, options, oracle.as_ref(), strip, (x0, x1));
@@ -210,7 +211,8 @@ pub fn render_frame(
             for &(x0, x1) in strips.iter() {
                 draw(strip, (x0, x1));
                 let copy = Lap::start(options.profile);
-                columns::present_pixels(&strip.canvas, h, fb.pixels.chunks_exact_mut(w).map(|r| &mut r[x0..x1]));
+                let rows = fb.pixels.chunks_exact_mut(w).map(|r| &mut r[x0..x1]);
+                columns::present_pixels_to(&strip.canvas, h, rows, stream);
                 columns::present_strip(&strip.counts, h, counts.chunks_exact_mut(w).map(|r| &mut r[x0..x1]));
                 strip.buffers.present(
                     h,
@@ -245,7 +247,7 @@ pub fn render_frame(
             parallel::run(pool, &mut workers[..used], jobs, &|strip, job| {
                 draw(strip, (job.x0, job.x1));
                 let copy = Lap::start(options.profile);
-                columns::present_pixels(&strip.canvas, h, job.rows.into_iter());
+                columns::present_pixels_to(&strip.canvas, h, job.rows.into_iter(), stream);
                 columns::present_strip(&strip.counts, h, job.counts.into_iter());
                 strip.buffers.present(h, job.depth.into_iter(), job.labels.into_iter());
                 strip.breakdown.copy += copy.ns();
