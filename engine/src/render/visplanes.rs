@@ -237,7 +237,10 @@ impl SpanPainter<'_> {
         let one = 1i64 << FRAC;
         let fixed = |c: f64, size: i64| -> i64 {
             let size_f = size as f64;
-            ((c - crate::geom::floor(c / size_f) * size_f) * one as f64) as i64
+            // A power of two's reciprocal is exact, and so the product is
+            // the quotient to the bit, for a multiply where a division was.
+            let whole = if size.count_ones() == 1 { c * (1.0 / size_f) } else { c / size_f };
+            ((c - crate::geom::floor(whole) * size_f) * one as f64) as i64
         };
         let (wf, hf) = (w << FRAC, h << FRAC);
         let (du, dv) = ((step.x * one as f64) as i64, (-step.y * one as f64) as i64);
@@ -256,7 +259,9 @@ impl SpanPainter<'_> {
             let v = v0.wrapping_add(columns.wrapping_mul(dv)) & (hf - 1);
             let steps = Steps { u, v, du, dv, umask: wf - 1, vmask: hf - 1, shift: h.trailing_zeros() };
             let lit = flat_texels(row, texels, steps, tint);
-            tint.apply_all(&mut row[lit..]);
+            if lit < row.len() {
+                tint.apply_all(&mut row[lit..]);
+            }
             return;
         } else {
             // Steps of a whole texture or more (far planes) wrap by modulo.
@@ -303,8 +308,9 @@ struct Steps {
 /// sum modulo the size whatever multiples of it the steps carry, so there
 /// are no tests and no divisions. With AVX2 eight pixels' texel indices are
 /// found at once in 32-bit lanes ([`eights`]) and the eight texels lit by
-/// `tint` while in a register; the loads stay one a pixel. Returns how many
-/// pixels from the start are lit already (the rest are texels as they are).
+/// `tint` while in a register (the last few too); the loads stay one a
+/// pixel. Returns how many pixels from the start are lit already (the rest
+/// are texels as they are).
 #[multiversion::multiversion(targets("x86_64+avx2"))]
 fn flat_texels(row: &mut [u32], texels: &[u32], steps: Steps, tint: super::light::Tint) -> usize {
     let Steps { mut u, mut v, du, dv, umask, vmask, shift } = steps;
@@ -312,6 +318,9 @@ fn flat_texels(row: &mut [u32], texels: &[u32], steps: Steps, tint: super::light
         "x86_64+avx2" => eights::texels(row, texels, steps, tint),
         _ => { let _ = tint; 0 },
     };
+    if done == row.len() {
+        return done;
+    }
     u = u.wrapping_add((done as i64).wrapping_mul(du)) & umask;
     v = v.wrapping_add((done as i64).wrapping_mul(dv)) & vmask;
     let texel = |u: i64, v: i64| texels[((u >> FRAC) << shift | v >> FRAC) as usize];
@@ -335,8 +344,8 @@ mod eights {
     use super::{Steps, FRAC};
     use crate::render::light::{lanes16::Eight, Tint};
     use std::arch::x86_64::{
-        __m256i, _mm256_add_epi32, _mm256_and_si256, _mm256_or_si256, _mm256_set1_epi32, _mm256_setr_epi32,
-        _mm256_sll_epi32, _mm256_srli_epi32, _mm_cvtsi32_si128,
+        __m256i, _mm256_add_epi32, _mm256_and_si256, _mm256_mullo_epi32, _mm256_or_si256, _mm256_set1_epi32,
+        _mm256_setr_epi32, _mm256_sll_epi32, _mm256_srli_epi32, _mm_cvtsi32_si128,
     };
 
     /// Doom's flats are 64x64: their texels as a fixed-size array, whose
@@ -366,10 +375,12 @@ mod eights {
         if s.umask >= WIDE || s.vmask >= WIDE {
             return 0;
         }
+        // Lane k holds x + k dx (wrapping, as the 64-bit steps do modulo
+        // the masks), made in the vector unit: eight scalar multiplies and
+        // inserts a lane were a tenth of a short span's cost.
+        let ks = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
         let lanes = |x: i64, dx: i64| {
-            let (x, d) = (x as i32, dx as i32);
-            let at = |k: i32| x.wrapping_add(d.wrapping_mul(k));
-            _mm256_setr_epi32(at(0), at(1), at(2), at(3), at(4), at(5), at(6), at(7))
+            _mm256_add_epi32(_mm256_set1_epi32(x as i32), _mm256_mullo_epi32(_mm256_set1_epi32(dx as i32), ks))
         };
         let (u, v) = (lanes(s.u, s.du), lanes(s.v, s.dv));
         let (du8, dv8) =
@@ -378,17 +389,29 @@ mod eights {
         let shift = _mm_cvtsi32_si128(s.shift as i32);
         let light = Eight::new(tint);
         let (mut u, mut v) = (_mm256_and_si256(u, umask), _mm256_and_si256(v, vmask));
-        let (eights, _) = row.as_chunks_mut::<8>();
-        for eight in eights.iter_mut() {
+        // Eight pixels' texels, lit: every lane's index is inside the
+        // texture (masked), so a last, partial eight is fetched whole too.
+        let lit_eight = |u: __m256i, v: __m256i| -> [u32; 8] {
             let column = _mm256_sll_epi32(_mm256_srli_epi32::<{ FRAC as i32 }>(u), shift);
             let at: [u32; 8] =
                 bytemuck::cast::<__m256i, [u32; 8]>(_mm256_or_si256(column, _mm256_srli_epi32::<{ FRAC as i32 }>(v)));
             let fetched = bytemuck::cast::<[u32; 8], __m256i>(at.map(&texel));
-            *eight = bytemuck::cast::<__m256i, [u32; 8]>(light.apply(fetched));
+            bytemuck::cast::<__m256i, [u32; 8]>(light.apply(fetched))
+        };
+        let (eights, rest) = row.as_chunks_mut::<8>();
+        for eight in eights.iter_mut() {
+            *eight = lit_eight(u, v);
             u = _mm256_and_si256(_mm256_add_epi32(u, du8), umask);
             v = _mm256_and_si256(_mm256_add_epi32(v, dv8), vmask);
         }
-        eights.len() * 8
+        // The last few pixels the same way, where a scalar loop and the
+        // light's own pass cost more than the pixels: most of a small
+        // frame's spans are shorter than 16 pixels.
+        if !rest.is_empty() {
+            let n = rest.len();
+            rest.copy_from_slice(&lit_eight(u, v)[..n]);
+        }
+        row.len()
     }
 }
 
