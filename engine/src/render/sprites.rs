@@ -40,13 +40,27 @@ pub(crate) fn collect(level: &Level, cam: &Camera, slopes: &[f64], sprites: &mut
         if q.x < NEAR {
             continue;
         }
-        // The view after the cheap test: half the things are behind the eye.
-        let texture = t.texture_seen_from(cam.eye);
-        let w = level.materials.textures.get(texture).width as f64;
-        let left = q.y - w / 2.0;
         // One column of slack each side: the per-column predicate decides.
-        let x0 = cam.first_column_in(slopes, glam::DVec2::new(q.x, left)).saturating_sub(1);
-        let x1 = (cam.first_column_in(slopes, glam::DVec2::new(q.x, left + w)) + 1).min(cam.width);
+        let columns = |w: f64| {
+            let left = q.y - w / 2.0;
+            let x0 = cam.first_column_in(slopes, glam::DVec2::new(q.x, left)).saturating_sub(1);
+            let x1 = (cam.first_column_in(slopes, glam::DVec2::new(q.x, left + w)) + 1).min(cam.width);
+            (left, x0, x1)
+        };
+        let width = |texture| level.materials.textures.get(texture).width as f64;
+        // The view after the cheap tests: half the things are behind the
+        // eye, and of a thing seen differently from each side (a monster),
+        // its widest view tells whether it can be in view before the
+        // direction is worked out (`first_column_in` is monotone, so a
+        // wider extent covers at least the columns of a narrower one).
+        if t.views.iter().any(|&v| v != t.views[0]) {
+            let (_, x0, x1) = columns(t.views.iter().map(|&v| width(v)).fold(0.0, f64::max));
+            if x0 >= x1 {
+                continue;
+            }
+        }
+        let texture = t.texture_seen_from(cam.eye);
+        let (left, x0, x1) = columns(width(texture));
         if x0 >= x1 {
             continue;
         }
@@ -91,8 +105,16 @@ pub(crate) fn draw(scene: &Scene, frame: &mut StripFrame, out: &mut ColumnWriter
         }
     };
     for s in scene.sprites.iter().filter(|s| s.x0 < x1 && s.x1 > x0) {
+        // Only the columns from the first to the last that a wall nearer
+        // did not close: a sprite behind a wall costs a look at its
+        // columns, not its set-up and a draw of each (the middles of the
+        // columns passed over are drained by a later sprite or the end,
+        // still far to near).
+        let (from, to) = (s.x0.max(x0), s.x1.min(x1));
+        let Some(first) = (from..to).find(|&x| !pass.closed_before(x, s.depth)) else { continue };
+        let last = (first..to).rev().find(|&x| !pass.closed_before(x, s.depth)).unwrap_or(first);
         let sprite = pass.sprite(s, sprite_rows);
-        for x in s.x0.max(x0)..s.x1.min(x1) {
+        for x in first..=last {
             drain(out, x, s.depth);
             pass.sprite_column(out, s, &sprite, x);
         }
@@ -243,6 +265,18 @@ impl MaskedPass<'_> {
 }
 
 impl MaskedPass<'_> {
+    /// Whether column `x` was closed by a wall nearer than `depth`, so that
+    /// nothing at `depth` shows there: a closed column's last clip event is
+    /// the one that closed it, its window empty (what [`Self::window`]
+    /// would find).
+    fn closed_before(&self, x: usize, depth: f64) -> bool {
+        let e = self.last_event[x];
+        e != NONE && {
+            let event = &self.events[e as usize];
+            event.top >= event.bottom && event.depth < depth
+        }
+    }
+
     /// Rows `[top, bottom)` of column `x` through which something at `depth`
     /// can be seen: the window of the last clip event nearer than it.
     fn window(&self, x: usize, depth: f64, height: i32) -> (i32, i32) {
