@@ -158,9 +158,20 @@ impl MaskedPass<'_> {
         if !(0.0..c.texture.width as f64).contains(&u) {
             return;
         }
-        let texel_row = |y: i32| c.texel_rows[(y - c.rows.0) as usize] as usize;
         let at = (s.depth, label(s.thing));
-        self.put_texels(out, x, at, c.rows, (c.texture, u as usize, texel_row), c.paint, false);
+        let Texels::Tinted(tint) = c.paint else {
+            let texel_row = |y: i32| c.texel_rows[(y - c.rows.0) as usize] as usize;
+            return self.put_texels(out, x, at, c.rows, (c.texture, u as usize, texel_row), c.paint, false);
+        };
+        // The common case with the texel rows read as a run of the table,
+        // not looked up row by row (a bounds test a texel).
+        let (open_top, open_bottom) = self.window(x, s.depth, self.cam.height as i32);
+        let (y0, y1) = (c.rows.0.max(open_top), c.rows.1.min(open_bottom));
+        if y0 < y1 {
+            let column = c.texture.column((u as usize).min(c.texture.width - 1));
+            let rows = &c.texel_rows[(y0 - c.rows.0) as usize..(y1 - c.rows.0) as usize];
+            put_opaque(out, x, y0, rows.iter().map(|&r| column[r as usize]), tint, at);
+        }
     }
 
     fn masked_column(&self, out: &mut ColumnWriter, m: &super::frame::MaskedColumn, x: usize) {
@@ -224,18 +235,8 @@ impl MaskedPass<'_> {
             // The common case as one run without a branch per texel: a
             // sprite's transparent texels mispredicted at every edge.
             Texels::Tinted(tint) if !translucent => {
-                // The texels first, a load each, then light and select in one
-                // vectorised loop, a stack buffer's worth at a time.
-                let mut texels = [0u32; 64];
-                let mut y = y0;
-                while y < y1 {
-                    let n = ((y1 - y) as usize).min(texels.len());
-                    for (k, t) in texels[..n].iter_mut().enumerate() {
-                        *t = texel(y + k as i32);
-                    }
-                    out.tint_opaque(x, y, &texels[..n], tint);
-                    out.buffers.opaque(x, y, &texels[..n], depth, label);
-                    y += n as i32;
+                if y0 < y1 {
+                    put_opaque(out, x, y0, (y0..y1).map(texel), tint, (depth, label));
                 }
             }
             _ => {
@@ -289,6 +290,36 @@ impl MaskedPass<'_> {
             e = event.prev;
         }
         (0, height)
+    }
+}
+
+/// Writes `texels` down column `x` from row `y0`, lit by `tint`, where they
+/// are opaque: the texels first, a load each, then light and select in one
+/// vectorised loop, a stack buffer's worth at a time. Where the frame fills
+/// them, those pixels get `depth` and `label`.
+#[inline]
+fn put_opaque(
+    out: &mut ColumnWriter,
+    x: usize,
+    y0: i32,
+    mut texels: impl Iterator<Item = u32>,
+    tint: super::light::Tint,
+    (depth, label): (f64, u32),
+) {
+    let mut run = [0u32; 64];
+    let mut y = y0;
+    loop {
+        let mut n = 0;
+        for (t, texel) in run.iter_mut().zip(&mut texels) {
+            *t = texel;
+            n += 1;
+        }
+        if n == 0 {
+            return;
+        }
+        out.tint_opaque(x, y, &run[..n], tint);
+        out.buffers.opaque(x, y, &run[..n], depth, label);
+        y += n as i32;
     }
 }
 
