@@ -322,6 +322,10 @@ pub(crate) struct StripFrame {
     /// Masked middles to draw, and each column's latest entry.
     pub(crate) masked: Vec<MaskedColumn>,
     pub(crate) last_masked: Vec<u32>,
+    /// Each column's sky texel column once a sky piece of it has found it
+    /// (`NONE` before): a column's sky is the same whichever seg's ceiling
+    /// shows it, and finding it takes an `atan` and a float remainder.
+    pub(crate) sky_columns: Vec<u32>,
     /// The masked pass's scratch: the texel row of each screen row of the
     /// sprite being drawn.
     pub(crate) sprite_rows: Vec<u32>,
@@ -349,7 +353,7 @@ impl StripFrame {
                 v.resize(width, 0);
             }
         }
-        for v in [&mut self.last_event, &mut self.last_masked] {
+        for v in [&mut self.last_event, &mut self.last_masked, &mut self.sky_columns] {
             if v.len() != width {
                 v.clear();
                 v.resize(width, NONE);
@@ -366,6 +370,7 @@ impl StripFrame {
         self.clip_bottom[x0..x1].fill(height as i32);
         self.last_event[x0..x1].fill(NONE);
         self.last_masked[x0..x1].fill(NONE);
+        self.sky_columns[x0..x1].fill(NONE);
         self.events.clear();
         self.masked.clear();
         self.visplanes.begin_strip(x0, x1);

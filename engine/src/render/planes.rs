@@ -53,7 +53,9 @@ pub(crate) struct SkyView<'a> {
     pub rows: &'a [u32],
 }
 
-/// Paints rows `[y0, y1)` of column `x`, whose ray has sideways slope `t`.
+/// Paints rows `[y0, y1)` of column `x`, whose ray has sideways slope `t`;
+/// `sky_column` keeps the column's sky texel column between its sky pieces
+/// ([`super::frame::NONE`] until the first finds it).
 pub(crate) fn paint_plane(
     out: &mut ColumnWriter,
     scene: &Scene,
@@ -61,6 +63,7 @@ pub(crate) fn paint_plane(
     (y0, y1): (i32, i32),
     t: f64,
     paint: PlanePaint,
+    sky_column: &mut u32,
 ) {
     if y1 <= y0 {
         return;
@@ -118,10 +121,12 @@ pub(crate) fn paint_plane(
             });
         }
         PlanePaint::Sky(texture) => {
-            let w = texture.width as f64;
-            let angle = scene.sky.angle - t.atan();
-            let u = (-angle * TEXELS_PER_RADIAN).rem_euclid(w) as usize;
-            let column = texture.column(u.min(texture.width - 1));
+            if *sky_column == super::frame::NONE {
+                let angle = scene.sky.angle - t.atan();
+                let u = (-angle * TEXELS_PER_RADIAN).rem_euclid(texture.width as f64) as usize;
+                *sky_column = u.min(texture.width - 1) as u32;
+            }
+            let column = texture.column(*sky_column as usize);
             let sky = scene.sky;
             if sky.texture_height == texture.height && sky.rows.len() == cam.height {
                 out.fill_with(x, y0, y1, |y| column[sky.rows[y as usize] as usize]);

@@ -379,7 +379,7 @@ fn draw_column(scene: &Scene, setup: &Setup, hit: &RayHit, x: usize, frame: &mut
             PlanePaint::Flat { id, height, light, .. } if scene.spans => {
                 frame.visplanes.add(PlaneKey { texture: id, height, light }, x, rows.0, rows.1);
             }
-            _ => paint_plane(out, scene, x, rows, t, paint),
+            _ => paint_plane(out, scene, x, rows, t, paint, &mut frame.sky_columns[x]),
         }
     }
     let rows = (ceiling_end, floor_start);

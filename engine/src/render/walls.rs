@@ -257,7 +257,7 @@ fn draw_column(scene: &Scene, s: &SegColumns, x: usize, frame: &mut StripFrame, 
             PlanePaint::Flat { id, height, light, .. } if scene.spans => {
                 frame.visplanes.add(PlaneKey { texture: id, height, light }, x, rows.0, rows.1);
             }
-            _ => paint_plane(out, scene, x, rows, t, paint),
+            _ => paint_plane(out, scene, x, rows, t, paint, &mut frame.sky_columns[x]),
         }
     }
     let u = if s.needs_u { texture_u(s, depth, t) } else { 0.0 };
