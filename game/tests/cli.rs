@@ -221,6 +221,32 @@ fn replay_refuses_bad_doom_demos() {
     ]);
 }
 
+/// `replay --timedemo --profile` on one of Freedoom's demos: Chocolate's
+/// line, then the breakdown, every part named once with a time (skipped,
+/// saying why, without Freedoom; never under SIGHTLINE_REQUIRE_FREEDOOM).
+#[test]
+fn timedemo_profile_names_where_a_frame_goes() {
+    let wad = Path::new("/usr/share/games/doom/freedoom1.wad");
+    if !wad.exists() {
+        assert!(std::env::var_os("SIGHTLINE_REQUIRE_FREEDOOM").is_none(), "{} is missing", wad.display());
+        eprintln!("skipped: {} is not installed (apt install freedoom)", wad.display());
+        return;
+    }
+    let scene = Scene::new();
+    let demo = format!("{}:DEMO3", wad.display());
+    let run = scene.run(&["replay", &demo, "--timedemo", "--profile", "--size", "64x40", "--threads", "1"]);
+    run.ok("replay --timedemo --profile");
+    assert!(run.stdout.starts_with("timed 1241 gametics in "), "{}", run.stdout);
+    assert!(run.stdout.contains("breakdown (mean per frame"), "{}", run.stdout);
+    for part in ["tic", "scene", "setup", "walk", "walls", "spans", "masked", "copy"] {
+        let rows: Vec<&str> = run.stdout.lines().filter(|l| l.split_whitespace().next() == Some(part)).collect();
+        assert_eq!(rows.len(), 1, "{part}: {}", run.stdout);
+        assert!(rows[0].contains(" ms ") && rows[0].ends_with('%'), "{}", rows[0]);
+    }
+    // Without --timedemo there is nothing to profile.
+    check_all_refused(&[(vec!["replay", "doom2.wad:DEMO1", "--profile"], &["--timedemo"])]);
+}
+
 #[test]
 fn a_doom_demo_records_a_wad_map_only() {
     check_all_refused(&[(

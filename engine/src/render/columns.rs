@@ -398,6 +398,36 @@ mod sse2 {
     /// instructions a pixel at 160x120 when every load and store was).
     #[inline]
     pub(super) fn four_rows(canvas: &[u32], height: usize, y: usize, rows: [&mut [u32]; 4]) {
+        four_rows_by(canvas, height, y, rows, |q, v| *q = bytemuck::cast(v));
+    }
+
+    /// [`four_rows`] with streaming (non-temporal) stores, where every row
+    /// piece starts on a 16-byte boundary as they require (else as
+    /// [`four_rows`]). Safe Rust has no streaming store, hence the
+    /// renderer's only `unsafe` code: this store and [`fence`].
+    #[inline]
+    pub(super) fn four_rows_streamed(canvas: &[u32], height: usize, y: usize, rows: [&mut [u32]; 4]) {
+        use std::arch::x86_64::{__m128i, _mm_stream_si128};
+        if rows.iter().any(|r| !(r.as_ptr() as usize).is_multiple_of(16)) {
+            return four_rows(canvas, height, y, rows);
+        }
+        four_rows_by(canvas, height, y, rows, |q, v| {
+            // SAFETY: `q` is a live, exclusively borrowed 16-byte piece of a
+            // row that starts 16-byte aligned (tested above), a whole number
+            // of pieces from the row's start, so it is aligned too.
+            unsafe { _mm_stream_si128(q.as_mut_ptr().cast::<__m128i>(), bytemuck::cast(v)) };
+        });
+    }
+
+    /// The blocks of [`four_rows`], each block row stored by `store`.
+    #[inline(always)]
+    fn four_rows_by(
+        canvas: &[u32],
+        height: usize,
+        y: usize,
+        rows: [&mut [u32]; 4],
+        store: impl Fn(&mut [u32; 4], m128i),
+    ) {
         let n = rows[0].len();
         let blocks = n / 4;
         let [r0, r1, r2, r3] = rows;
@@ -416,52 +446,9 @@ mod sse2 {
                 let texels: [u32; 4] = group[k * height + y..][..4].try_into().unwrap_or_default();
                 bytemuck::cast(texels)
             };
-            let [a, b, c, d] = transpose([column(0), column(1), column(2), column(3)]);
-            *q0 = bytemuck::cast(a);
-            *q1 = bytemuck::cast(b);
-            *q2 = bytemuck::cast(c);
-            *q3 = bytemuck::cast(d);
-        }
-        for i in blocks * 4..n {
-            for (k, row) in [&mut *r0, &mut *r1, &mut *r2, &mut *r3].into_iter().enumerate() {
-                row[i] = canvas[i * height + y + k];
-            }
-        }
-    }
-
-    /// [`four_rows`] with streaming (non-temporal) stores, where every row
-    /// piece starts on a 16-byte boundary as they require (else as
-    /// [`four_rows`]). Safe Rust has no streaming store, hence the one
-    /// `unsafe` of the renderer.
-    #[inline]
-    pub(super) fn four_rows_streamed(canvas: &[u32], height: usize, y: usize, rows: [&mut [u32]; 4]) {
-        use std::arch::x86_64::{__m128i, _mm_stream_si128};
-        if rows.iter().any(|r| !(r.as_ptr() as usize).is_multiple_of(16)) {
-            return four_rows(canvas, height, y, rows);
-        }
-        let n = rows[0].len();
-        let blocks = n / 4;
-        let [r0, r1, r2, r3] = rows;
-        let (p0, p1, p2, p3) = (
-            r0.as_chunks_mut::<4>().0,
-            r1.as_chunks_mut::<4>().0,
-            r2.as_chunks_mut::<4>().0,
-            r3.as_chunks_mut::<4>().0,
-        );
-        let groups = canvas[..blocks * 4 * height].chunks_exact(4 * height);
-        for ((((group, q0), q1), q2), q3) in
-            groups.zip(p0.iter_mut()).zip(p1.iter_mut()).zip(p2.iter_mut()).zip(p3.iter_mut())
-        {
-            let column = |k: usize| -> m128i {
-                let texels: [u32; 4] = group[k * height + y..][..4].try_into().unwrap_or_default();
-                bytemuck::cast(texels)
-            };
             let block = transpose([column(0), column(1), column(2), column(3)]);
             for (q, v) in [q0, q1, q2, q3].into_iter().zip(block) {
-                // SAFETY: `q` is a live, exclusively borrowed 16-byte run of
-                // the row, which starts 16-byte aligned (tested above), and
-                // each run is a whole number of 16 bytes from it.
-                unsafe { _mm_stream_si128(q.as_mut_ptr().cast::<__m128i>(), bytemuck::cast(v)) };
+                store(q, v);
             }
         }
         for i in blocks * 4..n {
