@@ -258,9 +258,7 @@ impl Frames {
         }
         Ok(())
     }
-}
 
-impl Frames {
     /// `--profile`'s lines: the mean per frame of the tic, the scene's
     /// update and each part of the renderer (with threads, summed over them).
     fn print_profile(&self, tic_time: std::time::Duration, tics: usize) {

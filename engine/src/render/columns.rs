@@ -385,7 +385,11 @@ pub fn present_pixels_to<'a>(canvas: &[u32], height: usize, rows: impl Iterator<
         }
     }
     #[cfg(not(target_arch = "x86_64"))]
-    present_strip(canvas, height, rows);
+    {
+        // Only x86-64's copy streams.
+        let _ = stream;
+        present_strip(canvas, height, rows);
+    }
 }
 
 #[cfg(target_arch = "x86_64")]
