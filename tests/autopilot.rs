@@ -24,8 +24,18 @@ fn map_path(rel: &str) -> std::path::PathBuf {
     root().join(rel)
 }
 
+/// The path of test map `tests/maps/autopilot_{name}.ron`.
+fn test_map(name: &str) -> std::path::PathBuf {
+    map_path(&format!("tests/maps/autopilot_{name}.ron"))
+}
+
 fn map(name: &str) -> MapRef {
-    MapRef::File(map_path(&format!("tests/maps/autopilot_{name}.ron")))
+    MapRef::File(test_map(name))
+}
+
+/// `check`'s report on test map `name` at skill 3.
+fn check_map(name: &str) -> check::Report {
+    check::report(&open_level(&test_map(name), &Default::default()).unwrap(), 3)
 }
 
 /// Plays `name` without monsters until the exit (at most a minute of game
@@ -126,7 +136,7 @@ fn the_autopilot_takes_a_teleporter() {
 /// (freedoom2's MAP28); the bot must not count on it.
 #[test]
 fn a_teleporter_to_a_multiplayer_only_destination_takes_no_one() {
-    let text = std::fs::read_to_string(map_path("tests/maps/autopilot_teleporter.ron")).unwrap();
+    let text = std::fs::read_to_string(test_map("teleporter")).unwrap();
     let only_coop = text.replace(
         r#"Thing(kind: "teleport_destination", x: 576.0, y: 128.0, angle: 0.0)"#,
         r#"Thing(kind: "teleport_destination", x: 576.0, y: 128.0, angle: 0.0, multiplayer: true)"#,
@@ -173,8 +183,7 @@ fn the_autopilot_clears_a_gap_with_a_running_jump() {
     assert!(lowest > -24.0, "the player fell into the pit (feet down to {lowest})");
     assert!(fastest > 12.0, "no run: {fastest} units a tick at most");
     // `check` finds the same way across, and the pit a soft lock.
-    let level = open_level(&map_path("tests/maps/autopilot_gap.ron"), &Default::default()).unwrap();
-    let (report, _) = check::check(level, 3);
+    let report = check_map("gap");
     assert!(report.exit_reachable, "{}", report.text());
     assert!(report.soft_locks.iter().all(|s| s.to_sector == 1), "{}", report.text());
     assert!(!report.soft_locks.is_empty(), "the pit: {}", report.text());
@@ -187,8 +196,7 @@ fn the_autopilot_leaps_a_pit_only_a_step_deep_onto_a_ledge() {
     let mut lowest = f64::MAX;
     finish("lip", |play| lowest = lowest.min(play.game.player().z));
     assert!(lowest > -24.0, "the player fell into the pit (feet down to {lowest})");
-    let level = open_level(&map_path("tests/maps/autopilot_lip.ron"), &Default::default()).unwrap();
-    let (report, _) = check::check(level, 3);
+    let report = check_map("lip");
     assert!(report.exit_reachable, "{}", report.text());
     assert!(report.soft_locks.is_empty(), "a step climbs out of the pit: {}", report.text());
 }
@@ -203,8 +211,7 @@ fn the_autopilot_crosses_stepping_stones_narrower_than_the_body() {
     let mut lowest = f64::MAX;
     finish("stones", |play| lowest = lowest.min(play.game.player().z));
     assert!(lowest > -24.0, "the player fell into the pit (feet down to {lowest})");
-    let level = open_level(&map_path("tests/maps/autopilot_stones.ron"), &Default::default()).unwrap();
-    let (report, _) = check::check(level, 3);
+    let report = check_map("stones");
     assert!(report.exit_reachable, "{}", report.text());
 }
 
@@ -319,7 +326,7 @@ fn check_counts_a_crusher_over_the_boss_brain_as_its_death() {
     assert_eq!(report.exits.len(), 4, "{text}");
     assert!(report.exits.iter().all(|e| e.reachable && e.what.contains("crushed by the crusher")), "{text}");
 
-    let mut level = open_level(&map_path("tests/maps/autopilot_brain_crusher.ron"), &Default::default()).unwrap();
+    let mut level = open_level(&test_map("brain_crusher"), &Default::default()).unwrap();
     assert!(check::report(&level, 3).exit_reachable, "{}", check::report(&level, 3).text());
     let brain = level.compiled.map.things.iter_mut().find(|t| t.kind == "boss_brain").expect("the brain");
     brain.pos = DVec2::new(448.0, 128.0);
@@ -332,8 +339,7 @@ fn check_counts_a_crusher_over_the_boss_brain_as_its_death() {
 fn check_names_a_leap_with_no_way_back_a_soft_lock_by_running_jump() {
     // A move to a cell not beside the last that crosses no teleport line
     // is a running jump; it was once named a teleport.
-    let level = open_level(&map_path("tests/maps/autopilot_leap_trap.ron"), &Default::default()).unwrap();
-    let report = check::report(&level, 3);
+    let report = check_map("leap_trap");
     assert!(report.exit_reachable, "{}", report.text());
     let how: Vec<(&str, usize)> = report.soft_locks.iter().map(|s| (s.how.as_str(), s.to_sector)).collect();
     assert!(how.contains(&("a running jump", 2)), "the leap into the trap room: {}", report.text());
@@ -343,7 +349,7 @@ fn check_names_a_leap_with_no_way_back_a_soft_lock_by_running_jump() {
 
 #[test]
 fn check_finds_the_unreachable_secret_and_the_soft_lock() {
-    let level = open_level(&map_path("tests/maps/autopilot_flawed.ron"), &Default::default()).unwrap();
+    let level = open_level(&test_map("flawed"), &Default::default()).unwrap();
     let (report, drawing) = check::check(level, 3);
     assert!(report.exit_reachable, "{}", report.text());
     assert_eq!(report.secrets.len(), 1);
@@ -381,8 +387,7 @@ fn check_finds_no_flaw_in_the_mechanism_maps() {
         "suit",
         "heal",
     ] {
-        let level = open_level(&map_path(&format!("tests/maps/autopilot_{name}.ron")), &Default::default()).unwrap();
-        let (report, _) = check::check(level, 3);
+        let report = check_map(name);
         assert!(report.exit_reachable, "{name}: {}", report.text());
         assert!(report.soft_locks.is_empty(), "{name}: {}", report.text());
         assert!(report.keys.iter().all(|k| k.reachable), "{name}: {}", report.text());
@@ -391,8 +396,7 @@ fn check_finds_no_flaw_in_the_mechanism_maps() {
 
 #[test]
 fn check_says_a_key_behind_its_own_door_is() {
-    let moved = map_path("tests/maps/autopilot_key_behind_door.ron");
-    let (report, _) = check::check(open_level(&moved, &Default::default()).unwrap(), 3);
+    let report = check_map("key_behind_door");
     assert!(!report.exit_reachable, "{}", report.text());
     assert_eq!(report.keys.len(), 1);
     assert!(!report.keys[0].reachable && report.keys[0].behind_own_door, "{}", report.text());

@@ -78,13 +78,19 @@ pub struct DrawnThing {
 }
 
 impl DrawnThing {
+    /// Whether it looks different from different sides (a monster; an
+    /// item looks the same from all eight).
+    pub fn turns(&self) -> bool {
+        self.views.iter().any(|&v| v != self.views[0])
+    }
+
     /// The view an eye at `eye` sees (Doom's R_ProjectSprite): the
     /// direction from the eye to the thing against the way it faces, in
     /// eighths centred on the eight directions. An eye in front of it sees
     /// view 0. Both renderers ask this, so their sprites agree.
     pub fn texture_seen_from(&self, eye: glam::DVec2) -> crate::texture::TextureId {
         // Most things (every item) look the same from all sides: no angle.
-        if self.views.iter().all(|&v| v == self.views[0]) {
+        if !self.turns() {
             return self.views[0];
         }
         let d = self.pos - eye;

@@ -136,9 +136,9 @@ pub fn run(args: &ReplayArgs) -> Result<()> {
     }
     let mut tic_time = std::time::Duration::ZERO;
     for t in 0..tics {
-        let tic_start = std::time::Instant::now();
+        let tic_start = args.profile.then(std::time::Instant::now);
         game.tick(&sim::demo::commands(&source.demo, t)).map_err(|e| anyhow!("{spec}: at tic {}: {e}", t + 1))?;
-        tic_time += tic_start.elapsed();
+        tic_time += tic_start.map(|t| t.elapsed()).unwrap_or_default();
         let diffs = match sync.as_mut().map(|s| s.tic(&game)) {
             None => Vec::new(),
             Some(Some(diffs)) => diffs,
@@ -246,9 +246,9 @@ impl Frames {
             self.scene = sim::draw::Scene::new(opened.links.unwrap_or_default());
         }
         let Some(view) = self.scene.view(game) else { return Ok(()) };
-        let scene_start = std::time::Instant::now();
+        let scene_start = self.options.profile.then(std::time::Instant::now);
         self.scene.draw(game, &mut self.level);
-        self.scene_time += scene_start.elapsed();
+        self.scene_time += scene_start.map(|t| t.elapsed()).unwrap_or_default();
         render_frame(&self.level, &view, &self.options, &mut self.frame, &mut self.fb);
         self.parts += self.frame.breakdown;
         self.rendered += 1;

@@ -202,13 +202,13 @@ impl NavGrid {
     pub fn leap(&self, c: Cell, d: usize, heights: &Heights, refuse: impl Fn(LineId) -> bool) -> Option<Leap> {
         let mut behind = vec![c];
         let b = back(d);
+        // The run is made on the floors as they stand at their highest
+        // (the line's floors): a lift's range, which lets a walk step on at
+        // its bottom, is no run-up at its top.
+        let level = |s: Span| Span { low: s.high, ..s };
         while behind.len() <= RUNUP_CELLS {
             let last = *behind.last().unwrap();
             let Some(n) = self.neighbour(last, b).filter(|_| self.open(last, b)) else { break };
-            // The run is made on the floors as they stand at their highest
-            // (the line's floors): a lift's range, which lets a walk step
-            // on at its bottom, is no run-up at its top.
-            let level = |s: Span| Span { low: s.high, ..s };
             let (p, q) = (level(self.span(last, heights)), level(self.span(n, heights)));
             if !NavGrid::passable(p, q)
                 || !NavGrid::passable(q, p)

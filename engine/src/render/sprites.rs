@@ -53,7 +53,7 @@ pub(crate) fn collect(level: &Level, cam: &Camera, slopes: &[f64], sprites: &mut
         // its widest view tells whether it can be in view before the
         // direction is worked out (`first_column_in` is monotone, so a
         // wider extent covers at least the columns of a narrower one).
-        if t.views.iter().any(|&v| v != t.views[0]) {
+        if t.turns() {
             let (_, x0, x1) = columns(t.views.iter().map(|&v| width(v)).fold(0.0, f64::max));
             if x0 >= x1 {
                 continue;
@@ -165,8 +165,7 @@ impl MaskedPass<'_> {
         };
         // The common case with the texel rows read as a run of the table,
         // not looked up row by row (a bounds test a texel).
-        let (open_top, open_bottom) = self.window(x, s.depth, self.cam.height as i32);
-        let (y0, y1) = (c.rows.0.max(open_top), c.rows.1.min(open_bottom));
+        let (y0, y1) = self.open_rows(x, s.depth, c.rows);
         if y0 < y1 {
             let column = c.texture.column((u as usize).min(c.texture.width - 1));
             let rows = &c.texel_rows[(y0 - c.rows.0) as usize..(y1 - c.rows.0) as usize];
@@ -227,18 +226,13 @@ impl MaskedPass<'_> {
         paint: Texels,
         translucent: bool,
     ) {
-        let (open_top, open_bottom) = self.window(x, depth, self.cam.height as i32);
         let column = texture.column(u.min(texture.width - 1));
-        let (y0, y1) = (rows.0.max(open_top), rows.1.min(open_bottom));
+        let (y0, y1) = self.open_rows(x, depth, rows);
         let texel = |y: i32| column[texel_row(y)];
         match paint {
             // The common case as one run without a branch per texel: a
             // sprite's transparent texels mispredicted at every edge.
-            Texels::Tinted(tint) if !translucent => {
-                if y0 < y1 {
-                    put_opaque(out, x, y0, (y0..y1).map(texel), tint, (depth, label));
-                }
-            }
+            Texels::Tinted(tint) if !translucent => put_opaque(out, x, y0, (y0..y1).map(texel), tint, (depth, label)),
             _ => {
                 for y in y0..y1 {
                     let t = texel(y);
@@ -276,6 +270,13 @@ impl MaskedPass<'_> {
             let event = &self.events[e as usize];
             event.top >= event.bottom && event.depth < depth
         }
+    }
+
+    /// Rows `rows` of column `x` cut to the window through which something
+    /// at `depth` can be seen there (empty when the window misses them).
+    fn open_rows(&self, x: usize, depth: f64, rows: (i32, i32)) -> (i32, i32) {
+        let (top, bottom) = self.window(x, depth, self.cam.height as i32);
+        (rows.0.max(top), rows.1.min(bottom))
     }
 
     /// Rows `[top, bottom)` of column `x` through which something at `depth`

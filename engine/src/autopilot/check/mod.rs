@@ -582,8 +582,7 @@ fn analyse(level: &Level, skill: u8, route: bool) -> (Report, Drawing) {
             }
         }
         let mut seen = BTreeSet::new();
-        for (a, b, crossed) in &edges {
-            let (a, b) = (*a, *b);
+        for &(a, b, ref crossed) in &edges {
             if finish[a as usize] && !finish[b as usize] {
                 // From the highest floor under the body before the move
                 // (the ledge), into the sector under it after.
