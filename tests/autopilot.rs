@@ -44,6 +44,13 @@ fn finish(name: &str, watch: impl FnMut(&Playthrough)) -> Playthrough {
     finish_from(name, |_| {}, watch)
 }
 
+/// [`finish`], and the player's feet never down in the pit (below -24).
+fn finish_above_the_pit(name: &str) {
+    let mut lowest = f64::MAX;
+    finish(name, |play| lowest = lowest.min(play.game.player().z));
+    assert!(lowest > -24.0, "the player fell into the pit (feet down to {lowest})");
+}
+
 /// [`finish`] with the game changed by `setup` before the bot starts.
 fn finish_from(name: &str, setup: impl FnOnce(&mut Playthrough), mut watch: impl FnMut(&Playthrough)) -> Playthrough {
     let options = GameOptions { no_monsters: true, ..GameOptions::default() };
@@ -193,9 +200,7 @@ fn the_autopilot_clears_a_gap_with_a_running_jump() {
 fn the_autopilot_leaps_a_pit_only_a_step_deep_onto_a_ledge() {
     // The pit is a step below the start, so walking into it is no drop;
     // its far side is a ledge, so only a run from the start clears it.
-    let mut lowest = f64::MAX;
-    finish("lip", |play| lowest = lowest.min(play.game.player().z));
-    assert!(lowest > -24.0, "the player fell into the pit (feet down to {lowest})");
+    finish_above_the_pit("lip");
     let report = check_map("lip");
     assert!(report.exit_reachable, "{}", report.text());
     assert!(report.soft_locks.is_empty(), "a step climbs out of the pit: {}", report.text());
@@ -208,9 +213,7 @@ fn the_autopilot_crosses_stepping_stones_narrower_than_the_body() {
     // corner, so no one run carries from the ledge to the exit room. The
     // bot once walked back to a run-up's start on a stone coasting, and
     // slid off its far side.
-    let mut lowest = f64::MAX;
-    finish("stones", |play| lowest = lowest.min(play.game.player().z));
-    assert!(lowest > -24.0, "the player fell into the pit (feet down to {lowest})");
+    finish_above_the_pit("stones");
     let report = check_map("stones");
     assert!(report.exit_reachable, "{}", report.text());
 }
