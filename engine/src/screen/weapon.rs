@@ -64,16 +64,34 @@ fn blit(
         let t = ((p as f64 + 0.5 - origin) / s).floor();
         (t >= 0.0 && t < size as f64).then_some(t as usize)
     };
+    // The texel row of each screen row and the texel column of each screen
+    // column, found once for the whole picture.
     let rows: Vec<(usize, usize)> =
         span(y0, v0, v1, fb.height).filter_map(|py| texel(py, y0, texture.height).map(|v| (py, v))).collect();
-    for px in span(x0, u0, u1, fb.width) {
-        let Some(u) = texel(px, x0, texture.width) else { continue };
-        let column = texture.column(u);
-        for &(py, v) in &rows {
-            let [r, g, b, a] = column[v].to_le_bytes();
-            if a >= 128 {
-                fb.pixels[py * fb.width + px] = u32::from_le_bytes([d(r), d(g), d(b), 255]);
+    let columns: Vec<(usize, &[u32])> = span(x0, u0, u1, fb.width)
+        .filter_map(|px| texel(px, x0, texture.width).map(|u| (px, texture.column(u))))
+        .collect();
+    // Texel columns are whole from the first shown to the last, so the
+    // screen columns they cover are one run.
+    let Some(&(first, _)) = columns.first() else { return };
+    debug_assert!(columns.iter().enumerate().all(|(i, &(px, _))| px == first + i));
+    // Each texel row lit once into `line` (0 where the picture is clear),
+    // then laid on every screen row it covers as one run the compiler
+    // keeps in vector registers. Writing pixel by pixel, branching on each
+    // texel's alpha, cost 9% of a 640x480 ViZDoom frame.
+    let mut line = vec![0u32; columns.len()];
+    let mut lit_row = usize::MAX;
+    for &(py, v) in &rows {
+        if v != lit_row {
+            for (lit, &(_, column)) in line.iter_mut().zip(&columns) {
+                let [r, g, b, a] = column[v].to_le_bytes();
+                *lit = if a >= 128 { u32::from_le_bytes([d(r), d(g), d(b), 255]) } else { 0 };
             }
+            lit_row = v;
+        }
+        let row = &mut fb.pixels[py * fb.width + first..][..line.len()];
+        for (pixel, &lit) in row.iter_mut().zip(&line) {
+            *pixel = if lit >> 24 != 0 { lit } else { *pixel };
         }
     }
 }
