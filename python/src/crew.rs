@@ -27,6 +27,8 @@ use std::time::{Duration, Instant};
 
 use pyo3::PyResult;
 
+use sightline::scenario::observe::Observer;
+
 use crate::env::Env;
 
 /// What a call asks of every game.
@@ -56,21 +58,22 @@ pub struct Slot {
 
 impl Slot {
     /// Runs `task`, drawing into `out` (the game's part of the call's
-    /// output; empty for a task that draws nothing).
-    fn run(&mut self, task: Task, out: &mut [u8]) {
+    /// output; empty for a task that draws nothing) with `observer`, the
+    /// thread's.
+    fn run(&mut self, task: Task, out: &mut [u8], observer: &mut Observer) {
         self.result = match task {
             Task::Step { tics, screen } => match self.env.step(&self.action, tics) {
                 Ok(reward) => {
                     self.reward = reward;
                     if screen {
-                        self.env.screen_into(out)
+                        self.env.screen_into_using(observer, out)
                     } else {
                         Ok(())
                     }
                 }
                 Err(e) => Err(e),
             },
-            Task::Screen => self.env.screen_into(out),
+            Task::Screen => self.env.screen_into_using(observer, out),
             Task::Expert => self.env.expert_action().map(|a| self.expert = a),
         };
     }
@@ -122,6 +125,8 @@ const WATCH: Duration = Duration::from_micros(300);
 
 struct Shared {
     games: Vec<Mutex<Slot>>,
+    /// Each thread's observer, the caller's first ([`Env::screen_into_using`]).
+    observers: Vec<Mutex<Observer>>,
     round: Mutex<Round>,
     /// The round's generation, readable without the lock (a watching
     /// helper's); written only with the round locked.
@@ -138,15 +143,17 @@ fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
 
 impl Shared {
     /// Takes and plays games of call `generation` until none is left to
-    /// take. Returns with the round locked.
-    fn work<'a>(&'a self, mut round: MutexGuard<'a, Round>, generation: u64) -> MutexGuard<'a, Round> {
+    /// take, as thread `worker` (0: the caller). Returns with the round
+    /// locked.
+    fn work<'a>(&'a self, mut round: MutexGuard<'a, Round>, generation: u64, worker: usize) -> MutexGuard<'a, Round> {
+        let mut observer = lock(&self.observers[worker]);
         while round.generation == generation && round.next < self.games.len() {
             let (i, task, out) = (round.next, round.task, round.out);
             round.next += 1;
             drop(round);
             // SAFETY: game `i` is taken once this call (`round.next` moves
             // past it under the lock), and the call waits for it.
-            lock(&self.games[i]).run(task, unsafe { out.part(i) });
+            lock(&self.games[i]).run(task, unsafe { out.part(i) }, &mut observer);
             round = lock(&self.round);
             round.left -= 1;
             if round.left == 0 {
@@ -156,7 +163,7 @@ impl Shared {
         round
     }
 
-    fn helper(&self) {
+    fn helper(&self, worker: usize) {
         let mut seen = 0;
         let mut round = lock(&self.round);
         loop {
@@ -175,7 +182,7 @@ impl Shared {
                 return;
             }
             seen = round.generation;
-            round = self.work(round, seen);
+            round = self.work(round, seen, worker);
         }
     }
 }
@@ -192,6 +199,10 @@ impl Crew {
     pub fn new(envs: Vec<Env>, threads: usize) -> std::io::Result<Crew> {
         let threads = if threads == 0 { std::thread::available_parallelism().map_or(1, usize::from) } else { threads };
         let helpers = threads.saturating_sub(1).min(envs.len().saturating_sub(1));
+        let observers = match envs.first() {
+            Some(env) => (0..=helpers).map(|_| Mutex::new(Observer::new(env.config(), 1))).collect(),
+            None => Vec::new(),
+        };
         let games = envs
             .into_iter()
             .map(|env| {
@@ -209,6 +220,7 @@ impl Crew {
         };
         let shared = Arc::new(Shared {
             games,
+            observers,
             round: Mutex::new(round),
             generation: AtomicU64::new(0),
             start: Condvar::new(),
@@ -218,7 +230,7 @@ impl Crew {
         for k in 0..helpers {
             let shared = crew.shared.clone();
             let handle =
-                std::thread::Builder::new().name(format!("sightline-games-{k}")).spawn(move || shared.helper())?;
+                std::thread::Builder::new().name(format!("sightline-games-{k}")).spawn(move || shared.helper(k + 1))?;
             crew.helpers.push(handle);
         }
         Ok(crew)
@@ -256,7 +268,7 @@ impl Crew {
         if !self.helpers.is_empty() {
             shared.start.notify_all();
         }
-        let mut round = shared.work(round, generation);
+        let mut round = shared.work(round, generation, 0);
         while round.left > 0 {
             round = shared.done.wait(round).unwrap_or_else(PoisonError::into_inner);
         }
