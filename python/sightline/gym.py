@@ -240,9 +240,11 @@ class SightlineEnv(gym.Env):
     def _observe(self) -> dict:
         state = self.game.get_state()
         if state is None:
-            return {k: _empty(s) for k, s in self.observation_space.spaces.items()} | (
-                {"screen": self._last_screen} if self._last_screen is not None else {}
-            )
+            # The episode is over: ViZDoom gives no state, but the game's
+            # last frame is there to see (the death or the exit), as the
+            # vector environment gives it; the rest is empty.
+            self._last_screen = self._spec.screen(self.game._running().screen())
+            return {k: _empty(s) for k, s in self.observation_space.spaces.items()} | {"screen": self._last_screen}
         obs = {"screen": self._spec.screen(state.screen_buffer)}
         if "depth" in self.observation_space.spaces:
             obs["depth"] = state.depth_buffer[:, :, None]
@@ -373,9 +375,12 @@ class SightlineVectorEnv(gym.vector.VectorEnv):
             obs["gamevariables"] = self._games.game_variables().astype(np.float32)
         return obs
 
-    def _new_episode(self, i: int) -> None:
+    def _next_seed(self, i: int) -> int:
         # As SightlineEnv.reset draws its game's seed.
-        self._games.new_episode(i, int(self._rngs[i].integers(0, 2**31 - 1)))
+        return int(self._rngs[i].integers(0, 2**31 - 1))
+
+    def _new_episode(self, i: int) -> None:
+        self._games.new_episode(i, self._next_seed(i))
 
     def reset(self, *, seed: Optional[int] = None, options: Optional[dict] = None):
         """Starts every game anew; ``seed`` seeds game ``i`` as
@@ -395,18 +400,14 @@ class SightlineVectorEnv(gym.vector.VectorEnv):
             else:
                 one = actions[i]
             rows[i] = self._spec.to_buttons(one)
-        # A game whose episode ended last step takes no action (its
-        # episode is over, so the step plays nothing) and starts anew.
+        # A game whose episode ended last step takes no action: it starts
+        # anew (its seed drawn as SightlineEnv.reset draws it) on the
+        # games' threads, in the same pass that steps the others and draws
+        # every screen.
         resetting = self._needs_reset.copy()
-        if resetting.any():
-            rewards, _ = self._games.step(rows, self.frame_skip)
-            for i in np.flatnonzero(resetting):
-                self._new_episode(int(i))
-            obs = self._observe()
-        else:
-            # The usual step: the tics and the screens in one pass.
-            rewards, _, screens = self._games.step_screens(rows, self.frame_skip)
-            obs = self._observe(screens)
+        resets = [self._next_seed(i) if resetting[i] else None for i in range(self.num_envs)] if resetting.any() else None
+        rewards, _, screens = self._games.step_screens(rows, self.frame_skip, resets)
+        obs = self._observe(screens)
         rewards = np.where(resetting, 0.0, rewards)
         ends = self._games.ends()
         truncated = np.array([e == "timeout" for e in ends]) & ~resetting

@@ -34,8 +34,9 @@ use crate::env::Env;
 /// What a call asks of every game.
 #[derive(Clone, Copy, Debug)]
 pub enum Task {
-    /// Play `tics` tics holding the game's `action`; then, if `screen`,
-    /// draw the screen into the game's part of the call's output.
+    /// Play `tics` tics holding the game's `action` (or start the new
+    /// episode its `reset` asks for); then, if `screen`, draw the screen
+    /// into the game's part of the call's output.
     Step { tics: u32, screen: bool },
     /// Draw the screen into the game's part of the call's output.
     Screen,
@@ -48,6 +49,9 @@ pub struct Slot {
     pub env: Env,
     /// The action the next step holds.
     pub action: Vec<f64>,
+    /// A seed for the next step to start a new episode with instead of
+    /// playing (taken by that step).
+    pub reset: Option<u64>,
     /// The last step's reward.
     pub reward: f64,
     /// The autopilot's last action.
@@ -62,17 +66,20 @@ impl Slot {
     /// thread's.
     fn run(&mut self, task: Task, out: &mut [u8], observer: &mut Observer) {
         self.result = match task {
-            Task::Step { tics, screen } => match self.env.step(&self.action, tics) {
-                Ok(reward) => {
+            Task::Step { tics, screen } => {
+                let played = match self.reset.take() {
+                    Some(seed) => self.env.new_episode(seed).map(|()| 0.0),
+                    None => self.env.step(&self.action, tics),
+                };
+                played.and_then(|reward| {
                     self.reward = reward;
                     if screen {
                         self.env.screen_into_using(observer, out)
                     } else {
                         Ok(())
                     }
-                }
-                Err(e) => Err(e),
-            },
+                })
+            }
             Task::Screen => self.env.screen_into_using(observer, out),
             Task::Expert => self.env.expert_action().map(|a| self.expert = a),
         };
@@ -207,7 +214,7 @@ impl Crew {
             .into_iter()
             .map(|env| {
                 let action = vec![0.0; env.config().available_buttons.len()];
-                Mutex::new(Slot { env, action, reward: 0.0, expert: Vec::new(), result: Ok(()) })
+                Mutex::new(Slot { env, action, reset: None, reward: 0.0, expert: Vec::new(), result: Ok(()) })
             })
             .collect();
         let round = Round {

@@ -399,17 +399,26 @@ impl Games {
         Ok(Games { crew, spare: None })
     }
 
-    /// Checks the actions' rows, one per game, and gives each game its row.
-    fn set_actions(&self, actions: &PyReadonlyArray2<'_, f64>) -> PyResult<()> {
+    /// Checks the actions' rows, one per game, and gives each game its row;
+    /// and `resets`, if given, one entry per game: a seed for a game to
+    /// start a new episode with instead of playing the step, or None.
+    fn set_actions(&self, actions: &PyReadonlyArray2<'_, f64>, resets: Option<Vec<Option<u64>>>) -> PyResult<()> {
         let actions = actions.as_array();
-        if actions.nrows() != self.crew.len() {
-            let (rows, n) = (actions.nrows(), self.crew.len());
+        let n = self.crew.len();
+        if actions.nrows() != n {
+            let rows = actions.nrows();
             return Err(PyValueError::new_err(format!("actions has {rows} rows for {n} games")));
         }
-        for (mut slot, row) in self.crew.slots().zip(actions.rows()) {
+        if let Some(resets) = &resets {
+            if resets.len() != n {
+                return Err(PyValueError::new_err(format!("resets has {} entries for {n} games", resets.len())));
+            }
+        }
+        for (i, (mut slot, row)) in self.crew.slots().zip(actions.rows()).enumerate() {
             slot.action.clear();
             slot.action.extend(row.iter());
             slot.env.check_action(&slot.action)?;
+            slot.reset = resets.as_ref().and_then(|r| r[i]);
         }
         Ok(())
     }
@@ -498,15 +507,18 @@ impl Games {
 
     /// Plays `tics` tics in every game, game `i` holding row `i` of
     /// `actions`; returns each game's reward and whether its episode has
-    /// ended.
-    #[pyo3(signature = (actions, tics=1))]
+    /// ended. `resets` (one entry per game, a seed or None) starts game
+    /// `i` on a new episode seeded by `resets[i]` instead of playing its
+    /// step (its reward is 0): Gymnasium's autoreset on the games' threads.
+    #[pyo3(signature = (actions, tics=1, resets=None))]
     fn step<'py>(
         &mut self,
         py: Python<'py>,
         actions: PyReadonlyArray2<'py, f64>,
         tics: u32,
+        resets: Option<Vec<Option<u64>>>,
     ) -> PyResult<(Bound<'py, PyArrayDyn<f64>>, Bound<'py, PyArrayDyn<bool>>)> {
-        self.set_actions(&actions)?;
+        self.set_actions(&actions, resets)?;
         let (rewards, done) = self.play(py, tics, &mut [])?;
         Ok((array(py, &[rewards.len()], rewards)?, array(py, &[done.len()], done)?))
     }
@@ -514,15 +526,16 @@ impl Games {
     /// [`Games::step`] and [`Games::screens`] in one pass over the games'
     /// threads (each game plays its tics and draws its screen in one
     /// task): the rewards, whether each episode has ended, the screens.
-    #[pyo3(signature = (actions, tics=1))]
+    #[pyo3(signature = (actions, tics=1, resets=None))]
     #[allow(clippy::type_complexity)]
     fn step_screens<'py>(
         &mut self,
         py: Python<'py>,
         actions: PyReadonlyArray2<'py, f64>,
         tics: u32,
+        resets: Option<Vec<Option<u64>>>,
     ) -> PyResult<(Bound<'py, PyArrayDyn<f64>>, Bound<'py, PyArrayDyn<bool>>, Bound<'py, PyArrayDyn<u8>>)> {
-        self.set_actions(&actions)?;
+        self.set_actions(&actions, resets)?;
         let (rewards, done, screens) = self.draw(py, |games, py, bytes| games.play(py, tics, bytes))?;
         Ok((array(py, &[rewards.len()], rewards)?, array(py, &[done.len()], done)?, screens))
     }

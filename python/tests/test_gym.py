@@ -76,23 +76,31 @@ def test_reset_seed_replays(scenarios):
     env.close()
 
 
+# Tics an episode of the rollouts below may last: short, so that every game
+# ends episodes and starts new ones (the autoreset) within the rollout.
+EPISODE = 45
+
+
 def _single_rollouts(n, seed, actions):
     out = []
     for i in range(n):
-        env = sgym.SightlineEnv("defend_the_center", max_buttons_pressed=1, screen_resolution="RES_160X120")
+        env = sgym.SightlineEnv(
+            "defend_the_center", max_buttons_pressed=1, screen_resolution="RES_160X120", episode_timeout=EPISODE
+        )
         obs, _ = env.reset(seed=seed + i)
         frames = [obs["screen"].tobytes()]
         rewards = []
-        done = False
+        done, resets = False, 0
         for a in actions[:, i]:
             if done:  # the vector environment's next-step autoreset
                 obs, _ = env.reset()
-                r, done = 0.0, False
+                r, done, resets = 0.0, False, resets + 1
             else:
                 obs, r, term, trunc, _ = env.step(int(a))
                 done = term or trunc
             frames.append(obs["screen"].tobytes())
             rewards.append(r)
+        assert resets >= 2, f"game {i}: the rollout should start new episodes"
         out.append((frames, rewards))
         env.close()
     return out
@@ -100,7 +108,12 @@ def _single_rollouts(n, seed, actions):
 
 def _vector_rollouts(n, seed, actions, threads):
     venv = sgym.SightlineVectorEnv(
-        "defend_the_center", n, max_buttons_pressed=1, threads=threads, screen_resolution="RES_160X120"
+        "defend_the_center",
+        n,
+        max_buttons_pressed=1,
+        threads=threads,
+        screen_resolution="RES_160X120",
+        episode_timeout=EPISODE,
     )
     obs, _ = venv.reset(seed=seed)
     frames = [[obs["screen"][i].tobytes()] for i in range(n)]
