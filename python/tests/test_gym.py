@@ -2,6 +2,8 @@
 spaces, seeding, and the vector environment against single ones, byte
 for byte and whatever its thread count."""
 
+import os
+
 import gymnasium as gym
 import numpy as np
 import pytest
@@ -135,3 +137,34 @@ def test_vector_env_matches_single_envs_byte_for_byte(scenarios):
     two_threads = _vector_rollouts(n, 100, actions, threads=2)
     assert one_thread == single
     assert two_threads == single
+
+
+def test_games_resets_and_their_bad_calls(scenarios):
+    import sightline
+
+    config = sightline.Config()
+    config.load(os.path.join(scenarios, "basic.cfg"))
+    config.apply("screen_resolution = RES_160X120", "<test>")
+    games = sightline.Games(config, 2, threads=2)
+    games.new_episode(0, 1)
+    games.new_episode(1, 2)
+    act = np.zeros((2, 3))
+    _, _, first = games.step_screens(act, 4)
+    kept = first.copy()
+    # The array a call returned is never drawn into again while Python
+    # holds it; one let go of may be.
+    _, _, second = games.step_screens(act, 4)
+    assert np.array_equal(first, kept)
+    assert second is not first
+    # A reset seeded as new_episode seeds it gives the same screen.
+    rewards, done, screens = games.step_screens(act, 4, [7, None])
+    assert rewards[0] == 0.0 and not done[0]
+    fresh = sightline.Games(config, 1, threads=1)
+    fresh.new_episode(0, 7)
+    assert np.array_equal(screens[0], fresh.screens()[0])
+    with pytest.raises(ValueError, match="resets has 1 entries for 2 games"):
+        games.step(act, 1, [None])
+    with pytest.raises(ValueError, match="actions has 3 rows for 2 games"):
+        games.step(np.zeros((3, 3)), 1)
+    with pytest.raises(TypeError):
+        games.step(act, 1, ["soon", None])
