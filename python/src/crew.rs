@@ -20,7 +20,7 @@
 //! the next call at all (basic at 160x120, four games on two cores: 1.18
 //! times one game's steps a second with sleeping helpers).
 
-use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
 use std::sync::{Arc, Condvar, Mutex, MutexGuard, PoisonError};
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
@@ -138,6 +138,10 @@ struct Shared {
     /// The round's generation, readable without the lock (a watching
     /// helper's); written only with the round locked.
     generation: AtomicU64,
+    /// The round's games not finished, readable without the lock (the
+    /// caller's, watching for the helpers' last games); written only with
+    /// the round locked.
+    left: AtomicUsize,
     /// Signalled when a call starts (or the crew quits).
     start: Condvar,
     /// Signalled when a call's last game is finished.
@@ -163,6 +167,7 @@ impl Shared {
             lock(&self.games[i]).run(task, unsafe { out.part(i) }, &mut observer);
             round = lock(&self.round);
             round.left -= 1;
+            self.left.store(round.left, Ordering::Release);
             if round.left == 0 {
                 self.done.notify_one();
             }
@@ -230,6 +235,7 @@ impl Crew {
             observers,
             round: Mutex::new(round),
             generation: AtomicU64::new(0),
+            left: AtomicUsize::new(0),
             start: Condvar::new(),
             done: Condvar::new(),
         });
@@ -275,7 +281,21 @@ impl Crew {
         if !self.helpers.is_empty() {
             shared.start.notify_all();
         }
+        shared.left.store(round.left, Ordering::Release);
         let mut round = shared.work(round, generation, 0);
+        if round.left > 0 {
+            // A helper is finishing the call's last games: watch for the
+            // end before sleeping, as the helpers watch for a call (a
+            // sleeping caller woken by the last game's end came back tens
+            // of microseconds late on this VM, at 160x120 a fifth of a
+            // four-game call).
+            drop(round);
+            let since = Instant::now();
+            while shared.left.load(Ordering::Acquire) > 0 && since.elapsed() < WATCH {
+                std::hint::spin_loop();
+            }
+            round = lock(&shared.round);
+        }
         while round.left > 0 {
             round = shared.done.wait(round).unwrap_or_else(PoisonError::into_inner);
         }
