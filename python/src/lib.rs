@@ -383,6 +383,9 @@ impl Game {
 
 /// Many games of one scenario, stepped together by the calling thread and
 /// helper threads ([`crew`]).
+/// Each game's reward from a step, and whether its episode has ended.
+type Played = (Vec<f64>, Vec<bool>);
+
 #[pyclass(module = "sightline._native")]
 struct Games {
     crew: crew::Crew,
@@ -426,7 +429,7 @@ impl Games {
     /// Plays `tics` tics in every game (drawing each screen into its part
     /// of `out` too, if it is not empty): the rewards and whether each
     /// episode has ended.
-    fn play(&self, py: Python<'_>, tics: u32, out: &mut [u8]) -> PyResult<(Vec<f64>, Vec<bool>)> {
+    fn play(&self, py: Python<'_>, tics: u32, out: &mut [u8]) -> PyResult<Played> {
         let crew = &self.crew;
         let screen = !out.is_empty();
         py.detach(|| crew.run(crew::Task::Step { tics, screen }, out));
@@ -463,16 +466,16 @@ impl Games {
     fn draw<'py>(
         &mut self,
         py: Python<'py>,
-        task: impl FnOnce(&Games, Python<'_>, &mut [u8]) -> PyResult<(Vec<f64>, Vec<bool>)>,
-    ) -> PyResult<(Vec<f64>, Vec<bool>, Bound<'py, PyArrayDyn<u8>>)> {
+        task: impl FnOnce(&Games, Python<'_>, &mut [u8]) -> PyResult<Played>,
+    ) -> PyResult<(Played, Bound<'py, PyArrayDyn<u8>>)> {
         let screens = self.screens_array(py);
-        let (rewards, done) = {
+        let played = {
             let mut bytes = screens.try_readwrite().map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
             let bytes = bytes.as_slice_mut().map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
             task(self, py, bytes)?
         };
         self.spare = Some(screens.clone().unbind());
-        Ok((rewards, done, screens))
+        Ok((played, screens))
     }
 }
 
@@ -536,14 +539,14 @@ impl Games {
         resets: Option<Vec<Option<u64>>>,
     ) -> PyResult<(Bound<'py, PyArrayDyn<f64>>, Bound<'py, PyArrayDyn<bool>>, Bound<'py, PyArrayDyn<u8>>)> {
         self.set_actions(&actions, resets)?;
-        let (rewards, done, screens) = self.draw(py, |games, py, bytes| games.play(py, tics, bytes))?;
+        let ((rewards, done), screens) = self.draw(py, |games, py, bytes| games.play(py, tics, bytes))?;
         Ok((array(py, &[rewards.len()], rewards)?, array(py, &[done.len()], done)?, screens))
     }
 
     /// Every game's screen, stacked on a first axis (each game draws into
     /// its part of one array, on the games' threads).
     fn screens<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<u8>>> {
-        let (_, _, screens) = self.draw(py, |games, py, bytes| {
+        let (_, screens) = self.draw(py, |games, py, bytes| {
             let crew = &games.crew;
             py.detach(|| crew.run(crew::Task::Screen, bytes));
             for mut slot in crew.slots() {
