@@ -125,6 +125,11 @@ struct Round {
     next: usize,
     left: usize,
     quit: bool,
+    /// Helpers asleep on `start`, and whether the caller is asleep on
+    /// `done`: a signal no one waits for is not sent (each is a system
+    /// call, and most calls find everyone watching).
+    sleeping_helpers: usize,
+    caller_sleeps: bool,
 }
 
 /// How long a helper watches for the next call before it sleeps.
@@ -168,7 +173,7 @@ impl Shared {
             round = lock(&self.round);
             round.left -= 1;
             self.left.store(round.left, Ordering::Release);
-            if round.left == 0 {
+            if round.left == 0 && round.caller_sleeps {
                 self.done.notify_one();
             }
         }
@@ -188,7 +193,9 @@ impl Shared {
                 round = lock(&self.round);
             }
             while round.generation == seen && !round.quit {
+                round.sleeping_helpers += 1;
                 round = self.start.wait(round).unwrap_or_else(PoisonError::into_inner);
+                round.sleeping_helpers -= 1;
             }
             if round.quit {
                 return;
@@ -229,6 +236,8 @@ impl Crew {
             next: 0,
             left: 0,
             quit: false,
+            sleeping_helpers: 0,
+            caller_sleeps: false,
         };
         let shared = Arc::new(Shared {
             games,
@@ -278,7 +287,7 @@ impl Crew {
         round.next = 0;
         round.left = shared.games.len();
         let generation = round.generation;
-        if !self.helpers.is_empty() {
+        if round.sleeping_helpers > 0 {
             shared.start.notify_all();
         }
         shared.left.store(round.left, Ordering::Release);
@@ -297,7 +306,9 @@ impl Crew {
             round = lock(&shared.round);
         }
         while round.left > 0 {
+            round.caller_sleeps = true;
             round = shared.done.wait(round).unwrap_or_else(PoisonError::into_inner);
+            round.caller_sleeps = false;
         }
         round.out = Output { start: std::ptr::null_mut(), each: 0 };
     }
