@@ -19,7 +19,7 @@ use sightline::play::lmp::VanillaDemo;
 use sightline::play::syncdump::SyncDump;
 use sightline::play::vanilla::{demo_of, open_demo};
 use sightline::play::{GameOptions, TickInput};
-use sightline::render::{render_frame, Breakdown, Frame, RenderOptions};
+use sightline::render::{render_frame, Breakdown, Frame, Lap, RenderOptions};
 use sightline::sim::demo::{DemoGame, SyncCheck};
 use sightline::sim::{self, Sim};
 use sightline::Framebuffer;
@@ -134,11 +134,11 @@ pub fn run(args: &ReplayArgs) -> Result<()> {
     if let Some(f) = &mut frames {
         f.tic(&game, 0, tics == 0)?;
     }
-    let mut tic_time = std::time::Duration::ZERO;
+    let mut tic_ns = 0;
     for t in 0..tics {
-        let tic_start = args.profile.then(std::time::Instant::now);
+        let tic_lap = Lap::start(args.profile);
         game.tick(&sim::demo::commands(&source.demo, t)).map_err(|e| anyhow!("{spec}: at tic {}: {e}", t + 1))?;
-        tic_time += tic_start.map(|t| t.elapsed()).unwrap_or_default();
+        tic_ns += tic_lap.ns();
         let diffs = match sync.as_mut().map(|s| s.tic(&game)) {
             None => Vec::new(),
             Some(Some(diffs)) => diffs,
@@ -169,7 +169,7 @@ pub fn run(args: &ReplayArgs) -> Result<()> {
                 wall.as_secs_f64() * 1000.0 / frames
             );
             if args.profile {
-                f.print_profile(tic_time, tics);
+                f.print_profile(tic_ns, tics);
             }
         }
         if f.written > 0 {
@@ -202,7 +202,7 @@ struct Frames {
     written: usize,
     /// With `--profile`: the scene's updates from the game, and the
     /// renderer's parts, summed over the frames.
-    scene_time: std::time::Duration,
+    scene_ns: u64,
     parts: Breakdown,
 }
 
@@ -226,7 +226,7 @@ impl Frames {
             dir,
             rendered: 0,
             written: 0,
-            scene_time: std::time::Duration::ZERO,
+            scene_ns: 0,
             parts: Breakdown::default(),
         })
     }
@@ -246,9 +246,9 @@ impl Frames {
             self.scene = sim::draw::Scene::new(opened.links.unwrap_or_default());
         }
         let Some(view) = self.scene.view(game) else { return Ok(()) };
-        let scene_start = self.options.profile.then(std::time::Instant::now);
+        let scene_lap = Lap::start(self.options.profile);
         self.scene.draw(game, &mut self.level);
-        self.scene_time += scene_start.map(|t| t.elapsed()).unwrap_or_default();
+        self.scene_ns += scene_lap.ns();
         render_frame(&self.level, &view, &self.options, &mut self.frame, &mut self.fb);
         self.parts += self.frame.breakdown;
         self.rendered += 1;
@@ -261,13 +261,10 @@ impl Frames {
 
     /// `--profile`'s lines: the mean per frame of the tic, the scene's
     /// update and each part of the renderer (with threads, summed over them).
-    fn print_profile(&self, tic_time: std::time::Duration, tics: usize) {
+    fn print_profile(&self, tic_ns: u64, tics: usize) {
         let frames = self.rendered.max(1) as f64;
         let ms = |ns: f64| ns / 1e6 / frames;
-        let mut rows = vec![
-            ("tic", tic_time.as_nanos() as f64 * frames / tics.max(1) as f64),
-            ("scene", self.scene_time.as_nanos() as f64),
-        ];
+        let mut rows = vec![("tic", tic_ns as f64 * frames / tics.max(1) as f64), ("scene", self.scene_ns as f64)];
         rows.extend(self.parts.parts().iter().map(|&(name, ns)| (name, ns as f64)));
         let total: f64 = rows.iter().map(|r| r.1).sum::<f64>().max(1.0);
         println!("breakdown (mean per frame; the tic's time is per tic):");

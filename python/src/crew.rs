@@ -116,14 +116,13 @@ impl Output {
     }
 }
 
-/// The current call: which one it is, its task, the next game no one has
-/// taken and how many games are not finished.
+/// The current call: which one it is, its task and the next game no one
+/// has taken (how many are not finished is [`Shared::left`]).
 struct Round {
     generation: u64,
     task: Task,
     out: Output,
     next: usize,
-    left: usize,
     quit: bool,
     /// Helpers asleep on `start`, and whether the caller is asleep on
     /// `done`: a signal no one waits for is not sent (each is a system
@@ -132,8 +131,16 @@ struct Round {
     caller_sleeps: bool,
 }
 
-/// How long a helper watches for the next call before it sleeps.
+/// How long a thread watches for what it waits on before it sleeps.
 const WATCH: Duration = Duration::from_micros(300);
+
+/// Spins until `done` or [`WATCH`] has passed.
+fn watch(done: impl Fn() -> bool) {
+    let since = Instant::now();
+    while !done() && since.elapsed() < WATCH {
+        std::hint::spin_loop();
+    }
+}
 
 struct Shared {
     games: Vec<Mutex<Slot>>,
@@ -143,9 +150,9 @@ struct Shared {
     /// The round's generation, readable without the lock (a watching
     /// helper's); written only with the round locked.
     generation: AtomicU64,
-    /// The round's games not finished, readable without the lock (the
-    /// caller's, watching for the helpers' last games); written only with
-    /// the round locked.
+    /// The round's games not finished: read without the lock by the
+    /// caller watching for the helpers' last games; changed only with the
+    /// round locked, so a sleeper on `done` cannot miss its end.
     left: AtomicUsize,
     /// Signalled when a call starts (or the crew quits).
     start: Condvar,
@@ -171,9 +178,8 @@ impl Shared {
             // past it under the lock), and the call waits for it.
             lock(&self.games[i]).run(task, unsafe { out.part(i) }, &mut observer);
             round = lock(&self.round);
-            round.left -= 1;
-            self.left.store(round.left, Ordering::Release);
-            if round.left == 0 && round.caller_sleeps {
+            let left = self.left.fetch_sub(1, Ordering::AcqRel) - 1;
+            if left == 0 && round.caller_sleeps {
                 self.done.notify_one();
             }
         }
@@ -186,10 +192,7 @@ impl Shared {
         loop {
             if round.generation == seen && !round.quit {
                 drop(round);
-                let since = Instant::now();
-                while self.generation.load(Ordering::Acquire) == seen && since.elapsed() < WATCH {
-                    std::hint::spin_loop();
-                }
+                watch(|| self.generation.load(Ordering::Acquire) != seen);
                 round = lock(&self.round);
             }
             while round.generation == seen && !round.quit {
@@ -234,7 +237,6 @@ impl Crew {
             task: Task::Screen,
             out: Output { start: std::ptr::null_mut(), each: 0 },
             next: 0,
-            left: 0,
             quit: false,
             sleeping_helpers: 0,
             caller_sleeps: false,
@@ -285,27 +287,24 @@ impl Crew {
         round.task = task;
         round.out = Output { start: out.as_mut_ptr(), each };
         round.next = 0;
-        round.left = shared.games.len();
+        shared.left.store(shared.games.len(), Ordering::Release);
         let generation = round.generation;
         if round.sleeping_helpers > 0 {
             shared.start.notify_all();
         }
-        shared.left.store(round.left, Ordering::Release);
+        let unfinished = || shared.left.load(Ordering::Acquire) > 0;
         let mut round = shared.work(round, generation, 0);
-        if round.left > 0 {
+        if unfinished() {
             // A helper is finishing the call's last games: watch for the
             // end before sleeping, as the helpers watch for a call (a
             // sleeping caller woken by the last game's end came back tens
             // of microseconds late on this VM, at 160x120 a fifth of a
             // four-game call).
             drop(round);
-            let since = Instant::now();
-            while shared.left.load(Ordering::Acquire) > 0 && since.elapsed() < WATCH {
-                std::hint::spin_loop();
-            }
+            watch(|| !unfinished());
             round = lock(&shared.round);
         }
-        while round.left > 0 {
+        while unfinished() {
             round.caller_sleeps = true;
             round = shared.done.wait(round).unwrap_or_else(PoisonError::into_inner);
             round.caller_sleeps = false;

@@ -109,19 +109,20 @@ impl std::ops::AddAssign for Breakdown {
     }
 }
 
-/// A stopwatch that runs only when the frame is profiled.
+/// A stopwatch that runs only when the frame is profiled (or, in
+/// `replay --profile`, the game around it).
 #[derive(Clone, Copy)]
-pub(crate) struct Lap(Option<std::time::Instant>);
+pub struct Lap(Option<std::time::Instant>);
 
 impl Lap {
     #[inline]
-    pub(crate) fn start(profile: bool) -> Lap {
+    pub fn start(profile: bool) -> Lap {
         Lap(profile.then(std::time::Instant::now))
     }
 
     /// Nanoseconds since the start (0 when not profiling).
     #[inline]
-    pub(crate) fn ns(self) -> u64 {
+    pub fn ns(self) -> u64 {
         self.0.map_or(0, |t| t.elapsed().as_nanos() as u64)
     }
 }

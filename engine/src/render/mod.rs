@@ -30,8 +30,8 @@ pub mod walls;
 pub mod zbuffer;
 
 pub use buffers::Buffers;
-pub use frame::{Breakdown, Frame, FrameStats};
-use frame::{Lap, Scene, StripFrame};
+pub use frame::{Breakdown, Frame, FrameStats, Lap};
+use frame::{Scene, StripFrame};
 pub use shade::Shade;
 pub use view::{Camera, View};
 

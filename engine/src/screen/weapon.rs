@@ -59,7 +59,7 @@ fn blit(
     };
     let k = (shade * 256.0) as u32;
     let d = |c: u8| ((u32::from(c) * k) >> 8).min(255) as u8;
-    // The texel row of each screen row, found once for the whole picture.
+    // The texel index under screen pixel `p` of an axis, if inside.
     let texel = |p: usize, origin: f64, size: usize| {
         let t = ((p as f64 + 0.5 - origin) / s).floor();
         (t >= 0.0 && t < size as f64).then_some(t as usize)
@@ -68,13 +68,12 @@ fn blit(
     // column, found once for the whole picture.
     let rows: Vec<(usize, usize)> =
         span(y0, v0, v1, fb.height).filter_map(|py| texel(py, y0, texture.height).map(|v| (py, v))).collect();
-    let columns: Vec<(usize, &[u32])> = span(x0, u0, u1, fb.width)
-        .filter_map(|px| texel(px, x0, texture.width).map(|u| (px, texture.column(u))))
-        .collect();
-    // Texel columns are whole from the first shown to the last, so the
-    // screen columns they cover are one run.
-    let Some(&(first, _)) = columns.first() else { return };
-    debug_assert!(columns.iter().enumerate().all(|(i, &(px, _))| px == first + i));
+    // A screen column's texel column is monotone in it, so the columns
+    // inside the picture are one run, from `first`.
+    let across = span(x0, u0, u1, fb.width);
+    let Some(first) = across.clone().find(|&px| texel(px, x0, texture.width).is_some()) else { return };
+    let columns: Vec<&[u32]> =
+        (first..across.end).map_while(|px| texel(px, x0, texture.width).map(|u| texture.column(u))).collect();
     // Each texel row lit once into `line` (0 where the picture is clear),
     // then laid on every screen row it covers as one run the compiler
     // keeps in vector registers. Writing pixel by pixel, branching on each
@@ -83,7 +82,7 @@ fn blit(
     let mut lit_row = usize::MAX;
     for &(py, v) in &rows {
         if v != lit_row {
-            for (lit, &(_, column)) in line.iter_mut().zip(&columns) {
+            for (lit, column) in line.iter_mut().zip(&columns) {
                 let [r, g, b, a] = column[v].to_le_bytes();
                 *lit = if a >= 128 { u32::from_le_bytes([d(r), d(g), d(b), 255]) } else { 0 };
             }
