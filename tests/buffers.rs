@@ -478,3 +478,37 @@ fn the_ray_caster_fills_the_buffers_as_the_walk_does() {
     }
     assert!(compared > 100_000, "{compared} pixels compared");
 }
+
+/// The eye exactly at the height a sprite stands on, so the horizon row's
+/// centre is exactly on the sprite's bottom edge: the row belongs below it
+/// (`Camera::row_above`), in both renderers. The reference once took the
+/// bottom as `top - height`, which rounds off a floor like this one's and
+/// gave the sprite the horizon row (found by the random-map check from a
+/// pose beside a column standing on a raised pillar).
+#[test]
+fn a_sprite_whose_bottom_is_at_the_eye_leaves_the_horizon_row_alone() {
+    let floor = 91.86244171092729_f64;
+    let text = format!(
+        r#"Map(name: "ledge", vertices: [(0, 0), (0, 512), (512, 512), (512, 0)],
+        sectors: [Sector(floor: {floor:?}, ceiling: 300, light: 160)],
+        lines: [Line(from: 0, to: 1, front: Side(sector: 0)), Line(from: 1, to: 2, front: Side(sector: 0)),
+                Line(from: 2, to: 3, front: Side(sector: 0)), Line(from: 3, to: 0, front: Side(sector: 0))],
+        things: [Thing(kind: "player_start", x: 256, y: 100, angle: 90), Thing(kind: "column", x: 256, y: 140, angle: 0)])"#
+    );
+    let map = sightline::map::parse_map(&text, "ledge.ron").unwrap();
+    let level = Level::with_builtin_textures(sightline::bsp::build(&map, &BuildOptions::default()).unwrap()).unwrap();
+    let column = level.things.iter().find(|t| t.pos == DVec2::new(256.0, 140.0)).unwrap();
+    let height = level.materials.textures.get(column.texture_seen_from(DVec2::new(256.0, 100.0))).height as f64;
+    assert_ne!(floor + height - height, floor, "the case needs a floor that the sum and difference round off");
+    // An odd height: row 37's centre is the horizon, exactly at the eye.
+    let size = (127, 75);
+    let view = View::new(DVec2::new(256.0, 100.0), floor, 90.0);
+    let bsp = ids_shot(&level, &view, size, Renderer::Bsp);
+    let reference = ids_shot(&level, &view, size, Renderer::Reference);
+    let thing = ids_colour(Surface::Thing { thing: column.key });
+    let horizon = &bsp.fb.pixels[37 * size.0..38 * size.0];
+    assert!(bsp.fb.pixels[36 * size.0..37 * size.0].contains(&thing), "the column shows above the horizon");
+    assert!(!horizon.contains(&thing), "the horizon row is below the column's bottom");
+    assert!(bsp.fb.pixels == reference.fb.pixels, "the renderers agree on every pixel");
+    compare(&level, &view, size, &[], "eye at a sprite's floor", &mut Tally::default());
+}

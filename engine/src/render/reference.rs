@@ -260,6 +260,13 @@ struct Billboard<'a> {
     light: u8,
 }
 
+impl Billboard<'_> {
+    /// Its top and bottom heights, as the walk's sprites have them.
+    fn edges(&self) -> (f64, f64) {
+        (self.floor + self.texture.height as f64, self.floor)
+    }
+}
+
 fn things_in_front<'a>(level: &'a Level, cam: &Camera) -> Vec<Billboard<'a>> {
     let mut out = Vec::new();
     for t in &level.things {
@@ -296,10 +303,14 @@ fn sprites_on_column<'a>(cam: &Camera, things: &'a [Billboard<'a>], x: usize) ->
 }
 
 /// The opaque texel of `texture` column `u` that row `y`'s ray meets at
-/// `depth`, if the ray passes within `[top - height, top)`.
-fn texel_at(cam: &Camera, texture: &Texture, u: usize, top: f64, depth: f64, y: i32) -> Option<u32> {
-    let h = texture.height as f64;
-    if cam.row_above(y, depth, top) || !cam.row_above(y, depth, top - h) {
+/// `depth`, if the ray passes within `[bottom, top)`.
+///
+/// Both edges are given, as the walk has them: a sprite's bottom is its
+/// floor, not `top - height` (the sum and difference may round off the
+/// floor, and with the eye exactly at the floor the horizon row's centre is
+/// exactly on it).
+fn texel_at(cam: &Camera, texture: &Texture, u: usize, (top, bottom): (f64, f64), depth: f64, y: i32) -> Option<u32> {
+    if cam.row_above(y, depth, top) || !cam.row_above(y, depth, bottom) {
         return None;
     }
     let v = top - (cam.z + depth * cam.row_slope(y));
@@ -370,7 +381,7 @@ fn pixel(
                 break;
             }
             sprites.next();
-            if texel_at(cam, b.texture, u, b.floor + b.texture.height as f64, b.depth, y).is_some() {
+            if texel_at(cam, b.texture, u, b.edges(), b.depth, y).is_some() {
                 return thing(b);
             }
         }
@@ -406,7 +417,7 @@ fn pixel(
                     let top = masked_top(map, line, !hit.from_front, texture.height as f64, level.time);
                     let u = masked_u(&ends[hit.line], side_offsets(near, level.time).0, hit, t);
                     let u = (u.floor() as i64).rem_euclid(texture.width as i64) as usize;
-                    if texel_at(cam, texture, u, top, hit.depth, y).is_some() {
+                    if texel_at(cam, texture, u, (top, top - texture.height as f64), hit.depth, y).is_some() {
                         return Seen::new(colour(shade, wall, light, 1.0), wall, At::Depth(hit.depth));
                     }
                 }
@@ -419,7 +430,7 @@ fn pixel(
         }
     }
     for &(b, u) in sprites {
-        if texel_at(cam, b.texture, u, b.floor + b.texture.height as f64, b.depth, y).is_some() {
+        if texel_at(cam, b.texture, u, b.edges(), b.depth, y).is_some() {
             return thing(b);
         }
     }
