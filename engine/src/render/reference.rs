@@ -18,7 +18,7 @@ use super::frame::{Hit, StripFrame};
 use super::shade::{
     ceiling_at_line, colour, masked_top, plane_lights, plane_surfaces, side_offsets, wall_facing, Shade, Surface,
 };
-use super::view::{Camera, NEAR};
+use super::view::{hides_sprite, Camera, NEAR, TIE};
 use crate::geom::{cross, on_segment};
 use crate::level::Level;
 use crate::map::Map;
@@ -219,9 +219,6 @@ impl EyeSector {
     }
 }
 
-/// Depths this close (relative) are one crossing point: a ray through a shared vertex.
-const TIE: f64 = 1e-9;
-
 /// Puts crossings at the same depth in the order the ray meets them. Through a
 /// vertex where it enters and leaves a sector at once, the ray crosses first
 /// the line whose near side is the sector it is in, then the next.
@@ -377,7 +374,7 @@ fn pixel(
         // Billboards nearer than this crossing (or at its depth: a sprite
         // against a wall is in front of it) come first.
         while let Some(&&(b, u)) = sprites.peek() {
-            if b.depth > hit.depth {
+            if hides_sprite(hit.depth, b.depth) {
                 break;
             }
             sprites.next();

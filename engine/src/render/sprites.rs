@@ -11,7 +11,7 @@
 use super::columns::ColumnWriter;
 use super::frame::{ClipEvent, Scene, StripFrame, NONE};
 use super::shade::{colour, ids_colour, masked_top, Shade, Surface};
-use super::view::{Camera, NEAR};
+use super::view::{hides_sprite, Camera, NEAR};
 use crate::level::Level;
 use crate::texture::{Texture, TextureId};
 
@@ -99,7 +99,9 @@ pub(crate) fn draw(scene: &Scene, frame: &mut StripFrame, out: &mut ColumnWriter
     let StripFrame { last_masked: next, masked, events, last_event, sprite_rows, .. } = frame;
     let pass = MaskedPass { scene, cam: scene.cam, events, last_event };
     let mut drain = |out: &mut ColumnWriter, x: usize, depth: f64| {
-        while let Some(m) = (next[x] != NONE).then(|| &masked[next[x] as usize]).filter(|m| m.depth >= depth) {
+        while let Some(m) =
+            (next[x] != NONE).then(|| &masked[next[x] as usize]).filter(|m| !hides_sprite(m.depth, depth))
+        {
             pass.masked_column(out, m, x);
             next[x] = m.prev;
         }
@@ -159,13 +161,13 @@ impl MaskedPass<'_> {
             return;
         }
         let at = (s.depth, label(s.thing));
+        let (y0, y1) = self.open_rows(x, c.rows, |near| hides_sprite(near, s.depth));
         let Texels::Tinted(tint) = c.paint else {
             let texel_row = |y: i32| c.texel_rows[(y - c.rows.0) as usize] as usize;
-            return self.put_texels(out, x, at, c.rows, (c.texture, u as usize, texel_row), c.paint, false);
+            return self.put_texels(out, x, at, (y0, y1), (c.texture, u as usize, texel_row), c.paint, false);
         };
         // The common case with the texel rows read as a run of the table,
         // not looked up row by row (a bounds test a texel).
-        let (y0, y1) = self.open_rows(x, s.depth, c.rows);
         if y0 < y1 {
             let column = c.texture.column((u as usize).min(c.texture.width - 1));
             let rows = &c.texel_rows[(y0 - c.rows.0) as usize..(y1 - c.rows.0) as usize];
@@ -195,6 +197,8 @@ impl MaskedPass<'_> {
         let rows = (rows.first_at_or_below(m.depth, scale, top), rows.first_at_or_below(m.depth, scale, bottom));
         let event = self.events[m.event as usize];
         let rows = (rows.0.max(event.top), rows.1.min(event.bottom));
+        // Walls nearer than the middle clip it; its own event, at its depth, does not.
+        let rows = self.open_rows(x, rows, |near| near < m.depth);
         // Translucent middles (Boom's 260) blend only when textured, so
         // the flat and ids pictures stay comparable with the reference.
         let translucent = line.flags.translucent && self.scene.shade == Shade::Textured;
@@ -213,7 +217,7 @@ impl MaskedPass<'_> {
     }
 
     /// Writes the opaque texels of texture column `u` over rows `rows` of
-    /// column `x`, clipped to the window left open in front of `depth`; row
+    /// column `x` (already cut to the window left open in front of it); row
     /// `y` shows texel row `texel_row(y)`. Where the frame fills them, those
     /// pixels get `depth` and `label` (a thing's, or 0 for a middle).
     fn put_texels(
@@ -221,13 +225,12 @@ impl MaskedPass<'_> {
         out: &mut ColumnWriter,
         x: usize,
         (depth, label): (f64, u32),
-        rows: (i32, i32),
+        (y0, y1): (i32, i32),
         (texture, u, texel_row): (&Texture, usize, impl Fn(i32) -> usize),
         paint: Texels,
         translucent: bool,
     ) {
         let column = texture.column(u.min(texture.width - 1));
-        let (y0, y1) = self.open_rows(x, depth, rows);
         let texel = |y: i32| column[texel_row(y)];
         match paint {
             // The common case as one run without a branch per texel: a
@@ -260,32 +263,33 @@ impl MaskedPass<'_> {
 }
 
 impl MaskedPass<'_> {
-    /// Whether column `x` was closed by a wall nearer than `depth`, so that
-    /// nothing at `depth` shows there: a closed column's last clip event is
-    /// the one that closed it, its window empty (what [`Self::window`]
-    /// would find).
+    /// Whether column `x` was closed by a wall in front of a sprite at
+    /// `depth` ([`hides_sprite`]), so that the sprite does not show there: a
+    /// closed column's last clip event is the one that closed it, its window
+    /// empty (what [`Self::window`] would find).
     fn closed_before(&self, x: usize, depth: f64) -> bool {
         let e = self.last_event[x];
         e != NONE && {
             let event = &self.events[e as usize];
-            event.top >= event.bottom && event.depth < depth
+            event.top >= event.bottom && hides_sprite(event.depth, depth)
         }
     }
 
     /// Rows `rows` of column `x` cut to the window through which something
-    /// at `depth` can be seen there (empty when the window misses them).
-    fn open_rows(&self, x: usize, depth: f64, rows: (i32, i32)) -> (i32, i32) {
-        let (top, bottom) = self.window(x, depth, self.cam.height as i32);
+    /// can be seen there (empty when the window misses them); `hides` says
+    /// whether a wall at a depth is in front of it.
+    fn open_rows(&self, x: usize, rows: (i32, i32), hides: impl Fn(f64) -> bool) -> (i32, i32) {
+        let (top, bottom) = self.window(x, self.cam.height as i32, hides);
         (rows.0.max(top), rows.1.min(bottom))
     }
 
-    /// Rows `[top, bottom)` of column `x` through which something at `depth`
-    /// can be seen: the window of the last clip event nearer than it.
-    fn window(&self, x: usize, depth: f64, height: i32) -> (i32, i32) {
+    /// Rows `[top, bottom)` of column `x` through which something can be
+    /// seen: the window of the last clip event that `hides` it.
+    fn window(&self, x: usize, height: i32, hides: impl Fn(f64) -> bool) -> (i32, i32) {
         let mut e = self.last_event[x];
         while e != NONE {
             let event = &self.events[e as usize];
-            if event.depth < depth {
+            if hides(event.depth) {
                 return (event.top, event.bottom);
             }
             e = event.prev;

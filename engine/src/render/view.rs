@@ -18,6 +18,22 @@ use crate::geom::sin_cos_degrees;
 /// further sideways than forward, far off any screen narrower than 179.9 degrees.
 pub const NEAR: f64 = 1e-4;
 
+/// Depths this close (relative) are one: crossings of a ray through a
+/// shared vertex, or a thing standing at a wall's vertex. Two computations
+/// of one point's depth (from either line through it, or from the thing's
+/// position) can differ in their last bits, and both renderers must then
+/// decide alike.
+pub const TIE: f64 = 1e-9;
+
+/// Is a wall or middle at depth `near` in front of a sprite at `depth`?
+/// Depths within [`TIE`] are one, and a sprite against a wall is in front of
+/// it. The one rule for both renderers (the walk's clip windows, the
+/// reference's ray).
+#[inline]
+pub fn hides_sprite(near: f64, depth: f64) -> bool {
+    depth - near > near * TIE
+}
+
 /// Eye height above the floor when a pose gives none (Doom's viewheight).
 pub const EYE_HEIGHT: f64 = 41.0;
 
