@@ -16,7 +16,7 @@ use glam::DVec2;
 /// Walks the tree for the strip `frame` was readied for.
 pub(crate) fn render(scene: &Scene, frame: &mut StripFrame, out: &mut ColumnWriter) {
     let (cam, bsp) = (scene.cam, &scene.level.bsp);
-    frame.stack.push((bsp.root, None, false));
+    frame.stack.push((bsp.root, None, None));
     while let Some((child, bbox, along)) = frame.stack.pop() {
         if frame.occlusion.all_closed() {
             break;
@@ -34,7 +34,7 @@ pub(crate) fn render(scene: &Scene, frame: &mut StripFrame, out: &mut ColumnWrit
                 let near = near_side(node, cam) as usize;
                 // Below a partition the eye looks along, seg ends the
                 // compiler counted as on it count as on it (see `along`).
-                let along = along || looks_along(node, cam);
+                let along = along.or_else(|| looks_along(node, cam));
                 frame.stack.push((node.children[1 - near], Some(node.bbox[1 - near]), along));
                 frame.stack.push((node.children[near], Some(node.bbox[near]), along));
             }
@@ -73,9 +73,11 @@ pub(crate) fn near_side(node: &Node, cam: &Camera) -> bool {
     }
 }
 
-/// Is the eye exactly on `node`'s partition, looking exactly along it (the
-/// partition is the camera's line y = 0, so with an odd width the centre
-/// column's ray runs along it)?
+/// Does the eye look exactly along `node`'s partition, on it or within the
+/// compiler's `ON_EPSILON` of it? The answer is the partition's sideways
+/// offset in camera space (the line is the camera's y = offset; 0 with the
+/// eye exactly on it, so that with an odd width the centre column's ray runs
+/// along it).
 ///
 /// Then the column along the line is drawn from the side [`near_side`]
 /// picks, and the segs that should claim it are the pieces of the lines
@@ -86,19 +88,25 @@ pub(crate) fn near_side(node: &Node, cam: &Camera) -> bool {
 /// lost 65 pixels of column 63 to the wall behind it; `tests/properties.rs`,
 /// `regression_eye_on_partition_looking_along_it`). The compiler counts any
 /// seg end within `ON_EPSILON` of a partition as on it; below such a node
-/// the walk does too ([`onto_partition`]), so the near piece starts exactly
-/// at the ray and owns the column, and the far piece ends there and does not.
-pub(crate) fn looks_along(node: &Node, cam: &Camera) -> bool {
-    front_distance(node.a, node.b, cam.eye) == 0.0 && (cam.to_camera(node.b) - cam.to_camera(node.a)).y == 0.0
+/// the walk does too ([`onto_partition`]), so the near piece reaches the
+/// partition exactly and owns the column, and the far piece stops there and
+/// does not. An eye a hair off the line, looking exactly along it, has the
+/// same trouble (the centre ray runs between the line and a rounded cut
+/// point: `tests/buffers.rs`,
+/// `a_ray_a_hair_beside_a_partition_meets_the_near_pieces`), and the same
+/// cure: the cut points go onto the line, on its side of the ray.
+pub(crate) fn looks_along(node: &Node, cam: &Camera) -> Option<f64> {
+    let (a, b) = (cam.to_camera(node.a), cam.to_camera(node.b));
+    (b.y - a.y == 0.0 && front_distance(node.a, node.b, cam.eye).abs() < ON_EPSILON).then_some(a.y)
 }
 
-/// A seg end (camera space) under a partition the eye looks along
-/// ([`looks_along`]): within the compiler's `ON_EPSILON` of that line, the
-/// camera's y = 0, it is on it.
+/// A seg end (camera space) under a partition the eye looks along, at
+/// sideways offset `line` ([`looks_along`]): within the compiler's
+/// `ON_EPSILON` of that line, it is on it.
 #[inline]
-pub(crate) fn onto_partition(p: DVec2) -> DVec2 {
-    if p.y.abs() < ON_EPSILON {
-        DVec2::new(p.x, 0.0)
+pub(crate) fn onto_partition(p: DVec2, line: f64) -> DVec2 {
+    if (p.y - line).abs() < ON_EPSILON {
+        DVec2::new(p.x, line)
     } else {
         p
     }
@@ -125,10 +133,10 @@ fn fill_void(frame: &mut StripFrame, out: &mut ColumnWriter, shade: Shade) {
 /// them) and asks the occlusion array about the columns between.
 ///
 /// Under a partition the eye looks `along`, a box that reaches within
-/// `ON_EPSILON` of the camera's y = 0 in front of the eye is visible: a seg
-/// end in it may be moved onto that line ([`onto_partition`]), and the
-/// silhouette of the unmoved box could miss the column along it.
-fn box_visible(cam: &Camera, slopes: &[f64], bbox: &Aabb, frame: &StripFrame, along: bool) -> bool {
+/// `ON_EPSILON` of that line in front of the eye is visible: a seg end in it
+/// may be moved onto the line ([`onto_partition`]), and the silhouette of
+/// the unmoved box could miss the column along it.
+fn box_visible(cam: &Camera, slopes: &[f64], bbox: &Aabb, frame: &StripFrame, along: Option<f64>) -> bool {
     // Within a unit of the box, call it visible: the silhouette argument below
     // needs the eye clear of the box by much more than NEAR.
     let grown = Aabb { min: bbox.min - 1.0, max: bbox.max + 1.0 };
@@ -136,10 +144,10 @@ fn box_visible(cam: &Camera, slopes: &[f64], bbox: &Aabb, frame: &StripFrame, al
         return true;
     }
     let (e, lo, hi) = (cam.eye, bbox.min, bbox.max);
-    if along {
+    if let Some(line) = along {
         let corners = [lo, hi, glam::DVec2::new(lo.x, hi.y), glam::DVec2::new(hi.x, lo.y)].map(|c| cam.to_camera(c));
         let (low, high) = corners.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), c| (l.min(c.y), h.max(c.y)));
-        if low < ON_EPSILON && high > -ON_EPSILON && corners.iter().any(|c| c.x > 0.0) {
+        if low < line + ON_EPSILON && high > line - ON_EPSILON && corners.iter().any(|c| c.x > 0.0) {
             return true;
         }
     }

@@ -310,8 +310,9 @@ pub(crate) struct StripFrame {
     /// One past the last open row of each column.
     pub(crate) clip_bottom: Vec<i32>,
     /// The walk's stack: a subtree, its box, and whether it lies below a
-    /// partition the eye looks along (see `bsp::looks_along`).
-    pub(crate) stack: Vec<(Child, Option<Aabb>, bool)>,
+    /// partition the eye looks along: that line's sideways offset in camera
+    /// space (see `bsp::looks_along`).
+    pub(crate) stack: Vec<(Child, Option<Aabb>, Option<f64>)>,
     pub(crate) hits: Vec<Hit>,
     /// Column-major canvas of the strip being drawn (see [`super::columns`]),
     /// and its write counts when counting.

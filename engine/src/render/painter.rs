@@ -32,15 +32,15 @@ pub(crate) fn render(scene: &Scene, frame: &mut StripFrame, out: &mut ColumnWrit
     let bsp = &scene.level.bsp;
     // Near child pushed first, so the far one is popped (and finished) first.
     frame.stack.clear();
-    frame.stack.push((bsp.root, None, false));
+    frame.stack.push((bsp.root, None, None));
     while let Some((child, ..)) = frame.stack.pop() {
         match child {
             Child::Node(i) => {
                 frame.stats.nodes_visited += 1;
                 let node = &bsp.nodes[i];
                 let near = super::bsp::near_side(node, scene.cam) as usize;
-                frame.stack.push((node.children[near], None, false));
-                frame.stack.push((node.children[1 - near], None, false));
+                frame.stack.push((node.children[near], None, None));
+                frame.stack.push((node.children[1 - near], None, None));
             }
             Child::Leaf(i) => {
                 frame.stats.leaves_visited += 1;
@@ -48,7 +48,7 @@ pub(crate) fn render(scene: &Scene, frame: &mut StripFrame, out: &mut ColumnWrit
                 // never overlap on screen, so their order does not matter.
                 for seg in bsp.leaf_segs(&bsp.leaves[i]) {
                     if open_whole_columns(scene, seg, frame, strip).is_some() {
-                        draw_seg(scene, seg, frame, out, false);
+                        draw_seg(scene, seg, frame, out, None);
                     } else {
                         frame.stats.walls_considered += 1;
                     }

@@ -74,7 +74,7 @@ struct SegColumns<'a> {
 /// Draws `seg` in the columns still open. `along`: the walk is below a
 /// partition the eye looks along, whose near-by seg ends count as on it
 /// ([`super::bsp::looks_along`]).
-pub(crate) fn draw_seg(scene: &Scene, seg: &Seg, frame: &mut StripFrame, out: &mut ColumnWriter, along: bool) {
+pub(crate) fn draw_seg(scene: &Scene, seg: &Seg, frame: &mut StripFrame, out: &mut ColumnWriter, along: Option<f64>) {
     frame.stats.walls_considered += 1;
     let (level, cam) = (scene.level, scene.cam);
     let map = &level.map;
@@ -95,8 +95,8 @@ pub(crate) fn draw_seg(scene: &Scene, seg: &Seg, frame: &mut StripFrame, out: &m
         return;
     }
     let (mut v1, mut v2) = (cam.to_camera(seg.v1), cam.to_camera(seg.v2));
-    if along {
-        (v1, v2) = (onto_partition(v1), onto_partition(v2));
+    if let Some(line) = along {
+        (v1, v2) = (onto_partition(v1, line), onto_partition(v2, line));
     }
     let Some((x0, x1)) = cam.project_span_in(scene.slopes, v1, v2) else {
         return;

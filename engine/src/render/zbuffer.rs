@@ -77,7 +77,7 @@ pub(crate) fn render(scene: &Scene, frame: &mut StripFrame, out: &mut ColumnWrit
             continue;
         };
         let drawn = frame.stats.walls_drawn;
-        draw_seg(scene, &seg, frame, &mut ColumnWriter::new(&mut buffers.fragments, strip.0, h, None), false);
+        draw_seg(scene, &seg, frame, &mut ColumnWriter::new(&mut buffers.fragments, strip.0, h, None), None);
         if frame.stats.walls_drawn == drawn {
             // draw_seg turned it away (it decides facing as facing_seg does).
             continue;
