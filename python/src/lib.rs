@@ -381,11 +381,11 @@ impl Game {
     }
 }
 
-/// Many games of one scenario, stepped together by the calling thread and
-/// helper threads ([`crew`]).
 /// Each game's reward from a step, and whether its episode has ended.
 type Played = (Vec<f64>, Vec<bool>);
 
+/// Many games of one scenario, stepped together by the calling thread and
+/// helper threads ([`crew`]).
 #[pyclass(module = "sightline._native")]
 struct Games {
     crew: crew::Crew,

@@ -96,8 +96,12 @@ pub(crate) fn near_side(node: &Node, cam: &Camera) -> bool {
 /// `a_ray_a_hair_beside_a_partition_meets_the_near_pieces`), and the same
 /// cure: the cut points go onto the line, on its side of the ray.
 pub(crate) fn looks_along(node: &Node, cam: &Camera) -> Option<f64> {
+    // The distance first: most nodes are far from the eye, and it rules them out.
+    if front_distance(node.a, node.b, cam.eye).abs() >= ON_EPSILON {
+        return None;
+    }
     let (a, b) = (cam.to_camera(node.a), cam.to_camera(node.b));
-    (b.y - a.y == 0.0 && front_distance(node.a, node.b, cam.eye).abs() < ON_EPSILON).then_some(a.y)
+    (b.y - a.y == 0.0).then_some(a.y)
 }
 
 /// A seg end (camera space) under a partition the eye looks along, at
